@@ -1,0 +1,7 @@
+"""python -m taucli"""
+
+import sys
+
+from taucli.cli import main
+
+sys.exit(main())

@@ -1,0 +1,198 @@
+"""The Typer app: one thin command per scene: parse options -> call the solver -> render.
+
+No physics here. Solvers, units and renderers are imported inside the commands, so that
+``--help`` builds no unit registry and imports no solver it does not show.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from typing import Annotated, Optional
+
+import typer
+
+from taucli.errors import ExitStatus, InputError, TaucliError
+from taucli.inputs import SHAPE_DIMENSIONS, Inputs, parse_part_spec
+from taucli.scenes.inertia import SHAPES
+
+SHAPE_NAMES = tuple(SHAPES)
+
+app = typer.Typer(
+    name="taucli",
+    help="Rigid-body rotation about a fixed axis: τ_net = Iα and what follows from it.\n\n"
+    "Quantities take units: 4kg, 300 rpm, 0.3 N*m, 30deg. A bare number is SI.\n\n"
+    "Exit status: 0 success, 1 internal error (a bug), 2 bad input, 130 interrupted.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+
+
+
+def _show_version(value: bool) -> None:
+    if value:
+        from taucli import __version__
+
+        print(f"taucli {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def taucli(
+    version: Annotated[
+        bool, typer.Option("--version", callback=_show_version, is_eager=True, help="Print the version and exit.")
+    ] = False,
+) -> None:
+    """Rigid-body rotation about a fixed axis: τ_net = Iα and what follows from it."""
+
+
+_OUTPUT = "Output"
+_BODY = "Body (shape and dimensions)"
+
+JsonFlag = Annotated[bool, typer.Option("--json", help="Print one strict JSON document on stdout.", rich_help_panel=_OUTPUT)]
+GetOption = Annotated[
+    Optional[list[str]],
+    typer.Option("--get", metavar="NAME", help="Print only this result's number (repeatable, one per line).", rich_help_panel=_OUTPUT),
+]
+ToOption = Annotated[
+    Optional[list[str]],
+    typer.Option("--to", metavar="NAME=UNIT", help="Show a result in this unit, e.g. --to I=g*cm^2 (repeatable).", rich_help_panel=_OUTPUT),
+]
+NoStepsFlag = Annotated[bool, typer.Option("--no-steps", help="Hide the worked steps in the human view.", rich_help_panel=_OUTPUT)]
+
+
+def _length_option(flag: str, help_text: str):
+    return Annotated[Optional[str], typer.Option(flag, metavar="LENGTH", help=help_text, rich_help_panel=_BODY)]
+
+
+MassOption = Annotated[Optional[str], typer.Option("--mass", metavar="MASS", help="Mass of the body, e.g. 5kg.", rich_help_panel=_BODY)]
+RadiusOption = _length_option("--radius", "Radius (a point's distance from the axis), e.g. 0.2m.")
+InnerRadiusOption = _length_option("--inner-radius", "Inner radius (tube, thick-shell).")
+OuterRadiusOption = _length_option("--outer-radius", "Outer radius (tube, thick-shell).")
+LengthOption = _length_option("--length", "Length (rod; cylinder along its axis).")
+WidthOption = _length_option("--width", "Width (plate, box).")
+HeightOption = _length_option("--height", "Height (plate, box, cone).")
+DepthOption = _length_option("--depth", "Depth (box).")
+AxisOption = Annotated[
+    Optional[str],
+    typer.Option(
+        "--axis",
+        metavar="AXIS",
+        help="Axis, where the shape has several: "
+        + "; ".join(f"{'|'.join(a.name for a in shape.axes)} ({name})" for name, shape in SHAPES.items() if len(shape.axes) > 1)
+        + " (default: the first).",
+        rich_help_panel=_BODY,
+    ),
+]
+OffsetOption = _length_option("--offset", "Distance of the rotation axis from the parallel axis through the centre of mass.")
+
+
+def read_shape(inputs: Inputs, shape: str | None, mass: str | None, axis: str | None, offset: str | None, **dims: str | None):
+    """The body part named by SHAPE and the shape options, as an inertia Part in SI."""
+    from taucli.scenes.inertia import Part, lookup_shape
+
+    if shape is None:
+        raise InputError("SHAPE", f"is required, one of {', '.join(SHAPE_NAMES)}", example="taucli inertia disc --mass 5kg --radius 0.2m")
+    found = lookup_shape(shape)
+    mass_si = inputs.required("--mass", mass, "mass", why=f" for a {found.title}")
+    lengths = {
+        name: inputs.quantity("--" + name.replace("_", "-"), text, "length", sign="nonnegative" if name == "inner_radius" else "positive")
+        for name, text in dims.items()
+        if text is not None
+    }
+    offset_si = inputs.quantity("--offset", offset, "length", sign="nonnegative")
+    return Part(found.name, mass_si, lengths, axis, offset_si)
+
+
+def emit(report, inputs: Inputs, json_: bool, get: list[str] | None, to: list[str] | None, no_steps: bool) -> None:
+    """Render a solver's report with the inputs as read, in the format asked for."""
+    from taucli import render
+
+    report = render.attach_inputs(report, inputs.values, inputs.notes)
+    render.render(report, render.Output(json=json_, get=tuple(get or ()), to=tuple(to or ()), steps=not no_steps), sys.stdout)
+
+
+@app.command()
+def inertia(
+    shape: Annotated[
+        Optional[str], typer.Argument(metavar="SHAPE", help=f"One of: {', '.join(SHAPE_NAMES)}.", show_default=False)
+    ] = None,
+    mass: MassOption = None,
+    radius: RadiusOption = None,
+    inner_radius: InnerRadiusOption = None,
+    outer_radius: OuterRadiusOption = None,
+    length: LengthOption = None,
+    width: WidthOption = None,
+    height: HeightOption = None,
+    depth: DepthOption = None,
+    axis: AxisOption = None,
+    offset: OffsetOption = None,
+    part: Annotated[
+        Optional[list[str]],
+        typer.Option(
+            "--part",
+            metavar='"SHAPE key=value ..."',
+            help='Another part of the same body about the same axis, e.g. --part "point mass=100g offset=0.2m" (repeatable).',
+            rich_help_panel=_BODY,
+        ),
+    ] = None,
+    json_: JsonFlag = False,
+    get: GetOption = None,
+    to: ToOption = None,
+    no_steps: NoStepsFlag = False,
+) -> None:
+    """Moment of inertia of a standard shape: shifted (--offset), or a body of several parts.
+
+    Results: I, k (radius of gyration), I_cm (with --offset), mass (several parts).
+
+    Example: taucli inertia disc --mass 5kg --radius 0.2m
+    """
+    from taucli.scenes import inertia as scene
+
+    inputs = Inputs()
+    dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
+    assert set(dims) == set(SHAPE_DIMENSIONS)
+    parts = [read_shape(inputs, shape, mass, axis, offset, **dims)]
+    parts += [parse_part_spec(spec, number, inputs) for number, spec in enumerate(part or [], start=2)]
+    emit(scene.solve(parts), inputs, json_, get, to, no_steps)
+
+
+def _is_usage_error(err: Exception) -> bool:
+    """Typer's (vendored or plain click) usage errors: they carry an exit code and a message."""
+    return isinstance(getattr(err, "exit_code", None), int) and hasattr(err, "format_message")
+
+
+def _fail(status: ExitStatus, message: str) -> int:
+    print(f"taucli: error: {' '.join(message.split())}", file=sys.stderr)
+    return int(status)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run taucli; every exception becomes one line on stderr and an exit status."""
+    try:
+        result = app(args=argv, prog_name="taucli", standalone_mode=False)
+    except TaucliError as err:
+        return _fail(err.exit_status, str(err))
+    except KeyboardInterrupt:
+        print(file=sys.stderr)
+        return int(ExitStatus.INTERRUPTED)
+    except BrokenPipeError:
+        # The reader went away (`| head`): say nothing more, and do not fail again on exit.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return int(ExitStatus.OK)
+    except Exception as err:
+        if _is_usage_error(err):
+            if not err.format_message():  # `taucli` alone: the help has been shown
+                return int(ExitStatus.USAGE)
+            ctx = getattr(err, "ctx", None)
+            where = f" (see '{ctx.command_path} --help')" if ctx is not None else " (see 'taucli --help')"
+            return _fail(ExitStatus.USAGE, err.format_message() + where)
+        if os.environ.get("TAUCLI_DEBUG"):
+            raise
+        return _fail(
+            ExitStatus.INTERNAL,
+            f"internal error ({type(err).__name__}: {err}); this is a bug in taucli, please report it "
+            "with the command line (set TAUCLI_DEBUG=1 for the traceback)",
+        )
+    return result if isinstance(result, int) else int(ExitStatus.OK)

@@ -1,0 +1,192 @@
+"""Renderers: the human view (rich table and steps), --json, and --get; --to converts units.
+
+JSON and --get print nothing on stdout but the answer. rich is imported by the human view only.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
+from typing import TextIO
+
+from taucli import __version__
+from taucli.errors import InputError
+from taucli.report import Report, Table, Value, fmt, pretty_unit
+
+
+@dataclass(frozen=True)
+class Output:
+    """How the user asked for the answer: the format and unit conversions."""
+
+    json: bool = False
+    get: Sequence[str] = ()
+    to: Sequence[str] = ()
+    steps: bool = True
+
+
+def finite_only(report: Report) -> Report:
+    """Replace any non-finite result with None and a note, so JSON stays strict."""
+    results = dict(report.results)
+    notes = list(report.notes)
+    for name, value in report.results.items():
+        if isinstance(value.value, float) and not math.isfinite(value.value):
+            results[name] = replace(value, value=None)
+            notes.append(f"{name} has no finite value here")
+    return replace(report, results=results, notes=notes)
+
+
+def apply_conversions(report: Report, to: Sequence[str]) -> Report:
+    """Express the results named in --to NAME=UNIT in those units."""
+    if not to:
+        return report
+    from taucli import units
+
+    results = dict(report.results)
+    for request in to:
+        name, sep, unit = request.partition("=")
+        name, unit = name.strip(), unit.strip()
+        if not sep or not name or not unit:
+            raise InputError("--to", "expected NAME=UNIT", example="--to omega=rpm", got=repr(request))
+        value = _result(report, name, "--to")
+        if value.unit is None or not isinstance(value.value, (float, int)) or isinstance(value.value, bool):
+            if value.value is None:
+                continue
+            raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to I=g*cm^2")
+        converted = units.convert(float(value.value), value.unit, unit, "--to")
+        results[name] = replace(value, value=converted, unit=unit)
+    return replace(report, results=results)
+
+
+def _result(report: Report, name: str, option: str) -> Value:
+    try:
+        return report.results[name]
+    except KeyError:
+        import difflib
+
+        close = difflib.get_close_matches(name, list(report.results), n=1)
+        raise InputError(
+            option,
+            f"expected the name of a result of {report.scene}: {', '.join(report.results)}",
+            got=repr(name),
+            hint=f"did you mean {close[0]!r}?" if close else None,
+        ) from None
+
+
+def _json_value(value: Value) -> dict:
+    entry = {"value": value.value, "unit": value.unit}
+    if value.label:
+        entry["label"] = value.label
+    return entry
+
+
+def _json_table(table: Table) -> list[dict]:
+    return [{key: cell for (key, _, _), cell in zip(table.columns, row)} for row in table.rows]
+
+
+def document(report: Report) -> dict:
+    """The JSON document of DESIGN.md: taucli, scene, model, method, inputs, results, steps, notes."""
+    doc = {
+        "taucli": __version__,
+        "scene": report.scene,
+        "model": report.model,
+        "method": report.method,
+        "inputs": {name: {"value": v.value, "unit": v.unit} for name, v in report.inputs.items()},
+        "results": {name: _json_value(v) for name, v in report.results.items()},
+        "steps": [
+            {"title": s.title, "equation": s.equation, "numbers": s.numbers, "result": s.result, "why": s.why}
+            for s in report.steps
+        ],
+        "notes": list(report.notes),
+    }
+    for name, table in report.tables.items():
+        doc[name] = _json_table(table)
+    return doc
+
+
+def render(report: Report, output: Output, stream: TextIO) -> None:
+    """Write the report in the format the user asked for."""
+    report = apply_conversions(finite_only(report), output.to)
+    if output.get:
+        for name in output.get:
+            _result(report, name, "--get")
+        stream.write("".join(_bare(report.results[name].value) + "\n" for name in output.get))
+    elif output.json:
+        stream.write(json.dumps(document(report), ensure_ascii=False, allow_nan=False) + "\n")
+    else:
+        render_human(report, stream, show_steps=output.steps)
+    stream.flush()
+
+
+def _bare(value) -> str:
+    if value is None:
+        return "null"
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+def _shown(value, digits: int = 6) -> str:
+    if value is None:
+        return "—"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, (int, float)):
+        return fmt(float(value), digits)
+    return str(value)
+
+
+def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> None:
+    """The rich table of results, then the steps (equation, numbers, result, why) and notes."""
+    from rich import box
+    from rich.console import Console
+    from rich.padding import Padding
+    from rich.table import Table as RichTable
+    from rich.text import Text
+
+    plain = bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
+    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain else "auto")
+    console.print(Text.assemble((f"{report.scene}", "bold"), f": {report.model}"))
+    console.print(Text(f"method: {report.method}", style="dim"))
+
+    results = RichTable(box=box.SIMPLE_HEAD, pad_edge=False)
+    results.add_column("result", style="bold")
+    results.add_column("value", justify="right")
+    results.add_column("unit")
+    results.add_column("what it is", style="dim", overflow="fold")
+    for name, value in report.results.items():
+        results.add_row(Text(name), Text(_shown(value.value)), Text(pretty_unit(value.unit)), Text(value.label))
+    console.print(results)
+
+    for name, table in report.tables.items():
+        shown = RichTable(title=name, box=box.SIMPLE_HEAD, pad_edge=False)
+        for _, unit, heading in table.columns:
+            shown.add_column(f"{heading} ({pretty_unit(unit)})" if unit else heading, justify="right" if unit else "left")
+        for row in table.rows:
+            shown.add_row(*(Text(_shown(cell, 4)) for cell in row))
+        console.print(shown)
+
+    if show_steps and report.steps:
+        console.print(Text("Steps", style="bold underline"))
+        for number, step in enumerate(report.steps, start=1):
+            console.print(Text.assemble((f"{number}. ", "bold"), (step.title, "bold")))
+            indent = " " * 4
+            console.print(Text(indent + step.equation))
+            align = indent + " " * max(step.equation.find("="), 0)
+            if step.numbers:
+                console.print(Text(f"{align}= {step.numbers}"))
+            if step.result and step.result != step.numbers:
+                console.print(Text(f"{align}= {step.result}"))
+            if step.why:
+                console.print(Padding(Text.assemble(("why: ", "italic"), step.why, style="dim"), (0, 0, 0, len(indent))))
+    for note in report.notes:
+        console.print(Text.assemble(("note: ", "yellow"), note))
+
+
+def attach_inputs(report: Report, inputs: Mapping[str, Value], notes: Sequence[str]) -> Report:
+    """The report with the inputs as parsed and the notes from reading them."""
+    return replace(report, inputs=dict(inputs), notes=[*notes, *report.notes])

@@ -1,0 +1,91 @@
+"""Report, Value, Step, Table: the one contract between solvers and renderers.
+
+A solver returns a Report and nothing else. Values are SI; ``unit`` is a string the unit parser
+reads back ("kg*m**2", "N*m", "rad/s"). A result that does not exist is ``None`` with a note.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+Number = float | bool | str | None
+
+
+@dataclass(frozen=True)
+class Value:
+    """One named quantity: its SI value, unit and what it is."""
+
+    value: Number
+    unit: str | None
+    label: str
+
+
+@dataclass(frozen=True)
+class Step:
+    """One step of the worked solution, as the article writes it."""
+
+    title: str
+    equation: str
+    numbers: str = ""  # the equation with the numbers substituted
+    result: str = ""
+    why: str = ""
+
+
+@dataclass(frozen=True)
+class Table:
+    """A small table of rows (the parts of a body, the points of a sweep)."""
+
+    columns: tuple[tuple[str, str | None, str], ...]  # (key, unit, heading)
+    rows: tuple[tuple[Number, ...], ...]
+
+
+@dataclass
+class Report:
+    """What a solver found: the model it used, its results, the steps and the notes."""
+
+    scene: str
+    model: str
+    method: str
+    results: dict[str, Value]
+    steps: list[Step] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    inputs: dict[str, Value] = field(default_factory=dict)
+    tables: dict[str, Table] = field(default_factory=dict)
+
+
+def fmt(x: float, digits: int = 4) -> str:
+    """A number as a person writes it in a worked solution: ``digits`` significant figures."""
+    if x == 0:
+        return "0"
+    if not math.isfinite(x):
+        return str(x)
+    magnitude = math.floor(math.log10(abs(x)))
+    if -4 <= magnitude < 7:
+        decimals = max(0, digits - 1 - magnitude)
+        text = f"{x:.{decimals}f}"
+        if "." in text:
+            text = text.rstrip("0").rstrip(".")
+        return "0" if text in ("-0", "") else text
+    mantissa, exponent = f"{x:.{digits - 1}e}".split("e")
+    if "." in mantissa:
+        mantissa = mantissa.rstrip("0").rstrip(".")
+    return f"{mantissa}e{int(exponent)}"
+
+
+_SUPERSCRIPTS = {"**2": "²", "**3": "³", "**-1": "⁻¹", "**-2": "⁻²", "^2": "²", "^3": "³", "^-1": "⁻¹", "^-2": "⁻²"}
+
+
+def pretty_unit(unit: str | None) -> str:
+    """A unit string as a person reads it: kg*m**2 -> kg·m², rad/s**2 -> rad/s²."""
+    if not unit:
+        return ""
+    for power, superscript in _SUPERSCRIPTS.items():
+        unit = unit.replace(power, superscript)
+    return unit.replace("*", "·")
+
+
+def quantity_text(x: float, unit: str, digits: int = 4) -> str:
+    """A number with its unit, for the numbers line of a step: 0.2 m, 5 kg."""
+    shown = pretty_unit(unit)
+    return f"{fmt(x, digits)} {shown}" if shown else fmt(x, digits)

@@ -1,0 +1,372 @@
+"""Moment of inertia of standard shapes, the parallel-axis shift, and bodies of several parts.
+
+I = sum(m r^2) over the body's mass about the rotation axis. Each shape's closed form is written
+so that it keeps full double precision up to its limits (a thick shell whose inner radius
+approaches the outer one, a tube whose inner radius approaches zero or the outer one).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+
+from taucli.errors import InputError
+from taucli.report import Report, Step, Table, Value, fmt, quantity_text
+
+# Dimension name -> (symbol in equations, placeholder in number templates).
+DIMENSIONS: dict[str, str] = {
+    "radius": "R",
+    "inner_radius": "R1",
+    "outer_radius": "R2",
+    "length": "L",
+    "width": "W",
+    "height": "H",
+    "depth": "D",
+}
+
+
+@dataclass(frozen=True)
+class Axis:
+    """An axis a shape can turn about, with the closed form for I about it."""
+
+    name: str
+    description: str
+    equation: str  # symbolic, as in the article: "I = ½MR²"
+    numbers: str  # the same with placeholders {M}, {R}, ... for the values
+    moment: Callable[..., float]  # moment(mass, **dims) -> I about this axis
+    why: str
+    through_centre: bool = True  # the parallel-axis theorem needs an axis through the centre of mass
+
+
+@dataclass(frozen=True)
+class Shape:
+    """A standard uniform body."""
+
+    name: str
+    title: str
+    dims: tuple[str, ...]  # required
+    axes: tuple[Axis, ...]
+    optional: tuple[str, ...] = ()
+
+    def axis(self, name: str | None) -> Axis:
+        if name is None:
+            return self.axes[0]
+        for axis in self.axes:
+            if axis.name == name:
+                return axis
+        choices = ", ".join(a.name for a in self.axes)
+        raise InputError("--axis", f"expected one of {choices} for a {self.title}", example=f"--axis {self.axes[0].name}", got=repr(name))
+
+
+def _thick_shell(mass: float, inner_radius: float, outer_radius: float) -> float:
+    """I = (2/5) M (R2^5 - R1^5) / (R2^3 - R1^3), in the form free of cancellation.
+
+    With x = R1/R2, (1 - x^5)/(1 - x^3) = (1 + x + x^2 + x^3 + x^4)/(1 + x + x^2): both sums are
+    of positive terms, so the ratio keeps full precision as x -> 1 (the thin shell, 2/3 M R^2)
+    and as x -> 0 (the solid sphere, 2/5 M R^2).
+    """
+    x = inner_radius / outer_radius
+    return 0.4 * mass * outer_radius**2 * (1 + x * (1 + x * (1 + x * (1 + x)))) / (1 + x * (1 + x))
+
+
+_CENTRAL = "its symmetry axis"
+
+SHAPES: dict[str, Shape] = {
+    shape.name: shape
+    for shape in (
+        Shape("point", "point mass", (), (
+            Axis("distance", "an axis at distance R", "I = MR²", "{M} × {R}²",
+                 lambda mass, radius=0.0: mass * radius * radius,
+                 "all of its mass is at one distance R from the axis, so Σmr² has one term"),
+        ), optional=("radius",)),
+        Shape("ring", "thin ring", ("radius",), (
+            Axis("central", _CENTRAL, "I = MR²", "{M} × {R}²", lambda mass, radius: mass * radius * radius,
+                 "every bit of the ring is at the same distance R from the axis"),
+            Axis("diameter", "a diameter", "I = ½MR²", "½ × {M} × {R}²", lambda mass, radius: mass * radius * radius / 2,
+                 "perpendicular axes: I_z = I_x + I_y = MR² and I_x = I_y by symmetry"),
+        )),
+        Shape("disc", "solid disc (cylinder)", ("radius",), (
+            Axis("central", _CENTRAL, "I = ½MR²", "½ × {M} × {R}²", lambda mass, radius, length=0.0: mass * radius * radius / 2,
+                 "a uniform disc: rings of radius r hold mass in proportion to r, ∫r²dm = ½MR²"),
+            Axis("diameter", "a diameter through its centre", "I = M(R²/4 + L²/12)", "{M} × ({R}²/4 + {L}²/12)",
+                 lambda mass, radius, length=0.0: mass * (radius**2 / 4 + length**2 / 12),
+                 "a stack of thin discs (¼MR² each about a diameter) along the length L, shifted by the parallel-axis theorem"),
+        ), optional=("length",)),
+        Shape("tube", "hollow cylinder (tube)", ("inner_radius", "outer_radius"), (
+            Axis("central", _CENTRAL, "I = ½M(R₁² + R₂²)", "½ × {M} × ({R1}² + {R2}²)",
+                 lambda mass, inner_radius, outer_radius, length=0.0: mass * (inner_radius**2 + outer_radius**2) / 2,
+                 "a disc of radius R₂ less a disc of radius R₁ of the same density"),
+            Axis("diameter", "a diameter through its centre", "I = M((R₁² + R₂²)/4 + L²/12)", "{M} × (({R1}² + {R2}²)/4 + {L}²/12)",
+                 lambda mass, inner_radius, outer_radius, length=0.0: mass * ((inner_radius**2 + outer_radius**2) / 4 + length**2 / 12),
+                 "thin annuli (¼M(R₁² + R₂²) each about a diameter) stacked along the length L"),
+        ), optional=("length",)),
+        Shape("sphere", "solid sphere", ("radius",), (
+            Axis("central", "a diameter", "I = ⅖MR²", "⅖ × {M} × {R}²", lambda mass, radius: 0.4 * mass * radius * radius,
+                 "a uniform ball: thin discs stacked along the axis, each ½r²dm"),
+        )),
+        Shape("shell", "thin spherical shell", ("radius",), (
+            Axis("central", "a diameter", "I = ⅔MR²", "⅔ × {M} × {R}²", lambda mass, radius: 2 * mass * radius * radius / 3,
+                 "all the mass at radius R; averaged over the sphere, the squared distance from an axis is ⅔R²"),
+        )),
+        Shape("thick-shell", "thick spherical shell", ("inner_radius", "outer_radius"), (
+            Axis("central", "a diameter", "I = ⅖M(R₂⁵ − R₁⁵)/(R₂³ − R₁³)", "⅖ × {M} × ({R2}⁵ − {R1}⁵)/({R2}³ − {R1}³)", _thick_shell,
+                 "a ball of radius R₂ less a ball of radius R₁; computed as ⅖MR₂²(1+x+x²+x³+x⁴)/(1+x+x²), x = R₁/R₂, "
+                 "which keeps full precision as the shell gets thin"),
+        )),
+        Shape("rod", "thin rod", ("length",), (
+            Axis("center", "a perpendicular axis through its centre", "I = ML²/12", "{M} × {L}²/12", lambda mass, length: mass * length**2 / 12,
+                 "∫x² (M/L) dx from −L/2 to L/2"),
+            Axis("end", "a perpendicular axis through one end", "I = ML²/3", "{M} × {L}²/3", lambda mass, length: mass * length**2 / 3,
+                 "∫x² (M/L) dx from 0 to L", through_centre=False),
+        )),
+        Shape("plate", "rectangular plate", ("width", "height"), (
+            Axis("normal", "the axis normal to it through its centre", "I = M(W² + H²)/12", "{M} × ({W}² + {H}²)/12",
+                 lambda mass, width, height: mass * (width**2 + height**2) / 12,
+                 "perpendicular axes: the two in-plane central moments, MW²/12 and MH²/12, add"),
+            Axis("center-width", "the in-plane axis through its centre parallel to the width", "I = MH²/12", "{M} × {H}²/12",
+                 lambda mass, width, height: mass * height**2 / 12, "strips along the width, each at its distance across the height"),
+            Axis("center-height", "the in-plane axis through its centre parallel to the height", "I = MW²/12", "{M} × {W}²/12",
+                 lambda mass, width, height: mass * width**2 / 12, "strips along the height, each at its distance across the width"),
+            Axis("edge-width", "an edge of length W", "I = MH²/3", "{M} × {H}²/3",
+                 lambda mass, width, height: mass * height**2 / 3, "strips parallel to the edge, at distances 0 to H", through_centre=False),
+            Axis("edge-height", "an edge of length H", "I = MW²/3", "{M} × {W}²/3",
+                 lambda mass, width, height: mass * width**2 / 3, "strips parallel to the edge, at distances 0 to W", through_centre=False),
+        )),
+        Shape("box", "rectangular box", ("width", "height", "depth"), (
+            Axis("height", "the axis through its centre parallel to the height", "I = M(W² + D²)/12", "{M} × ({W}² + {D}²)/12",
+                 lambda mass, width, height, depth: mass * (width**2 + depth**2) / 12, "plates stacked along the axis, each M(W² + D²)/12"),
+            Axis("width", "the axis through its centre parallel to the width", "I = M(H² + D²)/12", "{M} × ({H}² + {D}²)/12",
+                 lambda mass, width, height, depth: mass * (height**2 + depth**2) / 12, "plates stacked along the axis, each M(H² + D²)/12"),
+            Axis("depth", "the axis through its centre parallel to the depth", "I = M(W² + H²)/12", "{M} × ({W}² + {H}²)/12",
+                 lambda mass, width, height, depth: mass * (width**2 + height**2) / 12, "plates stacked along the axis, each M(W² + H²)/12"),
+        )),
+        Shape("cone", "solid cone", ("radius",), (
+            Axis("central", _CENTRAL, "I = (3/10)MR²", "0.3 × {M} × {R}²", lambda mass, radius, height=0.0: 0.3 * mass * radius * radius,
+                 "discs of radius r = Rz/H stacked along the height, each ½r²dm; the height cancels"),
+        ), optional=("height",)),
+    )
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Part:
+    """One part of a body: a shape, its mass and dimensions, its axis and its parallel shift.
+
+    ``source`` names where the part came from in messages ("" for the main options, else
+    "--part 2").
+    """
+
+    shape: str
+    mass: float
+    dims: Mapping[str, float] = field(default_factory=dict)
+    axis: str | None = None
+    offset: float | None = None
+    source: str = ""
+
+    def option(self, name: str) -> str:
+        flag = name.replace("_", "-")
+        return f"{self.source} {flag}=" if self.source else f"--{flag}"
+
+    def example(self, name: str, value: str) -> str:
+        flag = name.replace("_", "-")
+        return f'--part "{self.shape} mass=1kg {flag}={value}"' if self.source else f"--{flag} {value}"
+
+
+@dataclass(frozen=True)
+class PartInertia:
+    """A part's moment of inertia about its own centre and about the rotation axis."""
+
+    part: Part
+    shape: Shape
+    axis: Axis
+    inertia_centre: float | None  # None where the axis is not through the centre of mass
+    inertia: float
+    steps: tuple[Step, ...]
+
+
+@dataclass(frozen=True)
+class BodyInertia:
+    """The moment of inertia of a whole body about the rotation axis, with its worked steps."""
+
+    inertia: float
+    mass: float
+    parts: tuple[PartInertia, ...]
+    steps: tuple[Step, ...]
+    description: str
+
+
+def lookup_shape(name: str, option: str = "SHAPE") -> Shape:
+    """The shape of that name, or a usage error listing the shapes."""
+    try:
+        return SHAPES[name]
+    except KeyError:
+        import difflib
+
+        close = difflib.get_close_matches(name, list(SHAPES), n=1)
+        raise InputError(
+            option,
+            f"expected a shape: {', '.join(SHAPES)}",
+            example="disc",
+            got=repr(name),
+            hint=f"did you mean {close[0]!r}?" if close else None,
+        ) from None
+
+
+def _fill(template: str, mass: float, dims: Mapping[str, float]) -> str:
+    values = {"M": quantity_text(mass, "kg")}
+    for dim, symbol in DIMENSIONS.items():
+        values[symbol] = f"({quantity_text(dims.get(dim, 0.0), 'm')})"  # an optional dimension left out is 0
+    return template.format(**values)
+
+
+def part_inertia(part: Part) -> PartInertia:
+    """I of one part about the rotation axis: its shape's closed form, then any parallel shift."""
+    shape = lookup_shape(part.shape, f"{part.source} shape".strip() if part.source else "SHAPE")
+    axis = shape.axis(part.axis)
+    dims = dict(part.dims)
+    for dim in shape.dims:
+        if dim not in dims:
+            needs = ", ".join(Part("", 0, source=part.source).option(d) for d in ("mass", *shape.dims))
+            raise InputError(part.option(dim), f"is needed for a {shape.title} (it takes {needs})", example=part.example(dim, "0.2m"))
+    for dim in dims:
+        if dim not in shape.dims and dim not in shape.optional:
+            takes = ", ".join(part.option(d) for d in (*shape.dims, *shape.optional))
+            raise InputError(part.option(dim), f"does not apply to a {shape.title} (it takes {takes or 'only the mass'})")
+    if "inner_radius" in dims and dims["inner_radius"] > dims["outer_radius"]:
+        raise InputError(
+            part.option("inner_radius"),
+            "expected at most the outer radius",
+            got=f"{fmt(dims['inner_radius'])} m > {fmt(dims['outer_radius'])} m",
+        )
+    if shape.name == "point":
+        return _point_inertia(part, shape, axis, dims)
+
+    mass = part.mass
+    inertia_centre = axis.moment(mass, **dims)
+    shifted = part.offset is not None
+    if shifted and not axis.through_centre:
+        raise InputError(
+            part.option("offset"),
+            f"needs an axis through the centre of mass, and {axis.description} is not one",
+            hint=f"use --axis {shape.axes[0].name} with the offset",
+        )
+    symbol = "I_cm" if shifted else "I"
+    steps = [
+        Step(
+            f"Moment of inertia of a {shape.title} about {axis.description}",
+            axis.equation.replace("I =", f"{symbol} =", 1),
+            _fill(axis.numbers, mass, dims),
+            quantity_text(inertia_centre, "kg*m**2"),
+            axis.why,
+        )
+    ]
+    inertia = inertia_centre
+    if shifted:
+        offset = part.offset
+        inertia = inertia_centre + mass * offset**2
+        steps.append(
+            Step(
+                "Shift to the rotation axis (parallel-axis theorem)",
+                "I = I_cm + Md²",
+                f"{quantity_text(inertia_centre, 'kg*m**2')} + {quantity_text(mass, 'kg')} × ({quantity_text(offset, 'm')})²",
+                quantity_text(inertia, "kg*m**2"),
+                "the rotation axis is parallel to one through the centre of mass at distance d; "
+                "the cross term ∫2x·d dm vanishes because the centre of mass is on the first axis",
+            )
+        )
+    return PartInertia(part, shape, axis, inertia_centre, inertia, tuple(steps))
+
+
+def _point_inertia(part: Part, shape: Shape, axis: Axis, dims: Mapping[str, float]) -> PartInertia:
+    if "radius" in dims and part.offset is not None:
+        raise InputError(part.option("offset"), "conflicts with the radius: a point's distance from the axis is one of them, not both")
+    distance = dims.get("radius", part.offset)
+    if distance is None:
+        raise InputError(part.option("radius"), "is needed for a point mass: its distance from the axis", example=part.example("radius", "0.2m"))
+    inertia = axis.moment(part.mass, radius=distance)
+    step = Step(
+        "Moment of inertia of a point mass",
+        axis.equation,
+        _fill(axis.numbers, part.mass, {"radius": distance}),
+        quantity_text(inertia, "kg*m**2"),
+        axis.why,
+    )
+    return PartInertia(part, shape, axis, 0.0, inertia, (step,))
+
+
+def describe_part(result: PartInertia) -> str:
+    if result.shape.name == "point":
+        distance = result.part.dims.get("radius", result.part.offset)
+        return f"point mass {fmt(distance)} m from the axis"
+    text = f"{result.shape.title} about {result.axis.description}"
+    if result.shape.name != "point" and result.part.offset is not None:
+        text += f", shifted {fmt(result.part.offset)} m (parallel-axis theorem)"
+    return text
+
+
+def body_inertia(parts: Sequence[Part]) -> BodyInertia:
+    """I of a body of one or more parts about one axis: I = Σ I_i (moments about one axis add)."""
+    results = tuple(part_inertia(part) for part in parts)
+    mass = math.fsum(r.part.mass for r in results)
+    inertia = math.fsum(r.inertia for r in results)
+    if len(results) == 1:
+        return BodyInertia(inertia, mass, results, results[0].steps, describe_part(results[0]))
+    steps: list[Step] = []
+    for number, result in enumerate(results, start=1):
+        steps.extend(Step(f"Part {number}: {s.title[0].lower()}{s.title[1:]}", s.equation, s.numbers, s.result, s.why) for s in result.steps)
+    terms = " + ".join(f"I{_subscript(n)}" for n in range(1, len(results) + 1))
+    steps.append(
+        Step(
+            "Add the parts",
+            f"I = {terms}",
+            " + ".join(quantity_text(r.inertia, "kg*m**2") for r in results),
+            quantity_text(inertia, "kg*m**2"),
+            "each part's Σmr² is taken about the same axis, so the sums add",
+        )
+    )
+    description = f"body of {len(results)} parts: " + "; ".join(describe_part(r) for r in results)
+    return BodyInertia(inertia, mass, results, tuple(steps), description)
+
+
+def _subscript(n: int) -> str:
+    return str(n).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+
+
+def solve(parts: Sequence[Part]) -> Report:
+    """The inertia scene: I about the axis, the radius of gyration k = √(I/M), I_cm when shifted."""
+    body = body_inertia(parts)
+    gyration = math.sqrt(body.inertia / body.mass)
+    results = {"I": Value(body.inertia, "kg*m**2", "moment of inertia about the rotation axis")}
+    results["k"] = Value(gyration, "m", "radius of gyration, √(I/M)")
+    single = body.parts[0] if len(body.parts) == 1 else None
+    if single is not None and single.shape.name != "point" and single.part.offset is not None:
+        results["I_cm"] = Value(single.inertia_centre, "kg*m**2", "moment of inertia about the parallel axis through the centre of mass")
+    if single is None:
+        results["mass"] = Value(body.mass, "kg", "total mass")
+    steps = list(body.steps)
+    steps.append(
+        Step(
+            "Radius of gyration",
+            "k = √(I/M)",
+            f"√({quantity_text(body.inertia, 'kg*m**2')} / {quantity_text(body.mass, 'kg')})",
+            quantity_text(gyration, "m"),
+            "the distance from the axis at which the whole mass, gathered in a ring, would have the same I",
+        )
+    )
+    tables = {}
+    if single is None:
+        rows = tuple(
+            (r.shape.name, r.part.mass, r.inertia_centre, r.part.offset or 0.0, r.inertia, 100 * r.inertia / body.inertia)
+            for r in body.parts
+        )
+        columns = (
+            ("shape", None, "part"),
+            ("mass", "kg", "mass"),
+            ("I_cm", "kg*m**2", "I_cm"),
+            ("offset", "m", "offset"),
+            ("I", "kg*m**2", "I"),
+            ("share", "%", "share of I"),
+        )
+        tables["parts"] = Table(columns, rows)
+    return Report("inertia", body.description, "closed form", results, steps, [], {}, tables)

@@ -1,0 +1,239 @@
+"""Quantities from text: the one pint registry, and ``parse`` that turns "4 kg" into an SI float.
+
+The registry is built on first use only (``--help`` and completion never build it) and pint's
+definition cache is kept between runs. Text is screened before pint sees it: pint evaluates
+``**`` with Python integers, so ``9**9**9 kg`` would run for hours if it got that far.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+
+from taucli.errors import InputError
+
+TWO_PI = 2.0 * math.pi
+
+
+@dataclass(frozen=True)
+class Kind:
+    """A physical kind of quantity an option takes."""
+
+    name: str  # "moment of inertia"
+    si_unit: str  # the unit a bare number means; pint reads it back
+    example: str  # shown in messages
+    common_units: tuple[str, ...] = ()  # offered for "did you mean" and completion
+
+
+KINDS: dict[str, Kind] = {
+    kind.name: kind
+    for kind in (
+        Kind("mass", "kg", "4 kg", ("kg", "g", "lb", "oz", "tonne")),
+        Kind("length", "m", "0.2 m", ("m", "cm", "mm", "km", "in", "ft")),
+        Kind("angle", "rad", "30 deg", ("deg", "rad", "rev")),
+        Kind("time", "s", "4 s", ("s", "ms", "min", "h")),
+        Kind("angular velocity", "rad/s", "300 rpm", ("rad/s", "rpm", "rev/s", "deg/s", "Hz")),
+        Kind("angular acceleration", "rad/s**2", "6 rad/s^2", ("rad/s^2", "rpm/s", "rev/s^2")),
+        Kind("torque", "N*m", "0.3 N*m", ("N*m", "mN*m", "kN*m", "lbf*ft", "lbf*in")),
+        Kind("moment of inertia", "kg*m**2", "0.1 kg*m^2", ("kg*m^2", "g*cm^2", "lb*ft^2")),
+        Kind("force", "N", "6 N", ("N", "kN", "lbf")),
+        Kind("acceleration", "m/s**2", "9.81 m/s^2", ("m/s^2", "ft/s^2", "g0")),
+        Kind("velocity", "m/s", "2 m/s", ("m/s", "km/h", "ft/s", "mph")),
+        Kind("viscous coefficient", "N*m*s", "0.01 N*m*s", ("N*m*s", "N*m/(rad/s)")),
+        Kind("drag coefficient", "N*m*s**2", "0.001 N*m*s^2", ("N*m*s^2",)),
+        Kind("dimensionless", "", "0.5", ()),
+    )
+}
+
+# Names for dimensionalities that show up in "got ..." messages, keyed by exponents.
+_DIMENSION_NAMES = {
+    frozenset(dims.items()): name
+    for dims, name in (
+        ({"[mass]": 1}, "a mass"),
+        ({"[length]": 1}, "a length"),
+        ({"[time]": 1}, "a time"),
+        ({}, "a plain number or angle"),
+        ({"[time]": -1}, "an angular velocity or frequency"),
+        ({"[time]": -2}, "an angular acceleration"),
+        ({"[length]": 1, "[time]": -1}, "a velocity"),
+        ({"[length]": 1, "[time]": -2}, "an acceleration"),
+        ({"[mass]": 1, "[length]": 1, "[time]": -2}, "a force"),
+        ({"[mass]": 1, "[length]": 2, "[time]": -2}, "a torque or energy"),
+        ({"[mass]": 1, "[length]": 2}, "a moment of inertia"),
+        ({"[mass]": 1, "[length]": 2, "[time]": -1}, "a viscous coefficient or angular momentum"),
+    )
+}
+
+MAX_TEXT_LENGTH = 80
+MAX_DIGITS = 25  # digits in one numeric literal
+MAX_EXPONENT = 12  # |n| in x**n
+MAX_POWERS = 6
+MAX_PAREN_DEPTH = 4
+
+_ALLOWED = re.compile(r"[A-Za-z0-9_ .+\-*/^()µμΩ]*")
+_POWER = re.compile(r"(\*\*|\^)\s*(\(?\s*[-+]?\s*\d+(?:\.\d+)?\s*\)?)?")
+_DIGIT_RUN = re.compile(r"\d+")
+_NORMALISE = [
+    ("\u00a0", " "), ("\u202f", " "), ("·", "*"), ("⋅", "*"), ("×", "*"), ("∙", "*"),
+    ("−", "-"), ("–", "-"), ("²", "**2"), ("³", "**3"), ("⁻¹", "**-1"), ("⁻²", "**-2"),
+    ("°", " deg"), ("÷", "/"),
+]  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Parsed:
+    """A quantity read from the command line: its SI value, and a note if a reading needs one."""
+
+    value: float
+    note: str | None = None
+
+
+@lru_cache(maxsize=1)
+def registry():
+    """The one pint registry, built on first use, its definitions cached on disk between runs."""
+    import pint
+
+    try:
+        ureg = pint.UnitRegistry(cache_folder=":auto:")
+    except Exception:  # an unreadable, unwritable or corrupt cache must not cost the answer
+        ureg = pint.UnitRegistry()
+    ureg.define("rev = revolution")
+    ureg.define("rps = revolution / second")
+    return ureg
+
+
+def _screen(text: str, option: str, kind: Kind) -> str:
+    """Normalise typography and refuse text that is unreadable or would be slow to evaluate."""
+    cleaned = text.strip()
+    for old, new in _NORMALISE:
+        cleaned = cleaned.replace(old, new)
+    example = kind.example
+
+    def refuse(why: str) -> InputError:
+        return InputError(option, f"expected {_article(kind.name)}", example=example, got=f"{text!r}: {why}")
+
+    if not cleaned:
+        raise refuse("an empty value")
+    if len(cleaned) > MAX_TEXT_LENGTH:
+        raise refuse(f"longer than {MAX_TEXT_LENGTH} characters")
+    if "," in cleaned:
+        raise refuse("a comma (write decimals with a point: 4.5 kg)")
+    if not _ALLOWED.fullmatch(cleaned):
+        bad = next(ch for ch in cleaned if not _ALLOWED.fullmatch(ch))
+        raise refuse(f"the character {bad!r} is not part of a quantity")
+    if any(len(run) > MAX_DIGITS for run in _DIGIT_RUN.findall(cleaned)):
+        raise refuse(f"a number longer than {MAX_DIGITS} digits")
+    depth = 0
+    for ch in cleaned:
+        depth += (ch == "(") - (ch == ")")
+        if depth > MAX_PAREN_DEPTH:
+            raise refuse("parentheses nested too deeply")
+    powers = list(_POWER.finditer(cleaned))
+    if len(powers) > MAX_POWERS:
+        raise refuse("too many powers")
+    for power in powers:
+        exponent = power.group(2)
+        if exponent is None:
+            raise refuse("a power must be a plain number, as in m^2")
+        if abs(float(exponent.strip("() ").replace(" ", ""))) > MAX_EXPONENT:
+            raise refuse(f"a power larger than {MAX_EXPONENT}")
+        if re.match(r"\s*(\*\*|\^)", cleaned[power.end() :]):
+            raise refuse("a power of a power")
+    return cleaned
+
+
+def _article(name: str) -> str:
+    return ("an " if name[0] in "aeiou" else "a ") + name
+
+
+def _describe(dimensionality) -> str:
+    return _DIMENSION_NAMES.get(frozenset(dict(dimensionality).items()), str(dimensionality))
+
+
+def quantity(text: str, option: str, kind_name: str):
+    """Read text as a pint Quantity of the given kind (bare numbers take the kind's SI unit)."""
+    import pint
+
+    kind = KINDS[kind_name]
+    cleaned = _screen(text, option, kind)
+    ureg = registry()
+    try:
+        q = ureg.Quantity(cleaned)
+    except pint.UndefinedUnitError as err:
+        name = str(getattr(err, "unit_names", [""])[0] if getattr(err, "unit_names", None) else err)
+        close = difflib.get_close_matches(name, list(kind.common_units), n=1, cutoff=0.5)
+        hint = f"did you mean {close[0]!r}?" if close else None
+        raise InputError(
+            option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}: unknown unit {name!r}", hint=hint
+        ) from None
+    except (OverflowError, ZeroDivisionError):
+        raise InputError(option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}: out of range") from None
+    except Exception:  # pint's tokenizer and evaluator raise many kinds; none may escape as a traceback
+        raise InputError(
+            option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}, which is not a quantity"
+        ) from None
+    if not isinstance(q, ureg.Quantity):  # a bare unit name such as "kg"
+        q = ureg.Quantity(1, q)
+    if q.unitless and kind.si_unit:
+        q = ureg.Quantity(q.magnitude, kind.si_unit)
+    return q, kind
+
+
+def parse(text: str, option: str, kind_name: str, *, sign: str = "positive") -> Parsed:
+    """Read ``text`` as a quantity of ``kind_name`` and return its SI value.
+
+    ``sign`` is "positive" (> 0), "nonnegative" (>= 0) or "any". A bare number means the kind's
+    SI unit. ``Hz`` for an angular velocity or acceleration means revolutions per second
+    (omega = 2 pi f), with a note that says so.
+    """
+    import pint
+
+    q, kind = quantity(text, option, kind_name)
+    note = None
+    hertz_power = dict(q.unit_items()).get("hertz", 0)
+    try:
+        value = float(q.to(kind.si_unit).magnitude) if kind.si_unit else float(q.to("").magnitude)
+    except pint.DimensionalityError:
+        raise InputError(
+            option,
+            f"expected {_article(kind.name)}",
+            example=kind.example,
+            got=f"{text!r}, which is {_describe(q.dimensionality)}",
+        ) from None
+    except (OverflowError, TypeError, ValueError):
+        raise InputError(option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}: out of range") from None
+    if hertz_power and kind.name in ("angular velocity", "angular acceleration"):
+        value *= TWO_PI**hertz_power
+        note = f"{option} {text.strip()}: Hz read as revolutions per second (omega = 2*pi*f)"
+    if not math.isfinite(value):
+        raise InputError(option, f"expected a finite {kind.name}", example=kind.example, got=repr(text))
+    if sign == "positive" and value <= 0:
+        raise InputError(option, f"expected a positive {kind.name}", example=kind.example, got=repr(text))
+    if sign == "nonnegative" and value < 0:
+        raise InputError(option, f"expected a {kind.name} of zero or more", example=kind.example, got=repr(text))
+    return Parsed(value, note)
+
+
+def convert(value: float, si_unit: str, target: str, option: str) -> float:
+    """Express an SI value in the unit ``target`` (``--to``), with Hz read as rev/s."""
+    import pint
+
+    ureg = registry()
+    kind = next((k for k in KINDS.values() if k.si_unit == si_unit), Kind("quantity", si_unit, si_unit))
+    cleaned = _screen(target, option, kind)
+    try:
+        unit = ureg.Unit(cleaned)
+        converted = float(ureg.Quantity(value, si_unit).to(unit).magnitude)
+    except pint.DimensionalityError:
+        raise InputError(
+            option, f"expected a unit of {_article(kind.name)}", example=kind.common_units[0] if kind.common_units else si_unit, got=repr(target)
+        ) from None
+    except Exception:
+        raise InputError(option, "expected a unit", example=kind.common_units[0] if kind.common_units else si_unit, got=repr(target)) from None
+    hertz_power = dict(unit._units).get("hertz", 0)
+    if hertz_power and kind.name in ("angular velocity", "angular acceleration"):
+        converted /= TWO_PI**hertz_power
+    return converted

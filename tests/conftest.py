@@ -1,0 +1,58 @@
+"""Shared helpers: run taucli through its real entry point, as a user's shell does."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from dataclasses import dataclass
+
+import pytest
+
+
+@dataclass
+class Run:
+    code: int
+    out: str
+    err: str
+
+    def json(self) -> dict:
+        return json.loads(self.out, parse_constant=_reject_constant)
+
+
+def _reject_constant(name: str):
+    raise ValueError(f"non-strict JSON constant {name}")
+
+
+def run_taucli(*args: str, env: dict[str, str] | None = None, stdin: str | None = None, timeout: float = 30) -> Run:
+    """Run `python -m taucli ARGS` in a subprocess with no terminal, and capture what it prints."""
+    full_env = {**os.environ, "PYTHONIOENCODING": "utf-8", **(env or {})}
+    full_env.pop("TAUCLI_DEBUG", None)
+    done = subprocess.run(
+        [sys.executable, "-m", "taucli", *args],
+        input=stdin,
+        capture_output=True,
+        text=True,
+        encoding="utf-8",
+        env=full_env,
+        timeout=timeout,
+    )
+    return Run(done.returncode, done.stdout, done.stderr)
+
+
+@pytest.fixture
+def taucli():
+    return run_taucli
+
+
+def assert_usage_error(result: Run, *fragments: str) -> None:
+    """Exit 2, nothing on stdout, one line on stderr naming what is wrong, no traceback."""
+    assert result.code == 2, (result.code, result.out, result.err)
+    assert result.out == ""
+    lines = result.err.strip().splitlines()
+    assert len(lines) == 1, result.err
+    assert lines[0].startswith("taucli: error: "), lines[0]
+    assert "Traceback" not in result.err
+    for fragment in fragments:
+        assert fragment in lines[0], (fragment, lines[0])

@@ -1,0 +1,56 @@
+"""The layering rules: solvers are pure, --help builds no unit registry."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+from taucli.report import Report, Value, fmt, pretty_unit
+from taucli.render import document, finite_only
+
+HEAVY = ("typer", "rich", "pint")
+
+
+def _modules_after(code: str) -> set[str]:
+    done = subprocess.run(
+        [sys.executable, "-c", code + "\nimport sys\nprint(' '.join(sys.modules))"], capture_output=True, text=True, check=True
+    )
+    return set(done.stdout.split()[-1:] and done.stdout.splitlines()[-1].split())
+
+
+def test_solvers_import_no_typer_rich_or_pint():
+    loaded = _modules_after("import taucli.scenes.inertia")
+    assert not {name for name in loaded if name.split(".")[0] in HEAVY}
+
+
+def test_help_builds_no_unit_registry_and_imports_no_pint():
+    loaded = _modules_after(
+        "import io, contextlib\nfrom taucli.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n    main(['inertia', '--help'])"
+    )
+    assert "pint" not in loaded
+
+
+@pytest.mark.parametrize(
+    "x,text",
+    [(0.1, "0.1"), (7.639437268, "7.639"), (24.0, "24"), (19.6, "19.6"), (10000.0, "10000"), (1.5e-5, "1.5e-5"), (-3.0, "-3"), (0.0, "0"), (2.5e9, "2.5e9"), (9.99996, "10")],
+)
+def test_numbers_read_as_in_a_worked_solution(x, text):
+    assert fmt(x) == text
+
+
+def test_units_read_as_a_person_writes_them():
+    assert pretty_unit("kg*m**2") == "kg·m²"
+    assert pretty_unit("rad/s**2") == "rad/s²"
+    assert pretty_unit("N*m*s") == "N·m·s"
+    assert pretty_unit(None) == ""
+
+
+def test_a_result_that_does_not_exist_is_null_with_a_note():
+    report = Report("spin-down", "m", "closed form", {"t_stop": Value(float("inf"), "s", "time to stop")})
+    cleaned = finite_only(report)
+    assert cleaned.results["t_stop"].value is None
+    assert any("t_stop" in note for note in cleaned.notes)
+    assert document(cleaned)["results"]["t_stop"]["value"] is None
