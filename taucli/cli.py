@@ -6,6 +6,7 @@ No physics here. Solvers, units and renderers are imported inside the commands, 
 
 from __future__ import annotations
 
+import math
 import os
 import sys
 from typing import Annotated, Optional
@@ -156,6 +157,118 @@ def inertia(
     parts = [read_shape(inputs, shape, mass, axis, offset, **dims)]
     parts += [parse_part_spec(spec, number, inputs) for number, spec in enumerate(part or [], start=2)]
     emit(scene.solve(parts), inputs, json_, get, to, no_steps)
+
+
+InertiaOption = Annotated[
+    Optional[str],
+    typer.Option("--inertia", metavar="I", help="Moment of inertia about the axle, e.g. 0.1kg*m^2 (or give --shape).", rich_help_panel=_BODY),
+]
+ShapeOption = Annotated[
+    Optional[str],
+    typer.Option("--shape", metavar="SHAPE", help=f"The body's shape, with --mass and its dimensions: {', '.join(SHAPES)}.", rich_help_panel=_BODY),
+]
+_MOTION = "Motion and method"
+MethodOption = Annotated[
+    str, typer.Option("--method", metavar="METHOD", help="auto | exact | euler | rk4 | rk45.", rich_help_panel=_MOTION)
+]
+DtOption = Annotated[Optional[str], typer.Option("--dt", metavar="TIME", help="Fixed step for euler and rk4 (default 1 ms).", rich_help_panel=_MOTION)]
+RtolOption = Annotated[Optional[str], typer.Option("--rtol", metavar="NUMBER", help="Relative tolerance for rk45 (default 1e-10).", rich_help_panel=_MOTION)]
+
+
+def read_body(inputs: Inputs, inertia: str | None, shape: str | None, mass: str | None, axis: str | None, offset: str | None, **dims: str | None):
+    """The moment of inertia from --inertia or from --shape and its options: (I, steps)."""
+    from taucli.scenes.inertia import body_inertia
+
+    given = [name for name, text in (("--mass", mass), ("--axis", axis), ("--offset", offset), *((f"--{k.replace('_', '-')}", v) for k, v in dims.items())) if text is not None]
+    if inertia is not None:
+        if shape is not None:
+            raise InputError("--inertia", "conflicts with --shape: give one of them")
+        if given:
+            raise InputError(given[0], "goes with --shape; with --inertia it is not used")
+        return inputs.required("--inertia", inertia, "moment of inertia"), ()
+    if shape is None:
+        raise InputError("--inertia", "or --shape is required", example="--inertia 0.1kg*m^2, or --shape disc --mass 5kg --radius 0.2m")
+    body = body_inertia([read_shape(inputs, shape, mass, axis, offset, **dims)])
+    return body.inertia, body.steps
+
+
+@app.command("spin-down")
+def spin_down(
+    inertia: InertiaOption = None,
+    shape: ShapeOption = None,
+    mass: MassOption = None,
+    radius: RadiusOption = None,
+    inner_radius: InnerRadiusOption = None,
+    outer_radius: OuterRadiusOption = None,
+    length: LengthOption = None,
+    width: WidthOption = None,
+    height: HeightOption = None,
+    depth: DepthOption = None,
+    axis: AxisOption = None,
+    offset: OffsetOption = None,
+    omega0: Annotated[Optional[str], typer.Option("--omega0", metavar="OMEGA", help="Initial angular velocity (default 0), e.g. 300rpm.", rich_help_panel=_MOTION)] = None,
+    torque: Annotated[Optional[str], typer.Option("--torque", metavar="TORQUE", help="Driving torque along +ω (negative: against it), e.g. 1.5N*m.")] = None,
+    force: Annotated[Optional[str], typer.Option("--force", metavar="FORCE", help="A push at --lever that makes the driving torque, e.g. 6N.")] = None,
+    lever: Annotated[Optional[str], typer.Option("--lever", metavar="LENGTH", help="Distance of the push from the axle, e.g. 0.25m.")] = None,
+    push_angle: Annotated[Optional[str], typer.Option("--push-angle", metavar="ANGLE", help="Angle between lever arm and force (default 90deg).")] = None,
+    friction: Annotated[Optional[str], typer.Option("--friction", metavar="TORQUE", help="Constant friction torque at the axle (also holds it at rest), e.g. 0.3N*m.")] = None,
+    viscous: Annotated[Optional[str], typer.Option("--viscous", metavar="B", help="Viscous coefficient b (torque bω), e.g. 0.01N*m*s.")] = None,
+    drag: Annotated[Optional[str], typer.Option("--drag", metavar="K", help="Drag coefficient k (torque kωⁿ), e.g. 0.001N*m*s^2.")] = None,
+    drag_exponent: Annotated[Optional[str], typer.Option("--drag-exponent", metavar="N", help="Exponent n of the drag torque kωⁿ, 1 to 10 (default 2).")] = None,
+    time: Annotated[Optional[str], typer.Option("--time", metavar="TIME", help="Report ω, θ and revolutions at this time, e.g. 4s.", rich_help_panel=_MOTION)] = None,
+    until_omega: Annotated[Optional[str], typer.Option("--until-omega", metavar="OMEGA", help="Report the time and angle to reach this speed.", rich_help_panel=_MOTION)] = None,
+    method: MethodOption = "auto",
+    dt: DtOption = None,
+    rtol: RtolOption = None,
+    json_: JsonFlag = False,
+    get: GetOption = None,
+    to: ToOption = None,
+    no_steps: NoStepsFlag = False,
+) -> None:
+    """A wheel on a fixed axle, slowing or spun up: I dω/dt = τ_drive − τ_f − bω − kω².
+
+    Results: I, alpha0, t_stop, theta_stop, revs_stop, omega_inf; with --time: omega, theta, revs;
+    with --until-omega: t_until, theta_until.
+
+    Example: taucli spin-down --shape disc --mass 5kg --radius 0.2m --omega0 30rad/s --friction 0.3N*m
+    """
+    from taucli.scenes import spin
+
+    inputs = Inputs()
+    dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
+    moment, body_steps = read_body(inputs, inertia, shape, mass, axis, offset, **dims)
+    push = None
+    if force is not None or lever is not None or push_angle is not None:
+        if torque is not None:
+            raise InputError("--torque", "conflicts with --force and --lever: give the torque, or the push that makes it")
+        push_force = inputs.required("--force", force, "force", sign="any", why=" with --lever")
+        push_lever = inputs.required("--lever", lever, "length", why=" with --force")
+        angle = inputs.quantity("--push-angle", push_angle, "angle", sign="any")
+        push = spin.Push(push_force, push_lever, math.pi / 2 if angle is None else angle)
+        drive = push_force * push_lever * math.sin(push.angle)
+    else:
+        drive = inputs.quantity("--torque", torque, "torque", sign="any") or 0.0
+    exponent = inputs.quantity("--drag-exponent", drag_exponent, "dimensionless", sign="positive")
+    torques = spin.Torques(
+        drive,
+        inputs.quantity("--friction", friction, "torque", sign="nonnegative") or 0.0,
+        inputs.quantity("--viscous", viscous, "viscous coefficient", sign="nonnegative") or 0.0,
+        inputs.quantity("--drag", drag, "drag coefficient", sign="nonnegative") or 0.0,
+        2.0 if exponent is None else exponent,
+    )
+    report = spin.solve(
+        moment,
+        torques,
+        inputs.quantity("--omega0", omega0, "angular velocity", sign="any") or 0.0,
+        time=inputs.quantity("--time", time, "time", sign="nonnegative"),
+        until_omega=inputs.quantity("--until-omega", until_omega, "angular velocity", sign="any"),
+        method=method,
+        dt=inputs.quantity("--dt", dt, "time"),
+        rtol=inputs.quantity("--rtol", rtol, "dimensionless"),
+        push=push,
+        inertia_steps=body_steps,
+    )
+    emit(report, inputs, json_, get, to, no_steps)
 
 
 def _is_usage_error(err: Exception) -> bool:

@@ -1,0 +1,180 @@
+"""Time steppers with event location, for motion that has no closed form (or when asked for).
+
+The state is (ω, θ) with dω/dt = f(ω), dθ/dt = ω. Every method locates events (the wheel
+reaching ω = 0, or a requested speed) by re-stepping from the start of the step that crosses
+it, with the step size found by the Illinois method, so a stop is never stepped over and
+Coulomb friction never chatters. Fixed-step methods report when their step leaves the stable
+region of the linearised equation (|h λ| above the method's limit on the negative real axis).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from taucli.errors import InputError
+
+Rate = Callable[[float], float]
+
+
+@dataclass(frozen=True)
+class Tableau:
+    """An explicit Runge-Kutta method: stage matrix, weights, and embedded weights if adaptive."""
+
+    name: str
+    stages: tuple[tuple[float, ...], ...]
+    weights: tuple[float, ...]
+    embedded: tuple[float, ...] | None = None
+    order: int = 1
+    stability_limit: float = math.inf  # where the real stability interval ends, |h λ|
+
+
+EULER = Tableau("euler", ((),), (1.0,), order=1, stability_limit=2.0)
+RK4 = Tableau("rk4", ((), (0.5,), (0.0, 0.5), (0.0, 0.0, 1.0)), (1 / 6, 1 / 3, 1 / 3, 1 / 6), order=4, stability_limit=2.785293563405282)
+RK45 = Tableau(  # Dormand-Prince 5(4)
+    "rk45",
+    (
+        (),
+        (1 / 5,),
+        (3 / 40, 9 / 40),
+        (44 / 45, -56 / 15, 32 / 9),
+        (19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729),
+        (9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656),
+        (35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84),
+    ),
+    (35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84, 0.0),
+    (5179 / 57600, 0.0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 1 / 40),
+    order=5,
+    stability_limit=3.3066,
+)
+METHODS: dict[str, Tableau] = {t.name: t for t in (EULER, RK4, RK45)}
+MAX_STEPS = 2_000_000
+
+
+@dataclass(frozen=True)
+class Solution:
+    """Where a run ended: the time, speed and angle, whether an event ended it, and its cost."""
+
+    t: float
+    omega: float
+    theta: float
+    event: bool
+    steps: int
+    unstable: bool  # a fixed step left the method's stable region
+    worst_rate: float  # the largest |h λ| met
+
+
+def _step(tableau: Tableau, f: Rate, omega: float, h: float) -> tuple[float, float, float]:
+    """One step: (Δω, Δθ, error estimate of the larger of the two, or 0 without an embedded pair)."""
+    slopes: list[float] = []
+    speeds: list[float] = []
+    for row in tableau.stages:
+        speed = omega + h * math.fsum(a * k for a, k in zip(row, slopes))
+        speeds.append(speed)
+        slopes.append(f(speed))
+    d_omega = h * math.fsum(b * k for b, k in zip(tableau.weights, slopes))
+    d_theta = h * math.fsum(b * w for b, w in zip(tableau.weights, speeds))
+    error = 0.0
+    if tableau.embedded is not None:
+        error_omega = h * math.fsum((b - e) * k for b, e, k in zip(tableau.weights, tableau.embedded, slopes))
+        error_theta = h * math.fsum((b - e) * w for b, e, w in zip(tableau.weights, tableau.embedded, speeds))
+        error = max(abs(error_omega), abs(error_theta))
+    return d_omega, d_theta, error
+
+
+def _locate(tableau: Tableau, f: Rate, omega: float, h: float, target: float) -> tuple[float, float, float]:
+    """The step size h* in (0, h] at which the step from ω lands on ω = target (Illinois method)."""
+    low, high = 0.0, h
+    f_low, f_high = omega - target, omega + _step(tableau, f, omega, h)[0] - target
+    if f_high == 0:
+        return h, target, _step(tableau, f, omega, h)[1]
+    side = 0
+    for _ in range(200):
+        mid = (low * f_high - high * f_low) / (f_high - f_low)
+        if not low < mid < high:
+            mid = (low + high) / 2
+        f_mid = omega + _step(tableau, f, omega, mid)[0] - target
+        if f_mid == 0 or high - low <= 4e-16 * high:
+            low = high = mid
+            break
+        if (f_mid > 0) == (f_low > 0):
+            low, f_low = mid, f_mid
+            if side == -1:
+                f_high /= 2
+            side = -1
+        else:
+            high, f_high = mid, f_mid
+            if side == 1:
+                f_low /= 2
+            side = 1
+    return high, target, _step(tableau, f, omega, high)[1]
+
+
+def integrate(
+    f: Rate,
+    omega0: float,
+    t_end: float,
+    method: str,
+    *,
+    dt: float | None = None,
+    rtol: float = 1e-9,
+    event_at: float | None = None,
+    stiffness: Rate | None = None,
+) -> Solution:
+    """Integrate dω/dt = f(ω), dθ/dt = ω from (ω₀, 0) until t_end or until ω reaches event_at.
+
+    ``dt`` is the fixed step (euler, rk4) or the first step (rk45); ``rtol`` the relative
+    tolerance of rk45. ``stiffness(ω)`` gives |∂f/∂ω|, to check fixed steps against the
+    method's stability limit.
+    """
+    tableau = METHODS[method]
+    adaptive = tableau.embedded is not None
+    t, omega, theta = 0.0, omega0, 0.0
+    if adaptive:
+        slope = abs(f(omega0))
+        h = dt or min(t_end, 0.01 * max(abs(omega0), 1.0) / slope if slope else t_end)
+    else:
+        assert dt is not None
+        h = dt
+        if t_end / h > MAX_STEPS:
+            raise InputError("--dt", f"would take {t_end / h:,.0f} steps, more than {MAX_STEPS:,}", hint="use a larger --dt or --method rk45")
+    steps, worst = 0, 0.0
+    while t < t_end:
+        if steps >= MAX_STEPS:
+            raise InputError("--dt", f"gives more than {MAX_STEPS:,} steps for this run", hint="use a larger --dt or --method rk45")
+        step = min(h, t_end - t)
+        if stiffness is not None:
+            worst = max(worst, step * stiffness(omega))
+        d_omega, d_theta, error = _step(tableau, f, omega, step)
+        if adaptive:
+            scale = rtol * max(abs(omega), abs(omega + d_omega), abs(theta), 1e-300) + 1e-300
+            ratio = error / scale
+            if ratio > 1:
+                h = step * max(0.2, 0.9 * ratio ** (-1 / tableau.order))
+                steps += 1
+                continue
+            h = step * min(5.0, 0.9 * ratio ** (-1 / tableau.order) if ratio else 5.0)
+        steps += 1
+        landed = omega + d_omega
+        if event_at is not None and (landed - event_at) * (omega - event_at) <= 0 and omega != event_at:
+            h_event, landed, d_theta = _locate(tableau, f, omega, step, event_at)
+            return Solution(t + h_event, landed, theta + d_theta, True, steps, worst > tableau.stability_limit, worst)
+        if not math.isfinite(landed):
+            return Solution(t + step, math.nan, math.nan, False, steps, True, worst)
+        t, omega, theta = t + step, landed, theta + d_theta
+    return Solution(t, omega, theta, False, steps, worst > tableau.stability_limit, worst)
+
+
+def naive_coulomb_euler(torque: Callable[[float], float], inertia: float, omega0: float, t_end: float, dt: float) -> list[float]:
+    """Explicit Euler on I dω/dt = τ(ω) with friction written as −c·sign(ω), no event location.
+
+    Kept to show the failure that event location prevents: near ω = 0 the sign flips every
+    step and ω chatters about zero instead of stopping. Returns ω at every step.
+    """
+    omegas = [omega0]
+    omega = omega0
+    for _ in range(int(round(t_end / dt))):
+        omega += dt * torque(omega) / inertia
+        omegas.append(omega)
+    return omegas

@@ -1,0 +1,418 @@
+"""The spin-down scene: a wheel on a fixed axle under driving torque, friction and drag.
+
+    I dω/dt = τ_drive − τ_f·sgn(ω) − bω − k|ω|ⁿ·sgn(ω)
+
+Coulomb friction τ_f is physics, not sgn(ω): the wheel stops at t_stop and stays stopped
+while |τ_drive| ≤ τ_f (static friction holds it); only a larger driving torque starts it again,
+the other way. Each stretch of motion in one direction is a phase with ω ≥ 0 in its own frame.
+Closed forms (axle.py) serve every combination with n = 2; a power-law drag with another
+exponent has none and is integrated (numerics.py), with the stop located as an event.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from taucli import numerics
+from taucli.errors import InputError
+from taucli.report import Report, Step, Value, fmt, quantity_text
+from taucli.scenes.axle import AxlePhase
+
+TWO_PI = 2 * math.pi
+DEFAULT_RTOL = 1e-10
+DEFAULT_DT = 1e-3
+
+
+@dataclass(frozen=True)
+class Torques:
+    """The torques on the wheel: drive along +ω, and what resists motion (all but drive ≥ 0)."""
+
+    drive: float = 0.0
+    friction: float = 0.0
+    viscous: float = 0.0
+    drag: float = 0.0
+    drag_exponent: float = 2.0
+
+
+@dataclass(frozen=True)
+class Push:
+    """A tangential push that makes the driving torque: τ = F r sin φ."""
+
+    force: float
+    lever: float
+    angle: float = math.pi / 2
+
+
+@dataclass(frozen=True)
+class Phase:
+    """A stretch of motion in one direction: the closed form, and how to integrate it."""
+
+    closed: AxlePhase
+    exponent: float  # of the drag term kωⁿ
+    direction: int  # +1 or −1: this phase's ω ≥ 0 is direction·ω in the user's frame
+
+    @property
+    def stops(self) -> bool:
+        return self.closed.stops
+
+    def rate(self, omega: float) -> float:
+        """dω/dt in this phase's frame, extended oddly below zero for the event search."""
+        c = self.closed
+        drag = c.drag * math.copysign(abs(omega) ** self.exponent, omega) if c.drag else 0.0
+        return (c.constant - c.viscous * omega - drag) / c.inertia
+
+    def stiffness(self, omega: float) -> float:
+        """|∂(dω/dt)/∂ω| = (b + n k ωⁿ⁻¹)/I, which sets a fixed step's stability."""
+        c = self.closed
+        drag = self.exponent * c.drag * abs(omega) ** (self.exponent - 1) if c.drag else 0.0
+        return (c.viscous + drag) / c.inertia
+
+    def steady_speed(self) -> float | None:
+        if self.exponent == 2 or self.closed.drag == 0:
+            return self.closed.steady_speed
+        if self.stops or self.closed.constant == 0:
+            return None if self.stops else 0.0
+        low, high = 0.0, 1.0  # rate(ω) falls from A/I > 0; bracket its zero, then bisect
+        while self.rate(high) > 0:
+            low, high = high, 2 * high
+        for _ in range(200):
+            mid = (low + high) / 2
+            if mid in (low, high):
+                break
+            low, high = (mid, high) if self.rate(mid) > 0 else (low, mid)
+        return (low + high) / 2
+
+
+@dataclass(frozen=True)
+class Method:
+    """How a phase is evolved: the closed form, or a stepper with its step or tolerance."""
+
+    name: str  # "exact", "euler", "rk4", "rk45"
+    dt: float | None = None
+    rtol: float = DEFAULT_RTOL
+
+    def describe(self, steps: int) -> str:
+        if self.name == "exact":
+            return "closed form"
+        if self.name == "rk45":
+            return f"rk45 (Dormand-Prince, adaptive), rtol = {self.rtol:g}, {steps} steps, stop located as an event"
+        return f"{self.name}, dt = {fmt(self.dt)} s, {steps} steps, stop located as an event"
+
+
+class Evolver:
+    """Answers the questions a phase is asked (state at t, stop, reaching a speed) by a method."""
+
+    def __init__(self, method: Method) -> None:
+        self.method = method
+        self.steps = 0
+        self.unstable: list[str] = []
+
+    def _run(self, phase: Phase, t_end: float, event_at: float | None) -> numerics.Solution:
+        solution = numerics.integrate(
+            phase.rate,
+            phase.closed.omega0,
+            t_end,
+            self.method.name,
+            dt=self.method.dt,
+            rtol=self.method.rtol,
+            event_at=event_at,
+            stiffness=phase.stiffness,
+        )
+        self.steps += solution.steps
+        if solution.unstable:
+            limit = numerics.METHODS[self.method.name].stability_limit
+            self.unstable.append(
+                f"{self.method.name} went unstable: dt·|∂α/∂ω| reached {fmt(solution.worst_rate, 3)}, above its limit "
+                f"{fmt(limit, 4)}; results withheld. Use --dt below {fmt(self.method.dt * limit / solution.worst_rate, 2)} s, "
+                "or --method auto"
+            )
+        return solution
+
+    def state(self, phase: Phase, t: float) -> tuple[float, float]:
+        """(ω, θ) at time t within the phase (before its stop)."""
+        if self.method.name == "exact":
+            return phase.closed.omega(t), phase.closed.theta(t)
+        solution = self._run(phase, t, None)
+        return solution.omega, solution.theta
+
+    def reach(self, phase: Phase, target: float) -> tuple[float, float] | None:
+        """(t, θ) when the phase first reaches ω = target, or None if it never does."""
+        if self.method.name == "exact":
+            t = phase.closed.time_to(target)
+            return None if t is None else (t, phase.closed.theta(t))
+        if target == phase.closed.omega0:
+            return 0.0, 0.0
+        rate = phase.rate(target)
+        heading_up = phase.rate(phase.closed.omega0) > 0
+        if rate == 0 or (rate > 0) != heading_up or (target > phase.closed.omega0) != heading_up:
+            return None
+        if target < 0:
+            return None
+        # |dω/dt| only grows from the target back to ω₀, so this bounds the time to get there.
+        bound = 1.01 * abs(phase.closed.omega0 - target) / abs(rate)
+        solution = self._run(phase, bound, target)
+        return (solution.t, solution.theta) if solution.event else None
+
+
+def _net_torque_step(torques: Torques, omega0: float, alpha0: float, inertia: float, held: bool) -> tuple[Step, Step]:
+    """τ_net at the start, term by term with its sign, then α = τ_net/I."""
+    moving = 1.0 if omega0 > 0 else -1.0 if omega0 < 0 else math.copysign(1.0, torques.drive)
+    power = "²" if torques.drag_exponent == 2 else f"^{fmt(torques.drag_exponent)}"
+    terms = [  # (symbol, value of the term at the start)
+        ("τ_drive", torques.drive),
+        ("τ_f", -moving * torques.friction),
+        ("bω", -torques.viscous * omega0),
+        (f"k|ω|{power}", -moving * torques.drag * abs(omega0) ** torques.drag_exponent),
+    ]
+    present = [(symbol, value) for symbol, value in terms if value or (symbol == "τ_f" and torques.friction)]
+    equation = "τ_net = " + " ".join(
+        f"{'−' if value < 0 or (symbol != 'τ_drive' and value == 0) else '+'} {symbol}" for symbol, value in present
+    ).removeprefix("+ ")
+    numbers = " ".join(f"{'−' if value < 0 else '+'} {quantity_text(abs(value), 'N*m')}" for _, value in present).removeprefix("+ ")
+    if held:
+        why = "at rest, static friction matches the driving torque up to τ_f, so nothing turns"
+    elif omega0:
+        why = "friction and drag oppose the motion, so they take the sign opposite to ω; the driving torque acts along +ω"
+    elif torques.friction:
+        why = "from rest, the driving torque beats static friction, and kinetic friction opposes the motion it starts"
+    else:
+        why = "from rest, the driving torque is the only torque"
+    net = alpha0 * inertia
+    step_torque = Step("Net torque at the start", equation if present else "τ_net = 0", numbers, quantity_text(net, "N*m"), why)
+    step_alpha = Step(
+        "Angular acceleration (Newton's second law for rotation)",
+        "α = τ_net / I",
+        f"{quantity_text(net, 'N*m')} / {quantity_text(inertia, 'kg*m**2')}",
+        quantity_text(alpha0, "rad/s**2"),
+        "the negative sign means α opposes ω: the wheel slows"
+        if alpha0 * omega0 < 0
+        else "the same torque on a larger I would give a smaller α",
+    )
+    return step_torque, step_alpha
+
+
+def _model(torques: Torques, method: Method) -> str:
+    if torques.drag and torques.drag_exponent != 2:
+        return f"power-law drag kω^{fmt(torques.drag_exponent)}: no closed form"
+    if torques.drag:
+        extra = " and viscous torque" if torques.viscous else ""
+        constant = " with constant torque (tangent/arctangent solution)" if torques.drive or torques.friction else ""
+        return f"quadratic drag kω²{extra}{constant}"
+    if torques.viscous:
+        return "exponential approach to a steady speed (viscous torque bω)"
+    if torques.drive:
+        return "uniform angular acceleration (constant torques)"
+    return "uniform deceleration (constant friction torque)"
+
+
+def solve(
+    inertia: float,
+    torques: Torques,
+    omega0: float = 0.0,
+    *,
+    time: float | None = None,
+    until_omega: float | None = None,
+    method: str = "auto",
+    dt: float | None = None,
+    rtol: float | None = None,
+    push: Push | None = None,
+    inertia_steps: Sequence[Step] = (),
+) -> Report:
+    """Spin-down or spin-up of a wheel on a fixed axle; see the module docstring for the model."""
+    if torques.drag and not 1 <= torques.drag_exponent <= 10:
+        raise InputError("--drag-exponent", "expected a number from 1 to 10", example="--drag-exponent 1.5", got=fmt(torques.drag_exponent))
+    if torques.drag and torques.drag_exponent == 1:
+        torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0)
+    closed_form = torques.drag == 0 or torques.drag_exponent == 2
+    chosen = _choose_method(method, closed_form, dt, rtol)
+    evolver = Evolver(chosen)
+    notes: list[str] = []
+
+    friction = torques.friction
+    if omega0 != 0:
+        direction = 1 if omega0 > 0 else -1
+    else:
+        direction = (1 if torques.drive > 0 else -1) if abs(torques.drive) > friction else 0
+    held_from_start = direction == 0
+
+    def phase(sign: int, start: float) -> Phase:
+        constant = sign * torques.drive - friction
+        return Phase(AxlePhase(inertia, constant, torques.viscous, torques.drag, start), torques.drag_exponent, sign)
+
+    first = phase(direction or 1, abs(omega0))
+    alpha0 = 0.0 if held_from_start else direction * first.rate(first.closed.omega0)
+    # After a stop, a driving torque larger than static friction starts the wheel the other way.
+    restarts = abs(torques.drive) > friction
+    second = phase(1 if torques.drive > 0 else -1, 0.0) if restarts and first.stops else None
+
+    results: dict[str, Value] = {"I": Value(inertia, "kg*m**2", "moment of inertia about the axle")}
+    results["alpha0"] = Value(alpha0, "rad/s**2", "angular acceleration at the start")
+
+    stop: tuple[float, float] | None
+    if held_from_start:
+        stop = (0.0, 0.0)
+        notes.append(
+            f"static friction holds the wheel at rest: |τ_drive| = {quantity_text(abs(torques.drive), 'N*m')} "
+            f"does not exceed τ_f = {quantity_text(friction, 'N*m')}"
+        )
+    elif first.stops:
+        stop = evolver.reach(first, 0.0)
+    else:
+        stop = None
+        notes.append(_never_stops_note(torques, first))
+    signed_stop = None if stop is None else (stop[0], direction * stop[1])
+    results["t_stop"] = Value(None if stop is None else stop[0], "s", "time until the wheel stops")
+    results["theta_stop"] = Value(None if signed_stop is None else signed_stop[1], "rad", "angle turned until it stops")
+    results["revs_stop"] = Value(None if signed_stop is None else signed_stop[1] / TWO_PI, "rev", "revolutions until it stops")
+
+    final_phase = second or (None if first.stops or held_from_start else first)
+    if final_phase is None:
+        omega_inf = 0.0
+    else:
+        steady = final_phase.steady_speed()
+        omega_inf = None if steady is None else final_phase.direction * steady
+        if steady is None:
+            notes.append("omega_inf: no steady speed; the driving torque is not balanced by drag, so ω grows without bound")
+    results["omega_inf"] = Value(omega_inf, "rad/s", "steady speed as t -> ∞")
+
+    if time is not None:
+        omega_t, theta_t = _state_at(time, evolver, first, second, stop, direction, held_from_start)
+        results["omega"] = Value(omega_t, "rad/s", f"angular velocity at t = {fmt(time)} s")
+        results["theta"] = Value(theta_t, "rad", f"angle turned by t = {fmt(time)} s")
+        results["revs"] = Value(theta_t / TWO_PI, "rev", f"revolutions by t = {fmt(time)} s")
+    if until_omega is not None:
+        reached = _reach(until_omega, evolver, first, second, stop, direction, held_from_start, omega0)
+        if reached is None:
+            notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
+        results["t_until"] = Value(None if reached is None else reached[0], "s", f"time to reach ω = {fmt(until_omega)} rad/s")
+        results["theta_until"] = Value(None if reached is None else reached[1], "rad", f"angle turned until ω = {fmt(until_omega)} rad/s")
+
+    if evolver.unstable:
+        notes.extend(dict.fromkeys(evolver.unstable))
+        for name in results:
+            if name not in ("I", "alpha0"):
+                results[name] = Value(None, results[name].unit, results[name].label)
+
+    steps = list(inertia_steps)
+    if push is not None:
+        steps.append(_push_step(push, torques.drive))
+    steps.extend(_net_torque_step(torques, omega0, alpha0, inertia, held_from_start))
+    if not held_from_start:
+        steps.extend(_kinematics_steps(torques, first, stop, results, time, chosen, omega0))
+    if chosen.name != "exact" and method == "auto":
+        notes.append(f"no closed form for drag kω^{fmt(torques.drag_exponent)} with these torques: integrated numerically")
+    model = _model(torques, chosen)
+    if held_from_start or (stop is not None and second is None):
+        model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
+    return Report("spin-down", model, chosen.describe(evolver.steps), results, steps, notes)
+
+
+def _choose_method(method: str, closed_form: bool, dt: float | None, rtol: float | None) -> Method:
+    if method == "auto":
+        return Method("exact") if closed_form else Method("rk45", None, rtol or DEFAULT_RTOL)
+    if method == "exact":
+        if not closed_form:
+            raise InputError("--method", "exact has no closed form for a drag exponent other than 1 or 2", hint="use --method auto or rk45")
+        return Method("exact")
+    if method in ("euler", "rk4"):
+        return Method(method, dt or DEFAULT_DT)
+    if method == "rk45":
+        return Method("rk45", dt, rtol or DEFAULT_RTOL)
+    raise InputError("--method", "expected one of auto, exact, euler, rk4, rk45", example="--method rk4 --dt 1ms", got=repr(method))
+
+
+def _never_stops_note(torques: Torques, phase: Phase) -> str:
+    if phase.closed.constant > 0:
+        return "t_stop: the driving torque exceeds friction, so the wheel never stops" if torques.friction else "t_stop: the driving torque keeps it turning, so the wheel never stops"
+    if torques.viscous or torques.drag:
+        return "t_stop: drag alone slows the wheel ever more gently and never quite stops it"
+    return "t_stop: no net torque, so ω stays constant and the wheel never stops"
+
+
+def _state_at(time, evolver, first, second, stop, direction, held) -> tuple[float, float]:
+    if held:
+        return 0.0, 0.0
+    if stop is None or time <= stop[0]:
+        omega, theta = evolver.state(first, time)
+        return direction * omega, direction * theta
+    if second is None:
+        return 0.0, direction * stop[1]
+    omega, theta = evolver.state(second, time - stop[0])
+    return second.direction * omega, direction * stop[1] + second.direction * theta
+
+
+def _reach(target, evolver, first, second, stop, direction, held, omega0) -> tuple[float, float] | None:
+    if held:
+        return (0.0, 0.0) if target == 0 else None
+    if target * direction >= 0:
+        reached = evolver.reach(first, abs(target))
+        if reached is not None:
+            return reached[0], direction * reached[1]
+    if second is not None and stop is not None and target * second.direction > 0:
+        reached = evolver.reach(second, abs(target))
+        if reached is not None:
+            return stop[0] + reached[0], direction * stop[1] + second.direction * reached[1]
+    return None
+
+
+def _push_step(push: Push, torque: float) -> Step:
+    at_right_angle = math.isclose(push.angle, math.pi / 2)
+    return Step(
+        "Torque of the push",
+        "τ = F r" if at_right_angle else "τ = F r sin φ",
+        f"{quantity_text(push.force, 'N')} × {quantity_text(push.lever, 'm')}"
+        + ("" if at_right_angle else f" × sin {fmt(math.degrees(push.angle))}°"),
+        quantity_text(torque, "N*m"),
+        "the force is tangential, perpendicular to the radius, so all of it turns the wheel"
+        if at_right_angle
+        else "only the part of the force perpendicular to the lever arm makes torque",
+    )
+
+
+def _kinematics_steps(torques, first, stop, results, time, method, omega0) -> list[Step]:
+    steps: list[Step] = []
+    closed = first.closed
+    alpha = results["alpha0"].value
+    w0 = abs(omega0)
+    if method.name != "exact":
+        steps.append(
+            Step(
+                "Integrate the equation of motion",
+                "I dω/dt = τ_net(ω),  dθ/dt = ω",
+                method.describe(0).split(",")[0],
+                "",
+                "no closed form exists for this drag law; the stop is located as an event so friction cannot chatter",
+            )
+        )
+    elif closed.uniform:
+        if stop is not None and stop[0] > 0:
+            steps.append(Step("Time to stop", "ω = ω₀ + αt = 0  ⇒  t = ω₀/|α|", f"{fmt(w0)} / {fmt(abs(alpha))}", quantity_text(stop[0], "s"),
+                              "constant torque gives constant α, so ω falls linearly to zero"))
+            steps.append(Step("Angle turned while stopping", "θ = ω₀²/(2|α|)", f"{fmt(w0)}² / (2 × {fmt(abs(alpha))})",
+                              quantity_text(abs(stop[1]), "rad") + f" = {fmt(abs(stop[1]) / TWO_PI)} rev", "the rotational analogue of v² = 2as"))
+        if time is not None and results["theta"].value is not None:
+            steps.append(Step("Angular velocity after t", "ω = ω₀ + αt", f"{fmt(omega0)} + {fmt(alpha)} × {fmt(time)}",
+                              quantity_text(results["omega"].value, "rad/s"), "constant α: ω changes by the same amount every second"))
+            steps.append(Step("Angle turned in t", "θ = ω₀t + ½αt²", f"{fmt(omega0)} × {fmt(time)} + ½ × {fmt(alpha)} × {fmt(time)}²",
+                              quantity_text(results["theta"].value, "rad"), "the rotational analogue of s = ut + ½at²"))
+            steps.append(Step("Convert to revolutions", "revs = θ / 2π", f"{fmt(results['theta'].value)} / 2π",
+                              f"{fmt(results['revs'].value)} rev", "one full revolution is 2π radians"))
+    else:
+        steps.append(
+            Step(
+                "Solve I dω/dt = A − bω − kω² (separable)",
+                "ω(t) = r₊ + (ω₀ − r₊)E/(E + (kω₀ + β)(1 − E)/√D),  E = e^(−√D t/I)",
+                f"A = {quantity_text(closed.constant, 'N*m')}, b = {fmt(closed.viscous)}, k = {fmt(closed.drag)}, "
+                f"D = b² + 4kA = {fmt(closed.viscous**2 + 4 * closed.drag * closed.constant)}",
+                "",
+                "r₊ = 2A/(b + √D) is the steady speed when D > 0 and A > 0; when D < 0 the same form is the "
+                "tangent solution; written so it stays exact as k -> 0 (exponential decay) and D -> 0",
+            )
+        )
+        if stop is not None and stop[0] > 0:
+            steps.append(Step("Time and angle to stop", "t_stop from ω(t) = 0;  θ_stop = ∫ω dt",
+                              "", f"{quantity_text(stop[0], 's')}, {quantity_text(abs(stop[1]), 'rad')} = {fmt(abs(stop[1]) / TWO_PI)} rev",
+                              "friction keeps a constant torque against the motion, so the wheel stops in a finite time"))
+    return steps

@@ -1,0 +1,283 @@
+"""Spin-down: the article's numbers, closed forms against mpmath, and where numerical methods fail.
+
+References are independent of taucli's formulas: 50-digit quadrature of dt = I dω/τ(ω) and
+dθ = I ω dω/τ(ω), for the stop and for the passage from ω₀ to any ω₁ on the way.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
+from taucli import numerics
+from taucli.errors import InputError
+from taucli.scenes.axle import AxlePhase
+from taucli.scenes.spin import Torques, solve
+
+mp = mpmath.mp
+
+
+def values(report):
+    return {name: value.value for name, value in report.results.items()}
+
+
+def test_article_potters_wheel_coasts_to_rest():
+    """I = 0.1 kg·m², τ_f = 0.3 N·m, ω₀ = 30 rad/s: α = −3 rad/s², 10 s to stop."""
+    result = values(solve(0.1, Torques(friction=0.3), 30.0))
+    assert result["alpha0"] == pytest.approx(-3.0, rel=1e-15)
+    assert result["t_stop"] == pytest.approx(10.0, rel=1e-15)
+    assert result["theta_stop"] == pytest.approx(150.0, rel=1e-15)
+    assert result["omega_inf"] == 0.0
+
+
+def test_article_example_1_potters_wheel_spun_up():
+    """8 kg, 0.25 m disc pushed with 6 N at the rim: α = 6 rad/s², ω = 24 rad/s, 7.6 rev in 4 s."""
+    result = values(solve(0.25, Torques(drive=6 * 0.25), 0.0, time=4.0))
+    assert result["alpha0"] == pytest.approx(6.0, rel=1e-15)
+    assert result["omega"] == pytest.approx(24.0, rel=1e-15)
+    assert result["theta"] == pytest.approx(48.0, rel=1e-15)
+    assert round(result["revs"], 1) == 7.6
+    assert result["t_stop"] is None and result["omega_inf"] is None
+
+
+def stop_reference(inertia, constant, viscous, drag, omega0, exponent=2):
+    """(t_stop, θ_stop) by quadrature at 50 digits, for a constant torque A < 0."""
+    with mp.workdps(50):
+        i, a, b, k, w0 = (mpmath.mpf(x) for x in (inertia, constant, viscous, drag, omega0))
+
+        def resisting(u):  # |τ| at ω = u ω₀, integrated over u in [0, 1] so any ω₀ is well scaled
+            return -a + b * w0 * u + k * (w0 * u) ** exponent
+
+        t = i * w0 * mpmath.quad(lambda u: 1 / resisting(u), [0, 1])
+        theta = i * w0**2 * mpmath.quad(lambda u: u / resisting(u), [0, 1])
+        return t, theta
+
+
+def passage_reference(inertia, constant, viscous, drag, omega0, omega1):
+    """(t, θ) to go from ω₀ to ω₁ by 50-digit quadrature of dt = I dω/τ(ω), dθ = I ω dω/τ(ω)."""
+    with mp.workdps(50):
+        i, a, b, k, w0, w1 = (mpmath.mpf(x) for x in (inertia, constant, viscous, drag, omega0, omega1))
+        torque = lambda w: a - b * w - k * w**2  # noqa: E731
+        return mpmath.quad(lambda w: i / torque(w), [w0, w1]), mpmath.quad(lambda w: i * w / torque(w), [w0, w1])
+
+
+def rel_error(got, exact):
+    return float(abs(mpmath.mpf(got) - exact) / abs(exact))
+
+
+coefficient = st.one_of(st.just(0.0), st.floats(1e-12, 1e2), st.integers(5, 40).map(lambda e: 10.0**-e))
+
+
+@settings(max_examples=80, deadline=None)
+@given(
+    inertia=st.floats(1e-3, 1e3),
+    friction=st.floats(1e-3, 1e2),
+    viscous=coefficient,
+    drag=coefficient,
+    omega0=st.one_of(st.floats(1e-6, 1e4), st.just(1e-150)),  # θ ∝ ω₀², so smaller ω₀ underflows
+)
+@example(inertia=0.1, friction=0.3, viscous=0.0, drag=0.0, omega0=30.0)
+@example(inertia=0.1, friction=0.3, viscous=1e-19, drag=1e-22, omega0=30.0)
+@example(inertia=1.0, friction=1.0, viscous=2.0, drag=1.0, omega0=5.0)  # D = b² − 4kτ_f = 0 exactly
+@example(inertia=1.0, friction=1.0, viscous=2.0 + 2e-9, drag=1.0, omega0=5.0)  # D just above 0
+@example(inertia=1.0, friction=1.0, viscous=2.0 - 2e-9, drag=1.0, omega0=5.0)  # D just below 0
+@example(inertia=0.7575328434134935, friction=0.022179720829532394, viscous=0.005783008529300247, drag=0.0003769625611316336, omega0=0.8247633059100566)  # once 78 ulp
+@example(inertia=1.0, friction=0.001, viscous=1.0, drag=0.0, omega0=1.0)  # 1 + y near 0 in the log
+def test_stop_time_and_angle_match_quadrature_to_1e_14(inertia, friction, viscous, drag, omega0):
+    """Every friction + viscous + quadratic combination, limits included: relative error ≤ 1e-14.
+
+    Measured over 5,000 such scenes, a third at a limit (tests/benchmarks/accuracy_spin.py):
+    t_stop at most 3.7 ulp, θ_stop at most 7.4 ulp.
+    """
+    phase = AxlePhase(inertia, -friction, viscous, drag, omega0)
+    t_stop = phase.stop_time()
+    theta_stop = phase.theta(t_stop)
+    t_ref, theta_ref = stop_reference(inertia, -friction, viscous, drag, omega0)
+    assert rel_error(t_stop, t_ref) <= 1e-14
+    assert rel_error(theta_stop, theta_ref) <= 1e-14
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    constant=st.floats(-2.0, 2.0),
+    viscous=st.one_of(st.just(0.0), st.floats(1e-9, 0.5)),
+    drag=st.one_of(st.just(0.0), st.floats(1e-9, 0.01)),
+    omega0=st.floats(0.0, 50.0),
+    fraction=st.floats(0.05, 0.95),
+)
+def test_omega_theta_and_passage_time_agree_with_quadrature(constant, viscous, drag, omega0, fraction):
+    """Pick ω₁ part way to where the motion heads; the time and angle to get there come from
+    quadrature, and ω(t), θ(t) and time_to(ω₁) must agree with them."""
+    phase = AxlePhase(0.1, constant, viscous, drag, omega0)
+    limit = 0.0 if phase.stops else phase.steady_speed
+    if limit is None:
+        limit = omega0 + 10.0  # uniform spin-up grows without bound
+    omega1 = omega0 + fraction * (limit - omega0)
+    if abs(omega1 - omega0) < 1e-9 * max(omega0, 1.0):
+        return
+    t_ref, theta_ref = passage_reference(0.1, constant, viscous, drag, omega0, omega1)
+    t = float(t_ref)
+    assert phase.omega(t) == pytest.approx(omega1, rel=1e-13, abs=1e-13 * omega0)
+    assert rel_error(phase.theta(t), theta_ref) <= 1e-13
+    assert rel_error(phase.time_to(omega1), t_ref) <= 1e-13
+
+
+def test_viscous_decay_matches_the_exponential():
+    result = values(solve(0.1, Torques(viscous=0.01), 30.0, time=5.0))
+    assert result["omega"] == pytest.approx(30 * math.exp(-0.5), rel=1e-15)
+    assert result["theta"] == pytest.approx(300 * -math.expm1(-0.5), rel=1e-15)
+    assert result["t_stop"] is None and result["omega_inf"] == 0.0
+
+
+def test_spin_up_against_drag_approaches_the_steady_speed():
+    """τ = 1 N·m against kω² with k = 0.01: ω∞ = √(τ/k) = 10 rad/s, reached as tanh."""
+    result = values(solve(2.0, Torques(drive=1.0, drag=0.01), 0.0, time=3.0, until_omega=5.0))
+    assert result["omega_inf"] == pytest.approx(10.0, rel=1e-15)
+    assert result["omega"] == pytest.approx(10 * math.tanh(3.0 * math.sqrt(1.0 * 0.01) / 2.0), rel=1e-14)
+    assert result["t_until"] == pytest.approx(2.0 / math.sqrt(0.01) * math.atanh(0.5), rel=1e-14)
+
+
+def test_static_friction_holds_a_weak_drive_at_rest():
+    report = solve(0.1, Torques(drive=0.2, friction=0.3), 0.0, time=5.0)
+    result = values(report)
+    assert result["t_stop"] == 0.0 and result["omega"] == 0.0 and result["theta"] == 0.0
+    assert result["alpha0"] == 0.0
+    assert any("static friction holds" in note for note in report.notes)
+
+
+def test_friction_stops_the_wheel_and_it_stays_stopped():
+    result = values(solve(0.1, Torques(drive=0.1, friction=0.3), 10.0, time=100.0))
+    assert result["t_stop"] == pytest.approx(10 / 2.0)
+    assert result["omega"] == 0.0
+    assert result["theta"] == pytest.approx(result["theta_stop"])
+
+
+def test_a_brake_stronger_than_friction_reverses_the_wheel():
+    """ω₀ = 10, τ = −0.5, τ_f = 0.3: stops at 1.25 s, then turns back with α = −2 rad/s²."""
+    result = values(solve(0.1, Torques(drive=-0.5, friction=0.3), 10.0, time=10.0, until_omega=-5.0))
+    assert result["t_stop"] == pytest.approx(1.25)
+    assert result["omega"] == pytest.approx(-2 * 8.75)
+    assert result["theta"] == pytest.approx(6.25 - 8.75**2)
+    assert result["t_until"] == pytest.approx(1.25 + 2.5)
+
+
+def test_negative_initial_speed_is_the_mirror_image():
+    forward = values(solve(0.1, Torques(drive=0.1, friction=0.3, viscous=0.01, drag=0.001), 30.0, time=2.0))
+    mirror = values(solve(0.1, Torques(drive=-0.1, friction=0.3, viscous=0.01, drag=0.001), -30.0, time=2.0))
+    for name in ("alpha0", "theta_stop", "omega", "theta"):
+        assert mirror[name] == pytest.approx(-forward[name], rel=1e-15)
+    assert mirror["t_stop"] == forward["t_stop"]
+
+
+# Numerical methods -------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "torques,omega0",
+    [(Torques(friction=0.3), 30.0), (Torques(friction=0.3, viscous=0.01, drag=0.001), 30.0), (Torques(drive=0.5, drag=0.002, viscous=0.01), 0.0)],
+)
+@pytest.mark.parametrize("method,dt,tolerance", [("rk45", None, 1e-8), ("rk4", 1e-3, 1e-9), ("euler", 1e-4, 1e-2)])
+def test_numerical_methods_agree_with_the_closed_form(torques, omega0, method, dt, tolerance):
+    exact = values(solve(0.1, torques, omega0, time=2.0, until_omega=omega0 / 2 if omega0 else 5.0))
+    numerical = values(solve(0.1, torques, omega0, time=2.0, until_omega=omega0 / 2 if omega0 else 5.0, method=method, dt=dt))
+    for name, value in exact.items():
+        if value is None or value == 0:
+            assert numerical[name] == value
+        else:
+            assert numerical[name] == pytest.approx(value, rel=tolerance, abs=1e-12), name
+
+
+def test_power_law_drag_with_friction_meets_its_tolerance_against_quadrature():
+    """kω^1.5 with friction has no closed form: auto integrates with rk45 and locates the stop."""
+    report = solve(0.1, Torques(friction=0.3, drag=0.001, drag_exponent=1.5), 30.0)
+    assert report.method.startswith("rk45")
+    t_ref, theta_ref = stop_reference(0.1, -0.3, 0.0, 0.001, 30.0, exponent=mpmath.mpf(1.5))
+    assert rel_error(report.results["t_stop"].value, t_ref) <= 1e-9
+    assert rel_error(report.results["theta_stop"].value, theta_ref) <= 1e-9
+
+
+@pytest.mark.parametrize("exponent", [1.2, 1.5, 2.5, 3.0])
+@pytest.mark.parametrize("friction,viscous", [(0.3, 0.0), (0.05, 0.02), (1.0, 0.0)])
+def test_auto_stays_accurate_over_a_grid_of_power_law_scenes(exponent, friction, viscous):
+    report = solve(0.1, Torques(friction=friction, viscous=viscous, drag=0.001, drag_exponent=exponent), 40.0)
+    assert report.results["t_stop"].value is not None
+    assert not any("unstable" in note for note in report.notes)
+    t_ref, theta_ref = stop_reference(0.1, -friction, viscous, 0.001, 40.0, exponent=mpmath.mpf(exponent))
+    assert rel_error(report.results["t_stop"].value, t_ref) <= 1e-8
+    assert rel_error(report.results["theta_stop"].value, theta_ref) <= 1e-8
+
+
+def test_power_law_steady_speed_balances_the_drive():
+    report = solve(0.1, Torques(drive=1.0, viscous=0.01, drag=0.001, drag_exponent=2.5), 0.0)
+    omega = report.results["omega_inf"].value
+    assert 0.01 * omega + 0.001 * omega**2.5 == pytest.approx(1.0, rel=1e-14)
+
+
+# Where methods fail -----------------------------------------------------------------------
+
+
+def viscous_decay(b_dt_over_i: float, steps: int, method: str) -> list[float]:
+    inertia, viscous, dt = 1.0, 1.0, b_dt_over_i
+    omegas, omega = [], 1.0
+    for _ in range(steps):
+        omega = numerics.integrate(lambda w: -viscous * w / inertia, omega, dt, method, dt=dt).omega
+        omegas.append(omega)
+    return omegas
+
+
+@pytest.mark.parametrize("method,limit", [("euler", 2.0), ("rk4", 2.785293563405282)])
+def test_fixed_step_methods_diverge_on_viscous_decay_past_their_stability_limit(method, limit):
+    """Euler's amplification on ω' = −(b/I)ω is 1 − h b/I: it grows once h b/I > 2. RK4's limit is 2.785.
+
+    Past the limit Euler's factor is below −1 (ω flips sign each step: the coasting wheel spins
+    backwards); RK4's is above +1 (ω grows without changing sign: it spins itself up).
+    """
+    below = viscous_decay(0.95 * limit, 60, method)
+    above = viscous_decay(1.05 * limit, 60, method)
+    assert abs(below[-1]) < abs(below[0]) < 1
+    assert abs(above[-1]) > 10 * abs(above[0]) > 1  # grows instead of decaying
+    assert any(w < 0 for w in above) == (method == "euler")
+
+
+def test_a_requested_unstable_method_reports_it_and_withholds_results():
+    report = solve(0.1, Torques(viscous=0.5), 30.0, time=3.0, method="euler", dt=0.5)
+    assert report.results["omega"].value is None
+    assert any("euler went unstable" in note and "below 0.4 s" in note for note in report.notes)
+    stable = solve(0.1, Torques(viscous=0.5), 30.0, time=3.0, method="euler", dt=0.01)
+    assert stable.results["omega"].value == pytest.approx(30 * math.exp(-15), rel=0.5)
+    assert not any("unstable" in note for note in stable.notes)
+
+
+def test_a_stepper_without_events_chatters_under_coulomb_friction_and_ours_does_not():
+    """Friction as −τ_f·sgn(ω): naive Euler overshoots zero and flips sign every step thereafter."""
+    inertia, friction, dt = 0.1, 0.3, 0.007
+
+    def torque(omega):
+        return -friction * math.copysign(1.0, omega) if omega else 0.0
+
+    omegas = naive_after = numerics.naive_coulomb_euler(torque, inertia, 30.0, 20.0, dt)
+    naive_after = omegas[int(10.5 / dt) :]
+    assert any(w > 0 for w in naive_after) and any(w < 0 for w in naive_after)  # chatter about zero
+    assert max(abs(w) for w in naive_after) > 0.5 * friction * dt / inertia
+
+    for method, step in (("euler", dt), ("rk4", dt), ("rk45", None)):
+        result = values(solve(inertia, Torques(friction=friction), 30.0, time=20.0, method=method, dt=step))
+        assert result["t_stop"] == pytest.approx(10.0, rel=1e-12)
+        assert result["omega"] == 0.0  # stopped, and stays stopped
+        assert result["theta"] == pytest.approx(150.0, rel=dt if method == "euler" else 1e-12)  # Euler's θ is first order
+
+
+def test_methods_table_and_input_errors():
+    assert set(numerics.METHODS) == {"euler", "rk4", "rk45"}
+    with pytest.raises(InputError, match="--method"):
+        solve(0.1, Torques(friction=0.3, drag=0.01, drag_exponent=1.5), 30.0, method="exact")
+    with pytest.raises(InputError, match="--method"):
+        solve(0.1, Torques(friction=0.3), 30.0, method="midpoint")
+    with pytest.raises(InputError, match="--drag-exponent"):
+        solve(0.1, Torques(friction=0.3, drag=0.01, drag_exponent=0.5), 30.0)
+    with pytest.raises(InputError, match="--dt"):
+        solve(0.1, Torques(friction=0.3), 30.0, time=1e4, method="euler", dt=1e-6)
