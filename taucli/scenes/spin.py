@@ -15,25 +15,12 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from taucli import numerics
 from taucli.errors import InputError
 from taucli.report import Report, Step, Value, fmt, quantity_text
-from taucli.scenes.axle import AxlePhase
+from taucli.scenes.coulomb import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
 
 TWO_PI = 2 * math.pi
-DEFAULT_RTOL = 1e-10
-DEFAULT_DT = 1e-3
-
-
-@dataclass(frozen=True)
-class Torques:
-    """The torques on the wheel: drive along +ω, and what resists motion (all but drive ≥ 0)."""
-
-    drive: float = 0.0
-    friction: float = 0.0
-    viscous: float = 0.0
-    drag: float = 0.0
-    drag_exponent: float = 2.0
+Torques = Loads  # for a wheel the loads are torques: drive, friction, viscous b, drag k
 
 
 @dataclass(frozen=True)
@@ -43,117 +30,6 @@ class Push:
     force: float
     lever: float
     angle: float = math.pi / 2
-
-
-@dataclass(frozen=True)
-class Phase:
-    """A stretch of motion in one direction: the closed form, and how to integrate it."""
-
-    closed: AxlePhase
-    exponent: float  # of the drag term kωⁿ
-    direction: int  # +1 or −1: this phase's ω ≥ 0 is direction·ω in the user's frame
-
-    @property
-    def stops(self) -> bool:
-        return self.closed.stops
-
-    def rate(self, omega: float) -> float:
-        """dω/dt in this phase's frame, extended oddly below zero for the event search."""
-        c = self.closed
-        drag = c.drag * math.copysign(abs(omega) ** self.exponent, omega) if c.drag else 0.0
-        return (c.constant - c.viscous * omega - drag) / c.inertia
-
-    def stiffness(self, omega: float) -> float:
-        """|∂(dω/dt)/∂ω| = (b + n k ωⁿ⁻¹)/I, which sets a fixed step's stability."""
-        c = self.closed
-        drag = self.exponent * c.drag * abs(omega) ** (self.exponent - 1) if c.drag else 0.0
-        return (c.viscous + drag) / c.inertia
-
-    def steady_speed(self) -> float | None:
-        if self.exponent == 2 or self.closed.drag == 0:
-            return self.closed.steady_speed
-        if self.stops or self.closed.constant == 0:
-            return None if self.stops else 0.0
-        low, high = 0.0, 1.0  # rate(ω) falls from A/I > 0; bracket its zero, then bisect
-        while self.rate(high) > 0:
-            low, high = high, 2 * high
-        for _ in range(200):
-            mid = (low + high) / 2
-            if mid in (low, high):
-                break
-            low, high = (mid, high) if self.rate(mid) > 0 else (low, mid)
-        return (low + high) / 2
-
-
-@dataclass(frozen=True)
-class Method:
-    """How a phase is evolved: the closed form, or a stepper with its step or tolerance."""
-
-    name: str  # "exact", "euler", "rk4", "rk45"
-    dt: float | None = None
-    rtol: float = DEFAULT_RTOL
-
-    def describe(self, steps: int) -> str:
-        if self.name == "exact":
-            return "closed form"
-        if self.name == "rk45":
-            return f"rk45 (Dormand-Prince, adaptive), rtol = {self.rtol:g}, {steps} steps, stop located as an event"
-        return f"{self.name}, dt = {fmt(self.dt)} s, {steps} steps, stop located as an event"
-
-
-class Evolver:
-    """Answers the questions a phase is asked (state at t, stop, reaching a speed) by a method."""
-
-    def __init__(self, method: Method) -> None:
-        self.method = method
-        self.steps = 0
-        self.unstable: list[str] = []
-
-    def _run(self, phase: Phase, t_end: float, event_at: float | None) -> numerics.Solution:
-        solution = numerics.integrate(
-            phase.rate,
-            phase.closed.omega0,
-            t_end,
-            self.method.name,
-            dt=self.method.dt,
-            rtol=self.method.rtol,
-            event_at=event_at,
-            stiffness=phase.stiffness,
-        )
-        self.steps += solution.steps
-        if solution.unstable:
-            limit = numerics.METHODS[self.method.name].stability_limit
-            self.unstable.append(
-                f"{self.method.name} went unstable: dt·|∂α/∂ω| reached {fmt(solution.worst_rate, 3)}, above its limit "
-                f"{fmt(limit, 4)}; results withheld. Use --dt below {fmt(self.method.dt * limit / solution.worst_rate, 2)} s, "
-                "or --method auto"
-            )
-        return solution
-
-    def state(self, phase: Phase, t: float) -> tuple[float, float]:
-        """(ω, θ) at time t within the phase (before its stop)."""
-        if self.method.name == "exact":
-            return phase.closed.omega(t), phase.closed.theta(t)
-        solution = self._run(phase, t, None)
-        return solution.omega, solution.theta
-
-    def reach(self, phase: Phase, target: float) -> tuple[float, float] | None:
-        """(t, θ) when the phase first reaches ω = target, or None if it never does."""
-        if self.method.name == "exact":
-            t = phase.closed.time_to(target)
-            return None if t is None else (t, phase.closed.theta(t))
-        if target == phase.closed.omega0:
-            return 0.0, 0.0
-        rate = phase.rate(target)
-        heading_up = phase.rate(phase.closed.omega0) > 0
-        if rate == 0 or (rate > 0) != heading_up or (target > phase.closed.omega0) != heading_up:
-            return None
-        if target < 0:
-            return None
-        # |dω/dt| only grows from the target back to ω₀, so this bounds the time to get there.
-        bound = 1.01 * abs(phase.closed.omega0 - target) / abs(rate)
-        solution = self._run(phase, bound, target)
-        return (solution.t, solution.theta) if solution.event else None
 
 
 def _net_torque_step(torques: Torques, omega0: float, alpha0: float, inertia: float, held: bool) -> tuple[Step, Step]:
@@ -224,66 +100,41 @@ def solve(
     if torques.drag and not 1 <= torques.drag_exponent <= 10:
         raise InputError("--drag-exponent", "expected a number from 1 to 10", example="--drag-exponent 1.5", got=fmt(torques.drag_exponent))
     if torques.drag and torques.drag_exponent == 1:
-        torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0)
+        torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0, torques.static)
     closed_form = torques.drag == 0 or torques.drag_exponent == 2
     chosen = _choose_method(method, closed_form, dt, rtol)
     evolver = Evolver(chosen)
     notes: list[str] = []
-
-    friction = torques.friction
-    if omega0 != 0:
-        direction = 1 if omega0 > 0 else -1
-    else:
-        direction = (1 if torques.drive > 0 else -1) if abs(torques.drive) > friction else 0
-    held_from_start = direction == 0
-
-    def phase(sign: int, start: float) -> Phase:
-        constant = sign * torques.drive - friction
-        return Phase(AxlePhase(inertia, constant, torques.viscous, torques.drag, start), torques.drag_exponent, sign)
-
-    first = phase(direction or 1, abs(omega0))
-    alpha0 = 0.0 if held_from_start else direction * first.rate(first.closed.omega0)
-    # After a stop, a driving torque larger than static friction starts the wheel the other way.
-    restarts = abs(torques.drive) > friction
-    second = phase(1 if torques.drive > 0 else -1, 0.0) if restarts and first.stops else None
+    motion = evolve(inertia, torques, omega0, evolver)
+    first, second, held_from_start, stop = motion.first, motion.second, motion.held_from_start, motion.stop
+    alpha0 = motion.initial_rate
 
     results: dict[str, Value] = {"I": Value(inertia, "kg*m**2", "moment of inertia about the axle")}
     results["alpha0"] = Value(alpha0, "rad/s**2", "angular acceleration at the start")
-
-    stop: tuple[float, float] | None
     if held_from_start:
-        stop = (0.0, 0.0)
         notes.append(
             f"static friction holds the wheel at rest: |τ_drive| = {quantity_text(abs(torques.drive), 'N*m')} "
-            f"does not exceed τ_f = {quantity_text(friction, 'N*m')}"
+            f"does not exceed τ_f = {quantity_text(torques.holding, 'N*m')}"
         )
-    elif first.stops:
-        stop = evolver.reach(first, 0.0)
-    else:
-        stop = None
+    elif stop is None:
         notes.append(_never_stops_note(torques, first))
-    signed_stop = None if stop is None else (stop[0], direction * stop[1])
+    signed_stop = motion.signed_stop
     results["t_stop"] = Value(None if stop is None else stop[0], "s", "time until the wheel stops")
     results["theta_stop"] = Value(None if signed_stop is None else signed_stop[1], "rad", "angle turned until it stops")
     results["revs_stop"] = Value(None if signed_stop is None else signed_stop[1] / TWO_PI, "rev", "revolutions until it stops")
 
-    final_phase = second or (None if first.stops or held_from_start else first)
-    if final_phase is None:
-        omega_inf = 0.0
-    else:
-        steady = final_phase.steady_speed()
-        omega_inf = None if steady is None else final_phase.direction * steady
-        if steady is None:
-            notes.append("omega_inf: no steady speed; the driving torque is not balanced by drag, so ω grows without bound")
+    omega_inf = motion.final_speed()
+    if omega_inf is None:
+        notes.append("omega_inf: no steady speed; the driving torque is not balanced by drag, so ω grows without bound")
     results["omega_inf"] = Value(omega_inf, "rad/s", "steady speed as t -> ∞")
 
     if time is not None:
-        omega_t, theta_t = _state_at(time, evolver, first, second, stop, direction, held_from_start)
+        omega_t, theta_t = motion.state_at(time)
         results["omega"] = Value(omega_t, "rad/s", f"angular velocity at t = {fmt(time)} s")
         results["theta"] = Value(theta_t, "rad", f"angle turned by t = {fmt(time)} s")
         results["revs"] = Value(theta_t / TWO_PI, "rev", f"revolutions by t = {fmt(time)} s")
     if until_omega is not None:
-        reached = _reach(until_omega, evolver, first, second, stop, direction, held_from_start, omega0)
+        reached = motion.reach(until_omega)
         if reached is None:
             notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
         results["t_until"] = Value(None if reached is None else reached[0], "s", f"time to reach ω = {fmt(until_omega)} rad/s")
@@ -329,32 +180,6 @@ def _never_stops_note(torques: Torques, phase: Phase) -> str:
     if torques.viscous or torques.drag:
         return "t_stop: drag alone slows the wheel ever more gently and never quite stops it"
     return "t_stop: no net torque, so ω stays constant and the wheel never stops"
-
-
-def _state_at(time, evolver, first, second, stop, direction, held) -> tuple[float, float]:
-    if held:
-        return 0.0, 0.0
-    if stop is None or time <= stop[0]:
-        omega, theta = evolver.state(first, time)
-        return direction * omega, direction * theta
-    if second is None:
-        return 0.0, direction * stop[1]
-    omega, theta = evolver.state(second, time - stop[0])
-    return second.direction * omega, direction * stop[1] + second.direction * theta
-
-
-def _reach(target, evolver, first, second, stop, direction, held, omega0) -> tuple[float, float] | None:
-    if held:
-        return (0.0, 0.0) if target == 0 else None
-    if target * direction >= 0:
-        reached = evolver.reach(first, abs(target))
-        if reached is not None:
-            return reached[0], direction * reached[1]
-    if second is not None and stop is not None and target * second.direction > 0:
-        reached = evolver.reach(second, abs(target))
-        if reached is not None:
-            return stop[0] + reached[0], direction * stop[1] + second.direction * reached[1]
-    return None
 
 
 def _push_step(push: Push, torque: float) -> Step:

@@ -1,0 +1,239 @@
+"""One degree of freedom under Coulomb friction, evolved phase by phase.
+
+    m dv/dt = F − f·sgn(v) − b v − k|v|ⁿ·sgn(v)
+
+The wheel of spin-down (m = I, v = ω, F a torque) and the string of the Atwood machine (m the
+effective mass, v its speed, F a force) are both this. Friction is physics, not sgn(v): the body
+stops at t_stop and stays stopped while |F| does not exceed the static friction; only a larger
+F starts it again, the other way. Each stretch in one direction is a Phase with v ≥ 0 in its own
+frame, evolved by the closed form (axle.py) or by a stepper (numerics.py).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from taucli import numerics
+from taucli.report import fmt
+from taucli.scenes.axle import AxlePhase
+
+DEFAULT_RTOL = 1e-10
+DEFAULT_DT = 1e-3
+
+
+@dataclass(frozen=True)
+class Loads:
+    """What drives and resists: drive along +v; kinetic friction, viscous, drag (all ≥ 0).
+
+    ``static`` is the most static friction can hold (None: the same as the kinetic friction).
+    """
+
+    drive: float = 0.0
+    friction: float = 0.0
+    viscous: float = 0.0
+    drag: float = 0.0
+    drag_exponent: float = 2.0
+    static: float | None = None
+
+    @property
+    def holding(self) -> float:
+        return self.friction if self.static is None else self.static
+
+
+@dataclass(frozen=True)
+class Phase:
+    """A stretch of motion in one direction (v ≥ 0 in its frame): the closed form, and how to integrate it."""
+
+    closed: AxlePhase
+    exponent: float  # of the drag term kωⁿ
+    direction: int  # +1 or −1: this phase's ω ≥ 0 is direction·ω in the user's frame
+
+    @property
+    def stops(self) -> bool:
+        return self.closed.stops
+
+    def rate(self, omega: float) -> float:
+        """dω/dt in this phase's frame, extended oddly below zero for the event search."""
+        c = self.closed
+        drag = c.drag * math.copysign(abs(omega) ** self.exponent, omega) if c.drag else 0.0
+        return (c.constant - c.viscous * omega - drag) / c.inertia
+
+    def stiffness(self, omega: float) -> float:
+        """|∂(dω/dt)/∂ω| = (b + n k ωⁿ⁻¹)/I, which sets a fixed step's stability."""
+        c = self.closed
+        drag = self.exponent * c.drag * abs(omega) ** (self.exponent - 1) if c.drag else 0.0
+        return (c.viscous + drag) / c.inertia
+
+    def steady_speed(self) -> float | None:
+        if self.exponent == 2 or self.closed.drag == 0:
+            return self.closed.steady_speed
+        if self.stops or self.closed.constant == 0:
+            return None if self.stops else 0.0
+        low, high = 0.0, 1.0  # rate(ω) falls from A/I > 0; bracket its zero, then bisect
+        while self.rate(high) > 0:
+            low, high = high, 2 * high
+        for _ in range(200):
+            mid = (low + high) / 2
+            if mid in (low, high):
+                break
+            low, high = (mid, high) if self.rate(mid) > 0 else (low, mid)
+        return (low + high) / 2
+
+
+@dataclass(frozen=True)
+class Method:
+    """How a phase is evolved: the closed form, or a stepper with its step or tolerance."""
+
+    name: str  # "exact", "euler", "rk4", "rk45"
+    dt: float | None = None
+    rtol: float = DEFAULT_RTOL
+
+    def describe(self, steps: int) -> str:
+        if self.name == "exact":
+            return "closed form"
+        if self.name == "rk45":
+            return f"rk45 (Dormand-Prince, adaptive), rtol = {self.rtol:g}, {steps} steps, stop located as an event"
+        return f"{self.name}, dt = {fmt(self.dt)} s, {steps} steps, stop located as an event"
+
+
+class Evolver:
+    """Answers the questions a phase is asked (state at t, stop, reaching a speed) by a method."""
+
+    def __init__(self, method: Method) -> None:
+        self.method = method
+        self.steps = 0
+        self.unstable: list[str] = []
+
+    def _run(self, phase: Phase, t_end: float, event_at: float | None) -> numerics.Solution:
+        solution = numerics.integrate(
+            phase.rate,
+            phase.closed.omega0,
+            t_end,
+            self.method.name,
+            dt=self.method.dt,
+            rtol=self.method.rtol,
+            event_at=event_at,
+            stiffness=phase.stiffness,
+        )
+        self.steps += solution.steps
+        if solution.unstable:
+            limit = numerics.METHODS[self.method.name].stability_limit
+            self.unstable.append(
+                f"{self.method.name} went unstable: dt·|∂α/∂ω| reached {fmt(solution.worst_rate, 3)}, above its limit "
+                f"{fmt(limit, 4)}; results withheld. Use --dt below {fmt(self.method.dt * limit / solution.worst_rate, 2)} s, "
+                "or --method auto"
+            )
+        return solution
+
+    def state(self, phase: Phase, t: float) -> tuple[float, float]:
+        """(ω, θ) at time t within the phase (before its stop)."""
+        if self.method.name == "exact":
+            return phase.closed.omega(t), phase.closed.theta(t)
+        solution = self._run(phase, t, None)
+        return solution.omega, solution.theta
+
+    def reach(self, phase: Phase, target: float) -> tuple[float, float] | None:
+        """(t, θ) when the phase first reaches ω = target, or None if it never does."""
+        if self.method.name == "exact":
+            t = phase.closed.time_to(target)
+            return None if t is None else (t, phase.closed.theta(t))
+        if target == phase.closed.omega0:
+            return 0.0, 0.0
+        rate = phase.rate(target)
+        heading_up = phase.rate(phase.closed.omega0) > 0
+        if rate == 0 or (rate > 0) != heading_up or (target > phase.closed.omega0) != heading_up:
+            return None
+        if target < 0:
+            return None
+        # |dω/dt| only grows from the target back to ω₀, so this bounds the time to get there.
+        bound = 1.01 * abs(phase.closed.omega0 - target) / abs(rate)
+        solution = self._run(phase, bound, target)
+        return (solution.t, solution.theta) if solution.event else None
+
+
+@dataclass(frozen=True)
+class Motion:
+    """The whole motion: a first phase, a stop perhaps, and perhaps a second phase the other way.
+
+    Positions and speeds from its methods are signed in the user's frame.
+    """
+
+    evolver: Evolver
+    first: Phase
+    second: Phase | None
+    direction: int  # of the first phase; 0 when static friction holds the body from the start
+    stop: tuple[float, float] | None  # (t_stop, distance in the first phase's frame)
+
+    @property
+    def held_from_start(self) -> bool:
+        return self.direction == 0
+
+    @property
+    def initial_rate(self) -> float:
+        return 0.0 if self.held_from_start else self.direction * self.first.rate(self.first.closed.omega0)
+
+    @property
+    def signed_stop(self) -> tuple[float, float] | None:
+        return None if self.stop is None else (self.stop[0], (self.direction or 1) * self.stop[1])
+
+    def final_speed(self) -> float | None:
+        """The speed as t -> ∞ (None where it grows without bound)."""
+        final = self.second or (None if self.first.stops or self.held_from_start else self.first)
+        if final is None:
+            return 0.0
+        steady = final.steady_speed()
+        return None if steady is None else final.direction * steady
+
+    def state_at(self, t: float) -> tuple[float, float]:
+        """(v, x) at time t."""
+        if self.held_from_start:
+            return 0.0, 0.0
+        direction, stop, second = self.direction, self.stop, self.second
+        if stop is None or t <= stop[0]:
+            speed, distance = self.evolver.state(self.first, t)
+            return direction * speed, direction * distance
+        if second is None:
+            return 0.0, direction * stop[1]
+        speed, distance = self.evolver.state(second, t - stop[0])
+        return second.direction * speed, direction * stop[1] + second.direction * distance
+
+    def reach(self, target: float) -> tuple[float, float] | None:
+        """(t, x) when the speed first equals target, or None if it never does."""
+        if self.held_from_start:
+            return (0.0, 0.0) if target == 0 else None
+        direction, stop, second = self.direction, self.stop, self.second
+        if target * direction >= 0:
+            reached = self.evolver.reach(self.first, abs(target))
+            if reached is not None:
+                return reached[0], direction * reached[1]
+        if second is not None and stop is not None and target * second.direction > 0:
+            reached = self.evolver.reach(second, abs(target))
+            if reached is not None:
+                return stop[0] + reached[0], direction * stop[1] + second.direction * reached[1]
+        return None
+
+
+def evolve(mass: float, loads: Loads, v0: float, evolver: Evolver) -> Motion:
+    """Set up the phases of the motion from v0 under these loads."""
+    holding = loads.holding
+    if v0 != 0:
+        direction = 1 if v0 > 0 else -1
+    else:
+        direction = (1 if loads.drive > 0 else -1) if abs(loads.drive) > holding else 0
+
+    def phase(sign: int, start: float) -> Phase:
+        constant = sign * loads.drive - loads.friction
+        return Phase(AxlePhase(mass, constant, loads.viscous, loads.drag, start), loads.drag_exponent, sign)
+
+    first = phase(direction or 1, abs(v0))
+    # After a stop, a drive larger than static friction starts the body the other way.
+    restarts = abs(loads.drive) > holding
+    second = phase(1 if loads.drive > 0 else -1, 0.0) if restarts and first.stops else None
+    if direction == 0:
+        stop: tuple[float, float] | None = (0.0, 0.0)
+    elif first.stops:
+        stop = evolver.reach(first, 0.0)
+    else:
+        stop = None
+    return Motion(evolver, first, second, direction, stop)
