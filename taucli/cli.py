@@ -271,6 +271,161 @@ def spin_down(
     emit(report, inputs, json_, get, to, no_steps)
 
 
+STANDARD_GRAVITY = 9.80665
+GOption = Annotated[Optional[str], typer.Option("--g", metavar="ACCEL", help="Gravity (default 9.80665 m/s^2).")]
+
+
+def read_gravity(inputs: Inputs, g: str | None) -> float:
+    """--g, or standard gravity with a note that says so."""
+    if g is None:
+        return inputs.assume("g", STANDARD_GRAVITY, "acceleration", f"g = {STANDARD_GRAVITY} m/s² (standard gravity); --g to change it")
+    return inputs.required("--g", g, "acceleration")
+
+
+_PULLEY = "Pulley"
+
+
+@app.command()
+def atwood(
+    m1: Annotated[Optional[str], typer.Option("--m1", metavar="MASS", help="The hanging mass; its downward motion is positive.")] = None,
+    m2: Annotated[Optional[str], typer.Option("--m2", metavar="MASS", help="The other mass (0: one mass on a string wound on the pulley).")] = None,
+    pulley_mass: Annotated[Optional[str], typer.Option("--pulley-mass", metavar="MASS", help="Pulley mass (default 0: massless).", rich_help_panel=_PULLEY)] = None,
+    pulley_radius: Annotated[Optional[str], typer.Option("--pulley-radius", metavar="LENGTH", help="Pulley radius (needed only for alpha, axle friction or --pulley-inertia).", rich_help_panel=_PULLEY)] = None,
+    pulley_shape: Annotated[Optional[str], typer.Option("--pulley-shape", metavar="disc|ring", help="Pulley shape (default disc).", rich_help_panel=_PULLEY)] = None,
+    pulley_inertia: Annotated[Optional[str], typer.Option("--pulley-inertia", metavar="I", help="Pulley moment of inertia, instead of mass and shape.", rich_help_panel=_PULLEY)] = None,
+    axle_friction: Annotated[Optional[str], typer.Option("--axle-friction", metavar="TORQUE", help="Constant friction torque at the axle (holds at rest too).", rich_help_panel=_PULLEY)] = None,
+    incline: Annotated[Optional[str], typer.Option("--incline", metavar="ANGLE", help="m2 on a slope at this angle (0deg: a table) instead of hanging.")] = None,
+    mu_k: Annotated[Optional[str], typer.Option("--mu-k", metavar="NUMBER", help="Kinetic friction coefficient under m2.")] = None,
+    mu_s: Annotated[Optional[str], typer.Option("--mu-s", metavar="NUMBER", help="Static friction coefficient under m2.")] = None,
+    g: GOption = None,
+    v0: Annotated[Optional[str], typer.Option("--v0", metavar="SPEED", help="Initial speed of m1 (down positive; default 0).", rich_help_panel=_MOTION)] = None,
+    distance: Annotated[Optional[str], typer.Option("--distance", metavar="LENGTH", help="Report the time and speed after this distance.", rich_help_panel=_MOTION)] = None,
+    time: Annotated[Optional[str], typer.Option("--time", metavar="TIME", help="Report the speed and displacement at this time.", rich_help_panel=_MOTION)] = None,
+    json_: JsonFlag = False,
+    get: GetOption = None,
+    to: ToOption = None,
+    no_steps: NoStepsFlag = False,
+) -> None:
+    """Two masses on a string over a pulley with mass: acceleration and tensions.
+
+    Results: a (m1 downward positive), T1, T2, alpha, a_massless; v, t with --distance; v, distance with --time.
+
+    Example: taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg --pulley-radius 0.1m
+    """
+    from taucli.scenes import atwood as scene
+
+    inputs = Inputs()
+    mass1 = inputs.required("--m1", m1, "mass", sign="nonnegative")
+    if m2 is None:
+        inputs.notes.append("no --m2: a single mass on a string wound on the pulley")
+    mass2 = inputs.quantity("--m2", m2, "mass", sign="nonnegative") or 0.0
+    pulley = scene.Pulley(
+        inputs.quantity("--pulley-mass", pulley_mass, "mass", sign="nonnegative") or 0.0,
+        inputs.quantity("--pulley-radius", pulley_radius, "length"),
+        pulley_shape,
+        inputs.quantity("--pulley-inertia", pulley_inertia, "moment of inertia", sign="nonnegative"),
+        inputs.quantity("--axle-friction", axle_friction, "torque", sign="nonnegative") or 0.0,
+    )
+    angle = inputs.quantity("--incline", incline, "angle", sign="any")
+    slope = scene.Slope(
+        scene.HANGING if angle is None else angle,
+        inputs.quantity("--mu-k", mu_k, "dimensionless", sign="nonnegative") or 0.0,
+        inputs.quantity("--mu-s", mu_s, "dimensionless", sign="nonnegative"),
+    )
+    report = scene.solve(
+        mass1,
+        mass2,
+        pulley,
+        read_gravity(inputs, g),
+        slope=slope,
+        v0=inputs.quantity("--v0", v0, "velocity", sign="any") or 0.0,
+        distance=inputs.quantity("--distance", distance, "length", sign="nonnegative"),
+        time=inputs.quantity("--time", time, "time", sign="nonnegative"),
+    )
+    emit(report, inputs, json_, get, to, no_steps)
+
+
+@app.command()
+def rolling(
+    shape: Annotated[Optional[str], typer.Argument(metavar="SHAPE", help="sphere, shell, disc, cylinder, ring or hoop (or give --k2 or --inertia).", show_default=False)] = None,
+    k2: Annotated[Optional[str], typer.Option("--k2", metavar="NUMBER", help="I/(mR²) of the body, instead of SHAPE.", rich_help_panel=_BODY)] = None,
+    inertia: Annotated[Optional[str], typer.Option("--inertia", metavar="I", help="Moment of inertia about the centre (with --mass and --radius).", rich_help_panel=_BODY)] = None,
+    mass: Annotated[Optional[str], typer.Option("--mass", metavar="MASS", help="Mass (needed only for forces and energies).", rich_help_panel=_BODY)] = None,
+    radius: Annotated[Optional[str], typer.Option("--radius", metavar="LENGTH", help="Radius (needed only for α and ω).", rich_help_panel=_BODY)] = None,
+    angle: Annotated[Optional[str], typer.Option("--angle", metavar="ANGLE", help="Slope of the incline, 0 to 90deg.")] = None,
+    mu_s: Annotated[Optional[str], typer.Option("--mu-s", metavar="NUMBER", help="Static friction coefficient (decides roll or slip).")] = None,
+    mu_k: Annotated[Optional[str], typer.Option("--mu-k", metavar="NUMBER", help="Kinetic friction coefficient (when it slips or skids).")] = None,
+    length: Annotated[Optional[str], typer.Option("--length", metavar="LENGTH", help="Distance down the slope to the bottom.", rich_help_panel=_MOTION)] = None,
+    height: Annotated[Optional[str], typer.Option("--height", metavar="LENGTH", help="Height of the slope, instead of --length.", rich_help_panel=_MOTION)] = None,
+    v0: Annotated[Optional[str], typer.Option("--v0", metavar="SPEED", help="Speed up the slope (how far it climbs), or on the flat (skid).", rich_help_panel=_MOTION)] = None,
+    omega0: Annotated[Optional[str], typer.Option("--omega0", metavar="OMEGA", help="Spin on the flat, in the rolling sense (skid to roll).", rich_help_panel=_MOTION)] = None,
+    g: GOption = None,
+    json_: JsonFlag = False,
+    get: GetOption = None,
+    to: ToOption = None,
+    no_steps: NoStepsFlag = False,
+) -> None:
+    """A round body on an incline: does it roll or slip, and how fast; or a skidding ball on the flat.
+
+    Results: a, alpha, friction, mu_min, rolls; v, t at the bottom (--length or --height);
+    d_climb, h_climb, t_climb (--v0 up the slope); t_roll, d_roll, v_roll on the flat.
+
+    Example: taucli rolling sphere --angle 30deg --length 2m
+    """
+    from taucli.scenes import rolling as scene
+
+    inputs = Inputs()
+    mass_si = inputs.quantity("--mass", mass, "mass")
+    radius_si = inputs.quantity("--radius", radius, "length")
+    given = [name for name, text in (("SHAPE", shape), ("--k2", k2), ("--inertia", inertia)) if text is not None]
+    if len(given) != 1:
+        raise InputError(
+            "SHAPE" if not given else given[1],
+            "is required: SHAPE, --k2 or --inertia (one of them)" if not given else f"conflicts with {given[0]}: describe the body once",
+            example="taucli rolling sphere --angle 30deg",
+        )
+    if shape is not None:
+        if shape not in scene.K2:
+            import difflib
+
+            close = difflib.get_close_matches(shape, list(scene.K2), n=1)
+            raise InputError("SHAPE", f"expected one of {', '.join(scene.K2)}", example="sphere", got=repr(shape), hint=f"did you mean {close[0]!r}?" if close else None)
+        roller = scene.Roller(scene.K2[shape], shape, mass_si, radius_si)
+    elif k2 is not None:
+        roller = scene.Roller(inputs.required("--k2", k2, "dimensionless"), "body", mass_si, radius_si)
+    else:
+        moment = inputs.required("--inertia", inertia, "moment of inertia")
+        if mass_si is None or radius_si is None:
+            raise InputError("--mass" if mass_si is None else "--radius", "is required with --inertia (k² = I/(mR²))", example="--mass 2kg --radius 0.1m")
+        roller = scene.Roller(moment / (mass_si * radius_si**2), "body", mass_si, radius_si)
+    slope = inputs.quantity("--angle", angle, "angle", sign="any")
+    speed = inputs.quantity("--v0", v0, "velocity", sign="any")
+    spin = inputs.quantity("--omega0", omega0, "angular velocity", sign="any")
+    gravity = read_gravity(inputs, g)
+    friction_s = inputs.quantity("--mu-s", mu_s, "dimensionless", sign="nonnegative")
+    friction_k = inputs.quantity("--mu-k", mu_k, "dimensionless", sign="nonnegative")
+    scene._check_friction(friction_s, friction_k)
+    on_the_flat = (slope is None or slope == 0) and (speed is not None or spin is not None) and length is None and height is None
+    if on_the_flat:
+        report = scene.solve_flat(roller, gravity, mu_k=friction_k, v0=speed or 0.0, omega0=spin or 0.0)
+    else:
+        if slope is None:
+            raise InputError("--angle", "is required on an incline", example="--angle 30deg")
+        if spin is not None:
+            raise InputError("--omega0", "applies on the flat (--angle 0 with --v0): a skidding ball")
+        report = scene.solve_incline(
+            roller,
+            slope,
+            gravity,
+            mu_s=friction_s,
+            mu_k=friction_k,
+            length=inputs.quantity("--length", length, "length"),
+            height=inputs.quantity("--height", height, "length"),
+            v0=speed or 0.0,
+        )
+    emit(report, inputs, json_, get, to, no_steps)
+
+
 def _is_usage_error(err: Exception) -> bool:
     """Typer's (vendored or plain click) usage errors: they carry an exit code and a message."""
     return isinstance(getattr(err, "exit_code", None), int) and hasattr(err, "format_message")

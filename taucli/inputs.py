@@ -32,6 +32,14 @@ class Inputs:
             self.notes.append(parsed.note)
         return parsed.value
 
+    def assume(self, name: str, value: float, kind: str, note: str) -> float:
+        """A value the user did not give, recorded as an input, with a note that says so."""
+        from taucli.units import KINDS
+
+        self.values[name] = Value(value, KINDS[kind].si_unit, "")
+        self.notes.append(note)
+        return value
+
     def required(self, option: str, text: str | None, kind: str, *, sign: str = "positive", why: str = "") -> float:
         """As ``quantity``, but the option must be given."""
         if text is None:

@@ -1,0 +1,303 @@
+"""The Atwood machine: two masses on a string over a pulley that has mass and axle friction.
+
+m1 hangs; m2 hangs on the other side, or lies on a table or a slope (the modified machine).
+Positive is m1 moving down. One equation per body, the string not slipping on the pulley:
+
+    m1:      m1 g − T1 = m1 a
+    m2:      T2 − m2 g sin θ − μ m2 g cos θ·sgn v = m2 a      (hanging: θ = 90°, no friction)
+    pulley:  (T1 − T2) R − τ_a·sgn v = I α,  α = a / R
+
+Adding them cancels the tensions: a = (m1 g − m2 g sin θ − friction) / (m1 + m2 + I/R²). The
+radius cancels too, except where axle friction (τ_a/R) or a given I (I/R²) brings it in. The
+motion under constant forces, stops and static friction included, is coulomb.evolve's.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from taucli.errors import InputError
+from taucli.report import Report, Step, Value, fmt, quantity_text
+from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
+
+HANGING = math.pi / 2
+
+
+@dataclass(frozen=True)
+class Pulley:
+    """The pulley: its mass and shape, or its moment of inertia; its radius; axle friction."""
+
+    mass: float = 0.0
+    radius: float | None = None
+    shape: str | None = None  # "disc" or "ring"; None with a mass means a disc, with a note
+    inertia: float | None = None
+    axle_friction: float = 0.0
+
+    SHAPE_FACTORS = {"disc": 0.5, "ring": 1.0}  # I = factor × M R²
+
+    def effective_mass(self) -> float:
+        """I/R², the mass the pulley adds to the moving system: M/2 for a disc, M for a ring."""
+        if self.inertia is not None:
+            assert self.radius is not None
+            return self.inertia / self.radius**2
+        return self.SHAPE_FACTORS[self.shape or "disc"] * self.mass
+
+    def axle_force(self) -> float:
+        """τ_a / R: the axle friction as a force on the string."""
+        return 0.0 if not self.axle_friction else self.axle_friction / self.radius
+
+    def symbol(self) -> str:
+        if self.inertia is not None:
+            return "I/R²"
+        return "M/2" if (self.shape or "disc") == "disc" else "M"
+
+
+@dataclass(frozen=True)
+class Slope:
+    """Where m2 is: hanging (θ = 90°), on a table (0°) or a slope; its friction coefficients."""
+
+    angle: float = HANGING
+    mu_k: float = 0.0
+    mu_s: float | None = None
+
+    @property
+    def hanging(self) -> bool:
+        return self.angle == HANGING
+
+
+def _check(m1: float, m2: float, pulley: Pulley, slope: Slope) -> None:
+    if m1 + m2 == 0 and pulley.mass == 0 and pulley.inertia is None:
+        raise InputError("--m1", "and --m2 cannot both be zero (with a massless pulley nothing is there to move)", example="--m1 4kg --m2 1kg")
+    if pulley.inertia is not None and (pulley.mass or pulley.shape):
+        raise InputError("--pulley-inertia", "conflicts with --pulley-mass and --pulley-shape: give one description of the pulley")
+    if pulley.inertia is not None and pulley.radius is None:
+        raise InputError("--pulley-radius", "is required with --pulley-inertia (the pulley adds I/R² to the moving mass)", example="--pulley-radius 0.1m")
+    if pulley.axle_friction and pulley.radius is None:
+        raise InputError("--pulley-radius", "is required with --axle-friction (the friction torque acts on the string as τ/R)", example="--pulley-radius 0.1m")
+    if pulley.shape is not None and pulley.shape not in Pulley.SHAPE_FACTORS:
+        raise InputError("--pulley-shape", "expected disc or ring", example="--pulley-shape ring", got=repr(pulley.shape))
+    if not 0 <= slope.angle <= HANGING:
+        raise InputError("--incline", "expected an angle from 0 to 90 deg", example="--incline 30deg", got=f"{fmt(math.degrees(slope.angle))} deg")
+    if slope.hanging and (slope.mu_k or slope.mu_s):
+        raise InputError("--mu-k", "applies when m2 slides: give --incline (0deg for a table)", example="--incline 0deg --mu-k 0.2")
+    if slope.mu_s is not None and slope.mu_k > slope.mu_s:
+        raise InputError("--mu-k", "must not exceed --mu-s (kinetic friction is at most static friction)", got=f"{fmt(slope.mu_k)} > {fmt(slope.mu_s)}")
+
+
+def solve(
+    m1: float,
+    m2: float,
+    pulley: Pulley,
+    g: float,
+    *,
+    slope: Slope = Slope(),
+    v0: float = 0.0,
+    distance: float | None = None,
+    time: float | None = None,
+) -> Report:
+    """Acceleration, tensions and the motion that follows, for the machine described."""
+    _check(m1, m2, pulley, slope)
+    notes: list[str] = []
+    if pulley.mass and pulley.shape is None:
+        notes.append("pulley taken as a uniform solid disc (I = ½MR²); --pulley-shape ring for a thin ring")
+    sin_angle = 1.0 if slope.hanging else math.sin(slope.angle)
+    normal = 0.0 if slope.hanging else m2 * g * math.cos(slope.angle)
+    if slope.mu_s is None and slope.mu_k:
+        notes.append("no --mu-s: static friction taken as equal to kinetic friction")
+    mu_s = slope.mu_k if slope.mu_s is None else slope.mu_s
+
+    pulley_mass = pulley.effective_mass()
+    moving_mass = m1 + m2 + pulley_mass
+    drive = m1 * g - m2 * g * sin_angle
+    axle = pulley.axle_force()
+    loads = Loads(drive=drive, friction=slope.mu_k * normal + axle, static=mu_s * normal + axle)
+    motion = evolve(moving_mass, loads, v0, Evolver(Method("exact")))
+    a = motion.initial_rate
+    direction = motion.direction
+
+    massless = None
+    if m1 + m2 > 0:
+        massless = evolve(m1 + m2, loads, v0, Evolver(Method("exact"))).initial_rate
+
+    results: dict[str, Value] = {"a": Value(a, "m/s**2", "acceleration of the masses (m1 downward positive)")}
+    if motion.held_from_start:
+        tension_high, tension_low = _statics(m1, m2, g, sin_angle, normal, pulley, notes)
+        notes.append(
+            "nothing moves: "
+            + ("the masses balance" if drive == 0 and not loads.holding else "friction can hold the system")
+            + f" (net pull {quantity_text(abs(drive), 'N')} against at most {quantity_text(loads.holding, 'N')} of friction)"
+        )
+    else:
+        tension_high = m1 * (g - a)
+        if pulley_mass == 0 and axle == 0:
+            tension_low = tension_high  # the pulley's equation with I = 0: (T1 − T2)R = 0
+        else:
+            tension_low = m2 * (a + g * sin_angle) + direction * slope.mu_k * normal
+    results["T1"] = Value(tension_high, "N", "tension on m1's side")
+    results["T2"] = Value(tension_low, "N", "tension on m2's side")
+    results["alpha"] = Value(None if pulley.radius is None else a / pulley.radius, "rad/s**2", "angular acceleration of the pulley")
+    if pulley.radius is None:
+        notes.append("alpha: give --pulley-radius for the pulley's angular acceleration (a and the tensions do not need it)")
+    results["a_massless"] = Value(massless, "m/s**2", "acceleration with a massless pulley, for comparison")
+
+    if distance is not None:
+        reached = _travel(motion, distance)
+        if reached is None:
+            notes.append(f"the masses never travel {quantity_text(distance, 'm')}")
+        speed = None if reached is None else motion.state_at(reached)[0]
+        results["t"] = Value(reached, "s", f"time to travel {fmt(distance)} m")
+        results["v"] = Value(speed, "m/s", f"velocity after {fmt(distance)} m")
+    if time is not None:
+        speed, displacement = motion.state_at(time)
+        results.setdefault("v", Value(speed, "m/s", f"velocity at t = {fmt(time)} s"))
+        results["distance"] = Value(displacement, "m", f"displacement of m1 (down positive) at t = {fmt(time)} s")
+        if distance is not None:
+            notes.append("v is given at the distance; distance at the time")
+
+    steps = _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, motion.held_from_start, direction)
+    model = ("massless pulley" if not pulley_mass else f"massive pulley ({_pulley_words(pulley)})") + ", string does not slip"
+    if not slope.hanging:
+        model += f"; m2 on {'a table' if slope.angle == 0 else f'a {fmt(math.degrees(slope.angle))}° slope'}"
+        if slope.mu_k or mu_s:
+            model += " with friction"
+    if motion.held_from_start and loads.holding:
+        model += "; friction holds it at rest"
+    elif loads.friction:
+        model += "; friction overcome"
+    return Report("atwood", model, "closed form", results, steps, notes)
+
+
+def _pulley_words(pulley: Pulley) -> str:
+    if pulley.inertia is not None:
+        return "given I"
+    return "solid disc" if (pulley.shape or "disc") == "disc" else "thin ring"
+
+
+def _statics(m1, m2, g, sin_angle, normal, pulley, notes) -> tuple[float | None, float | None]:
+    """Tensions at rest: T1 = m1 g; T2 is fixed unless friction acts both at the axle and on m2."""
+    tension_high = m1 * g
+    if not pulley.axle_friction:
+        return tension_high, tension_high  # no torque on the pulley at rest: equal tensions
+    if not normal:
+        return tension_high, m2 * g * sin_angle
+    notes.append("T2: statically indeterminate (friction at the axle and under m2 share the load in a way statics cannot fix)")
+    return tension_high, None
+
+
+def _travel(motion, distance: float) -> float | None:
+    """The time at which the masses have moved a path length ``distance`` (uniform phases)."""
+    if motion.held_from_start:
+        return 0.0 if distance == 0 else None
+    first, stop = motion.first.closed, motion.stop
+    if stop is None or distance <= stop[1]:
+        return _uniform_time(first.omega0, first.constant / first.inertia, distance)
+    if motion.second is None:
+        return None
+    second = motion.second.closed
+    return stop[0] + _uniform_time(0.0, second.constant / second.inertia, distance - stop[1])
+
+
+def _uniform_time(speed: float, acceleration: float, distance: float) -> float:
+    """The first t ≥ 0 with speed·t + ½at² = distance: 2d/(u + √(u² + 2ad)), free of cancellation."""
+    if distance == 0:
+        return 0.0
+    return 2 * distance / (speed + math.sqrt(max(speed * speed + 2 * acceleration * distance, 0.0)))
+
+
+def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, held, direction) -> list[Step]:
+    steps: list[Step] = []
+    if pulley.mass and pulley.inertia is None:
+        factor = "½" if (pulley.shape or "disc") == "disc" else ""
+        steps.append(
+            Step(
+                "The pulley's rotational inertia as extra mass",
+                f"I/R² = {factor}M" if factor else "I/R² = M",
+                f"{factor} × {quantity_text(pulley.mass, 'kg')}" if factor else quantity_text(pulley.mass, "kg"),
+                quantity_text(pulley.effective_mass(), "kg"),
+                f"I = {factor}MR² and α = a/R, so the torque equation (T₁ − T₂)R = Iα becomes T₁ − T₂ = {factor}Ma: "
+                "R cancels",
+            )
+        )
+    steps.append(Step("For m₁ (moving down)", "m₁g − T₁ = m₁a", "", "", "the net downward force on m₁ is its weight minus the upward string tension"))
+    if slope.hanging:
+        steps.append(Step("For m₂ (moving up)", "T₂ − m₂g = m₂a", "", "", "the net upward force on m₂ is the string tension minus its weight"))
+    else:
+        friction_term = " − μₖm₂g cos θ" if slope.mu_k else ""
+        steps.append(
+            Step(
+                f"For m₂ (pulled along the {'table' if slope.angle == 0 else 'slope'})",
+                f"T₂ − m₂g sin θ{friction_term} = m₂a",
+                "",
+                "",
+                "along the surface: the tension pulls m₂ on, gravity's component m₂g sin θ pulls it back, and "
+                "kinetic friction μₖN opposes the sliding, N = m₂g cos θ",
+            )
+        )
+    axle_term = " − τ_a/R" if pulley.axle_friction else ""
+    steps.append(
+        Step(
+            "For the pulley (rotating; the string does not slip, α = a/R)",
+            f"T₁ − T₂{axle_term} = ({pulley.symbol()})a",
+            "",
+            "",
+            "the net torque on the pulley is (T₁ − T₂)R" + (" less the axle friction τ_a" if pulley.axle_friction else "")
+            + "; dividing by R, the pulley acts on the string like extra mass",
+        )
+    )
+    pulley_term = f" + {pulley.symbol()}" if pulley.effective_mass() else ""
+    drive_text = "m₁g − m₂g" if slope.hanging else "m₁g − m₂g sin θ"
+    resist = (" − μₖm₂g cos θ" if slope.mu_k else "") + (" − τ_a/R" if pulley.axle_friction else "")
+    numbers = (
+        f"({quantity_text(m1 * g, 'N')} − {quantity_text(m2 * g * sin_angle, 'N')}"
+        + (f" − {quantity_text(slope.mu_k * normal + pulley.axle_force(), 'N')}" if resist else "")
+        + f") / ({fmt(m1)} + {fmt(m2)}"
+        + (f" + {fmt(pulley.effective_mass())}" if pulley_term else "")
+        + " kg)"
+    )
+    steps.append(
+        Step(
+            "Add the three equations: the tensions cancel",
+            f"a = ({drive_text}{resist}) / (m₁ + m₂{pulley_term})",
+            numbers,
+            quantity_text(a, "m/s**2") + ("  (held: static friction wins, a = 0)" if held else ""),
+            "adding the equations eliminates T₁ and T₂; the pulley's "
+            f"{pulley.symbol()} in the denominator slows the system, as extra mass would"
+            if pulley_term
+            else "adding the equations eliminates T₁ and T₂",
+        )
+    )
+    if pulley_term and massless is not None:
+        steps.append(
+            Step(
+                "Compare: the same machine with a massless pulley",
+                f"a₀ = ({drive_text}{resist}) / (m₁ + m₂)",
+                f"{quantity_text(m1 * g - m2 * g * sin_angle, 'N')}{' − friction' if resist else ''} / {fmt(m1 + m2)} kg",
+                quantity_text(massless, "m/s**2"),
+                f"the massive pulley costs {fmt(abs(massless - a))} m/s² of acceleration: part of gravity's work goes into spinning it",
+            )
+        )
+    tension_high, tension_low = results["T1"].value, results["T2"].value
+    if not held:
+        steps.append(Step("Tension on m₁'s side", "T₁ = m₁(g − a)", f"{fmt(m1)} × ({fmt(g)} − {fmt(a)})", quantity_text(tension_high, "N"), "from m₁'s equation"))
+        if slope.hanging:
+            steps.append(Step("Tension on m₂'s side", "T₂ = m₂(g + a)", f"{fmt(m2)} × ({fmt(g)} + {fmt(a)})", quantity_text(tension_low, "N"), "from m₂'s equation"))
+        else:
+            steps.append(
+                Step("Tension on m₂'s side", "T₂ = m₂(a + g sin θ) + μₖN", "", quantity_text(tension_low, "N"), "from m₂'s equation")
+            )
+        if pulley.effective_mass() or pulley.axle_friction:
+            needed = pulley.effective_mass() * a + direction * pulley.axle_force()
+            steps.append(
+                Step(
+                    "Check with the pulley's equation",
+                    f"T₁ − T₂ = ({pulley.symbol()})a" + (" + τ_a/R" if pulley.axle_friction else ""),
+                    f"{quantity_text(tension_high, 'N')} − {quantity_text(tension_low, 'N')}",
+                    quantity_text(tension_high - tension_low, "N"),
+                    f"and ({pulley.symbol()})a{' + τ_a/R' if pulley.axle_friction else ''} = {quantity_text(needed, 'N')}: the tension "
+                    "difference is exactly the force needed to turn the pulley",
+                )
+            )
+    if pulley.radius is not None:
+        steps.append(Step("Angular acceleration of the pulley", "α = a/R", f"{fmt(a)} / {fmt(pulley.radius)}", quantity_text(a / pulley.radius, "rad/s**2"), "the string does not slip on the rim"))
+    return steps

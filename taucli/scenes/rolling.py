@@ -1,0 +1,220 @@
+"""A round body on an incline: rolling or slipping; and a skidding ball on the flat until it rolls.
+
+The article's three equations, with I = k² m R² (k2 = I/(mR²), the shape's only number):
+
+    translation:  m a = m g sin θ − f
+    rotation:     I α = f R
+    no slip:      a = R α
+
+give a = g sin θ / (1 + k2) and f = m g sin θ · k2/(1 + k2): neither mass nor radius enters a.
+Rolling needs f ≤ μs N, N = m g cos θ, that is μs ≥ μ_min = tan θ · k2/(1 + k2). Below that the
+body slips: f = μk N, a = g (sin θ − μk cos θ), α = μk g cos θ / (k2 R). Both are continuous at
+μs = μk = μ_min.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from taucli.errors import InputError
+from taucli.report import Report, Step, Value, fmt, quantity_text
+
+K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
+RIGHT_ANGLE = math.pi / 2
+
+
+@dataclass(frozen=True)
+class Roller:
+    """The rolling body: k2 = I/(mR²), and mass and radius where something asks for them."""
+
+    k2: float
+    description: str
+    mass: float | None = None
+    radius: float | None = None
+
+
+def _check_friction(mu_s: float | None, mu_k: float | None) -> None:
+    if mu_s is not None and mu_k is not None and mu_k > mu_s:
+        raise InputError("--mu-k", "must not exceed --mu-s (kinetic friction is at most static friction)", got=f"{fmt(mu_k)} > {fmt(mu_s)}")
+
+
+def solve_incline(
+    roller: Roller,
+    angle: float,
+    g: float,
+    *,
+    mu_s: float | None = None,
+    mu_k: float | None = None,
+    length: float | None = None,
+    height: float | None = None,
+    v0: float = 0.0,
+) -> Report:
+    """Roll or slip on a slope of ``angle``; with --length or --height, the state at the bottom;
+    with v0 > 0 (up the slope), how far it climbs."""
+    if not 0 <= angle < RIGHT_ANGLE:
+        raise InputError("--angle", "expected an angle from 0 up to (not including) 90 deg", example="--angle 30deg", got=f"{fmt(math.degrees(angle))} deg")
+    _check_friction(mu_s, mu_k)
+    if length is not None and height is not None:
+        raise InputError("--length", "conflicts with --height: give the distance along the slope or the height, not both")
+    if height is not None and angle == 0:
+        raise InputError("--height", "needs a slope: on the flat there is no height to roll down", example="--angle 30deg --height 1m")
+    k2, mass, radius = roller.k2, roller.mass, roller.radius
+    notes: list[str] = []
+    sin_a, cos_a = math.sin(angle), math.cos(angle)
+    mu_min = math.tan(angle) * k2 / (1 + k2)
+    if mu_s is None:
+        rolls = True
+        notes.append(f"no --mu-s: assumed to roll without slipping, which needs μs ≥ μ_min = {fmt(mu_min)}")
+    else:
+        rolls = mu_s >= mu_min
+    if not rolls and mu_k is None:
+        raise InputError("--mu-k", f"is required: μs = {fmt(mu_s)} is below μ_min = {fmt(mu_min)}, so the body slips", example="--mu-k 0.1")
+
+    if rolls:
+        a = g * sin_a / (1 + k2)
+        friction_per_mass = g * sin_a * k2 / (1 + k2)
+    else:
+        a = g * (sin_a - mu_k * cos_a)
+        friction_per_mass = mu_k * g * cos_a
+    angular = None if radius is None else (a / radius if rolls else friction_per_mass / (k2 * radius))
+
+    results: dict[str, Value] = {
+        "a": Value(a, "m/s**2", "acceleration of the centre, down the slope"),
+        "alpha": Value(angular, "rad/s**2", "angular acceleration"),
+        "friction": Value(None if mass is None else mass * friction_per_mass, "N", "friction force at the contact, up the slope"),
+        "mu_min": Value(mu_min, "", "least static coefficient for rolling"),
+        "rolls": Value(rolls, None, "rolls without slipping"),
+    }
+    if radius is None:
+        notes.append("alpha: give --radius (a does not need it)")
+    if mass is None:
+        notes.append("friction: give --mass (a does not need it)")
+
+    run = length if length is not None else (None if height is None else height / sin_a)
+    if run is not None:
+        if a <= 0:
+            notes.append("the body does not move down the slope: friction holds it" if a == 0 else "kinetic friction exceeds gravity's pull")
+            results["v"] = Value(None, "m/s", "speed at the bottom")
+            results["t"] = Value(None, "s", "time to the bottom")
+        else:
+            speed = math.sqrt(2 * a * run)
+            duration = 2 * run / speed
+            results["v"] = Value(speed, "m/s", "speed at the bottom, from rest")
+            results["t"] = Value(duration, "s", "time to the bottom")
+            spin_speed = speed if rolls else friction_per_mass / k2 * duration  # R ω at the bottom
+            if mass is not None:
+                results["KE_trans"] = Value(0.5 * mass * speed**2, "J", "kinetic energy of translation at the bottom")
+                results["KE_rot"] = Value(0.5 * k2 * mass * spin_speed**2, "J", "kinetic energy of rotation at the bottom")
+    if v0 > 0:
+        deceleration = a
+        if deceleration <= 0:
+            notes.append("going up, friction never lets gravity stop it: it does not come back")
+        else:
+            climb = v0 * v0 / (2 * deceleration)
+            results["d_climb"] = Value(climb, "m", "distance it climbs up the slope")
+            results["h_climb"] = Value(climb * sin_a, "m", "height it climbs")
+            results["t_climb"] = Value(v0 / deceleration, "s", "time to the highest point")
+
+    steps = _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_mass, results)
+    model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) on a {fmt(math.degrees(angle))}° slope, "
+    model += "rolling without slipping" if rolls else "slipping (kinetic friction)"
+    return Report("rolling", model, "closed form", results, steps, notes)
+
+
+def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_mass, results) -> list[Step]:
+    k2 = roller.k2
+    degrees = fmt(math.degrees(angle))
+    steps = [
+        Step("Translation of the centre (along the slope)", "m a = m g sin θ − f", "", "", "gravity's component pulls it down the slope; friction f at the contact acts up the slope"),
+        Step("Rotation about the centre", "I α = f R,  I = k² m R²", f"k² = {fmt(k2)} for a {roller.description}", "", "only friction has a lever arm about the centre"),
+    ]
+    if rolls:
+        steps.append(Step("No slip", "a = R α", "", "", "the contact point is instantaneously at rest"))
+        steps.append(
+            Step(
+                "Solve the three equations",
+                "a = g sin θ / (1 + k²)",
+                f"{fmt(g)} × sin {degrees}° / (1 + {fmt(k2)})",
+                quantity_text(a, "m/s**2"),
+                "f = k² m a from the rotation and no-slip equations; put into the translation equation, m cancels and so does R",
+            )
+        )
+    steps.append(
+        Step(
+            "Friction needed to roll, and the least μs that supplies it",
+            "f = m g sin θ · k²/(1 + k²),  μ_min = tan θ · k²/(1 + k²)",
+            f"tan {degrees}° × {fmt(k2)} / (1 + {fmt(k2)})",
+            fmt(mu_min),
+            "static friction can give at most μs N = μs m g cos θ"
+            + ("" if mu_s is None else f"; here μs = {fmt(mu_s)} {'≥' if rolls else '<'} μ_min, so it {'rolls' if rolls else 'slips'}"),
+        )
+    )
+    if not rolls:
+        steps.append(
+            Step(
+                "Slipping: kinetic friction instead of the no-slip condition",
+                "f = μₖ m g cos θ,  a = g (sin θ − μₖ cos θ),  α = μₖ g cos θ / (k² R)",
+                f"{fmt(g)} × (sin {degrees}° − {fmt(mu_k)} × cos {degrees}°)",
+                quantity_text(a, "m/s**2"),
+                "the contact slides, so friction takes its kinetic value and a no longer equals Rα",
+            )
+        )
+    if "v" in results and results["v"].value is not None:
+        steps.append(
+            Step("Speed and time at the bottom (uniform acceleration from rest)", "v = √(2 a L),  t = 2L / v", "",
+                 f"{quantity_text(results['v'].value, 'm/s')}, {quantity_text(results['t'].value, 's')}", "constant a along the slope")
+        )
+        if rolls:
+            steps.append(
+                Step("Energy check", "m g h = ½ m v² + ½ I ω² = ½ m v² (1 + k²)", "", "",
+                     f"a share k²/(1 + k²) = {fmt(100 * k2 / (1 + k2), 3)}% of the kinetic energy is rotation; no energy is lost to static friction")
+            )
+    if "d_climb" in results:
+        steps.append(Step("How far it climbs", "d = v₀² / (2a)", "", quantity_text(results["d_climb"].value, "m"), "going up, the same a slows it"))
+    return steps
+
+
+def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega0: float = 0.0) -> Report:
+    """A ball skidding on the flat: friction μk m g acts against the slip v − Rω until it vanishes.
+
+    slip s(t) = s₀ − μk g (1 + 1/k2) t, so t_roll = |s₀| k2 / (μk g (1 + k2));
+    v_roll = (v₀ + k2 R ω₀)/(1 + k2) (angular momentum about the contact point is conserved).
+    """
+    k2, mass, radius = roller.k2, roller.mass, roller.radius
+    if omega0 and radius is None:
+        raise InputError("--radius", "is required with --omega0 (the slip is v − Rω)", example="--radius 0.11m")
+    spin_speed = 0.0 if not omega0 else radius * omega0
+    slip = v0 - spin_speed
+    notes: list[str] = []
+    if slip != 0 and mu_k is None:
+        raise InputError("--mu-k", "is required: the ball skids (v ≠ Rω) and kinetic friction brings it to rolling", example="--mu-k 0.2")
+    v_roll = (v0 + k2 * spin_speed) / (1 + k2)
+    if slip == 0:
+        t_roll = 0.0
+        d_roll = 0.0
+        notes.append("it already rolls (v = Rω): nothing changes on the flat")
+    else:
+        t_roll = abs(slip) * k2 / (mu_k * g * (1 + k2))
+        d_roll = (v0 + v_roll) / 2 * t_roll  # uniform deceleration: the mean speed times the time
+    results: dict[str, Value] = {
+        "t_roll": Value(t_roll, "s", "time until it rolls without slipping"),
+        "d_roll": Value(d_roll, "m", "distance skidded until then"),
+        "v_roll": Value(v_roll, "m/s", "speed once it rolls"),
+        "omega_roll": Value(None if radius is None else v_roll / radius, "rad/s", "angular velocity once it rolls"),
+    }
+    if mass is not None:
+        before = 0.5 * mass * (v0 * v0 + k2 * spin_speed * spin_speed)
+        after = 0.5 * mass * v_roll * v_roll * (1 + k2)
+        results["energy_lost"] = Value(before - after, "J", "kinetic energy turned to heat by sliding friction")
+    steps = [
+        Step("While it skids, kinetic friction acts against the slip", "m dv/dt = −μₖ m g·sgn s,  I dω/dt = +μₖ m g R·sgn s,  s = v − Rω", "", "",
+             "friction slows the centre and spins the ball up (or the reverse, for backspin)"),
+        Step("The slip closes at a constant rate", "ds/dt = −μₖ g (1 + 1/k²)·sgn s  ⇒  t_roll = |s₀| k² / (μₖ g (1 + k²))",
+             "" if slip == 0 else f"{fmt(abs(slip))} × {fmt(k2)} / ({fmt(mu_k)} × {fmt(g)} × (1 + {fmt(k2)}))", quantity_text(t_roll, "s"),
+             "once s = 0 the contact is at rest and friction stops acting: it rolls"),
+        Step("Speed once it rolls", "v_roll = (v₀ + k² R ω₀) / (1 + k²)", f"({fmt(v0)} + {fmt(k2)} × {fmt(spin_speed)}) / (1 + {fmt(k2)})",
+             quantity_text(v_roll, "m/s"), "friction acts at the contact, so angular momentum about the contact point is conserved"),
+    ]
+    model = f"{roller.description} (k² = {fmt(k2)}) skidding on the flat until it rolls"
+    return Report("rolling", model, "closed form", results, steps, notes)

@@ -1,0 +1,133 @@
+"""Rolling and slipping: each case against the article's three equations solved with mpmath,
+energy conservation, and continuity at the roll/slip boundary."""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from taucli.errors import InputError
+from taucli.scenes.rolling import K2, Roller, solve_flat, solve_incline
+
+
+def values(report):
+    return {name: value.value for name, value in report.results.items()}
+
+
+def rolling_reference(k2, mass, radius, angle, g):
+    """Unknowns a, α, f:  m a + f = m g sin θ;  I α − f R = 0;  a − R α = 0."""
+    with mpmath.workdps(40):
+        k2, m, r, angle, g = (mpmath.mpf(x) for x in (k2, mass, radius, angle, g))
+        matrix = mpmath.matrix([[m, 0, 1], [0, k2 * m * r**2, -r], [1, -r, 0]])
+        return mpmath.lu_solve(matrix, mpmath.matrix([m * g * mpmath.sin(angle), 0, 0]))
+
+
+def slipping_reference(k2, mass, radius, angle, g, mu_k):
+    """f = μk N is known; m a = m g sin θ − f and I α = f R give a and α."""
+    with mpmath.workdps(40):
+        k2, m, r, angle, g, mu_k = (mpmath.mpf(x) for x in (k2, mass, radius, angle, g, mu_k))
+        friction = mu_k * m * g * mpmath.cos(angle)
+        return (m * g * mpmath.sin(angle) - friction) / m, friction * r / (k2 * m * r**2), friction
+
+
+angles = st.floats(0, math.radians(89.9))
+
+
+@settings(max_examples=200, deadline=None)
+@given(shape=st.sampled_from(sorted(K2)), mass=st.floats(0.01, 100), radius=st.floats(0.001, 10), angle=angles, g=st.floats(1, 30))
+def test_rolling_solves_the_three_equations(shape, mass, radius, angle, g):
+    result = values(solve_incline(Roller(K2[shape], shape, mass, radius), angle, g))
+    a, alpha, friction = rolling_reference(K2[shape], mass, radius, angle, g)
+    assert result["a"] == pytest.approx(float(a), rel=1e-14, abs=1e-300)
+    assert result["alpha"] == pytest.approx(float(alpha), rel=1e-14, abs=1e-300)
+    assert result["friction"] == pytest.approx(float(friction), rel=1e-14, abs=1e-300)
+    assert result["rolls"] is True
+
+
+@settings(max_examples=200, deadline=None)
+@given(k2=st.floats(0.05, 1.5), mass=st.floats(0.01, 100), radius=st.floats(0.001, 10), angle=st.floats(0.2, 1.5), mu=st.floats(0, 1))
+def test_slipping_solves_translation_and_rotation_with_kinetic_friction(k2, mass, radius, angle, mu):
+    mu_min = math.tan(angle) * k2 / (1 + k2)
+    mu_s = mu_min * 0.5
+    mu_k = min(mu, mu_s)
+    result = values(solve_incline(Roller(k2, "body", mass, radius), angle, 9.80665, mu_s=mu_s, mu_k=mu_k))
+    assert result["rolls"] is False
+    a, alpha, friction = slipping_reference(k2, mass, radius, angle, 9.80665, mu_k)
+    assert result["a"] == pytest.approx(float(a), rel=1e-13)
+    assert result["alpha"] == pytest.approx(float(alpha), rel=1e-13, abs=1e-300)
+    assert result["friction"] == pytest.approx(float(friction), rel=1e-13, abs=1e-300)
+
+
+@settings(max_examples=200, deadline=None)
+@given(shape=st.sampled_from(sorted(K2)), mass=st.floats(0.01, 100), radius=st.floats(0.001, 10), angle=st.floats(0.01, 1.5), height=st.floats(0.01, 100))
+def test_pure_rolling_conserves_energy(shape, mass, radius, angle, height):
+    g = 9.80665
+    result = values(solve_incline(Roller(K2[shape], shape, mass, radius), angle, g, height=height))
+    v = result["v"]
+    omega = v / radius
+    kinetic = 0.5 * mass * v * v + 0.5 * K2[shape] * mass * radius**2 * omega**2
+    assert kinetic == pytest.approx(mass * g * height, rel=1e-13)
+    assert result["KE_trans"] + result["KE_rot"] == pytest.approx(mass * g * height, rel=1e-13)
+
+
+@pytest.mark.parametrize("shape", sorted(K2))
+def test_roll_slip_boundary_is_continuous(shape):
+    k2, angle = K2[shape], math.radians(35)
+    mu_min = math.tan(angle) * k2 / (1 + k2)
+    roller = Roller(k2, shape, 2.0, 0.1)
+    at = values(solve_incline(roller, angle, 9.8, mu_s=mu_min, mu_k=mu_min))
+    below_mu = mu_min * (1 - 1e-12)
+    below = values(solve_incline(roller, angle, 9.8, mu_s=below_mu, mu_k=below_mu))
+    above = values(solve_incline(roller, angle, 9.8, mu_s=mu_min * (1 + 1e-12), mu_k=mu_min))
+    assert at["rolls"] is True and above["rolls"] is True and below["rolls"] is False
+    for name in ("a", "friction", "alpha"):
+        assert below[name] == pytest.approx(at[name], rel=1e-10)
+        assert above[name] == pytest.approx(at[name], rel=1e-10)
+
+
+def test_skidding_ball_reaches_five_sevenths_of_its_speed():
+    """A bowled ball with no spin rolls at 5/7 v0; the time from the equations of motion."""
+    mu_k, g, v0, radius = 0.2, 9.81, 5.0, 0.11
+    result = values(solve_flat(Roller(0.4, "sphere", 0.16, radius), g, mu_k=mu_k, v0=v0))
+    assert result["v_roll"] == pytest.approx(5 * v0 / 7, rel=1e-15)
+    with mpmath.workdps(30):
+        # v(t) = v0 − μk g t and R ω(t) = (μk g / k2) t; the slip vanishes at the root:
+        t_ref = mpmath.findroot(lambda t: (v0 - mu_k * g * t) - (mu_k * g / mpmath.mpf(0.4)) * t, 0.5)
+    assert result["t_roll"] == pytest.approx(float(t_ref), rel=1e-14)
+    assert result["d_roll"] == pytest.approx(float(v0 * t_ref - mu_k * g * t_ref**2 / 2), rel=1e-14)
+    lost = 0.5 * 0.16 * v0**2 - 0.5 * 0.16 * (5 * v0 / 7) ** 2 * 1.4
+    assert result["energy_lost"] == pytest.approx(lost, rel=1e-13)
+
+
+def test_backspin_slows_the_ball_more():
+    result = values(solve_flat(Roller(0.4, "sphere", None, 0.1), 9.8, mu_k=0.2, v0=5.0, omega0=-20.0))
+    assert result["v_roll"] == pytest.approx((5.0 - 0.4 * 2.0) / 1.4)
+
+
+@given(shape=st.sampled_from(sorted(K2)), v0=st.floats(0.1, 50), angle=st.floats(0.05, 1.5))
+def test_climbing_turns_all_kinetic_energy_into_height(shape, v0, angle):
+    k2 = K2[shape]
+    result = values(solve_incline(Roller(k2, shape), angle, 9.80665, v0=v0))
+    assert 9.80665 * result["h_climb"] == pytest.approx(0.5 * v0 * v0 * (1 + k2), rel=1e-13)
+
+
+@pytest.mark.parametrize(
+    "call,fragment",
+    [
+        (lambda: solve_incline(Roller(0.4, "sphere"), math.radians(90), 9.8), "--angle"),
+        (lambda: solve_incline(Roller(0.4, "sphere"), -0.1, 9.8), "--angle"),
+        (lambda: solve_incline(Roller(0.4, "sphere"), 0.5, 9.8, mu_s=0.1, mu_k=0.2), "--mu-k must not exceed"),
+        (lambda: solve_incline(Roller(0.4, "sphere"), 1.2, 9.8, mu_s=0.1), "--mu-k is required"),
+        (lambda: solve_incline(Roller(0.4, "sphere"), 0.5, 9.8, length=1, height=1), "--length conflicts"),
+        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=None, v0=3.0), "--mu-k is required"),
+        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=0.2, v0=3.0, omega0=5.0), "--radius is required"),
+    ],
+)
+def test_impossible_scenes_are_input_errors(call, fragment):
+    with pytest.raises(InputError) as caught:
+        call()
+    assert fragment in str(caught.value)
