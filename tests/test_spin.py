@@ -10,7 +10,7 @@ import math
 
 import mpmath
 import pytest
-from hypothesis import example, given, settings
+from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 from taucli import numerics
@@ -112,6 +112,7 @@ def test_stop_time_and_angle_match_quadrature_to_1e_14(inertia, friction, viscou
 def test_omega_theta_and_passage_time_agree_with_quadrature(constant, viscous, drag, omega0, fraction):
     """Pick ω₁ part way to where the motion heads; the time and angle to get there come from
     quadrature, and ω(t), θ(t) and time_to(ω₁) must agree with them."""
+    assume(constant == 0 or abs(constant) > 1e-100)  # a subnormal torque takes longer than a double can say
     phase = AxlePhase(0.1, constant, viscous, drag, omega0)
     limit = 0.0 if phase.stops else phase.steady_speed
     if limit is None:
