@@ -426,6 +426,93 @@ def rolling(
     emit(report, inputs, json_, get, to, no_steps)
 
 
+@app.command()
+def impulse(
+    inertia: InertiaOption = None,
+    shape: ShapeOption = None,
+    mass: MassOption = None,
+    radius: RadiusOption = None,
+    inner_radius: InnerRadiusOption = None,
+    outer_radius: OuterRadiusOption = None,
+    length: LengthOption = None,
+    width: WidthOption = None,
+    height: HeightOption = None,
+    depth: DepthOption = None,
+    axis: AxisOption = None,
+    offset: OffsetOption = None,
+    omega0: Annotated[Optional[str], typer.Option("--omega0", metavar="OMEGA", help="Angular velocity before.")] = None,
+    omega1: Annotated[Optional[str], typer.Option("--omega1", metavar="OMEGA", help="Angular velocity after.")] = None,
+    torque: Annotated[Optional[str], typer.Option("--torque", metavar="TORQUE", help="Constant torque while it acts.")] = None,
+    duration: Annotated[Optional[str], typer.Option("--duration", metavar="TIME", help="How long the torque acts.")] = None,
+    inertia_final: Annotated[Optional[str], typer.Option("--inertia-final", metavar="I", help="Inertia after a change with no torque (the skater).")] = None,
+    torque_profile: Annotated[Optional[str], typer.Option("--torque-profile", metavar="FILE", help="CSV 't [ms], torque [N*m]' then rows; - for stdin.")] = None,
+    method: Annotated[str, typer.Option("--method", metavar="METHOD", help="Quadrature for a profile: auto | trapezoid | simpson.")] = "auto",
+    json_: JsonFlag = False,
+    get: GetOption = None,
+    to: ToOption = None,
+    no_steps: NoStepsFlag = False,
+) -> None:
+    """Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.
+
+    Results: J, delta_omega, inertia, omega0, omega1, torque, duration, L0, L1, KE0, KE1;
+    with --inertia-final: work; with --torque-profile: peak_torque and ω at the samples.
+
+    Example: taucli impulse --inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s
+    """
+    from taucli.scenes import impulse as scene
+
+    inputs = Inputs()
+    dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
+    body_given = inertia is not None or shape is not None
+    moment, body_steps = read_body(inputs, inertia, shape, mass, axis, offset, **dims) if body_given else (None, ())
+    start = inputs.quantity("--omega0", omega0, "angular velocity", sign="any")
+    if inertia_final is not None or torque_profile is not None:
+        mode = "--inertia-final" if inertia_final is not None else "--torque-profile"
+        for option, text in (("--omega1", omega1), ("--torque", torque), ("--duration", duration), ("--inertia-final", inertia_final if mode != "--inertia-final" else None)):
+            if text is not None:
+                raise InputError(option, f"conflicts with {mode}")
+        if moment is None:
+            raise InputError("--inertia", f"or --shape is required with {mode}", example="--inertia 2kg*m^2")
+        if mode == "--inertia-final":
+            final = inputs.required("--inertia-final", inertia_final, "moment of inertia")
+            report = scene.solve_changing_inertia(moment, final, start or 0.0, inertia_steps=body_steps)
+        else:
+            from taucli.profile import read_profile
+
+            report = _impulse_from_profile(scene, read_profile, torque_profile, moment, start, method, inputs, body_steps)
+    else:
+        if method != "auto":
+            raise InputError("--method", "applies to --torque-profile (trapezoid or simpson); constant torque has a closed form")
+        report = scene.solve_balance(
+            moment,
+            start,
+            inputs.quantity("--omega1", omega1, "angular velocity", sign="any"),
+            inputs.quantity("--torque", torque, "torque", sign="any"),
+            inputs.quantity("--duration", duration, "time"),
+            inertia_steps=body_steps,
+        )
+    emit(report, inputs, json_, get, to, no_steps)
+
+
+def _impulse_from_profile(scene, read_profile, source: str, moment: float, start: float | None, method: str, inputs: Inputs, body_steps):
+    """Stream the profile from a file (or stdin for -) into the quadrature."""
+    if start is None:
+        start = inputs.assume("omega0", 0.0, "angular velocity", "no --omega0: the body starts at rest")
+    if source == "-":
+        profile = read_profile(sys.stdin)
+        inputs.notes.extend(profile.notes)
+        return scene.solve_profile(moment, start, profile.samples, rule=method, inertia_steps=body_steps)
+    try:
+        with open(source, encoding="utf-8") as handle:
+            profile = read_profile(handle)
+            inputs.notes.extend(profile.notes)
+            return scene.solve_profile(moment, start, profile.samples, rule=method, inertia_steps=body_steps)
+    except OSError as err:
+        raise InputError("--torque-profile", "expected a readable CSV file (or - for stdin)", got=f"{source!r}: {err.strerror}") from None
+    except UnicodeDecodeError:
+        raise InputError("--torque-profile", "expected a UTF-8 text file", got=repr(source)) from None
+
+
 def _is_usage_error(err: Exception) -> bool:
     """Typer's (vendored or plain click) usage errors: they carry an exit code and a message."""
     return isinstance(getattr(err, "exit_code", None), int) and hasattr(err, "format_message")

@@ -18,7 +18,7 @@ class ExitStatus(IntEnum):
     INTERRUPTED = 130  # Ctrl-C
 
 
-_VERBS = {"is", "does", "needs", "conflicts", "knows", "must", "applies", "goes", "or", "and", "cannot"}
+_VERBS = {"is", "does", "needs", "conflicts", "knows", "must", "applies", "goes", "or", "and", "cannot", "are"}
 
 
 class TaucliError(Exception):

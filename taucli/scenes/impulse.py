@@ -1,0 +1,211 @@
+"""Angular impulse and angular momentum: J = ∫τ dt = ΔL, L = Iω.
+
+Three cases:
+- constant torque: τΔt = I(ω₁ − ω₀), any four of I, ω₀, ω₁, τ, Δt giving the fifth;
+- inertia that changes with no external torque (the skater, the diver): I₀ω₀ = I₁ω₁;
+- a torque that varies in time, sampled: J by quadrature, then ω₁ = ω₀ + J/I.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+
+from taucli.errors import InputError
+from taucli.numerics import StreamingQuadrature
+from taucli.report import Report, Step, Table, Value, fmt, quantity_text
+
+BRIEF_BLOW = 0.1  # s: a blow this short is remembered by its impulse alone
+SAMPLES_SHOWN = 10_000  # ω at the samples is reported for profiles up to this many rows
+AGREEMENT = 1e-9  # relative: all five given must satisfy τΔt = IΔω this closely
+
+UNKNOWNS = ("inertia", "omega0", "omega1", "torque", "duration")
+_OPTIONS = {"inertia": "--inertia", "omega0": "--omega0", "omega1": "--omega1", "torque": "--torque", "duration": "--duration"}
+
+
+def _momentum_results(inertia: float, omega0: float, omega1: float) -> dict[str, Value]:
+    return {
+        "L0": Value(inertia * omega0, "kg*m**2/s", "angular momentum before"),
+        "L1": Value(inertia * omega1, "kg*m**2/s", "angular momentum after"),
+        "KE0": Value(0.5 * inertia * omega0 * omega0, "J", "rotational kinetic energy before"),
+        "KE1": Value(0.5 * inertia * omega1 * omega1, "J", "rotational kinetic energy after"),
+    }
+
+
+def solve_balance(
+    inertia: float | None,
+    omega0: float | None,
+    omega1: float | None,
+    torque: float | None,
+    duration: float | None,
+    *,
+    inertia_steps: Sequence[Step] = (),
+) -> Report:
+    """τΔt = I(ω₁ − ω₀) with any four given: the fifth, J, Δω, L and KE before and after."""
+    given = {"inertia": inertia, "omega0": omega0, "omega1": omega1, "torque": torque, "duration": duration}
+    missing = [name for name, value in given.items() if value is None]
+    if len(missing) > 1:
+        raise InputError(
+            " and ".join(_OPTIONS[name] for name in missing),
+            "are missing: give four of --inertia, --omega0, --omega1, --torque, --duration, and the fifth is solved for",
+            example="--inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s",
+        )
+    notes: list[str] = []
+    unknown = missing[0] if missing else None
+    i, w0, w1, tau, dt = inertia, omega0, omega1, torque, duration
+    if unknown == "omega1":
+        w1 = w0 + tau * dt / i
+    elif unknown == "omega0":
+        w0 = w1 - tau * dt / i
+    elif unknown == "torque":
+        tau = i * (w1 - w0) / dt
+    elif unknown == "duration":
+        if tau == 0:
+            raise InputError("--torque", "must not be zero when the duration is solved for: no torque, no change of ω")
+        dt = i * (w1 - w0) / tau
+        if dt <= 0:
+            raise InputError("--torque", "must act in the sense of the change ω₁ − ω₀ for a positive duration", got=f"τ = {fmt(tau)} N·m, Δω = {fmt(w1 - w0)} rad/s")
+    elif unknown == "inertia":
+        if w1 == w0:
+            raise InputError("--omega1", "must differ from --omega0 when the inertia is solved for")
+        i = tau * dt / (w1 - w0)
+        if i <= 0:
+            raise InputError("--torque", "must act in the sense of the change ω₁ − ω₀ for a positive inertia", got=f"τΔt = {fmt(tau * dt)} N·m·s, Δω = {fmt(w1 - w0)} rad/s")
+    else:
+        impulse, change = tau * dt, i * (w1 - w0)
+        if abs(impulse - change) > AGREEMENT * max(abs(impulse), abs(i * w0), abs(i * w1), 1e-300):
+            raise InputError(
+                "--omega1",
+                f"and the other four disagree: τΔt = {fmt(impulse, 6)} N·m·s but I(ω₁ − ω₀) = {fmt(change, 6)} N·m·s",
+                hint="leave out the one to solve for",
+            )
+    impulse = tau * dt
+    results: dict[str, Value] = {
+        "J": Value(impulse, "N*m*s", "angular impulse τΔt"),
+        "delta_omega": Value(w1 - w0, "rad/s", "change of angular velocity"),
+        "inertia": Value(i, "kg*m**2", "moment of inertia" + (" (solved for)" if unknown == "inertia" else "")),
+        "omega0": Value(w0, "rad/s", "angular velocity before" + (" (solved for)" if unknown == "omega0" else "")),
+        "omega1": Value(w1, "rad/s", "angular velocity after" + (" (solved for)" if unknown == "omega1" else "")),
+        "torque": Value(tau, "N*m", "constant torque" + (" (solved for)" if unknown == "torque" else "")),
+        "duration": Value(dt, "s", "time the torque acts" + (" (solved for)" if unknown == "duration" else "")),
+    }
+    results.update(_momentum_results(i, w0, w1))
+    if dt <= BRIEF_BLOW:
+        notes.append(f"a brief blow ({fmt(dt)} s): the motion remembers only the impulse J = τΔt, not how the torque was shaped within it")
+    steps = list(inertia_steps)
+    steps.append(
+        Step(
+            "Angular impulse equals the change of angular momentum",
+            "J = τΔt = IΔω = I(ω₁ − ω₀)",
+            "",
+            "",
+            "multiply τ = Iα by Δt: with the torque constant, αΔt = Δω",
+        )
+    )
+    solved = {
+        "omega1": ("ω₁ = ω₀ + τΔt/I", f"{fmt(w0)} + {fmt(tau)} × {fmt(dt)} / {fmt(i)}", quantity_text(w1, "rad/s")),
+        "omega0": ("ω₀ = ω₁ − τΔt/I", f"{fmt(w1)} − {fmt(tau)} × {fmt(dt)} / {fmt(i)}", quantity_text(w0, "rad/s")),
+        "torque": ("τ = I(ω₁ − ω₀)/Δt", f"{fmt(i)} × ({fmt(w1)} − {fmt(w0)}) / {fmt(dt)}", quantity_text(tau, "N*m")),
+        "duration": ("Δt = I(ω₁ − ω₀)/τ", f"{fmt(i)} × ({fmt(w1)} − {fmt(w0)}) / {fmt(tau)}", quantity_text(dt, "s")),
+        "inertia": ("I = τΔt/(ω₁ − ω₀)", f"{fmt(tau)} × {fmt(dt)} / ({fmt(w1)} − {fmt(w0)})", quantity_text(i, "kg*m**2")),
+    }
+    if unknown is not None:
+        equation, numbers, result = solved[unknown]
+        steps.append(Step(f"Solve for {_OPTIONS[unknown].lstrip('-')}", equation, numbers, result, "the one quantity not given"))
+    steps.append(Step("The impulse", "J = τΔt", f"{fmt(tau)} × {fmt(dt)}", quantity_text(impulse, "N*m*s"), "the same as the change of angular momentum ΔL = IΔω"))
+    model = "constant torque: τΔt = IΔω" + (f", solved for {unknown}" if unknown else ", all five given and consistent")
+    return Report("impulse", model, "closed form", results, steps, notes)
+
+
+def solve_changing_inertia(inertia0: float, inertia1: float, omega0: float, *, inertia_steps: Sequence[Step] = ()) -> Report:
+    """No external torque: L = Iω is conserved while I changes; kinetic energy is not."""
+    omega1 = inertia0 * omega0 / inertia1
+    momentum = inertia0 * omega0
+    energy0 = 0.5 * inertia0 * omega0 * omega0
+    energy1 = 0.5 * momentum * omega1  # ½ I₁ω₁² = ½ L ω₁
+    results = {
+        "omega1": Value(omega1, "rad/s", "angular velocity after the change"),
+        "delta_omega": Value(omega1 - omega0, "rad/s", "change of angular velocity"),
+        "J": Value(0.0, "N*m*s", "angular impulse: no external torque"),
+        "L0": Value(momentum, "kg*m**2/s", "angular momentum before"),
+        "L1": Value(inertia1 * omega1, "kg*m**2/s", "angular momentum after (the same)"),
+        "KE0": Value(energy0, "J", "rotational kinetic energy before"),
+        "KE1": Value(energy1, "J", "rotational kinetic energy after"),
+        "work": Value(energy1 - energy0, "J", "work the body does on itself (KE1 − KE0)"),
+    }
+    steps = [
+        *inertia_steps,
+        Step("No external torque: angular momentum is conserved", "τ = dL/dt = 0  ⇒  I₀ω₀ = I₁ω₁", "", "",
+             "τ = Iα does not hold while I changes; τ = d(Iω)/dt does, and with τ = 0, Iω stays constant"),
+        Step("Angular velocity after", "ω₁ = I₀ω₀ / I₁", f"{fmt(inertia0)} × {fmt(omega0)} / {fmt(inertia1)}", quantity_text(omega1, "rad/s"),
+             "less inertia, faster spin: the skater pulling in her arms"),
+        Step("Kinetic energy is not conserved", "KE = L²/(2I)  ⇒  KE₁/KE₀ = I₀/I₁",
+             f"{fmt(energy0)} J × {fmt(inertia0)} / {fmt(inertia1)}", quantity_text(energy1, "J"),
+             "pulling mass inward against the outward pull of the spin takes work, done by the body's own muscles; "
+             "spreading out gives it back"),
+    ]
+    model = "changing moment of inertia, no external torque: L conserved"
+    return Report("impulse", model, "closed form", results, steps, [])
+
+
+def solve_profile(
+    inertia: float,
+    omega0: float,
+    samples: Iterable[tuple[float, float]],
+    *,
+    rule: str = "auto",
+    inertia_steps: Sequence[Step] = (),
+) -> Report:
+    """A sampled torque τ(t): J by quadrature, ω at the samples, ω₁ = ω₀ + J/I, the peak torque."""
+    if rule not in ("auto", *StreamingQuadrature.RULES):
+        raise InputError("--method", "expected auto, trapezoid or simpson for a torque profile", got=repr(rule))
+    notes: list[str] = []
+    quadrature = StreamingQuadrature()
+    shown: list[tuple[float, float, float]] = []
+    chosen = "simpson" if rule == "auto" else rule
+    start = None
+    for t, torque in samples:
+        if start is None:
+            start = t
+        quadrature.add(t, torque)
+        if quadrature.count <= SAMPLES_SHOWN:
+            shown.append((t, torque, omega0 + quadrature.result(chosen) / inertia))
+    count = quadrature.count
+    if count < 2:
+        raise InputError("--torque-profile", "needs at least two samples for an integral")
+    if rule == "auto" and count < 3:
+        chosen = "trapezoid"
+    impulse = quadrature.result(chosen)
+    duration = t - start
+    omega1 = omega0 + impulse / inertia
+    results: dict[str, Value] = {
+        "J": Value(impulse, "N*m*s", f"angular impulse ∫τ dt ({chosen})"),
+        "delta_omega": Value(impulse / inertia, "rad/s", "change of angular velocity"),
+        "omega1": Value(omega1, "rad/s", "angular velocity after the last sample"),
+        "duration": Value(duration, "s", "time from the first sample to the last"),
+        "peak_torque": Value(quadrature.peak[1], "N*m", f"largest torque, at t = {fmt(quadrature.peak[0])} s"),
+    }
+    results.update(_momentum_results(inertia, omega0, omega1))
+    if rule == "auto":
+        notes.append(
+            f"method: {chosen} ("
+            + ("composite Simpson, exact for quadratics, O(h⁴) on smooth data" if chosen == "simpson" else "two samples: only the trapezoid rule applies")
+            + "; --method trapezoid for data with corners, where Simpson's higher order does not hold)"
+        )
+    if duration <= BRIEF_BLOW:
+        notes.append(f"a brief blow ({fmt(duration)} s): the motion remembers only the impulse J, not the shape of τ(t)")
+    tables = {}
+    if count <= SAMPLES_SHOWN:
+        columns = (("t", "s", "t"), ("torque", "N*m", "τ"), ("omega", "rad/s", "ω"))
+        tables["samples"] = Table(columns, tuple(shown))
+    else:
+        notes.append(f"ω at the samples is reported for up to {SAMPLES_SHOWN:,} rows; this profile has {count:,}")
+    steps = [
+        *inertia_steps,
+        Step("Angular impulse of a varying torque", "J = ∫τ dt = ΔL = I(ω₁ − ω₀)", f"{count} samples over {fmt(duration)} s, {chosen} rule",
+             quantity_text(impulse, "N*m*s"), "the torque changes in time, so its impulse is an integral, taken here from the samples"),
+        Step("Angular velocity after", "ω₁ = ω₀ + J/I", f"{fmt(omega0)} + {fmt(impulse)} / {fmt(inertia)}", quantity_text(omega1, "rad/s"),
+             "the impulse is all the motion remembers of the torque"),
+    ]
+    model = f"sampled torque profile ({count} samples), J by the {chosen} rule"
+    return Report("impulse", model, chosen, results, steps, notes, {}, tables)
