@@ -94,7 +94,10 @@ def solve_incline(
     run = length if length is not None else (None if height is None else height / sin_a)
     if run is not None:
         if a <= 0:
-            notes.append("the body does not move down the slope: friction holds it" if a == 0 else "kinetic friction exceeds gravity's pull")
+            if angle == 0:
+                notes.append("on the flat nothing pulls it along: from rest it stays where it is")
+            else:
+                notes.append("kinetic friction exceeds gravity's pull along the slope: it does not slide down")
             results["v"] = Value(None, "m/s", "speed at the bottom")
             results["t"] = Value(None, "s", "time to the bottom")
         else:

@@ -111,7 +111,9 @@ def solve(
 
     results: dict[str, Value] = {"I": Value(inertia, "kg*m**2", "moment of inertia about the axle")}
     results["alpha0"] = Value(alpha0, "rad/s**2", "angular acceleration at the start")
-    if held_from_start:
+    if held_from_start and not torques.drive:
+        notes.append("no initial speed and no driving torque: the wheel stays at rest")
+    elif held_from_start:
         notes.append(
             f"static friction holds the wheel at rest: |τ_drive| = {quantity_text(abs(torques.drive), 'N*m')} "
             f"does not exceed τ_f = {quantity_text(torques.holding, 'N*m')}"
