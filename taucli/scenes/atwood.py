@@ -109,7 +109,8 @@ def solve(
 
     pulley_mass = pulley.effective_mass()
     moving_mass = m1 + m2 + pulley_mass
-    drive = m1 * g - m2 * g * sin_angle
+    # (m1 − m2) is exact for near-equal masses (Sterbenz); m1·g − m2·g would lose the difference.
+    drive = (m1 - m2) * g if slope.hanging else m1 * g - m2 * g * sin_angle
     axle = pulley.axle_force()
     loads = Loads(drive=drive, friction=slope.mu_k * normal + axle, static=mu_s * normal + axle)
     motion = evolve(moving_mass, loads, v0, Evolver(Method("exact")))
