@@ -513,6 +513,53 @@ def _impulse_from_profile(scene, read_profile, source: str, moment: float, start
         raise InputError("--torque-profile", "expected a UTF-8 text file", got=repr(source)) from None
 
 
+@app.command()
+def bench(
+    scene: Annotated[Optional[list[str]], typer.Option("--scene", metavar="SCENE", help="spin-down or impulse (repeatable; default both).")] = None,
+    quick: Annotated[bool, typer.Option("--quick", help="Fewer settings and repeats: a few seconds.")] = False,
+    out: Annotated[Optional[str], typer.Option("--out", metavar="FILE", help="Also draw the charts to FILE.svg or FILE.png (needs matplotlib).")] = None,
+    json_: JsonFlag = False,
+) -> None:
+    """Speed against accuracy: time per solve and error of every method, charted (log-log).
+
+    Each point is one method at one step, tolerance or sample count on a fixed problem (the
+    article's potter's wheel, a friction + viscous + drag coast, a power-law drag, a stiff brake,
+    a half-sine torque pulse), its error against a 50-digit reference. '!' marks a run that
+    diverged. scipy's solve_ivp is charted too when scipy is installed.
+
+    Example: taucli bench --quick
+    """
+    import json
+
+    from taucli import bench as workbench
+
+    chosen = tuple(scene or workbench.SCENES)
+    for name in chosen:
+        if name not in workbench.SCENES:
+            raise InputError("--scene", f"expected one of {', '.join(workbench.SCENES)}", got=repr(name))
+    if out is not None and not out.lower().endswith((".svg", ".png")):
+        raise InputError("--out", "expected a file name ending in .svg or .png", example="--out chart.svg", got=repr(out))
+    if out is not None:
+        try:
+            import matplotlib  # noqa: F401
+        except ImportError:
+            raise InputError("--out", "needs matplotlib", hint="pip install 'taucli[plot]'") from None
+    points = workbench.run(chosen, quick=quick)
+    if out is not None:
+        workbench.write_image(points, out)
+    if json_:
+        print(json.dumps(workbench.document(points), allow_nan=False))
+        return
+    import shutil
+
+    width = max(60, min(shutil.get_terminal_size((100, 24)).columns, 110))
+    for problem in dict.fromkeys(p.problem for p in points):
+        print("\n".join(workbench.chart(points, problem, width=width)))
+        print()
+    if out is not None:
+        print(f"charts written to {out}")
+
+
 def _is_usage_error(err: Exception) -> bool:
     """Typer's (vendored or plain click) usage errors: they carry an exit code and a message."""
     return isinstance(getattr(err, "exit_code", None), int) and hasattr(err, "format_message")

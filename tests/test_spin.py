@@ -282,3 +282,18 @@ def test_methods_table_and_input_errors():
         solve(0.1, Torques(friction=0.3, drag=0.01, drag_exponent=0.5), 30.0)
     with pytest.raises(InputError, match="--dt"):
         solve(0.1, Torques(friction=0.3), 30.0, time=1e4, method="euler", dt=1e-6)
+
+
+@pytest.mark.parametrize("inertia", [1e-3, 0.1, 10.0])
+@pytest.mark.parametrize("viscous", [0.0, 0.01, 5.0])
+@pytest.mark.parametrize("exponent", [1.5, 2.0, 3.0])
+def test_auto_never_lands_in_an_unstable_or_inaccurate_regime(inertia, viscous, exponent):
+    """Over a grid from gentle to stiff (b/I up to 5000 /s): auto is the closed form where one
+    exists, and otherwise rk45 within 1e-8 of quadrature, never a diverged run."""
+    torques = Torques(friction=0.3, viscous=viscous, drag=0.001, drag_exponent=exponent)
+    report = solve(inertia, torques, 40.0)
+    assert not any("unstable" in note for note in report.notes)
+    assert report.method.startswith("closed form" if exponent == 2 else "rk45")
+    t_ref, theta_ref = stop_reference(inertia, -0.3, viscous, 0.001, 40.0, exponent=mpmath.mpf(exponent))
+    assert rel_error(report.results["t_stop"].value, t_ref) <= (1e-14 if exponent == 2 else 1e-8)
+    assert rel_error(report.results["theta_stop"].value, theta_ref) <= (1e-14 if exponent == 2 else 1e-8)
