@@ -130,11 +130,15 @@ def solve(
             + f" (net pull {quantity_text(abs(drive), 'N')} against at most {quantity_text(loads.holding, 'N')} of friction)"
         )
     else:
-        tension_high = m1 * (g - a)
+        # T1 = m1(g − a) and T2 = m2(a + g sin θ) + s μk N, with g − a and a + g sin θ written out
+        # from a's formula: sums of positive terms, where the differences cancel as a -> g or −g sin θ.
+        sliding = direction * slope.mu_k * normal
+        g_less_a = (g * (m2 * (1 + sin_angle) + pulley_mass) + direction * loads.friction) / moving_mass
+        tension_high = m1 * g_less_a
         if pulley_mass == 0 and axle == 0:
             tension_low = tension_high  # the pulley's equation with I = 0: (T1 − T2)R = 0
-        else:
-            tension_low = m2 * (a + g * sin_angle) + direction * slope.mu_k * normal
+        else:  # m2(a + g sin θ) + s μk N over one denominator, so the μk N terms do not cancel
+            tension_low = (m2 * g * (m1 * (1 + sin_angle) + sin_angle * pulley_mass) - direction * m2 * axle + sliding * (m1 + pulley_mass)) / moving_mass
     results["T1"] = Value(tension_high, "N", "tension on m1's side")
     results["T2"] = Value(tension_low, "N", "tension on m2's side")
     results["alpha"] = Value(None if pulley.radius is None else a / pulley.radius, "rad/s**2", "angular acceleration of the pulley")
