@@ -175,14 +175,14 @@ def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> 
         for number, step in enumerate(report.steps, start=1):
             console.print(Text.assemble((f"{number}. ", "bold"), (step.title, "bold")))
             indent = " " * 4
-            console.print(Text(indent + step.equation))
-            align = indent + " " * max(step.equation.find("="), 0)
+            console.print(Padding(Text(step.equation), (0, 0, 0, len(indent)), expand=False))
+            align = len(indent) + max(step.equation.find("="), 0)
             if step.numbers:
-                console.print(Text(f"{align}= {step.numbers}"))
+                console.print(Padding(Text(f"= {step.numbers}"), (0, 0, 0, align), expand=False))
             if step.result and step.result != step.numbers:
-                console.print(Text(f"{align}= {step.result}"))
+                console.print(Padding(Text(f"= {step.result}"), (0, 0, 0, align), expand=False))
             if step.why:
-                console.print(Padding(Text.assemble(("why: ", "italic"), step.why, style="dim"), (0, 0, 0, len(indent))))
+                console.print(Padding(Text.assemble(("why: ", "italic"), step.why, style="dim"), (0, 0, 0, len(indent)), expand=False))
     for note in report.notes:
         console.print(Text.assemble(("note: ", "yellow"), note))
 

@@ -227,15 +227,25 @@ def _kinematics_steps(torques, first, stop, results, time, method, omega0) -> li
             steps.append(Step("Convert to revolutions", "revs = θ / 2π", f"{fmt(results['theta'].value)} / 2π",
                               f"{fmt(results['revs'].value)} rev", "one full revolution is 2π radians"))
     else:
+        discriminant = closed.viscous**2 + 4 * closed.drag * closed.constant
         steps.append(
             Step(
-                "Solve I dω/dt = A − bω − kω² (separable)",
-                "ω(t) = r₊ + (ω₀ − r₊)E/(E + (kω₀ + β)(1 − E)/√D),  E = e^(−√D t/I)",
-                f"A = {quantity_text(closed.constant, 'N*m')}, b = {fmt(closed.viscous)}, k = {fmt(closed.drag)}, "
-                f"D = b² + 4kA = {fmt(closed.viscous**2 + 4 * closed.drag * closed.constant)}",
+                "The constants of I dω/dt = A − bω − kω²",
+                f"D = b² + 4kA,  with A = τ_drive − τ_f = {quantity_text(closed.constant, 'N*m')}",
+                f"({fmt(closed.viscous)})² + 4 × {fmt(closed.drag)} × ({fmt(closed.constant)})",
+                fmt(discriminant)
+                + (" (D < 0: the tangent form)" if discriminant < 0 else " (D > 0: the tanh form)" if closed.drag else " (k = 0: exponential)"),
+                "the sign of D decides which of the log, arctangent or artanh integrals the separable equation gives",
+            )
+        )
+        steps.append(
+            Step(
+                "Solve it (separable)",
+                "ω(t) = r₊ + (ω₀ − r₊)E/(E + (kω₀ + β)(1 − E)/√D),  E = e^(−√D t/I),  r₊ = 2A/(b + √D),  β = (b + √D)/2",
                 "",
-                "r₊ = 2A/(b + √D) is the steady speed when D > 0 and A > 0; when D < 0 the same form is the "
-                "tangent solution; written so it stays exact as k -> 0 (exponential decay) and D -> 0",
+                "",
+                "r₊ is the steady speed when D > 0 and A > 0; for D < 0 the same form is the tangent solution, "
+                "evaluated so that it stays exact as k -> 0 (exponential decay) and D -> 0",
             )
         )
         if stop is not None and stop[0] > 0:
