@@ -16,8 +16,13 @@ import typer
 from taucli.errors import ExitStatus, InputError, TaucliError
 from taucli.inputs import SHAPE_DIMENSIONS, Inputs, parse_part_spec
 from taucli.scenes.inertia import SHAPES
+from taucli.scenes.rolling import K2
 
 SHAPE_NAMES = tuple(SHAPES)
+# Kept here, not imported, so that --help does not load the solvers (about 15 ms);
+# tests/test_layers.py checks them against numerics.METHODS and atwood.Pulley.SHAPE_FACTORS.
+METHOD_NAMES = ("auto", "exact", "euler", "rk4", "rk45")
+PULLEY_SHAPES = ("disc", "ring")
 
 app = typer.Typer(
     name="taucli",
@@ -169,7 +174,7 @@ ShapeOption = Annotated[
 ]
 _MOTION = "Motion and method"
 MethodOption = Annotated[
-    str, typer.Option("--method", metavar="METHOD", help="auto | exact | euler | rk4 | rk45.", rich_help_panel=_MOTION)
+    str, typer.Option("--method", metavar="METHOD", help=" | ".join(METHOD_NAMES) + ".", rich_help_panel=_MOTION)
 ]
 DtOption = Annotated[Optional[str], typer.Option("--dt", metavar="TIME", help="Fixed step for euler and rk4 (default 1 ms).", rich_help_panel=_MOTION)]
 RtolOption = Annotated[Optional[str], typer.Option("--rtol", metavar="NUMBER", help="Relative tolerance for rk45 (default 1e-10).", rich_help_panel=_MOTION)]
@@ -291,7 +296,7 @@ def atwood(
     m2: Annotated[Optional[str], typer.Option("--m2", metavar="MASS", help="The other mass (0: one mass on a string wound on the pulley).")] = None,
     pulley_mass: Annotated[Optional[str], typer.Option("--pulley-mass", metavar="MASS", help="Pulley mass (default 0: massless).", rich_help_panel=_PULLEY)] = None,
     pulley_radius: Annotated[Optional[str], typer.Option("--pulley-radius", metavar="LENGTH", help="Pulley radius (needed only for alpha, axle friction or --pulley-inertia).", rich_help_panel=_PULLEY)] = None,
-    pulley_shape: Annotated[Optional[str], typer.Option("--pulley-shape", metavar="disc|ring", help="Pulley shape (default disc).", rich_help_panel=_PULLEY)] = None,
+    pulley_shape: Annotated[Optional[str], typer.Option("--pulley-shape", metavar="|".join(PULLEY_SHAPES), help="Pulley shape (default disc).", rich_help_panel=_PULLEY)] = None,
     pulley_inertia: Annotated[Optional[str], typer.Option("--pulley-inertia", metavar="I", help="Pulley moment of inertia, instead of mass and shape.", rich_help_panel=_PULLEY)] = None,
     axle_friction: Annotated[Optional[str], typer.Option("--axle-friction", metavar="TORQUE", help="Constant friction torque at the axle (holds at rest too).", rich_help_panel=_PULLEY)] = None,
     incline: Annotated[Optional[str], typer.Option("--incline", metavar="ANGLE", help="m2 on a slope at this angle (0deg: a table) instead of hanging.")] = None,
@@ -347,7 +352,7 @@ def atwood(
 
 @app.command()
 def rolling(
-    shape: Annotated[Optional[str], typer.Argument(metavar="SHAPE", help="sphere, shell, disc, cylinder, ring or hoop (or give --k2 or --inertia).", show_default=False)] = None,
+    shape: Annotated[Optional[str], typer.Argument(metavar="SHAPE", help=f"{', '.join(K2)} (or give --k2 or --inertia).", show_default=False)] = None,
     k2: Annotated[Optional[str], typer.Option("--k2", metavar="NUMBER", help="I/(mR²) of the body, instead of SHAPE.", rich_help_panel=_BODY)] = None,
     inertia: Annotated[Optional[str], typer.Option("--inertia", metavar="I", help="Moment of inertia about the centre (with --mass and --radius).", rich_help_panel=_BODY)] = None,
     mass: Annotated[Optional[str], typer.Option("--mass", metavar="MASS", help="Mass (needed only for forces and energies).", rich_help_panel=_BODY)] = None,

@@ -54,3 +54,11 @@ def test_a_result_that_does_not_exist_is_null_with_a_note():
     assert cleaned.results["t_stop"].value is None
     assert any("t_stop" in note for note in cleaned.notes)
     assert document(cleaned)["results"]["t_stop"]["value"] is None
+
+
+def test_help_lists_match_the_tables_they_stand_for():
+    from taucli import cli, numerics
+    from taucli.scenes.atwood import Pulley
+
+    assert cli.METHOD_NAMES == ("auto", "exact", *numerics.METHODS)
+    assert cli.PULLEY_SHAPES == tuple(Pulley.SHAPE_FACTORS)

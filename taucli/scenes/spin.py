@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from taucli.errors import InputError
+from taucli.numerics import METHODS
 from taucli.report import Report, Step, Value, fmt, quantity_text
 from taucli.scenes.coulomb import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
 
@@ -173,7 +174,7 @@ def _choose_method(method: str, closed_form: bool, dt: float | None, rtol: float
         return Method(method, dt or DEFAULT_DT)
     if method == "rk45":
         return Method("rk45", dt, rtol or DEFAULT_RTOL)
-    raise InputError("--method", "expected one of auto, exact, euler, rk4, rk45", example="--method rk4 --dt 1ms", got=repr(method))
+    raise InputError("--method", f"expected one of auto, exact, {', '.join(METHODS)}", example="--method rk4 --dt 1ms", got=repr(method))
 
 
 def _never_stops_note(torques: Torques, phase: Phase) -> str:
