@@ -6,7 +6,6 @@ No physics here. Solvers, units and renderers are imported inside the commands, 
 
 from __future__ import annotations
 
-import math
 import os
 import sys
 from typing import Annotated, Optional
@@ -249,8 +248,8 @@ def spin_down(
         push_force = inputs.required("--force", force, "force", sign="any", why=" with --lever")
         push_lever = inputs.required("--lever", lever, "length", why=" with --force")
         angle = inputs.quantity("--push-angle", push_angle, "angle", sign="any")
-        push = spin.Push(push_force, push_lever, math.pi / 2 if angle is None else angle)
-        drive = push_force * push_lever * math.sin(push.angle)
+        push = spin.Push(push_force, push_lever) if angle is None else spin.Push(push_force, push_lever, angle)
+        drive = push.torque
     else:
         drive = inputs.quantity("--torque", torque, "torque", sign="any") or 0.0
     exponent = inputs.quantity("--drag-exponent", drag_exponent, "dimensionless", sign="positive")

@@ -32,6 +32,10 @@ class Push:
     lever: float
     angle: float = math.pi / 2
 
+    @property
+    def torque(self) -> float:
+        return self.force * self.lever * math.sin(self.angle)
+
 
 def _net_torque_step(torques: Torques, omega0: float, alpha0: float, inertia: float, held: bool) -> tuple[Step, Step]:
     """τ_net at the start, term by term with its sign, then α = τ_net/I."""
@@ -151,7 +155,7 @@ def solve(
 
     steps = list(inertia_steps)
     if push is not None:
-        steps.append(_push_step(push, torques.drive))
+        steps.append(_push_step(push))
     steps.extend(_net_torque_step(torques, omega0, alpha0, inertia, held_from_start))
     if not held_from_start:
         steps.extend(_kinematics_steps(torques, first, stop, results, time, chosen, omega0))
@@ -185,14 +189,14 @@ def _never_stops_note(torques: Torques, phase: Phase) -> str:
     return "t_stop: no net torque, so ω stays constant and the wheel never stops"
 
 
-def _push_step(push: Push, torque: float) -> Step:
+def _push_step(push: Push) -> Step:
     at_right_angle = math.isclose(push.angle, math.pi / 2)
     return Step(
         "Torque of the push",
         "τ = F r" if at_right_angle else "τ = F r sin φ",
         f"{quantity_text(push.force, 'N')} × {quantity_text(push.lever, 'm')}"
         + ("" if at_right_angle else f" × sin {fmt(math.degrees(push.angle))}°"),
-        quantity_text(torque, "N*m"),
+        quantity_text(push.torque, "N*m"),
         "the force is tangential, perpendicular to the radius, so all of it turns the wheel"
         if at_right_angle
         else "only the part of the force perpendicular to the lever arm makes torque",
