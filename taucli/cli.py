@@ -381,44 +381,29 @@ def rolling(
     inputs = Inputs()
     mass_si = inputs.quantity("--mass", mass, "mass")
     radius_si = inputs.quantity("--radius", radius, "length")
-    given = [name for name, text in (("SHAPE", shape), ("--k2", k2), ("--inertia", inertia)) if text is not None]
-    if len(given) != 1:
-        raise InputError(
-            "SHAPE" if not given else given[1],
-            "is required: SHAPE, --k2 or --inertia (one of them)" if not given else f"conflicts with {given[0]}: describe the body once",
-            example="taucli rolling sphere --angle 30deg",
-        )
-    if shape is not None:
-        if shape not in scene.K2:
-            import difflib
-
-            close = difflib.get_close_matches(shape, list(scene.K2), n=1)
-            raise InputError("SHAPE", f"expected one of {', '.join(scene.K2)}", example="sphere", got=repr(shape), hint=f"did you mean {close[0]!r}?" if close else None)
-        roller = scene.Roller(scene.K2[shape], shape, mass_si, radius_si)
-    elif k2 is not None:
-        roller = scene.Roller(inputs.required("--k2", k2, "dimensionless"), "body", mass_si, radius_si)
-    else:
-        moment = inputs.required("--inertia", inertia, "moment of inertia")
-        if mass_si is None or radius_si is None:
-            raise InputError("--mass" if mass_si is None else "--radius", "is required with --inertia (k² = I/(mR²))", example="--mass 2kg --radius 0.1m")
-        roller = scene.Roller(moment / (mass_si * radius_si**2), "body", mass_si, radius_si)
+    body = scene.roller(
+        shape,
+        inputs.quantity("--k2", k2, "dimensionless"),
+        inputs.quantity("--inertia", inertia, "moment of inertia"),
+        mass_si,
+        radius_si,
+    )
     slope = inputs.quantity("--angle", angle, "angle", sign="any")
     speed = inputs.quantity("--v0", v0, "velocity", sign="any")
     spin = inputs.quantity("--omega0", omega0, "angular velocity", sign="any")
     gravity = read_gravity(inputs, g)
     friction_s = inputs.quantity("--mu-s", mu_s, "dimensionless", sign="nonnegative")
     friction_k = inputs.quantity("--mu-k", mu_k, "dimensionless", sign="nonnegative")
-    scene._check_friction(friction_s, friction_k)
     on_the_flat = (slope is None or slope == 0) and (speed is not None or spin is not None) and length is None and height is None
     if on_the_flat:
-        report = scene.solve_flat(roller, gravity, mu_k=friction_k, v0=speed or 0.0, omega0=spin or 0.0)
+        report = scene.solve_flat(body, gravity, mu_k=friction_k, v0=speed or 0.0, omega0=spin or 0.0, mu_s=friction_s)
     else:
         if slope is None:
             raise InputError("--angle", "is required on an incline", example="--angle 30deg")
         if spin is not None:
             raise InputError("--omega0", "applies on the flat (--angle 0 with --v0): a skidding ball")
         report = scene.solve_incline(
-            roller,
+            body,
             slope,
             gravity,
             mu_s=friction_s,

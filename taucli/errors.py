@@ -59,3 +59,11 @@ class InputError(TaucliError, ValueError):
         if self.hint:
             message += f"; {self.hint}"
         return message
+
+
+def did_you_mean(name: str, choices, cutoff: float = 0.6) -> str | None:
+    """'did you mean ...?' for the closest of ``choices`` to a mistyped ``name``, or None."""
+    import difflib
+
+    close = difflib.get_close_matches(name, list(choices), n=1, cutoff=cutoff)
+    return f"did you mean {close[0]!r}?" if close else None

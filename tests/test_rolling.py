@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from taucli.errors import InputError
-from taucli.scenes.rolling import K2, Roller, solve_flat, solve_incline
+from taucli.scenes.rolling import K2, Roller, roller, solve_flat, solve_incline
 
 
 def values(report):
@@ -103,6 +103,10 @@ def test_skidding_ball_reaches_five_sevenths_of_its_speed():
     assert result["energy_lost"] == pytest.approx(lost, rel=1e-13)
 
 
+def test_a_body_given_by_its_inertia_has_k2_from_it():
+    assert roller(None, None, 0.004, 1.0, 0.1).k2 == pytest.approx(0.4, rel=1e-15)
+
+
 def test_backspin_slows_the_ball_more():
     result = values(solve_flat(Roller(0.4, "sphere", None, 0.1), 9.8, mu_k=0.2, v0=5.0, omega0=-20.0))
     assert result["v_roll"] == pytest.approx((5.0 - 0.4 * 2.0) / 1.4)
@@ -124,6 +128,10 @@ def test_climbing_turns_all_kinetic_energy_into_height(shape, v0, angle):
         (lambda: solve_incline(Roller(0.4, "sphere"), 1.2, 9.8, mu_s=0.1), "--mu-k is required"),
         (lambda: solve_incline(Roller(0.4, "sphere"), 0.5, 9.8, length=1, height=1), "--length conflicts"),
         (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=None, v0=3.0), "--mu-k is required"),
+        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=0.3, mu_s=0.2, v0=3.0), "--mu-k must not exceed"),
+        (lambda: roller("sphear", None, None, None, None), "did you mean 'sphere'?"),
+        (lambda: roller("sphere", 0.4, None, None, None), "--k2 conflicts with SHAPE"),
+        (lambda: roller(None, None, 0.01, 1.0, None), "--radius is required with --inertia"),
         (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=0.2, v0=3.0, omega0=5.0), "--radius is required"),
     ],
 )

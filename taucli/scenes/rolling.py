@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.errors import InputError
+from taucli.errors import InputError, did_you_mean
 from taucli.report import Report, Step, Value, fmt, quantity_text
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
@@ -32,6 +32,26 @@ class Roller:
     description: str
     mass: float | None = None
     radius: float | None = None
+
+
+def roller(shape: str | None, k2: float | None, inertia: float | None, mass: float | None, radius: float | None) -> Roller:
+    """The body from exactly one of SHAPE, k2 = I/(mR²), or I with the mass and radius."""
+    given = [name for name, value in (("SHAPE", shape), ("--k2", k2), ("--inertia", inertia)) if value is not None]
+    if len(given) != 1:
+        raise InputError(
+            "SHAPE" if not given else given[1],
+            "is required: SHAPE, --k2 or --inertia (one of them)" if not given else f"conflicts with {given[0]}: describe the body once",
+            example="taucli rolling sphere --angle 30deg",
+        )
+    if shape is not None:
+        if shape not in K2:
+            raise InputError("SHAPE", f"expected one of {', '.join(K2)}", example="sphere", got=repr(shape), hint=did_you_mean(shape, K2))
+        return Roller(K2[shape], shape, mass, radius)
+    if k2 is not None:
+        return Roller(k2, "body", mass, radius)
+    if mass is None or radius is None:
+        raise InputError("--mass" if mass is None else "--radius", "is required with --inertia (k² = I/(mR²))", example="--mass 2kg --radius 0.1m")
+    return Roller(inertia / (mass * radius**2), "body", mass, radius)
 
 
 def _check_friction(mu_s: float | None, mu_k: float | None) -> None:
@@ -178,12 +198,13 @@ def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_
     return steps
 
 
-def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega0: float = 0.0) -> Report:
+def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega0: float = 0.0, mu_s: float | None = None) -> Report:
     """A ball skidding on the flat: friction μk m g acts against the slip v − Rω until it vanishes.
 
     slip s(t) = s₀ − μk g (1 + 1/k2) t, so t_roll = |s₀| k2 / (μk g (1 + k2));
     v_roll = (v₀ + k2 R ω₀)/(1 + k2) (angular momentum about the contact point is conserved).
     """
+    _check_friction(mu_s, mu_k)  # μs plays no part in skidding, but a μk above it is still a mistake
     k2, mass, radius = roller.k2, roller.mass, roller.radius
     if omega0 and radius is None:
         raise InputError("--radius", "is required with --omega0 (the slip is v − Rω)", example="--radius 0.11m")
