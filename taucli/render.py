@@ -13,7 +13,7 @@ from dataclasses import dataclass, replace
 from typing import TextIO
 
 from taucli import __version__
-from taucli.errors import InputError
+from taucli.errors import InputError, did_you_mean
 from taucli.report import Report, Table, Value, fmt, pretty_unit
 
 
@@ -64,14 +64,11 @@ def _result(report: Report, name: str, option: str) -> Value:
     try:
         return report.results[name]
     except KeyError:
-        import difflib
-
-        close = difflib.get_close_matches(name, list(report.results), n=1)
         raise InputError(
             option,
             f"expected the name of a result of {report.scene}: {', '.join(report.results)}",
             got=repr(name),
-            hint=f"did you mean {close[0]!r}?" if close else None,
+            hint=did_you_mean(name, report.results),
         ) from None
 
 

@@ -7,13 +7,12 @@ definition cache is kept between runs. Text is screened before pint sees it: pin
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from taucli.errors import InputError
+from taucli.errors import InputError, did_you_mean
 
 TWO_PI = 2.0 * math.pi
 
@@ -164,10 +163,12 @@ def quantity(text: str, option: str, kind_name: str):
         q = ureg.Quantity(cleaned)
     except pint.UndefinedUnitError as err:
         name = str(getattr(err, "unit_names", [""])[0] if getattr(err, "unit_names", None) else err)
-        close = difflib.get_close_matches(name, list(kind.common_units), n=1, cutoff=0.5)
-        hint = f"did you mean {close[0]!r}?" if close else None
         raise InputError(
-            option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}: unknown unit {name!r}", hint=hint
+            option,
+            f"expected {_article(kind.name)}",
+            example=kind.example,
+            got=f"{text!r}: unknown unit {name!r}",
+            hint=did_you_mean(name, kind.common_units, cutoff=0.5),
         ) from None
     except (OverflowError, ZeroDivisionError):
         raise InputError(option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}: out of range") from None

@@ -11,7 +11,7 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
-from taucli.errors import InputError
+from taucli.errors import InputError, did_you_mean
 from taucli.report import Report, Step, Table, Value, fmt, quantity_text
 
 # Dimension name -> (symbol in equations, placeholder in number templates).
@@ -201,16 +201,7 @@ def lookup_shape(name: str, option: str = "SHAPE") -> Shape:
     try:
         return SHAPES[name]
     except KeyError:
-        import difflib
-
-        close = difflib.get_close_matches(name, list(SHAPES), n=1)
-        raise InputError(
-            option,
-            f"expected a shape: {', '.join(SHAPES)}",
-            example="disc",
-            got=repr(name),
-            hint=f"did you mean {close[0]!r}?" if close else None,
-        ) from None
+        raise InputError(option, f"expected a shape: {', '.join(SHAPES)}", example="disc", got=repr(name), hint=did_you_mean(name, SHAPES)) from None
 
 
 def _fill(template: str, mass: float, dims: Mapping[str, float]) -> str:
