@@ -74,9 +74,14 @@ def time_per_call(function: Callable[[], object], repeats: int) -> float:
 
 
 def _relative(got: float, reference: str) -> float:
-    exact = float(reference)
-    # the reference's own rounding to a double is below ERROR_FLOOR relative to it
-    return abs(got - exact) / abs(exact)
+    """|got − reference| / |reference| in 60-digit decimal: the double and the 50-digit
+    reference are both taken exactly, so even errors of an ulp are measured, not rounded."""
+    from decimal import Decimal, localcontext
+
+    with localcontext() as context:
+        context.prec = 60
+        exact = Decimal(reference)
+        return float(abs(Decimal(got) - exact) / abs(exact))
 
 
 def _spin_points(name: str, ladder: dict, repeats: int) -> list[Point]:
