@@ -25,14 +25,6 @@ def test_solvers_import_no_typer_rich_or_pint():
     assert not {name for name in loaded if name.split(".")[0] in HEAVY}
 
 
-def test_help_builds_no_unit_registry_and_imports_no_pint():
-    loaded = _modules_after(
-        "import io, contextlib\nfrom taucli.cli import main\n"
-        "with contextlib.redirect_stdout(io.StringIO()):\n    main(['inertia', '--help'])"
-    )
-    assert "pint" not in loaded
-
-
 @pytest.mark.parametrize(
     "x,text",
     [(0.1, "0.1"), (7.639437268, "7.639"), (24.0, "24"), (19.6, "19.6"), (10000.0, "10000"), (1.5e-5, "1.5e-5"), (-3.0, "-3"), (0.0, "0"), (2.5e9, "2.5e9"), (9.99996, "10")],
@@ -56,9 +48,15 @@ def test_a_result_that_does_not_exist_is_null_with_a_note():
     assert document(cleaned)["results"]["t_stop"]["value"] is None
 
 
-def test_help_lists_match_the_tables_they_stand_for():
-    from taucli import cli, numerics
+def test_the_names_offered_match_the_tables_they_stand_for():
+    from taucli import bench, names, numerics
     from taucli.scenes.atwood import Pulley
+    from taucli.scenes.inertia import SHAPES
+    from taucli.scenes.rolling import K2
 
-    assert cli.METHOD_NAMES == ("auto", "exact", *numerics.METHODS)
-    assert cli.PULLEY_SHAPES == tuple(Pulley.SHAPE_FACTORS)
+    assert names.SHAPE_AXES == {name: tuple(axis.name for axis in shape.axes) for name, shape in SHAPES.items()}
+    assert names.ROLLING_BODIES == tuple(K2)
+    assert names.METHOD_NAMES == ("auto", "exact", *numerics.METHODS)
+    assert names.QUADRATURE_NAMES == ("auto", *numerics.StreamingQuadrature.RULES)
+    assert names.PULLEY_SHAPES == tuple(Pulley.SHAPE_FACTORS)
+    assert names.BENCH_SCENES == tuple(bench.SCENES)
