@@ -14,25 +14,78 @@ import typer
 
 from taucli.errors import ExitStatus, InputError, TaucliError
 from taucli.inputs import SHAPE_DIMENSIONS, Inputs, parse_part_spec
-from taucli.scenes.inertia import SHAPES
-from taucli.scenes.rolling import K2
+from taucli.names import BENCH_SCENES, METHOD_NAMES, PULLEY_SHAPES, QUADRATURE_NAMES, ROLLING_BODIES, SHAPE_AXES, SHAPE_NAMES
 
-SHAPE_NAMES = tuple(SHAPES)
-# Kept here, not imported, so that --help does not load the solvers (about 15 ms);
-# tests/test_layers.py checks them against numerics.METHODS and atwood.Pulley.SHAPE_FACTORS.
-METHOD_NAMES = ("auto", "exact", "euler", "rk4", "rk45")
-PULLEY_SHAPES = ("disc", "ring")
+class _AsTyped:
+    """Coercion that leaves a value as click parsed it: strings as typed, flags as booleans.
+
+    typer 0.29 validates every given value through a pydantic TypeAdapter; importing pydantic
+    costs about 100 ms, a third of a run, to turn a str into the same str. taucli reads every
+    value itself (units.parse). Where typer has no ``_runtime_param`` (before 0.29, or after a
+    change), its own coercion stays: slower, never wrong; tests/test_startup.py notices.
+    """
+
+    TYPES = (str, list[str], bool)
+
+    @classmethod
+    def install(cls, param) -> None:
+        descriptor = getattr(param, "type_descriptor", None)
+        if hasattr(param, "_runtime_param") and descriptor is not None and descriptor.annotation in cls.TYPES:
+            param._runtime_param = cls
+
+    @staticmethod
+    def coerce(value, param, ctx):
+        if value is None:
+            return () if param.multiple or param.nargs == -1 else None
+        return value
+
+
+class _Lean:
+    """What taucli's commands change in typer's: options read as typed, and plain-text help with
+    options grouped under their panel titles.
+
+    Typer's rich help imports rich's markdown support (~130 ms, more than the rest of a run);
+    click's formatter is already loaded, reads the same without colour, and wraps to the terminal.
+    """
+
+    def parse_args(self, ctx, args):
+        for param in self.get_params(ctx):
+            _AsTyped.install(param)
+        return super().parse_args(ctx, args)
+
+    def format_options(self, ctx, formatter) -> None:
+        sections: dict[str, list[tuple[str, str]]] = {}
+        for param in self.get_params(ctx):
+            record = param.get_help_record(ctx)
+            if record is not None:
+                title = "Arguments" if param.param_type_name == "argument" else getattr(param, "rich_help_panel", None) or "Options"
+                sections.setdefault(title, []).append(record)
+        for title, records in sections.items():
+            with formatter.section(title):
+                formatter.write_dl(records)
+        if hasattr(self, "format_commands"):
+            self.format_commands(ctx, formatter)
+
+
+class TaucliGroup(_Lean, typer.core.TyperGroup):
+    pass
+
+
+class TaucliCommand(_Lean, typer.core.TyperCommand):
+    pass
+
 
 app = typer.Typer(
     name="taucli",
+    cls=TaucliGroup,
     help="Rigid-body rotation about a fixed axis: τ_net = Iα and what follows from it.\n\n"
     "Quantities take units: 4kg, 300 rpm, 0.3 N*m, 30deg. A bare number is SI.\n\n"
     "Exit status: 0 success, 1 internal error (a bug), 2 bad input, 130 interrupted.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    rich_markup_mode=None,
 )
-
 
 
 def _show_version(value: bool) -> None:
@@ -85,7 +138,7 @@ AxisOption = Annotated[
         "--axis",
         metavar="AXIS",
         help="Axis, where the shape has several: "
-        + "; ".join(f"{'|'.join(a.name for a in shape.axes)} ({name})" for name, shape in SHAPES.items() if len(shape.axes) > 1)
+        + "; ".join(f"{'|'.join(axes)} ({name})" for name, axes in SHAPE_AXES.items() if len(axes) > 1)
         + " (default: the first).",
         rich_help_panel=_BODY,
     ),
@@ -118,7 +171,7 @@ def emit(report, inputs: Inputs, json_: bool, get: list[str] | None, to: list[st
     render.render(report, render.Output(json=json_, get=tuple(get or ()), to=tuple(to or ()), steps=not no_steps), sys.stdout)
 
 
-@app.command()
+@app.command(cls=TaucliCommand)
 def inertia(
     shape: Annotated[
         Optional[str], typer.Argument(metavar="SHAPE", help=f"One of: {', '.join(SHAPE_NAMES)}.", show_default=False)
@@ -169,7 +222,7 @@ InertiaOption = Annotated[
 ]
 ShapeOption = Annotated[
     Optional[str],
-    typer.Option("--shape", metavar="SHAPE", help=f"The body's shape, with --mass and its dimensions: {', '.join(SHAPES)}.", rich_help_panel=_BODY),
+    typer.Option("--shape", metavar="SHAPE", help=f"The body's shape, with --mass and its dimensions: {', '.join(SHAPE_NAMES)}.", rich_help_panel=_BODY),
 ]
 _MOTION = "Motion and method"
 MethodOption = Annotated[
@@ -196,7 +249,7 @@ def read_body(inputs: Inputs, inertia: str | None, shape: str | None, mass: str 
     return body.inertia, body.steps
 
 
-@app.command("spin-down")
+@app.command("spin-down", cls=TaucliCommand)
 def spin_down(
     inertia: InertiaOption = None,
     shape: ShapeOption = None,
@@ -289,7 +342,7 @@ def read_gravity(inputs: Inputs, g: str | None) -> float:
 _PULLEY = "Pulley"
 
 
-@app.command()
+@app.command(cls=TaucliCommand)
 def atwood(
     m1: Annotated[Optional[str], typer.Option("--m1", metavar="MASS", help="The hanging mass; its downward motion is positive.")] = None,
     m2: Annotated[Optional[str], typer.Option("--m2", metavar="MASS", help="The other mass (0: one mass on a string wound on the pulley).")] = None,
@@ -349,9 +402,9 @@ def atwood(
     emit(report, inputs, json_, get, to, no_steps)
 
 
-@app.command()
+@app.command(cls=TaucliCommand)
 def rolling(
-    shape: Annotated[Optional[str], typer.Argument(metavar="SHAPE", help=f"{', '.join(K2)} (or give --k2 or --inertia).", show_default=False)] = None,
+    shape: Annotated[Optional[str], typer.Argument(metavar="SHAPE", help=f"{', '.join(ROLLING_BODIES)} (or give --k2 or --inertia).", show_default=False)] = None,
     k2: Annotated[Optional[str], typer.Option("--k2", metavar="NUMBER", help="I/(mR²) of the body, instead of SHAPE.", rich_help_panel=_BODY)] = None,
     inertia: Annotated[Optional[str], typer.Option("--inertia", metavar="I", help="Moment of inertia about the centre (with --mass and --radius).", rich_help_panel=_BODY)] = None,
     mass: Annotated[Optional[str], typer.Option("--mass", metavar="MASS", help="Mass (needed only for forces and energies).", rich_help_panel=_BODY)] = None,
@@ -415,7 +468,7 @@ def rolling(
     emit(report, inputs, json_, get, to, no_steps)
 
 
-@app.command()
+@app.command(cls=TaucliCommand)
 def impulse(
     inertia: InertiaOption = None,
     shape: ShapeOption = None,
@@ -435,7 +488,7 @@ def impulse(
     duration: Annotated[Optional[str], typer.Option("--duration", metavar="TIME", help="How long the torque acts.")] = None,
     inertia_final: Annotated[Optional[str], typer.Option("--inertia-final", metavar="I", help="Inertia after a change with no torque (the skater).")] = None,
     torque_profile: Annotated[Optional[str], typer.Option("--torque-profile", metavar="FILE", help="CSV 't [ms], torque [N*m]' then rows; - for stdin.")] = None,
-    method: Annotated[str, typer.Option("--method", metavar="METHOD", help="Quadrature for a profile: auto | trapezoid | simpson.")] = "auto",
+    method: Annotated[str, typer.Option("--method", metavar="METHOD", help="Quadrature for a profile: " + " | ".join(QUADRATURE_NAMES) + ".")] = "auto",
     json_: JsonFlag = False,
     get: GetOption = None,
     to: ToOption = None,
@@ -502,9 +555,9 @@ def _impulse_from_profile(scene, read_profile, source: str, moment: float, start
         raise InputError("--torque-profile", "expected a UTF-8 text file", got=repr(source)) from None
 
 
-@app.command()
+@app.command(cls=TaucliCommand)
 def bench(
-    scene: Annotated[Optional[list[str]], typer.Option("--scene", metavar="SCENE", help="spin-down or impulse (repeatable; default both).")] = None,
+    scene: Annotated[Optional[list[str]], typer.Option("--scene", metavar="SCENE", help=" or ".join(BENCH_SCENES) + " (repeatable; default both).")] = None,
     quick: Annotated[bool, typer.Option("--quick", help="Fewer settings and repeats: a few seconds.")] = False,
     out: Annotated[Optional[str], typer.Option("--out", metavar="FILE", help="Also draw the charts to FILE.svg or FILE.png (needs matplotlib).")] = None,
     json_: JsonFlag = False,
