@@ -1,7 +1,8 @@
 """Quantities from text: the one pint registry, and ``parse`` that turns "4 kg" into an SI float.
 
-The registry is built on first use only (``--help`` and completion never build it) and pint's
-definition cache is kept between runs. Text is screened before pint sees it: pint evaluates
+The registry is built on first use only (``--help`` and completion never build it), pint's
+definition cache is kept in taucli's cache folder, and pint's SI factor for each unit text is
+remembered there too (taucli.cache), so a run whose units were seen before never imports pint. Text is screened before pint sees it: pint evaluates
 ``**`` with Python integers, so ``9**9**9 kg`` would run for hours if it got that far.
 """
 
@@ -95,8 +96,11 @@ def registry():
     """The one pint registry, built on first use, its definitions cached on disk between runs."""
     import pint
 
+    from taucli.cache import folder
+
+    where = folder()
     try:
-        ureg = pint.UnitRegistry(cache_folder=":auto:")
+        ureg = pint.UnitRegistry(cache_folder=None if where is None else where / "pint")
     except Exception:  # an unreadable, unwritable or corrupt cache must not cost the answer
         ureg = pint.UnitRegistry()
     ureg.define("rev = revolution")
@@ -152,11 +156,15 @@ def _describe(dimensionality) -> str:
     return _DIMENSION_NAMES.get(frozenset(dict(dimensionality).items()), str(dimensionality))
 
 
-def quantity(text: str, option: str, kind_name: str):
-    """Read text as a pint Quantity of the given kind (bare numbers take the kind's SI unit)."""
+def quantity(text: str, option: str, kind_name: str, *, original: str | None = None):
+    """Read text as a pint Quantity of the given kind (bare numbers take the kind's SI unit).
+
+    ``original`` is the text as the user typed it, for messages, when ``text`` is a part of it.
+    """
     import pint
 
     kind = KINDS[kind_name]
+    shown = text if original is None else original
     cleaned = _screen(text, option, kind)
     ureg = registry()
     try:
@@ -167,14 +175,14 @@ def quantity(text: str, option: str, kind_name: str):
             option,
             f"expected {_article(kind.name)}",
             example=kind.example,
-            got=f"{text!r}: unknown unit {name!r}",
+            got=f"{shown!r}: unknown unit {name!r}",
             hint=did_you_mean(name, kind.common_units, cutoff=0.5),
         ) from None
     except (OverflowError, ZeroDivisionError):
-        raise InputError(option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}: out of range") from None
+        raise InputError(option, f"expected {_article(kind.name)}", example=kind.example, got=f"{shown!r}: out of range") from None
     except Exception:  # pint's tokenizer and evaluator raise many kinds; none may escape as a traceback
         raise InputError(
-            option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}, which is not a quantity"
+            option, f"expected {_article(kind.name)}", example=kind.example, got=f"{shown!r}, which is not a quantity"
         ) from None
     if not isinstance(q, ureg.Quantity):  # a bare unit name such as "kg"
         q = ureg.Quantity(1, q)
@@ -183,18 +191,35 @@ def quantity(text: str, option: str, kind_name: str):
     return q, kind
 
 
-def parse(text: str, option: str, kind_name: str, *, sign: str = "positive") -> Parsed:
-    """Read ``text`` as a quantity of ``kind_name`` and return its SI value.
+# "4.5 kg", "300 rpm", "-2 N*m", "1e-3 kg*m^2", "kg", "4": a number (or none) times a product of
+# unit powers. For such text the value is the number times pint's SI factor for the unit text,
+# and that factor is cached (taucli.cache); anything else ("4 kg + 200 g") goes to pint whole.
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_NAME = r"[A-Za-zµμΩ_][A-Za-z0-9µμΩ_]*"
+_POWER_OF = r"(?:\s*(?:\*\*|\^)\s*-?\d{1,2})?"
+_FACTOR = rf"(?:{_NAME}|\(\s*{_NAME}{_POWER_OF}(?:\s*[*/]?\s*{_NAME}{_POWER_OF})*\s*\)){_POWER_OF}"
+_NUMBER_TIMES_UNIT = re.compile(rf"\s*(?P<number>{_NUMBER})?\s*(?P<unit>{_FACTOR}(?:\s*[*/]?\s*{_FACTOR})*)?\s*")
 
-    ``sign`` is "positive" (> 0), "nonnegative" (>= 0) or "any". A bare number means the kind's
-    SI unit. ``Hz`` for an angular velocity or acceleration means revolutions per second
-    (omega = 2 pi f), with a note that says so.
-    """
+
+def _number_times_unit(text: str) -> tuple[float, str] | None:
+    """("4.5", "kg") read from "4.5 kg" as (4.5, "kg"); None for any other form of text."""
+    split = _NUMBER_TIMES_UNIT.fullmatch(text)
+    if split is None or len(text) > MAX_TEXT_LENGTH:
+        return None
+    number, unit = split.group("number"), split.group("unit") or ""
+    if number is None:
+        return (1.0, unit) if unit else None
+    if len(number) > MAX_DIGITS:
+        return None
+    return float(number), unit
+
+
+def _from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, int]:
+    """The SI value of ``cleaned`` as pint reads it, and the power of Hz in it (already applied)."""
     import pint
 
-    q, kind = quantity(text, option, kind_name)
-    note = None
-    hertz_power = dict(q.unit_items()).get("hertz", 0)
+    q, _ = quantity(cleaned, option, kind.name, original=text)
+    hertz_power = int(dict(q.unit_items()).get("hertz", 0))
     try:
         value = float(q.to(kind.si_unit).magnitude) if kind.si_unit else float(q.to("").magnitude)
     except pint.DimensionalityError:
@@ -208,7 +233,68 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive") -> 
         raise InputError(option, f"expected {_article(kind.name)}", example=kind.example, got=f"{text!r}: out of range") from None
     if hertz_power and kind.name in ("angular velocity", "angular acceleration"):
         value *= TWO_PI**hertz_power
-        note = f"{option} {text.strip()}: Hz read as revolutions per second (omega = 2*pi*f)"
+    else:
+        hertz_power = 0
+    return value, hertz_power
+
+
+def _factor_key(kind: Kind) -> str:
+    return f"{kind.si_unit}|{kind.name}"
+
+
+def unit_factor(unit: str, text: str, option: str, kind: Kind) -> tuple[float, int]:
+    """SI value of one ``unit`` of ``kind`` (Hz read as rev/s), and the power of Hz in it.
+
+    pint is asked once per unit text; its answer is kept in memory and on disk (taucli.cache).
+    A bare number is the kind's SI unit, so "" needs no pint at all. ``text`` is what the user
+    typed, for messages.
+    """
+    if not unit:
+        return 1.0, 0
+    from taucli.cache import unit_factors
+
+    factors = unit_factors()
+    found = factors.get(unit, _factor_key(kind))
+    if found is None:
+        found = _from_pint(unit, text, option, kind)
+        if math.isfinite(found[0]) and found[0] != 0:
+            factors.put(unit, _factor_key(kind), *found)
+    return found
+
+
+def read(text: str, option: str, kind: Kind) -> tuple[float, int]:
+    """The SI value of ``text`` read as ``kind``, and the power of Hz in it (already applied).
+
+    Text of a unit seen before is read without pint, and without screening: its unit passed the
+    screen when it was first read, and the pattern bounds the number.
+    """
+    split = _number_times_unit(text)
+    if split is not None:
+        from taucli.cache import unit_factors
+
+        number, unit = split
+        found = unit_factors().get(unit, _factor_key(kind)) if unit else (1.0, 0)
+        if found is not None:
+            return number * found[0], found[1]
+    cleaned = _screen(text, option, kind)
+    split = _number_times_unit(cleaned)
+    if split is None:
+        return _from_pint(cleaned, text, option, kind)
+    number, unit = split
+    factor, hertz_power = unit_factor(unit, text, option, kind)
+    return number * factor, hertz_power
+
+
+def parse(text: str, option: str, kind_name: str, *, sign: str = "positive") -> Parsed:
+    """Read ``text`` as a quantity of ``kind_name`` and return its SI value.
+
+    ``sign`` is "positive" (> 0), "nonnegative" (>= 0) or "any". A bare number means the kind's
+    SI unit. ``Hz`` for an angular velocity or acceleration means revolutions per second
+    (omega = 2 pi f), with a note that says so.
+    """
+    kind = KINDS[kind_name]
+    value, hertz_power = read(text, option, kind)
+    note = f"{option} {text.strip()}: Hz read as revolutions per second (omega = 2*pi*f)" if hertz_power else None
     if not math.isfinite(value):
         raise InputError(option, f"expected a finite {kind.name}", example=kind.example, got=repr(text))
     if sign == "positive" and value <= 0:
@@ -220,21 +306,14 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive") -> 
 
 def convert(value: float, si_unit: str, target: str, option: str) -> float:
     """Express an SI value in the unit ``target`` (``--to``), with Hz read as rev/s."""
-    import pint
-
-    ureg = registry()
     kind = next((k for k in KINDS.values() if k.si_unit == si_unit), Kind("quantity", si_unit, si_unit))
+    example = kind.common_units[0] if kind.common_units else si_unit
     cleaned = _screen(target, option, kind)
+    split = _number_times_unit(cleaned)
+    if split is None or split[0] != 1.0 or not split[1] or cleaned.strip() != split[1]:
+        raise InputError(option, f"expected a unit of {_article(kind.name)}", example=example, got=repr(target))
     try:
-        unit = ureg.Unit(cleaned)
-        converted = float(ureg.Quantity(value, si_unit).to(unit).magnitude)
-    except pint.DimensionalityError:
-        raise InputError(
-            option, f"expected a unit of {_article(kind.name)}", example=kind.common_units[0] if kind.common_units else si_unit, got=repr(target)
-        ) from None
-    except Exception:
-        raise InputError(option, "expected a unit", example=kind.common_units[0] if kind.common_units else si_unit, got=repr(target)) from None
-    hertz_power = dict(unit._units).get("hertz", 0)
-    if hertz_power and kind.name in ("angular velocity", "angular acceleration"):
-        converted /= TWO_PI**hertz_power
-    return converted
+        factor, _ = unit_factor(split[1], target, option, kind)
+    except InputError:
+        raise InputError(option, f"expected a unit of {_article(kind.name)}", example=example, got=repr(target)) from None
+    return value / factor

@@ -10,6 +10,12 @@ from dataclasses import dataclass
 
 import pytest
 
+# One cache folder for the whole run, shared by the subprocesses: the user's own stays untouched.
+if "TAUCLI_CACHE_DIR" not in os.environ:
+    import tempfile
+
+    os.environ["TAUCLI_CACHE_DIR"] = tempfile.mkdtemp(prefix="taucli-test-cache-")
+
 
 @dataclass
 class Run:
