@@ -4,17 +4,18 @@ No physics here. Solvers, units and renderers are imported inside the commands, 
 ``--help`` builds no unit registry and imports no solver it does not show.
 """
 
-from __future__ import annotations
-
 import os
 import sys
-from typing import Annotated, Optional
+from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
 from taucli.errors import ExitStatus, InputError, TaucliError
-from taucli.inputs import SHAPE_DIMENSIONS, Inputs, parse_part_spec
 from taucli.names import BENCH_SCENES, METHOD_NAMES, PULLEY_SHAPES, QUADRATURE_NAMES, ROLLING_BODIES, SHAPE_AXES, SHAPE_NAMES
+
+if TYPE_CHECKING:
+    from taucli.inputs import Inputs
+
 
 class _AsTyped:
     """Coercion that leaves a value as click parsed it: strings as typed, flags as booleans.
@@ -146,7 +147,7 @@ AxisOption = Annotated[
 OffsetOption = _length_option("--offset", "Distance of the rotation axis from the parallel axis through the centre of mass.")
 
 
-def read_shape(inputs: Inputs, shape: str | None, mass: str | None, axis: str | None, offset: str | None, **dims: str | None):
+def read_shape(inputs: "Inputs", shape: str | None, mass: str | None, axis: str | None, offset: str | None, **dims: str | None):
     """The body part named by SHAPE and the shape options, as an inertia Part in SI."""
     from taucli.scenes.inertia import Part, lookup_shape
 
@@ -163,7 +164,7 @@ def read_shape(inputs: Inputs, shape: str | None, mass: str | None, axis: str | 
     return Part(found.name, mass_si, lengths, axis, offset_si)
 
 
-def emit(report, inputs: Inputs, json_: bool, get: list[str] | None, to: list[str] | None, no_steps: bool) -> None:
+def emit(report, inputs: "Inputs", json_: bool, get: list[str] | None, to: list[str] | None, no_steps: bool) -> None:
     """Render a solver's report with the inputs as read, in the format asked for."""
     from taucli import render
 
@@ -204,9 +205,12 @@ def inertia(
 
     Results: I, k (radius of gyration), I_cm (with --offset), mass (several parts).
 
+    \b
     Example: taucli inertia disc --mass 5kg --radius 0.2m
     """
     from taucli.scenes import inertia as scene
+
+    from taucli.inputs import SHAPE_DIMENSIONS, Inputs, parse_part_spec
 
     inputs = Inputs()
     dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
@@ -232,7 +236,7 @@ DtOption = Annotated[Optional[str], typer.Option("--dt", metavar="TIME", help="F
 RtolOption = Annotated[Optional[str], typer.Option("--rtol", metavar="NUMBER", help="Relative tolerance for rk45 (default 1e-10).", rich_help_panel=_MOTION)]
 
 
-def read_body(inputs: Inputs, inertia: str | None, shape: str | None, mass: str | None, axis: str | None, offset: str | None, **dims: str | None):
+def read_body(inputs: "Inputs", inertia: str | None, shape: str | None, mass: str | None, axis: str | None, offset: str | None, **dims: str | None):
     """The moment of inertia from --inertia or from --shape and its options: (I, steps)."""
     from taucli.scenes.inertia import body_inertia
 
@@ -287,9 +291,12 @@ def spin_down(
     Results: I, alpha0, t_stop, theta_stop, revs_stop, omega_inf; with --time: omega, theta, revs;
     with --until-omega: t_until, theta_until.
 
+    \b
     Example: taucli spin-down --shape disc --mass 5kg --radius 0.2m --omega0 30rad/s --friction 0.3N*m
     """
     from taucli.scenes import spin
+
+    from taucli.inputs import Inputs
 
     inputs = Inputs()
     dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
@@ -332,7 +339,7 @@ STANDARD_GRAVITY = 9.80665
 GOption = Annotated[Optional[str], typer.Option("--g", metavar="ACCEL", help="Gravity (default 9.80665 m/s^2).")]
 
 
-def read_gravity(inputs: Inputs, g: str | None) -> float:
+def read_gravity(inputs: "Inputs", g: str | None) -> float:
     """--g, or standard gravity with a note that says so."""
     if g is None:
         return inputs.assume("g", STANDARD_GRAVITY, "acceleration", f"g = {STANDARD_GRAVITY} m/s² (standard gravity); --g to change it")
@@ -367,9 +374,12 @@ def atwood(
 
     Results: a (m1 downward positive), T1, T2, alpha, a_massless; v, t with --distance; v, distance with --time.
 
+    \b
     Example: taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg --pulley-radius 0.1m
     """
     from taucli.scenes import atwood as scene
+
+    from taucli.inputs import Inputs
 
     inputs = Inputs()
     mass1 = inputs.required("--m1", m1, "mass", sign="nonnegative")
@@ -427,9 +437,12 @@ def rolling(
     Results: a, alpha, friction, mu_min, rolls; v, t at the bottom (--length or --height);
     d_climb, h_climb, t_climb (--v0 up the slope); t_roll, d_roll, v_roll on the flat.
 
+    \b
     Example: taucli rolling sphere --angle 30deg --length 2m
     """
     from taucli.scenes import rolling as scene
+
+    from taucli.inputs import Inputs
 
     inputs = Inputs()
     mass_si = inputs.quantity("--mass", mass, "mass")
@@ -499,9 +512,12 @@ def impulse(
     Results: J, delta_omega, inertia, omega0, omega1, torque, duration, L0, L1, KE0, KE1;
     with --inertia-final: work; with --torque-profile: peak_torque and ω at the samples.
 
+    \b
     Example: taucli impulse --inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s
     """
     from taucli.scenes import impulse as scene
+
+    from taucli.inputs import Inputs
 
     inputs = Inputs()
     dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
@@ -536,7 +552,7 @@ def impulse(
     emit(report, inputs, json_, get, to, no_steps)
 
 
-def _impulse_from_profile(scene, read_profile, source: str, moment: float, start: float | None, method: str, inputs: Inputs, body_steps):
+def _impulse_from_profile(scene, read_profile, source: str, moment: float, start: float | None, method: str, inputs: "Inputs", body_steps):
     """Stream the profile from a file (or stdin for -) into the quadrature."""
     if start is None:
         start = inputs.assume("omega0", 0.0, "angular velocity", "no --omega0: the body starts at rest")
@@ -569,6 +585,7 @@ def bench(
     a half-sine torque pulse), its error against a 50-digit reference. '!' marks a run that
     diverged. scipy's solve_ivp is charted too when scipy is installed.
 
+    \b
     Example: taucli bench --quick
     """
     import json
@@ -612,10 +629,28 @@ def _fail(status: ExitStatus, message: str) -> int:
     return int(status)
 
 
+def app_for(args: list[str]):
+    """``app`` with only the command being run registered, when one is named.
+
+    Typer builds the options of every registered command (2-4 ms each) before it parses any;
+    the first word that is not an option names the command (taucli's own options take no value).
+    """
+    import copy
+
+    name = next((word for word in args if not word.startswith("-")), None)
+    chosen = [info for info in app.registered_commands if (info.name or info.callback.__name__.replace("_", "-")) == name]
+    if not chosen:
+        return app
+    lean = copy.copy(app)
+    lean.registered_commands = chosen
+    return lean
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run taucli; every exception becomes one line on stderr and an exit status."""
+    args = sys.argv[1:] if argv is None else list(argv)
     try:
-        result = app(args=argv, prog_name="taucli", standalone_mode=False)
+        result = app_for(args)(args=args, prog_name="taucli", standalone_mode=False)
     except TaucliError as err:
         return _fail(err.exit_status, str(err))
     except KeyboardInterrupt:
@@ -627,7 +662,8 @@ def main(argv: list[str] | None = None) -> int:
         return int(ExitStatus.OK)
     except Exception as err:
         if _is_usage_error(err):
-            if not err.format_message():  # `taucli` alone: the help has been shown
+            if type(err).__name__ == "NoArgsIsHelpError":  # `taucli` alone: the help, on stderr
+                print(err.format_message(), file=sys.stderr)
                 return int(ExitStatus.USAGE)
             ctx = getattr(err, "ctx", None)
             where = f" (see '{ctx.command_path} --help')" if ctx is not None else " (see 'taucli --help')"

@@ -136,3 +136,9 @@ def test_help_and_version(taucli):
     top = taucli("--help")
     assert top.code == 0 and "inertia" in top.out
     assert taucli("--version").out.strip() == "taucli 0.1.0"
+
+
+def test_taucli_alone_shows_the_help_on_stderr_and_exits_2(taucli):
+    alone = taucli()
+    assert alone.code == 2 and alone.out == ""
+    assert alone.err.startswith("Usage: taucli [OPTIONS] COMMAND") and "atwood" in alone.err
