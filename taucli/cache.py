@@ -1,8 +1,10 @@
-"""What taucli keeps between runs: its cache folder, and the SI factors pint gave for unit texts.
+"""What taucli keeps between runs: its cache folder, pint's SI factors, typer's help texts.
 
 A one-off run spends most of its time importing pint and loading its registry (~150 ms) to read
 "4 kg". pint's answer for a unit text ("kg", "rpm", "N*m") never changes for one pint and one
 taucli, so it is kept in ``units.json`` and pint is asked again only for a text not seen before.
+Likewise the help typer renders for a command at a terminal width (``help.json``): importing
+typer alone takes longer than printing a help text should.
 
 Nothing here may cost an answer: a missing, unreadable, corrupt, stale or read-only cache is
 ignored (and rewritten when it can be). The folder is ``$TAUCLI_CACHE_DIR`` if set (empty: keep
@@ -12,39 +14,35 @@ nothing), else the platform's user cache folder with ``taucli`` appended.
 from __future__ import annotations
 
 import json
-import math
 import os
 import sys
 from functools import lru_cache
-from pathlib import Path
 
-MAX_ENTRIES = 512  # unit texts kept, in memory and on disk; the rest are read by pint each time
-FILE_NAME = "units.json"
+MAX_ENTRIES = 512  # per store; beyond it, answers are worked out each time and not kept
 
 
 @lru_cache(maxsize=1)
-def folder() -> Path | None:
+def folder() -> str | None:
     """taucli's cache folder (not created here), or None when caching is turned off."""
     chosen = os.environ.get("TAUCLI_CACHE_DIR")
     if chosen is not None:
-        return Path(chosen) if chosen.strip() else None
+        return chosen if chosen.strip() else None
+    home = os.path.expanduser("~")
     if sys.platform == "win32":
-        base = os.environ.get("LOCALAPPDATA") or str(Path.home() / "AppData" / "Local")
+        base = os.environ.get("LOCALAPPDATA") or os.path.join(home, "AppData", "Local")
     elif sys.platform == "darwin":
-        base = str(Path.home() / "Library" / "Caches")
+        base = os.path.join(home, "Library", "Caches")
     else:
-        base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "taucli"
+        base = os.environ.get("XDG_CACHE_HOME") or os.path.join(home, ".cache")
+    return os.path.join(base, "taucli")
 
 
-def _stamp() -> str:
-    """What the stored factors depend on: taucli's version and units.py, and the pint installed."""
-    import importlib.util
-
+def stamp(*origins: str | None) -> str:
+    """What stored answers depend on: taucli's version, and the size and time of each file."""
     from taucli import __version__
 
     parts = [__version__]
-    for origin in (os.path.join(os.path.dirname(__file__), "units.py"), getattr(importlib.util.find_spec("pint"), "origin", None)):
+    for origin in origins:
         try:
             info = os.stat(origin)
             parts.append(f"{origin}:{info.st_mtime_ns}:{info.st_size}")
@@ -53,63 +51,82 @@ def _stamp() -> str:
     return "|".join(parts)
 
 
-class UnitFactors:
-    """(unit text, kind) -> (SI factor, power of Hz in the text): pint's answers, remembered."""
+def package_file(name: str) -> str | None:
+    """The file a package is imported from (found, not imported): pint's or typer's __init__.py."""
+    import importlib.util
 
-    def __init__(self, path: Path | None):
-        self.path = path
-        self.entries: dict[str, list[float]] = {}
+    try:
+        return getattr(importlib.util.find_spec(name), "origin", None)
+    except (ImportError, ValueError):
+        return None
+
+
+def own_file(name: str) -> str:
+    return os.path.join(os.path.dirname(__file__), name)
+
+
+class Store:
+    """A small JSON file of key -> value in the cache folder, valid for one stamp only.
+
+    ``depends_on`` is a function giving the stamp; it is called only when the file is read or
+    written, so a process that never touches the store pays nothing.
+    """
+
+    def __init__(self, path: str | None, name: str, depends_on):
+        self.file = None if path is None else os.path.join(path, name)
+        self.depends_on = depends_on
+        self.entries: dict[str, object] = {}
         self.stamp = ""
-        if path is not None:
+        if self.file is not None:
             self._load()
 
-    @staticmethod
-    def key(unit_text: str, kind: str) -> str:
-        return f"{kind}|{unit_text}"
+    def get(self, key: str):
+        return self.entries.get(key)
 
-    def get(self, unit_text: str, kind: str) -> tuple[float, int] | None:
-        found = self.entries.get(self.key(unit_text, kind))
-        return None if found is None else (found[0], int(found[1]))
-
-    def put(self, unit_text: str, kind: str, factor: float, hertz_power: int) -> None:
+    def put(self, key: str, value) -> None:
         if len(self.entries) >= MAX_ENTRIES:
             return
-        self.entries[self.key(unit_text, kind)] = [factor, hertz_power]
+        self.entries[key] = value
         self._save()
 
     def _load(self) -> None:
         try:
-            with open(self.path / FILE_NAME, encoding="utf-8") as handle:
-                stored = json.load(handle)
-            self.stamp = _stamp()
-            if not isinstance(stored, dict) or stored.get("stamp") != self.stamp:
-                return
-            entries = stored.get("units", {})
-            self.entries = {
-                key: [float(value[0]), int(value[1])]
-                for key, value in list(entries.items())[:MAX_ENTRIES]
-                if isinstance(key, str) and isinstance(value, list) and len(value) == 2 and isinstance(value[0], float) and math.isfinite(value[0]) and isinstance(value[1], int)
-            }
+            with open(self.file, encoding="utf-8") as handle:
+                stored = json.load(handle, parse_constant=_no_constants)
+            self.stamp = self.depends_on()
+            if isinstance(stored, dict) and stored.get("stamp") == self.stamp and isinstance(stored.get("entries"), dict):
+                self.entries = dict(list(stored["entries"].items())[:MAX_ENTRIES])
         except (OSError, ValueError, TypeError, AttributeError):
             self.entries = {}
 
     def _save(self) -> None:
-        if self.path is None:
+        if self.file is None:
             return
-        temporary = self.path / f".{FILE_NAME}.{os.getpid()}"
+        folder_path, name = os.path.split(self.file)
+        temporary = os.path.join(folder_path, f".{name}.{os.getpid()}")
         try:
-            self.path.mkdir(parents=True, exist_ok=True)
+            os.makedirs(folder_path, exist_ok=True)
             with open(temporary, "w", encoding="utf-8") as handle:
-                json.dump({"stamp": self.stamp or _stamp(), "units": self.entries}, handle)
-            os.replace(temporary, self.path / FILE_NAME)
+                json.dump({"stamp": self.stamp or self.depends_on(), "entries": self.entries}, handle, ensure_ascii=False)
+            os.replace(temporary, self.file)
         except OSError:
             try:
-                temporary.unlink()
+                os.unlink(temporary)
             except OSError:
                 pass
 
 
+def _no_constants(name: str):
+    raise ValueError(name)
+
+
 @lru_cache(maxsize=1)
-def unit_factors() -> UnitFactors:
-    """The factors for this process, loaded from disk once."""
-    return UnitFactors(folder())
+def unit_factors() -> Store:
+    """(unit text, kind) -> [SI factor, power of Hz]: pint's answers for this pint and units.py."""
+    return Store(folder(), "units.json", lambda: stamp(own_file("units.py"), package_file("pint")))
+
+
+@lru_cache(maxsize=1)
+def help_texts() -> Store:
+    """(command, width) -> the help typer rendered, for this typer and cli.py."""
+    return Store(folder(), "help.json", lambda: stamp(own_file("cli.py"), own_file("names.py"), package_file("typer")))

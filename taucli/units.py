@@ -9,6 +9,7 @@ remembered there too (taucli.cache), so a run whose units were seen before never
 from __future__ import annotations
 
 import math
+import os
 import re
 from dataclasses import dataclass
 from functools import lru_cache
@@ -100,7 +101,7 @@ def registry():
 
     where = folder()
     try:
-        ureg = pint.UnitRegistry(cache_folder=None if where is None else where / "pint")
+        ureg = pint.UnitRegistry(cache_folder=None if where is None else os.path.join(where, "pint"))
     except Exception:  # an unreadable, unwritable or corrupt cache must not cost the answer
         ureg = pint.UnitRegistry()
     ureg.define("rev = revolution")
@@ -238,8 +239,17 @@ def _from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float,
     return value, hertz_power
 
 
-def _factor_key(kind: Kind) -> str:
-    return f"{kind.si_unit}|{kind.name}"
+def _factor_key(unit: str, kind: Kind) -> str:
+    return f"{kind.si_unit}|{kind.name}|{unit}"
+
+
+def _cached_factor(unit: str, kind: Kind) -> tuple[float, int] | None:
+    from taucli.cache import unit_factors
+
+    found = unit_factors().get(_factor_key(unit, kind))
+    if isinstance(found, list) and len(found) == 2 and isinstance(found[0], float) and isinstance(found[1], int) and math.isfinite(found[0]) and found[0]:
+        return found[0], found[1]
+    return None
 
 
 def unit_factor(unit: str, text: str, option: str, kind: Kind) -> tuple[float, int]:
@@ -251,14 +261,13 @@ def unit_factor(unit: str, text: str, option: str, kind: Kind) -> tuple[float, i
     """
     if not unit:
         return 1.0, 0
-    from taucli.cache import unit_factors
-
-    factors = unit_factors()
-    found = factors.get(unit, _factor_key(kind))
+    found = _cached_factor(unit, kind)
     if found is None:
         found = _from_pint(unit, text, option, kind)
         if math.isfinite(found[0]) and found[0] != 0:
-            factors.put(unit, _factor_key(kind), *found)
+            from taucli.cache import unit_factors
+
+            unit_factors().put(_factor_key(unit, kind), list(found))
     return found
 
 
@@ -270,10 +279,8 @@ def read(text: str, option: str, kind: Kind) -> tuple[float, int]:
     """
     split = _number_times_unit(text)
     if split is not None:
-        from taucli.cache import unit_factors
-
         number, unit = split
-        found = unit_factors().get(unit, _factor_key(kind)) if unit else (1.0, 0)
+        found = _cached_factor(unit, kind) if unit else (1.0, 0)
         if found is not None:
             return number * found[0], found[1]
     cleaned = _screen(text, option, kind)

@@ -21,13 +21,17 @@ ATWOOD = ("atwood", "--m1", "4kg", "--m2", "1kg", "--pulley-mass", "2kg")
 
 
 def _modules_after(argv: list[str], env: dict[str, str]) -> set[str]:
-    """The modules loaded by a whole run of taucli with these arguments."""
+    """The modules loaded by a whole run of ``taucli ARGV``, through its console entry point."""
     code = (
-        "import io, contextlib, sys\nfrom taucli.cli import main\n"
-        f"with contextlib.redirect_stdout(io.StringIO()):\n    status = main({argv!r})\n"
-        "assert status == 0, status\nprint(' '.join(sys.modules))"
+        "import io, contextlib, runpy, sys\n"
+        f"sys.argv = ['taucli', *{argv!r}]\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        "    try:\n        runpy.run_module('taucli', run_name='__main__')\n"
+        "    except SystemExit as done:\n        assert not done.code, done.code\n"
+        "print(' '.join(sys.modules))"
     )
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, **env}, check=True)
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, **env})
+    assert done.returncode == 0, done.stderr
     return set(done.stdout.split())
 
 
@@ -40,6 +44,31 @@ def test_help_imports_no_solver_no_units_no_rich_no_pydantic(argv, tmp_path):
     loaded = _modules_after(argv, {"TAUCLI_CACHE_DIR": str(tmp_path)})
     assert not _top(loaded) & {"pint", "rich", "pydantic"}
     assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.units", "taucli.numerics"))}
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["spin-down", "--help"]])
+def test_a_repeat_help_imports_not_even_typer(argv, tmp_path):
+    env = {"TAUCLI_CACHE_DIR": str(tmp_path)}
+    assert "typer" in _top(_modules_after(argv, env))
+    assert not _top(_modules_after(argv, env)) & {"typer", "click", "pint", "rich", "pydantic"}
+
+
+@pytest.mark.parametrize("columns", ["60", "100"])
+def test_a_help_from_the_cache_is_the_help_typer_renders(columns, tmp_path):
+    env = {"TAUCLI_CACHE_DIR": str(tmp_path), "COLUMNS": columns}
+    rendered = subprocess.run(
+        [sys.executable, "-c", "import sys; from taucli.cli import main; sys.exit(main(['rolling', '--help']))"],
+        capture_output=True, text=True, env={**os.environ, **env},
+    ).stdout  # fmt: skip
+    first, again = (run_taucli("rolling", "--help", env=env) for _ in range(2))
+    assert first.out == again.out == rendered
+    assert first.code == again.code == 0
+    stored = json.loads((tmp_path / "help.json").read_text())
+    assert stored["entries"] == {f"rolling|{columns}": rendered}
+    stored["stamp"] = "an older typer"
+    stored["entries"][f"rolling|{columns}"] = "stale help"
+    (tmp_path / "help.json").write_text(json.dumps(stored))
+    assert run_taucli("rolling", "--help", env=env).out == rendered
 
 
 def test_a_repeat_computation_imports_neither_pint_nor_pydantic(tmp_path):
@@ -71,10 +100,10 @@ def test_every_state_of_the_cache_folder_gives_the_same_answer(tmp_path):
     for pickle in (folder / "pint").iterdir():
         pickle.write_bytes(b"\x80\x04garbage")
     assert _answer({"TAUCLI_CACHE_DIR": str(folder)}) == fresh
-    assert json.loads((folder / "units.json").read_text())["units"]  # rewritten
+    assert json.loads((folder / "units.json").read_text())["entries"]  # rewritten
 
     stored = json.loads((folder / "units.json").read_text())
-    stored["units"] = {key: [value[0] * 2, value[1]] for key, value in stored["units"].items()}
+    stored["entries"] = {key: [value[0] * 2, value[1]] for key, value in stored["entries"].items()}
     stored["stamp"] = "an older taucli or pint"  # stale: its factors must not be used
     (folder / "units.json").write_text(json.dumps(stored))
     assert _answer({"TAUCLI_CACHE_DIR": str(folder)}) == fresh
@@ -110,7 +139,8 @@ def test_a_cached_unit_reads_as_pint_reads_the_whole_text(text, kind, tmp_path, 
     """Number times pint's factor for the unit is what pint makes of the whole text, to 1 ulp."""
     from taucli import cache, units
 
-    monkeypatch.setattr(cache, "unit_factors", lambda: cache.UnitFactors(tmp_path))
+    store = cache.Store(str(tmp_path), "units.json", lambda: "this test")
+    monkeypatch.setattr(cache, "unit_factors", lambda: store)
     first = units.parse(text, "--x", kind, sign="any")
     again = units.parse(text, "--x", kind, sign="any")  # now from the cache
     cleaned = units._screen(text, "--x", units.KINDS[kind])
