@@ -7,14 +7,19 @@ reads back ("kg*m**2", "N*m", "rad/s"). A result that does not exist is ``None``
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 Number = float | bool | str | None
 
 
-@dataclass(frozen=True)
-class Value:
-    """One named quantity: its SI value, unit and what it is."""
+class Value(NamedTuple):
+    """One named quantity: its SI value, unit and what it is.
+
+    A NamedTuple rather than a frozen dataclass: as immutable, and a third of the cost to make,
+    which counts in a batch of scenes (a dozen Values each).
+    """
 
     value: Number
     unit: str | None
@@ -30,6 +35,30 @@ class Step:
     numbers: str = ""  # the equation with the numbers substituted
     result: str = ""
     why: str = ""
+
+
+class DeferredSteps(Sequence[Step]):
+    """Worked steps written out when first read.
+
+    Writing a step formats its numbers into text, which takes longer than the physics; a run
+    that does not show the steps (``--no-steps``, a batch of scenes) never writes them. ``write``
+    must read only values that do not change after the solver returns.
+    """
+
+    def __init__(self, write: Callable[..., Sequence[Step]], *args):
+        self._write, self._args, self._steps = write, args, None
+
+    def _written(self) -> list[Step]:
+        if self._steps is None:
+            self._steps = list(self._write(*self._args))
+            self._args = ()
+        return self._steps
+
+    def __getitem__(self, index):
+        return self._written()[index]
+
+    def __len__(self) -> int:
+        return len(self._written())
 
 
 @dataclass(frozen=True)

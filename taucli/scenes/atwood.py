@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError
-from taucli.report import Report, Step, Value, fmt, quantity_text
+from taucli.report import DeferredSteps, Report, Step, Value, fmt, quantity_text
 from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
 
 HANGING = math.pi / 2
@@ -160,7 +160,7 @@ def solve(
         if distance is not None:
             notes.append("v is given at the distance; distance at the time")
 
-    steps = _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, motion.held_from_start, direction)
+    steps = DeferredSteps(_steps, m1, m2, pulley, g, slope, sin_angle, normal, a, massless, dict(results), motion.held_from_start, direction)
     model = ("massless pulley" if not pulley_mass else f"massive pulley ({_pulley_words(pulley)})") + ", string does not slip"
     if not slope.hanging:
         model += f"; m2 on {'a table' if slope.angle == 0 else f'a {fmt(math.degrees(slope.angle))}° slope'}"
