@@ -17,6 +17,10 @@ from taucli.errors import InputError, did_you_mean
 from taucli.report import Report, Table, Value, fmt, pretty_unit
 
 
+# Compact, and strict: NaN or Infinity raise rather than print (finite_only keeps them out).
+STRICT_JSON = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(",", ":"))
+
+
 @dataclass(frozen=True)
 class Output:
     """How the user asked for the answer: the format and unit conversions."""
@@ -29,11 +33,13 @@ class Output:
 
 def finite_only(report: Report) -> Report:
     """Replace any non-finite result with None and a note, so JSON stays strict."""
+    if all(not isinstance(v.value, float) or math.isfinite(v.value) for v in report.results.values()):
+        return report
     results = dict(report.results)
     notes = list(report.notes)
     for name, value in report.results.items():
         if isinstance(value.value, float) and not math.isfinite(value.value):
-            results[name] = replace(value, value=None)
+            results[name] = value._replace(value=None)
             notes.append(f"{name} has no finite value here")
     return replace(report, results=results, notes=notes)
 
@@ -56,7 +62,7 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
                 continue
             raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to I=g*cm^2")
         converted = units.convert(float(value.value), value.unit, unit, "--to")
-        results[name] = replace(value, value=converted, unit=unit)
+        results[name] = value._replace(value=converted, unit=unit)
     return replace(report, results=results)
 
 
@@ -83,8 +89,11 @@ def _json_table(table: Table) -> list[dict]:
     return [{key: cell for (key, _, _), cell in zip(table.columns, row)} for row in table.rows]
 
 
-def document(report: Report) -> dict:
-    """The JSON document of DESIGN.md: taucli, scene, model, method, inputs, results, steps, notes."""
+def document(report: Report, *, steps: bool = True) -> dict:
+    """The JSON document of DESIGN.md: taucli, scene, model, method, inputs, results, steps, notes.
+
+    Without ``steps`` (--no-steps) the key stays, an empty list, so the shape does not change.
+    """
     doc = {
         "taucli": __version__,
         "scene": report.scene,
@@ -94,7 +103,7 @@ def document(report: Report) -> dict:
         "results": {name: _json_value(v) for name, v in report.results.items()},
         "steps": [
             {"title": s.title, "equation": s.equation, "numbers": s.numbers, "result": s.result, "why": s.why}
-            for s in report.steps
+            for s in (report.steps if steps else ())
         ],
         "notes": list(report.notes),
     }
@@ -111,7 +120,7 @@ def render(report: Report, output: Output, stream: TextIO) -> None:
             _result(report, name, "--get")
         stream.write("".join(_bare(report.results[name].value) + "\n" for name in output.get))
     elif output.json:
-        stream.write(json.dumps(document(report), ensure_ascii=False, allow_nan=False) + "\n")
+        stream.write(STRICT_JSON.encode(document(report, steps=output.steps)) + "\n")
     else:
         render_human(report, stream, show_steps=output.steps)
     stream.flush()
@@ -186,4 +195,13 @@ def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> 
 
 def attach_inputs(report: Report, inputs: Mapping[str, Value], notes: Sequence[str]) -> Report:
     """The report with the inputs as parsed and the notes from reading them."""
-    return replace(report, inputs=dict(inputs), notes=[*notes, *report.notes])
+    return Report(
+        scene=report.scene,
+        model=report.model,
+        method=report.method,
+        results=report.results,
+        steps=report.steps,
+        notes=[*notes, *report.notes],
+        inputs=dict(inputs),
+        tables=report.tables,
+    )
