@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from taucli import units
 from taucli.errors import InputError
 from taucli.report import Value
 
@@ -23,8 +24,6 @@ class Inputs:
         """The SI value of ``text`` read as ``kind``; None when the option was not given."""
         if text is None:
             return None
-        from taucli import units
-
         parsed = units.parse(text, option, kind, sign=sign)
         name = key or option.lstrip("-").replace("-", "_")
         self.values[name] = Value(parsed.value, units.KINDS[kind].si_unit, "")
@@ -34,18 +33,14 @@ class Inputs:
 
     def assume(self, name: str, value: float, kind: str, note: str) -> float:
         """A value the user did not give, recorded as an input, with a note that says so."""
-        from taucli.units import KINDS
-
-        self.values[name] = Value(value, KINDS[kind].si_unit, "")
+        self.values[name] = Value(value, units.KINDS[kind].si_unit, "")
         self.notes.append(note)
         return value
 
     def required(self, option: str, text: str | None, kind: str, *, sign: str = "positive", why: str = "") -> float:
         """As ``quantity``, but the option must be given."""
         if text is None:
-            from taucli.units import KINDS
-
-            raise InputError(option, f"is required{why}", example=f"{option} {KINDS[kind].example.replace(' ', '')}")
+            raise InputError(option, f"is required{why}", example=f"{option} {units.KINDS[kind].example.replace(' ', '')}")
         value = self.quantity(option, text, kind, sign=sign)
         assert value is not None
         return value

@@ -13,7 +13,9 @@ import os
 import re
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import NamedTuple
 
+from taucli import cache
 from taucli.errors import InputError, did_you_mean
 
 TWO_PI = 2.0 * math.pi
@@ -84,8 +86,7 @@ _NORMALISE = [
 ]  # fmt: skip
 
 
-@dataclass(frozen=True)
-class Parsed:
+class Parsed(NamedTuple):
     """A quantity read from the command line: its SI value, and a note if a reading needs one."""
 
     value: float
@@ -97,9 +98,7 @@ def registry():
     """The one pint registry, built on first use, its definitions cached on disk between runs."""
     import pint
 
-    from taucli.cache import folder
-
-    where = folder()
+    where = cache.folder()
     try:
         ureg = pint.UnitRegistry(cache_folder=None if where is None else os.path.join(where, "pint"))
     except Exception:  # an unreadable, unwritable or corrupt cache must not cost the answer
@@ -243,13 +242,18 @@ def _factor_key(unit: str, kind: Kind) -> str:
     return f"{kind.si_unit}|{kind.name}|{unit}"
 
 
-def _cached_factor(unit: str, kind: Kind) -> tuple[float, int] | None:
-    from taucli.cache import unit_factors
+_FACTORS: dict[str, tuple[float, int]] = {}  # this process's copy of the store, checked once
 
-    found = unit_factors().get(_factor_key(unit, kind))
-    if isinstance(found, list) and len(found) == 2 and isinstance(found[0], float) and isinstance(found[1], int) and math.isfinite(found[0]) and found[0]:
-        return found[0], found[1]
-    return None
+
+def _cached_factor(unit: str, kind: Kind) -> tuple[float, int] | None:
+    key = _factor_key(unit, kind)
+    found = _FACTORS.get(key)
+    if found is None:
+        stored = cache.unit_factors().get(key)
+        if isinstance(stored, list) and len(stored) == 2 and isinstance(stored[0], float) and isinstance(stored[1], int):
+            if math.isfinite(stored[0]) and stored[0]:
+                found = _FACTORS[key] = (stored[0], stored[1])
+    return found
 
 
 def unit_factor(unit: str, text: str, option: str, kind: Kind) -> tuple[float, int]:
@@ -265,9 +269,7 @@ def unit_factor(unit: str, text: str, option: str, kind: Kind) -> tuple[float, i
     if found is None:
         found = _from_pint(unit, text, option, kind)
         if math.isfinite(found[0]) and found[0] != 0:
-            from taucli.cache import unit_factors
-
-            unit_factors().put(_factor_key(unit, kind), list(found))
+            cache.unit_factors().put(_factor_key(unit, kind), list(found))
     return found
 
 
