@@ -118,7 +118,22 @@ ToOption = Annotated[
     Optional[list[str]],
     typer.Option("--to", metavar="NAME=UNIT", help="Show a result in this unit, e.g. --to I=g*cm^2 (repeatable).", rich_help_panel=_OUTPUT),
 ]
-NoStepsFlag = Annotated[bool, typer.Option("--no-steps", help="Hide the worked steps in the human view.", rich_help_panel=_OUTPUT)]
+NoStepsFlag = Annotated[bool, typer.Option("--no-steps", help="Leave out the worked steps (the human view, and --json's steps list).", rich_help_panel=_OUTPUT)]
+BatchFlag = Annotated[
+    bool,
+    typer.Option(
+        "--batch",
+        help="Many scenes: read JSON lines on stdin, keys the option names (m1, pulley_mass), and write one --json document per line.",
+        rich_help_panel=_OUTPUT,
+    ),
+]
+
+
+def run_batch(command, given: dict) -> int:
+    """``command`` once per JSON line on stdin (taucli.batch); the exit status of the whole run."""
+    from taucli import batch
+
+    return batch.run(command, given, sys.stdin, sys.stdout)
 
 
 def _length_option(flag: str, help_text: str):
@@ -200,7 +215,8 @@ def inertia(
     get: GetOption = None,
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
-) -> None:
+    batch: BatchFlag = False,
+) -> Optional[int]:
     """Moment of inertia of a standard shape: shifted (--offset), or a body of several parts.
 
     Results: I, k (radius of gyration), I_cm (with --offset), mass (several parts).
@@ -208,9 +224,10 @@ def inertia(
     \b
     Example: taucli inertia disc --mass 5kg --radius 0.2m
     """
-    from taucli.scenes import inertia as scene
-
+    if batch:
+        return run_batch(inertia, locals())
     from taucli.inputs import SHAPE_DIMENSIONS, Inputs, parse_part_spec
+    from taucli.scenes import inertia as scene
 
     inputs = Inputs()
     dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
@@ -285,7 +302,8 @@ def spin_down(
     get: GetOption = None,
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
-) -> None:
+    batch: BatchFlag = False,
+) -> Optional[int]:
     """A wheel on a fixed axle, slowing or spun up: I dω/dt = τ_drive − τ_f − bω − kω².
 
     Results: I, alpha0, t_stop, theta_stop, revs_stop, omega_inf; with --time: omega, theta, revs;
@@ -294,9 +312,10 @@ def spin_down(
     \b
     Example: taucli spin-down --shape disc --mass 5kg --radius 0.2m --omega0 30rad/s --friction 0.3N*m
     """
-    from taucli.scenes import spin
-
+    if batch:
+        return run_batch(spin_down, locals())
     from taucli.inputs import Inputs
+    from taucli.scenes import spin
 
     inputs = Inputs()
     dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
@@ -369,7 +388,8 @@ def atwood(
     get: GetOption = None,
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
-) -> None:
+    batch: BatchFlag = False,
+) -> Optional[int]:
     """Two masses on a string over a pulley with mass: acceleration and tensions.
 
     Results: a (m1 downward positive), T1, T2, alpha, a_massless; v, t with --distance; v, distance with --time.
@@ -377,9 +397,10 @@ def atwood(
     \b
     Example: taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg --pulley-radius 0.1m
     """
-    from taucli.scenes import atwood as scene
-
+    if batch:
+        return run_batch(atwood, locals())
     from taucli.inputs import Inputs
+    from taucli.scenes import atwood as scene
 
     inputs = Inputs()
     mass1 = inputs.required("--m1", m1, "mass", sign="nonnegative")
@@ -431,7 +452,8 @@ def rolling(
     get: GetOption = None,
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
-) -> None:
+    batch: BatchFlag = False,
+) -> Optional[int]:
     """A round body on an incline: does it roll or slip, and how fast; or a skidding ball on the flat.
 
     Results: a, alpha, friction, mu_min, rolls; v, t at the bottom (--length or --height);
@@ -440,9 +462,10 @@ def rolling(
     \b
     Example: taucli rolling sphere --angle 30deg --length 2m
     """
-    from taucli.scenes import rolling as scene
-
+    if batch:
+        return run_batch(rolling, locals())
     from taucli.inputs import Inputs
+    from taucli.scenes import rolling as scene
 
     inputs = Inputs()
     mass_si = inputs.quantity("--mass", mass, "mass")
@@ -506,7 +529,8 @@ def impulse(
     get: GetOption = None,
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
-) -> None:
+    batch: BatchFlag = False,
+) -> Optional[int]:
     """Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.
 
     Results: J, delta_omega, inertia, omega0, omega1, torque, duration, L0, L1, KE0, KE1;
@@ -515,9 +539,10 @@ def impulse(
     \b
     Example: taucli impulse --inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s
     """
-    from taucli.scenes import impulse as scene
-
+    if batch:
+        return run_batch(impulse, locals())
     from taucli.inputs import Inputs
+    from taucli.scenes import impulse as scene
 
     inputs = Inputs()
     dims = dict(radius=radius, inner_radius=inner_radius, outer_radius=outer_radius, length=length, width=width, height=height, depth=depth)
