@@ -644,6 +644,24 @@ def bench(
         print(f"charts written to {out}")
 
 
+@app.command(cls=TaucliCommand)
+def completions(
+    shell: Annotated[Optional[str], typer.Argument(metavar="SHELL", help="bash, zsh or fish.", show_default=False)] = None,
+) -> None:
+    """Print the completion script for SHELL: commands, options, shapes, methods, and units after a number.
+
+    The scripts are static: pressing TAB never starts Python. The README says where each goes.
+
+    \b
+    Example: taucli completions bash > ~/.local/share/bash-completion/completions/taucli
+    """
+    from taucli import completions as scripts
+
+    if shell not in scripts.SHELLS:
+        raise InputError("SHELL", f"expected one of {', '.join(scripts.SHELLS)}", example="taucli completions bash", got=None if shell is None else repr(shell))
+    sys.stdout.write(scripts.script(shell))
+
+
 def _is_usage_error(err: Exception) -> bool:
     """Typer's (vendored or plain click) usage errors: they carry an exit code and a message."""
     return isinstance(getattr(err, "exit_code", None), int) and hasattr(err, "format_message")

@@ -1,0 +1,193 @@
+"""Shell completion: the committed scripts are what the app generates, and they work in real
+bash, zsh and fish, installed as the README says, with TAB pressed in a terminal (a pty).
+
+The `taucli` on PATH in these shells is a stub that records being run: TAB must never start it.
+The shells come from Debian's packages (bash-completion, zsh, fish); .ci/run installs them.
+Without them the shell tests skip, except in CI, where they fail.
+"""
+
+from __future__ import annotations
+
+import fcntl
+import os
+import pty
+import re
+import select
+import shutil
+import signal
+import struct
+import termios
+import time
+from pathlib import Path
+
+import subprocess
+
+import pytest
+
+from conftest import run_taucli
+from taucli import completions, names
+
+COMPLETIONS = Path(__file__).resolve().parent.parent / "completions"
+
+
+@pytest.mark.parametrize("shell", completions.SHELLS)
+def test_the_committed_script_is_a_fresh_generation(shell):
+    committed = (COMPLETIONS / completions.FILE_NAMES[shell]).read_text()
+    assert committed == completions.script(shell), f"completions/ is stale: run taucli completions {shell} > completions/{completions.FILE_NAMES[shell]}"
+
+
+@pytest.mark.parametrize("shell", completions.SHELLS)
+def test_taucli_completions_prints_the_script(shell):
+    done = run_taucli("completions", shell)
+    assert done.code == 0 and done.out == (COMPLETIONS / completions.FILE_NAMES[shell]).read_text()
+
+
+def test_an_unknown_shell_is_a_usage_error():
+    done = run_taucli("completions", "tcsh")
+    assert done.code == 2 and "expected one of bash, zsh, fish" in done.err
+
+
+def test_every_option_of_every_command_is_offered():
+    import typer.main
+
+    from taucli.cli import app
+
+    _, commands = completions.spec()
+    offered = {command.name: {option.flag for option in command.options} for command in commands}
+    for name, command in typer.main.get_command(app).commands.items():
+        flags = {opt for param in command.params if param.param_type_name == "option" for opt in param.opts}
+        assert flags | {"--help"} == offered[name]
+    assert tuple(offered) == names.COMMAND_NAMES
+
+
+# --- in the real shells -------------------------------------------------------------------
+
+
+PACKAGES = ("bash-completion", "zsh", "fish")
+
+
+@pytest.fixture(scope="module", autouse=True)
+def shells_installed():
+    """Install the shells from Debian's packages when they are missing and this may (root, apt)."""
+    missing = not (shutil.which("zsh") and shutil.which("fish") and os.path.exists("/usr/share/bash-completion/bash_completion"))
+    if missing and shutil.which("apt-get") and os.geteuid() == 0:
+        env = {**os.environ, "DEBIAN_FRONTEND": "noninteractive"}
+        install = ["apt-get", "install", "-y", "-q", *PACKAGES]
+        if subprocess.run(install, capture_output=True, env=env, timeout=600).returncode != 0:
+            subprocess.run(["apt-get", "update", "-q"], capture_output=True, env=env, timeout=600)
+            subprocess.run(install, capture_output=True, env=env, timeout=600)
+
+
+def _shell_or_skip(name: str) -> str:
+    found = shutil.which(name)
+    if found is None:
+        if os.environ.get("CI"):
+            pytest.fail(f"{name} is not installed: .ci/run installs bash-completion, zsh and fish")
+        pytest.skip(f"{name} is not installed (apt-get install bash-completion zsh fish)")
+    return found
+
+
+def _strip_terminal(raw: bytes) -> str:
+    text = raw.decode("utf-8", "replace")
+    text = re.sub(r"\x1b\][^\x07]*\x07|\x1b\[[0-9;?]*[ -/]*[@-~]|\x1b[()][A-Z0-9]|\x1b[=>78]|[\r\x07\x08]", "", text)
+    return text.replace("\\", "")
+
+
+def _press_tab(argv: list[str], env: dict[str, str], setup: list[str], ready: str, typed: str) -> str:
+    """Start an interactive shell on a pty, run ``setup``, type ``typed`` (TABs included), and
+    return what the terminal shows after it, escape sequences removed."""
+    pid, fd = pty.fork()
+    if pid == 0:  # the child: the shell
+        os.execvpe(argv[0], argv, env)
+    fcntl.ioctl(fd, termios.TIOCSWINSZ, struct.pack("HHHH", 50, 200, 0, 0))
+    shown = b""
+
+    def read(seconds: float, until: bytes | None = None, quiet: float = 0.4) -> None:
+        """Read what the shell shows until ``until`` appears, or it is quiet for ``quiet`` s."""
+        nonlocal shown
+        end = time.monotonic() + seconds
+        last = time.monotonic()
+        while time.monotonic() < end:
+            ready_now, _, _ = select.select([fd], [], [], 0.05)
+            if ready_now:
+                try:
+                    shown += os.read(fd, 65536)
+                except OSError:
+                    return
+                last = time.monotonic()
+                if until is not None and until in shown:
+                    return
+            elif until is None and time.monotonic() - last > quiet:
+                return
+
+    try:
+        for line in [*setup, ready]:
+            os.write(fd, line.encode() + b"\n")
+        read(20, b"READY42")
+        start = len(shown)
+        for chunk in typed.split("\t")[:-1]:
+            os.write(fd, chunk.encode() + b"\t")
+            read(5)
+        os.write(fd, typed.split("\t")[-1].encode())
+        read(5)
+        return _strip_terminal(shown[start:])
+    finally:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+        os.close(fd)
+
+
+def _stub_taucli(home: Path) -> Path:
+    """A `taucli` that only records that it ran: fish completes only commands on PATH."""
+    bin_dir = home / "bin"
+    bin_dir.mkdir()
+    stub = bin_dir / "taucli"
+    stub.write_text(f"#!/bin/sh\necho ran >> {home / 'taucli-ran'}\n")
+    stub.chmod(0o755)
+    return bin_dir
+
+
+def _install(shell: str, home: Path) -> tuple[list[str], dict[str, str], list[str], str]:
+    """The shell installed as the README says; its argv, environment, setup lines and ready line."""
+    bin_dir = _stub_taucli(home)
+    env = {"HOME": str(home), "PATH": f"{bin_dir}:/usr/bin:/bin", "TERM": "xterm", "LANG": "C.UTF-8"}
+    script = COMPLETIONS / completions.FILE_NAMES[shell]
+    if shell == "bash":
+        target = home / ".local/share/bash-completion/completions/taucli"
+        target.parent.mkdir(parents=True)
+        shutil.copy(script, target)
+        loader = "/usr/share/bash-completion/bash_completion"
+        if not os.path.exists(loader):
+            _shell_or_skip("bash-completion's loader")
+        return [_shell_or_skip("bash"), "--norc", "--noprofile", "-i"], {**env, "PS1": "$ "}, [f"source {loader}"], "echo READY$((40+2))"
+    if shell == "zsh":
+        target = home / ".zfunc/_taucli"
+        target.parent.mkdir(parents=True)
+        shutil.copy(script, target)
+        setup = ["fpath=(~/.zfunc $fpath)", "autoload -U compinit && compinit -u", "PS1='$ '"]
+        return [_shell_or_skip("zsh"), "-f", "-i"], env, setup, "echo READY$((40+2))"
+    target = home / ".config/fish/completions/taucli.fish"
+    target.parent.mkdir(parents=True)
+    shutil.copy(script, target)
+    return [_shell_or_skip("fish"), "-i", "-C", "set -g fish_greeting ''"], env, [], "echo READY(math 40 + 2)"
+
+
+CASES = {
+    # what is typed (TABs included) -> what the terminal must then show
+    "a command": ("taucli at\t", ["taucli atwood"]),
+    "the shapes": ("taucli inertia \t\t", list(names.SHAPE_NAMES)),
+    "the pulley options": ("taucli atwood --pu\t\t\t", ["--pulley-mass", "--pulley-radius", "--pulley-shape", "--pulley-inertia"]),
+    "units after a number": ("taucli atwood --m1 4\t\t", ["4kg", "4lb", "4tonne"]),
+    "methods": ("taucli spin-down --method r\t\t\t", ["rk4", "rk45"]),
+}
+
+
+@pytest.mark.parametrize("shell", completions.SHELLS)
+@pytest.mark.parametrize("case", list(CASES))
+def test_tab_in_the_real_shell(shell, case, tmp_path):
+    typed, expected = CASES[case]
+    argv, env, setup, ready = _install(shell, tmp_path)
+    shown = _press_tab(argv, env, setup, ready, typed)
+    for word in expected:
+        assert word in shown, (shell, typed, shown)
+    assert not (tmp_path / "taucli-ran").exists(), "pressing TAB ran taucli"
