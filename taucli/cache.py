@@ -2,8 +2,8 @@
 
 A one-off run spends most of its time importing pint and loading its registry (~150 ms) to read
 "4 kg". pint's answer for a unit text ("kg", "rpm", "N*m") never changes for one pint and one
-taucli, so it is kept in ``units.json`` and pint is asked again only for a text not seen before.
-Likewise the help typer renders for a command at a terminal width (``help.json``): importing
+taucli, so it is kept in ``units-*.json`` and pint is asked again only for a text not seen before.
+Likewise the help typer renders for a command at a terminal width (``help-*.json``): importing
 typer alone takes longer than printing a help text should.
 
 Nothing here may cost an answer: a missing, unreadable, corrupt, stale or read-only cache is
@@ -68,15 +68,18 @@ def own_file(name: str) -> str:
 class Store:
     """A small JSON file of key -> value in the cache folder, valid for one stamp only.
 
-    ``depends_on`` is a function giving the stamp; it is called only when the file is read or
-    written, so a process that never touches the store pays nothing.
+    ``depends_on`` gives the stamp, which names the file (``units-1a2b3c4d5e6f.json``): two
+    environments with different pint or taucli share the folder without evicting each other.
+    It is called only when a store is first used, so a process that never uses one pays nothing.
     """
 
     def __init__(self, path: str | None, name: str, depends_on):
-        self.file = None if path is None else os.path.join(path, name)
-        self.depends_on = depends_on
+        import hashlib
+
         self.entries: dict[str, object] = {}
-        self.stamp = ""
+        self.stamp = depends_on() if path is not None else ""
+        digest = hashlib.sha1(self.stamp.encode()).hexdigest()[:12]
+        self.file = None if path is None else os.path.join(path, f"{name}-{digest}.json")
         if self.file is not None:
             self._load()
 
@@ -93,7 +96,6 @@ class Store:
         try:
             with open(self.file, encoding="utf-8") as handle:
                 stored = json.load(handle, parse_constant=_no_constants)
-            self.stamp = self.depends_on()
             if isinstance(stored, dict) and stored.get("stamp") == self.stamp and isinstance(stored.get("entries"), dict):
                 self.entries = dict(list(stored["entries"].items())[:MAX_ENTRIES])
         except (OSError, ValueError, TypeError, AttributeError):
@@ -107,7 +109,7 @@ class Store:
         try:
             os.makedirs(folder_path, exist_ok=True)
             with open(temporary, "w", encoding="utf-8") as handle:
-                json.dump({"stamp": self.stamp or self.depends_on(), "entries": self.entries}, handle, ensure_ascii=False)
+                json.dump({"stamp": self.stamp, "entries": self.entries}, handle, ensure_ascii=False)
             os.replace(temporary, self.file)
         except OSError:
             try:
@@ -123,10 +125,10 @@ def _no_constants(name: str):
 @lru_cache(maxsize=1)
 def unit_factors() -> Store:
     """(unit text, kind) -> [SI factor, power of Hz]: pint's answers for this pint and units.py."""
-    return Store(folder(), "units.json", lambda: stamp(own_file("units.py"), package_file("pint")))
+    return Store(folder(), "units", lambda: stamp(own_file("units.py"), package_file("pint")))
 
 
 @lru_cache(maxsize=1)
 def help_texts() -> Store:
     """(command, width) -> the help typer rendered, for this typer and cli.py."""
-    return Store(folder(), "help.json", lambda: stamp(own_file("cli.py"), own_file("names.py"), package_file("typer")))
+    return Store(folder(), "help", lambda: stamp(own_file("cli.py"), own_file("names.py"), package_file("typer")))

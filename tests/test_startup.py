@@ -63,11 +63,12 @@ def test_a_help_from_the_cache_is_the_help_typer_renders(columns, tmp_path):
     first, again = (run_taucli("rolling", "--help", env=env) for _ in range(2))
     assert first.out == again.out == rendered
     assert first.code == again.code == 0
-    stored = json.loads((tmp_path / "help.json").read_text())
+    (help_file,) = tmp_path.glob("help-*.json")
+    stored = json.loads(help_file.read_text())
     assert stored["entries"] == {f"rolling|{columns}": rendered}
     stored["stamp"] = "an older typer"
     stored["entries"][f"rolling|{columns}"] = "stale help"
-    (tmp_path / "help.json").write_text(json.dumps(stored))
+    help_file.write_text(json.dumps(stored))
     assert run_taucli("rolling", "--help", env=env).out == rendered
 
 
@@ -93,19 +94,20 @@ def test_every_state_of_the_cache_folder_gives_the_same_answer(tmp_path):
     folder = tmp_path / "cache"
     fresh = _answer({"TAUCLI_CACHE_DIR": str(folder)})  # missing: created
     assert fresh == pytest.approx(EXPECTED_A, rel=1e-12)
-    assert (folder / "units.json").exists() and (folder / "pint").is_dir()
+    (units_file,) = folder.glob("units-*.json")
+    assert (folder / "pint").is_dir()
     assert _answer({"TAUCLI_CACHE_DIR": str(folder)}) == fresh  # warm: no pint at all
 
-    (folder / "units.json").write_text('{"stamp": 3, "units": [')  # corrupt
+    units_file.write_text('{"stamp": 3, "units": [')  # corrupt
     for pickle in (folder / "pint").iterdir():
         pickle.write_bytes(b"\x80\x04garbage")
     assert _answer({"TAUCLI_CACHE_DIR": str(folder)}) == fresh
-    assert json.loads((folder / "units.json").read_text())["entries"]  # rewritten
+    assert json.loads(units_file.read_text())["entries"]  # rewritten
 
-    stored = json.loads((folder / "units.json").read_text())
+    stored = json.loads(units_file.read_text())
     stored["entries"] = {key: [value[0] * 2, value[1]] for key, value in stored["entries"].items()}
     stored["stamp"] = "an older taucli or pint"  # stale: its factors must not be used
-    (folder / "units.json").write_text(json.dumps(stored))
+    units_file.write_text(json.dumps(stored))
     assert _answer({"TAUCLI_CACHE_DIR": str(folder)}) == fresh
 
     a_file = tmp_path / "a-file"
@@ -139,7 +141,7 @@ def test_a_cached_unit_reads_as_pint_reads_the_whole_text(text, kind, tmp_path, 
     """Number times pint's factor for the unit is what pint makes of the whole text, to 1 ulp."""
     from taucli import cache, units
 
-    store = cache.Store(str(tmp_path), "units.json", lambda: "this test")
+    store = cache.Store(str(tmp_path), "units", lambda: "this test")
     monkeypatch.setattr(cache, "unit_factors", lambda: store)
     first = units.parse(text, "--x", kind, sign="any")
     again = units.parse(text, "--x", kind, sign="any")  # now from the cache
@@ -166,3 +168,16 @@ def test_help_groups_options_under_their_panels():
     pulley = lines.index("Pulley:")
     assert lines[pulley + 1].split()[0] == "--pulley-mass"
     assert "\x1b[" not in done.out and "╭" not in done.out
+
+
+def test_two_environments_sharing_a_cache_folder_keep_their_own_entries(tmp_path):
+    """Another pint (another venv) has its own file, so neither evicts the other's answers."""
+    from taucli import cache
+
+    one = cache.Store(str(tmp_path), "units", lambda: "pint 0.24 in venv one")
+    one.put("kg|mass|lb", [0.45359237, 0])
+    other = cache.Store(str(tmp_path), "units", lambda: "pint 0.25 in venv two")
+    assert other.get("kg|mass|lb") is None
+    other.put("kg|mass|lb", [0.4535923700000001, 0])
+    assert cache.Store(str(tmp_path), "units", lambda: "pint 0.24 in venv one").get("kg|mass|lb") == [0.45359237, 0]
+    assert len(list(tmp_path.glob("units-*.json"))) == 2
