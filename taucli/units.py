@@ -2,8 +2,9 @@
 
 The registry is built on first use only (``--help`` and completion never build it), pint's
 definition cache is kept in taucli's cache folder, and pint's SI factor for each unit text is
-remembered there too (taucli.cache), so a run whose units were seen before never imports pint. Text is screened before pint sees it: pint evaluates
-``**`` with Python integers, so ``9**9**9 kg`` would run for hours if it got that far.
+remembered there too (taucli.cache), so a run whose units were seen before never imports pint.
+Text is screened before pint sees it: pint evaluates ``**`` with Python integers, so
+``9**9**9 kg`` would run for hours if it got that far.
 """
 
 from __future__ import annotations
