@@ -68,17 +68,18 @@ def own_file(name: str) -> str:
 class Store:
     """A small JSON file of key -> value in the cache folder, valid for one stamp only.
 
-    ``depends_on`` gives the stamp, which names the file (``units-1a2b3c4d5e6f.json``): two
+    ``depends_on`` gives the stamp, which names the file (``units-1a2b3c4d.json``): two
     environments with different pint or taucli share the folder without evicting each other.
+    The name is only a hash: the stamp inside the file is what is checked.
     It is called only when a store is first used, so a process that never uses one pays nothing.
     """
 
     def __init__(self, path: str | None, name: str, depends_on):
-        import hashlib
+        import zlib  # not hashlib: its OpenSSL import costs 4 ms, and the file holds the full stamp
 
         self.entries: dict[str, object] = {}
         self.stamp = depends_on() if path is not None else ""
-        digest = hashlib.sha1(self.stamp.encode()).hexdigest()[:12]
+        digest = f"{zlib.crc32(self.stamp.encode()):08x}"
         self.file = None if path is None else os.path.join(path, f"{name}-{digest}.json")
         if self.file is not None:
             self._load()
