@@ -29,6 +29,40 @@ class Output:
     get: Sequence[str] = ()
     to: Sequence[str] = ()
     steps: bool = True
+    plot: bool = False  # draw the motion in time (or, in --json, include its samples)
+    out: str | None = None  # also draw the chart to this .svg or .png file
+    json_lines: bool = False  # a sweep's documents one per line rather than one array
+
+    @property
+    def charted(self) -> bool:
+        return self.plot or self.out is not None
+
+
+def terminal_style(stream: TextIO) -> tuple[int, bool]:
+    """(columns, colour) for text drawn on ``stream``: no colour under NO_COLOR, TERM=dumb or a pipe."""
+    import shutil
+
+    columns = shutil.get_terminal_size((100, 24)).columns
+    colour = stream.isatty() and not os.environ.get("NO_COLOR") and os.environ.get("TERM") != "dumb"
+    return max(columns, 20), colour
+
+
+def chart_units(report: Report, to: Sequence[str]) -> dict[str, tuple[str, float]]:
+    """For each curve of the report's motion named in --to: (unit, SI value of one of it)."""
+    from taucli import units
+
+    curves = {key: unit for key, unit, _ in report.trajectory.curves} if report.trajectory else {}
+    in_units = {}
+    for request in to:
+        name, _, unit = (part.strip() for part in request.partition("="))
+        if name in curves and unit:
+            in_units[name] = (unit, 1.0 / units.convert(1.0, curves[name], unit, "--to"))
+    return in_units
+
+
+def prepared(report: Report, output: Output) -> Report:
+    """The report as shown: non-finite results as None, and in the units --to asks for."""
+    return apply_conversions(finite_only(report), output.to)
 
 
 def finite_only(report: Report) -> Report:
@@ -56,7 +90,7 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
         name, unit = name.strip(), unit.strip()
         if not sep or not name or not unit:
             raise InputError("--to", "expected NAME=UNIT", example="--to omega=rpm", got=repr(request))
-        value = _result(report, name, "--to")
+        value = named_result(report, name, "--to")
         if value.unit is None or not isinstance(value.value, (float, int)) or isinstance(value.value, bool):
             if value.value is None:
                 continue
@@ -66,7 +100,7 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
     return replace(report, results=results)
 
 
-def _result(report: Report, name: str, option: str) -> Value:
+def named_result(report: Report, name: str, option: str) -> Value:
     try:
         return report.results[name]
     except KeyError:
@@ -114,19 +148,30 @@ def document(report: Report, *, steps: bool = True) -> dict:
 
 def render(report: Report, output: Output, stream: TextIO) -> None:
     """Write the report in the format the user asked for."""
-    report = apply_conversions(finite_only(report), output.to)
+    report = prepared(report, output)
+    chart = None
+    if output.charted:
+        from taucli import plot
+
+        chart = plot.motion_chart([("", report)], chart_units(report, output.to))
     if output.get:
-        for name in output.get:
-            _result(report, name, "--get")
-        stream.write("".join(_bare(report.results[name].value) + "\n" for name in output.get))
+        stream.write("".join(bare(named_result(report, name, "--get").value) + "\n" for name in output.get))
     elif output.json:
-        stream.write(STRICT_JSON.encode(document(report, steps=output.steps)) + "\n")
+        doc = document(report, steps=output.steps)
+        if output.charted:
+            doc["plot"] = plot.plot_document(report)
+        stream.write(STRICT_JSON.encode(doc) + "\n")
     else:
         render_human(report, stream, show_steps=output.steps)
+        if output.plot:
+            columns, colour = terminal_style(stream)
+            stream.write("\n" + plot.terminal(chart, columns, colour=colour))
+    if output.out is not None:
+        plot.write_file(chart, output.out)
     stream.flush()
 
 
-def _bare(value) -> str:
+def bare(value) -> str:
     if value is None:
         return "null"
     if isinstance(value, bool):
@@ -136,7 +181,7 @@ def _bare(value) -> str:
     return str(value)
 
 
-def _shown(value, digits: int = 6) -> str:
+def shown(value, digits: int = 6) -> str:
     if value is None:
         return "—"
     if isinstance(value, bool):
@@ -165,16 +210,16 @@ def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> 
     results.add_column("unit")
     results.add_column("what it is", style="dim", overflow="fold")
     for name, value in report.results.items():
-        results.add_row(Text(name), Text(_shown(value.value)), Text(pretty_unit(value.unit)), Text(value.label))
+        results.add_row(Text(name), Text(shown(value.value)), Text(pretty_unit(value.unit)), Text(value.label))
     console.print(results)
 
     for name, table in report.tables.items():
-        shown = RichTable(title=name, box=box.SIMPLE_HEAD, pad_edge=False)
+        drawn = RichTable(title=name, box=box.SIMPLE_HEAD, pad_edge=False)
         for _, unit, heading in table.columns:
-            shown.add_column(f"{heading} ({pretty_unit(unit)})" if unit else heading, justify="right" if unit else "left")
+            drawn.add_column(f"{heading} ({pretty_unit(unit)})" if unit else heading, justify="right" if unit else "left")
         for row in table.rows:
-            shown.add_row(*(Text(_shown(cell, 4)) for cell in row))
-        console.print(shown)
+            drawn.add_row(*(Text(shown(cell, 4)) for cell in row))
+        console.print(drawn)
 
     if show_steps and report.steps:
         console.print(Text("Steps", style="bold underline"))
@@ -204,4 +249,5 @@ def attach_inputs(report: Report, inputs: Mapping[str, Value], notes: Sequence[s
         notes=[*notes, *report.notes],
         inputs=dict(inputs),
         tables=report.tables,
+        trajectory=report.trajectory,
     )

@@ -69,6 +69,30 @@ class Table:
     rows: tuple[tuple[Number, ...], ...]
 
 
+@dataclass(frozen=True)
+class Trajectory:
+    """How a scene evolves in time, for a plot: curves on [0, t_end] and the moments to mark.
+
+    ``state(t)`` gives the value of each curve in ``curves`` at t, from the solver's own
+    solution; a scene known only at samples (a torque profile) gives ``points`` instead.
+    """
+
+    curves: tuple[tuple[str, str, str], ...]  # (key, unit, label) of each curve
+    t_end: float
+    state: Callable[[float], tuple[float, ...]] | None = None
+    points: tuple[tuple[float, ...], ...] = ()  # (t, *values) at known samples
+    marks: tuple[tuple[float, str], ...] = ()  # (t, what happens then)
+    note: str = ""  # how t_end was chosen, when the user did not say
+
+    def sample(self, count: int) -> list[tuple[float, ...]]:
+        """(t, *values) at ``count`` even times from 0 to t_end, and at each mark, in order."""
+        if self.state is None:
+            return [tuple(point) for point in self.points]
+        times = {self.t_end * i / (count - 1) for i in range(count)}
+        times.update(t for t, _ in self.marks if 0 <= t <= self.t_end)
+        return [(t, *self.state(t)) for t in sorted(times)]
+
+
 @dataclass
 class Report:
     """What a solver found: the model it used, its results, the steps and the notes."""
@@ -81,6 +105,7 @@ class Report:
     notes: list[str] = field(default_factory=list)
     inputs: dict[str, Value] = field(default_factory=dict)
     tables: dict[str, Table] = field(default_factory=dict)
+    trajectory: Trajectory | None = None
 
 
 def fmt(x: float, digits: int = 4) -> str:

@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError
-from taucli.report import DeferredSteps, Report, Step, Value, fmt, quantity_text
+from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, fmt, quantity_text
 from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
 
 HANGING = math.pi / 2
@@ -170,7 +170,27 @@ def solve(
         model += "; friction holds it at rest"
     elif loads.friction:
         model += "; friction overcome"
-    return Report("atwood", model, "closed form", results, steps, notes)
+    return Report("atwood", model, "closed form", results, steps, notes, trajectory=_trajectory(motion, distance, time, results))
+
+
+def _trajectory(motion, distance: float | None, time: float | None, results: dict[str, Value]) -> Trajectory:
+    """Position and velocity of m1 (down positive): to --time, or to --distance, or past the stop."""
+    stop, note, marks = motion.stop, "", []
+    reached = results["t"].value if distance is not None else None
+    if time is not None and time > 0:
+        t_end = time
+    elif reached:
+        t_end = reached
+    elif stop is not None and stop[0] > 0:
+        t_end = 1.25 * stop[0]
+    else:
+        t_end, note = 1.0, "plotted for 1 s; --time or --distance to change"
+    if reached:
+        marks.append((reached, f"has moved {fmt(distance)} m"))
+    if stop is not None and stop[0] > 0:
+        marks.append((stop[0], "stops"))
+    curves = (("x", "m", "position of m1, down positive"), ("v", "m/s", "velocity of m1"))
+    return Trajectory(curves, t_end, lambda t: motion.state_at(t)[::-1], marks=tuple(marks), note=note)
 
 
 def _pulley_words(pulley: Pulley) -> str:

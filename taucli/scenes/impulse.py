@@ -13,10 +13,11 @@ from collections.abc import Iterable, Sequence
 
 from taucli.errors import InputError
 from taucli.numerics import StreamingQuadrature
-from taucli.report import Report, Step, Table, Value, fmt, quantity_text
+from taucli.report import Report, Step, Table, Trajectory, Value, fmt, quantity_text
 
 BRIEF_BLOW = 0.1  # s: a blow this short is remembered by its impulse alone
 SAMPLES_SHOWN = 10_000  # ω at the samples is reported for profiles up to this many rows
+PLOTTED = 500  # a profile's plot keeps between this many and twice as many of its samples
 AGREEMENT = 1e-9  # relative: all five given must satisfy τΔt = IΔω this closely
 
 UNKNOWNS = ("inertia", "omega0", "omega1", "torque", "duration")
@@ -114,7 +115,9 @@ def solve_balance(
         steps.append(Step(f"Solve for {_OPTIONS[unknown].lstrip('-')}", equation, numbers, result, "the one quantity not given"))
     steps.append(Step("The impulse", "J = τΔt", f"{fmt(tau)} × {fmt(dt)}", quantity_text(impulse, "N*m*s"), "the same as the change of angular momentum ΔL = IΔω"))
     model = "constant torque: τΔt = IΔω" + (f", solved for {unknown}" if unknown else ", all five given and consistent")
-    return Report("impulse", model, "closed form", results, steps, notes)
+    curves = (("torque", "N*m", "torque τ"), ("omega", "rad/s", "angular velocity ω"))
+    trajectory = Trajectory(curves, dt, lambda t: (tau, w0 + tau * t / i))
+    return Report("impulse", model, "closed form", results, steps, notes, trajectory=trajectory)
 
 
 def solve_changing_inertia(inertia0: float, inertia1: float, omega0: float, *, inertia_steps: Sequence[Step] = ()) -> Report:
@@ -163,6 +166,8 @@ def solve_profile(
     quadrature = StreamingQuadrature()
     shown: list[tuple[float, float, float]] = []
     chosen = "simpson" if rule == "auto" else rule
+    plotted: list[tuple[float, float, float]] = []  # every stride-th sample, so memory stays flat
+    stride = 1
     start = None
     for t, torque in samples:
         if start is None:
@@ -170,6 +175,10 @@ def solve_profile(
         quadrature.add(t, torque)
         if quadrature.count <= SAMPLES_SHOWN:
             shown.append((t, torque, omega0 + quadrature.result(chosen) / inertia))
+        if (quadrature.count - 1) % stride == 0:
+            plotted.append((t, torque, omega0 + quadrature.result(chosen) / inertia))
+            if len(plotted) == 2 * PLOTTED:
+                plotted, stride = plotted[::2], 2 * stride
     count = quadrature.count
     if count < 2:
         raise InputError("--torque-profile", "needs at least two samples for an integral")
@@ -208,4 +217,9 @@ def solve_profile(
              "the impulse is all the motion remembers of the torque"),
     ]
     model = f"sampled torque profile ({count} samples), J by the {chosen} rule"
-    return Report("impulse", model, chosen, results, steps, notes, {}, tables)
+    if plotted[-1][0] != t:
+        plotted.append((t, torque, omega1))
+    curves = (("torque", "N*m", "torque τ"), ("omega", "rad/s", "angular velocity ω"))
+    points = tuple((sample - start, torque_at, omega_at) for sample, torque_at, omega_at in plotted)
+    trajectory = Trajectory(curves, duration, points=points, note="" if stride == 1 else f"plotted at every {stride}th sample")
+    return Report("impulse", model, chosen, results, steps, notes, {}, tables, trajectory)

@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError, did_you_mean
-from taucli.report import Report, Step, Value, fmt, quantity_text
+from taucli.report import Report, Step, Trajectory, Value, fmt, quantity_text
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 RIGHT_ANGLE = math.pi / 2
@@ -142,7 +142,23 @@ def solve_incline(
     steps = _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_mass, results)
     model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) on a {fmt(math.degrees(angle))}° slope, "
     model += "rolling without slipping" if rolls else "slipping (kinetic friction)"
-    return Report("rolling", model, "closed form", results, steps, notes)
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=_incline_trajectory(a, v0, results))
+
+
+def _incline_trajectory(a: float, v0: float, results: dict[str, Value]) -> Trajectory:
+    """Distance and speed along the slope: down it from rest to the bottom, or up it to the highest point."""
+    curves = (("x", "m", "distance along the slope"), ("v", "m/s", "speed along the slope"))
+    if v0 > 0 and "t_climb" in results:
+        top = results["t_climb"].value
+        return Trajectory(curves, top, lambda t: (v0 * t - a * t * t / 2, v0 - a * t), marks=((top, "highest point"),))
+    if v0 > 0:  # up the slope, with nothing to stop it
+        return Trajectory(curves, 1.0, lambda t: (v0 * t - a * t * t / 2, v0 - a * t), note="plotted for 1 s: it does not come back")
+    if a <= 0:
+        return Trajectory(curves, 1.0, lambda t: (0.0, 0.0), note="plotted for 1 s: it stays at rest")
+    bottom = results["t"].value if "t" in results else None
+    if bottom is None:
+        return Trajectory(curves, 1.0, lambda t: (a * t * t / 2, a * t), note="plotted for 1 s; --length or --height to change")
+    return Trajectory(curves, bottom, lambda t: (a * t * t / 2, a * t), marks=((bottom, "reaches the bottom"),))
 
 
 def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_mass, results) -> list[Step]:
@@ -241,4 +257,19 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
              quantity_text(v_roll, "m/s"), "friction acts at the contact, so angular momentum about the contact point is conserved"),
     ]
     model = f"{roller.description} (k² = {fmt(k2)}) skidding on the flat until it rolls"
-    return Report("rolling", model, "closed form", results, steps, notes)
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=_skid_trajectory(v0, v_roll, t_roll))
+
+
+def _skid_trajectory(v0: float, v_roll: float, t_roll: float) -> Trajectory:
+    """Distance and speed of the centre: uniform change while it skids, then steady rolling."""
+    change = 0.0 if t_roll == 0 else (v_roll - v0) / t_roll  # ±μk g while it skids
+
+    def state(t: float) -> tuple[float, float]:
+        if t <= t_roll:
+            return v0 * t + change * t * t / 2, v0 + change * t
+        return (v0 + v_roll) / 2 * t_roll + v_roll * (t - t_roll), v_roll
+
+    curves = (("x", "m", "distance travelled"), ("v", "m/s", "speed of the centre"))
+    if t_roll == 0:
+        return Trajectory(curves, 1.0, state, note="plotted for 1 s: it rolls from the start")
+    return Trajectory(curves, 1.5 * t_roll, state, marks=((t_roll, "rolls without slipping"),))

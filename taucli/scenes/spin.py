@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from taucli.errors import InputError
 from taucli.numerics import METHODS
-from taucli.report import Report, Step, Value, fmt, quantity_text
+from taucli.report import Report, Step, Trajectory, Value, fmt, quantity_text
 from taucli.scenes.coulomb import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
 
 TWO_PI = 2 * math.pi
@@ -164,7 +164,25 @@ def solve(
     model = _model(torques, chosen)
     if held_from_start or (stop is not None and second is None):
         model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
-    return Report("spin-down", model, chosen.describe(evolver.steps), results, steps, notes)
+    trajectory = None if evolver.unstable else _trajectory(motion, time, omega_inf)
+    return Report("spin-down", model, chosen.describe(evolver.steps), results, steps, notes, trajectory=trajectory)
+
+
+def _trajectory(motion, time: float | None, omega_inf: float | None) -> Trajectory:
+    """ω(t) and θ(t): to --time, else a quarter past the stop, else 99% of the way to the steady speed."""
+    stop, note = motion.stop, ""
+    if time is not None and time > 0:
+        t_end = time
+    elif stop is not None and stop[0] > 0:
+        t_end = (2.0 if motion.second is not None else 1.25) * stop[0]
+    else:
+        omega0 = motion.state_at(0.0)[0]
+        near = None if omega_inf is None or omega_inf == omega0 else motion.reach(omega0 + 0.99 * (omega_inf - omega0))
+        t_end = near[0] if near is not None and near[0] > 0 else 1.0
+        note = "plotted until ω is 99% of the way to its steady speed; --time to change" if near else "plotted for 1 s; --time to change"
+    marks = ((stop[0], "stops"),) if stop is not None and stop[0] > 0 else ()
+    curves = (("omega", "rad/s", "angular velocity ω"), ("theta", "rad", "angle turned θ"))
+    return Trajectory(curves, t_end, motion.state_at, marks=marks, note=note)
 
 
 def _choose_method(method: str, closed_form: bool, dt: float | None, rtol: float | None) -> Method:
