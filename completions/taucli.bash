@@ -37,12 +37,15 @@ _taucli() {
             --part) :; return 0 ;;
             --get) :; return 0 ;;
             --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --json --get --to --no-steps --batch --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     spin-down)
         case "$prev" in
@@ -74,8 +77,11 @@ _taucli() {
             --rtol) :; return 0 ;;
             --get) :; return 0 ;;
             --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --method --dt --rtol --json --get --to --no-steps --batch --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -95,8 +101,11 @@ _taucli() {
             --time) _taucli_units s ms min h; return 0 ;;
             --get) :; return 0 ;;
             --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -114,12 +123,15 @@ _taucli() {
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) :; return 0 ;;
             --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --g --json --get --to --no-steps --batch --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in
@@ -144,8 +156,11 @@ _taucli() {
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
             --get) :; return 0 ;;
             --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --method --json --get --to --no-steps --batch --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -129,11 +129,90 @@ BatchFlag = Annotated[
 ]
 
 
-def run_batch(command, given: dict) -> int:
-    """``command`` once per JSON line on stdin (taucli.batch); the exit status of the whole run."""
-    from taucli import batch
+JsonLinesFlag = Annotated[bool, typer.Option("--jsonl", help="Like --json, but a sweep's documents one per line rather than one array.", rich_help_panel=_OUTPUT)]
+_SWEEP = "Sweep and plot (any quantity option takes a range FROM..TO or a list A,B)"
+PlotFlag = Annotated[
+    bool,
+    typer.Option("--plot", help="Draw the motion against time in the terminal; with a list, one curve per value. With --json: its samples.", rich_help_panel=_SWEEP),
+]
+OutOption = Annotated[
+    Optional[str],
+    typer.Option("--out", metavar="FILE", help="Also draw the chart to FILE.svg or FILE.png (needs matplotlib: pip install 'taucli[plot]').", rich_help_panel=_SWEEP),
+]
+PointsOption = Annotated[Optional[str], typer.Option("--points", metavar="N", help="Values in a range FROM..TO, ends included (default 50).", rich_help_panel=_SWEEP)]
+YOption = Annotated[
+    Optional[list[str]],
+    typer.Option("--y", metavar="NAME", help="A result to chart against a range (repeatable; default the scene's main result).", rich_help_panel=_SWEEP),
+]
+OUTPUT_OPTIONS = ("json_", "get", "to", "no_steps", "batch", "jsonl", "plot", "out", "points", "y")
 
-    return batch.run(command, given, sys.stdin, sys.stdout)
+_collected: list | None = None  # while a sweep solves its points, emit hands reports here
+
+
+def dispatch(command, given: dict) -> Optional[int]:
+    """Run a batch or a sweep in place of the single run of ``command``; None for a single run."""
+    swept_range = swept_list = None
+    if given["points"] is not None or any(isinstance(value, str) and (".." in value or "," in value) for value in given.values()):
+        from taucli import sweep
+
+        swept_range, swept_list = sweep.find(given, _whole_number("--points", given["points"]))
+    if given["batch"]:
+        for name in ("plot", "out", "points", "y", "jsonl"):
+            if given[name]:
+                raise InputError("--" + name, "does not combine with --batch, which writes one --json document per line")
+        if swept_range or swept_list:
+            raise InputError((swept_range or swept_list).option, "cannot be a range or a list with --batch: give one scene per line")
+        from taucli import batch
+
+        return batch.run(command, given, sys.stdin, sys.stdout)
+    output = _output(given)
+    if output.plot and output.get:
+        raise InputError("--plot", "draws a chart, and --get prints numbers only", hint="--out FILE.svg writes the chart to a file")
+    if given["y"] and swept_range is None:
+        raise InputError("--y", "names what a range's chart shows; give a range FROM..TO", example="--inertia 0.5..4kg*m^2 --y alpha0")
+    if output.out is not None:
+        from taucli import plot
+
+        plot.check_file(output.out)
+    if swept_range is None and swept_list is None:
+        return None
+    from taucli import sweep
+
+    def solve(options: dict):
+        global _collected
+        _collected = []
+        try:
+            command(**{**options, "batch": False, "plot": False, "out": None, "points": None, "y": None, "get": None})
+            return _collected[0]
+        finally:
+            _collected = None
+
+    points = sweep.solve_all(swept_range, swept_list, given, solve)
+    sweep.render(points, swept_range, swept_list, output, list(given["y"] or ()), sys.stdout)
+    return int(ExitStatus.OK)
+
+
+def _whole_number(option: str, text: Optional[str]) -> Optional[int]:
+    if text is None:
+        return None
+    try:
+        return int(text)
+    except ValueError:
+        raise InputError(option, "expected a whole number", example=f"{option} 50", got=repr(text)) from None
+
+
+def _output(given: dict):
+    from taucli.render import Output
+
+    return Output(
+        json=given["json_"] or given["jsonl"],
+        get=tuple(given["get"] or ()),
+        to=tuple(given["to"] or ()),
+        steps=not given["no_steps"],
+        plot=given["plot"],
+        out=given["out"],
+        json_lines=given["jsonl"],
+    )
 
 
 def _length_option(flag: str, help_text: str):
@@ -179,12 +258,15 @@ def read_shape(inputs: "Inputs", shape: str | None, mass: str | None, axis: str 
     return Part(found.name, mass_si, lengths, axis, offset_si)
 
 
-def emit(report, inputs: "Inputs", json_: bool, get: list[str] | None, to: list[str] | None, no_steps: bool) -> None:
-    """Render a solver's report with the inputs as read, in the format asked for."""
+def emit(report, inputs: "Inputs", given: dict) -> None:
+    """Render a solver's report with the inputs as read, in the format asked for (or hand it to a sweep)."""
     from taucli import render
 
     report = render.attach_inputs(report, inputs.values, inputs.notes)
-    render.render(report, render.Output(json=json_, get=tuple(get or ()), to=tuple(to or ()), steps=not no_steps), sys.stdout)
+    if _collected is not None:
+        _collected.append(report)
+        return
+    render.render(report, _output(given), sys.stdout)
 
 
 @app.command(cls=TaucliCommand)
@@ -216,6 +298,11 @@ def inertia(
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
     batch: BatchFlag = False,
+    jsonl: JsonLinesFlag = False,
+    plot: PlotFlag = False,
+    out: OutOption = None,
+    points: PointsOption = None,
+    y: YOption = None,
 ) -> Optional[int]:
     """Moment of inertia of a standard shape: shifted (--offset), or a body of several parts.
 
@@ -224,8 +311,9 @@ def inertia(
     \b
     Example: taucli inertia disc --mass 5kg --radius 0.2m
     """
-    if batch:
-        return run_batch(inertia, locals())
+    given = dict(locals())
+    if (status := dispatch(inertia, given)) is not None:
+        return status
     from taucli.inputs import SHAPE_DIMENSIONS, Inputs, parse_part_spec
     from taucli.scenes import inertia as scene
 
@@ -234,7 +322,7 @@ def inertia(
     assert set(dims) == set(SHAPE_DIMENSIONS)
     parts = [read_shape(inputs, shape, mass, axis, offset, **dims)]
     parts += [parse_part_spec(spec, number, inputs) for number, spec in enumerate(part or [], start=2)]
-    emit(scene.solve(parts), inputs, json_, get, to, no_steps)
+    emit(scene.solve(parts), inputs, given)
 
 
 InertiaOption = Annotated[
@@ -303,6 +391,11 @@ def spin_down(
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
     batch: BatchFlag = False,
+    jsonl: JsonLinesFlag = False,
+    plot: PlotFlag = False,
+    out: OutOption = None,
+    points: PointsOption = None,
+    y: YOption = None,
 ) -> Optional[int]:
     """A wheel on a fixed axle, slowing or spun up: I dω/dt = τ_drive − τ_f − bω − kω².
 
@@ -312,8 +405,9 @@ def spin_down(
     \b
     Example: taucli spin-down --shape disc --mass 5kg --radius 0.2m --omega0 30rad/s --friction 0.3N*m
     """
-    if batch:
-        return run_batch(spin_down, locals())
+    given = dict(locals())
+    if (status := dispatch(spin_down, given)) is not None:
+        return status
     from taucli.inputs import Inputs
     from taucli.scenes import spin
 
@@ -351,7 +445,7 @@ def spin_down(
         push=push,
         inertia_steps=body_steps,
     )
-    emit(report, inputs, json_, get, to, no_steps)
+    emit(report, inputs, given)
 
 
 STANDARD_GRAVITY = 9.80665
@@ -389,6 +483,11 @@ def atwood(
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
     batch: BatchFlag = False,
+    jsonl: JsonLinesFlag = False,
+    plot: PlotFlag = False,
+    out: OutOption = None,
+    points: PointsOption = None,
+    y: YOption = None,
 ) -> Optional[int]:
     """Two masses on a string over a pulley with mass: acceleration and tensions.
 
@@ -397,8 +496,9 @@ def atwood(
     \b
     Example: taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg --pulley-radius 0.1m
     """
-    if batch:
-        return run_batch(atwood, locals())
+    given = dict(locals())
+    if (status := dispatch(atwood, given)) is not None:
+        return status
     from taucli.inputs import Inputs
     from taucli.scenes import atwood as scene
 
@@ -430,7 +530,7 @@ def atwood(
         distance=inputs.quantity("--distance", distance, "length", sign="nonnegative"),
         time=inputs.quantity("--time", time, "time", sign="nonnegative"),
     )
-    emit(report, inputs, json_, get, to, no_steps)
+    emit(report, inputs, given)
 
 
 @app.command(cls=TaucliCommand)
@@ -453,6 +553,11 @@ def rolling(
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
     batch: BatchFlag = False,
+    jsonl: JsonLinesFlag = False,
+    plot: PlotFlag = False,
+    out: OutOption = None,
+    points: PointsOption = None,
+    y: YOption = None,
 ) -> Optional[int]:
     """A round body on an incline: does it roll or slip, and how fast; or a skidding ball on the flat.
 
@@ -462,8 +567,9 @@ def rolling(
     \b
     Example: taucli rolling sphere --angle 30deg --length 2m
     """
-    if batch:
-        return run_batch(rolling, locals())
+    given = dict(locals())
+    if (status := dispatch(rolling, given)) is not None:
+        return status
     from taucli.inputs import Inputs
     from taucli.scenes import rolling as scene
 
@@ -501,7 +607,7 @@ def rolling(
             height=inputs.quantity("--height", height, "length"),
             v0=speed or 0.0,
         )
-    emit(report, inputs, json_, get, to, no_steps)
+    emit(report, inputs, given)
 
 
 @app.command(cls=TaucliCommand)
@@ -530,6 +636,11 @@ def impulse(
     to: ToOption = None,
     no_steps: NoStepsFlag = False,
     batch: BatchFlag = False,
+    jsonl: JsonLinesFlag = False,
+    plot: PlotFlag = False,
+    out: OutOption = None,
+    points: PointsOption = None,
+    y: YOption = None,
 ) -> Optional[int]:
     """Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.
 
@@ -539,8 +650,9 @@ def impulse(
     \b
     Example: taucli impulse --inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s
     """
-    if batch:
-        return run_batch(impulse, locals())
+    given = dict(locals())
+    if (status := dispatch(impulse, given)) is not None:
+        return status
     from taucli.inputs import Inputs
     from taucli.scenes import impulse as scene
 
@@ -574,7 +686,7 @@ def impulse(
             inputs.quantity("--duration", duration, "time"),
             inertia_steps=body_steps,
         )
-    emit(report, inputs, json_, get, to, no_steps)
+    emit(report, inputs, given)
 
 
 def _impulse_from_profile(scene, read_profile, source: str, moment: float, start: float | None, method: str, inputs: "Inputs", body_steps):

@@ -1,0 +1,280 @@
+"""Sweeps: one quantity option over a range, another over a list, a scene solved at each point.
+
+    --inertia 0.5..4kg*m^2     a range: --points values from one end to the other, evenly spaced
+    --torque 3N*m,6N*m         a list: each value in turn (a bare number takes the last one's unit)
+
+At most one range and one list per run. Each point is an ordinary run of the command with those
+options replaced by one value, so a sweep's documents are exactly the single runs' documents.
+Output: a table (one row per point) and, for a range, a chart of results against it; --json an
+array of the documents, --jsonl one per line; --get one line per point, the swept values (SI) then
+the results, tab-separated. A list without a range, with --plot, overlays the motions in time.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+from taucli.errors import InputError
+from taucli.report import Report, pretty_unit
+
+# Options whose values are names or files, not quantities: never read as a range or a list.
+NOT_QUANTITIES = frozenset({"shape", "axis", "method", "pulley_shape", "torque_profile", "out"})
+DEFAULT_POINTS = 50
+MAX_POINTS = 10_000
+MAX_NOTES = 8  # distinct notes shown under a sweep's table
+# The result a range's chart shows unless --y names others.
+HEADLINE = {"inertia": "I", "spin-down": "alpha0", "atwood": "a", "rolling": "a", "impulse": "omega1"}
+
+_NUMBER_THEN_UNIT = re.compile(r"\s*(?P<number>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?P<unit>.*?)\s*")
+
+
+@dataclass(frozen=True)
+class Swept:
+    """One option given as a range or a list, and the values (as text) it takes in turn."""
+
+    name: str  # the parameter: "pulley_mass"
+    given: str  # as the user typed it
+    texts: tuple[str, ...]  # one value per point, each read by the command as usual
+    numbers: tuple[float, ...] | None  # the values in ``unit`` when the items share one unit
+    unit: str  # the unit text they share ("" when none or SI)
+    is_range: bool
+
+    @property
+    def option(self) -> str:
+        return "--" + self.name.replace("_", "-")
+
+    def label(self, index: int) -> str:
+        return f"{self.name} = {pretty_unit(self.texts[index])}"
+
+
+def _split_number(text: str) -> tuple[float, str] | None:
+    found = _NUMBER_THEN_UNIT.fullmatch(text)
+    return None if found is None else (float(found["number"]), found["unit"])
+
+
+def _shared(option: str, items: list[str], given: str) -> tuple[list[str], tuple[float, ...] | None, str]:
+    """The items with the last one's unit given to bare numbers before it; their numbers and unit."""
+    if any(not item.strip() for item in items):
+        raise InputError(option, "has an empty item in its list or range", example=f"{option} 3N*m,6N*m", got=repr(given))
+    split = [_split_number(item) for item in items]
+    unit = split[-1][1] if split[-1] is not None else ""
+    texts = [f"{item.strip()} {unit}" if unit and pair is not None and not pair[1] else item.strip() for item, pair in zip(items, split)]
+    if all(pair is not None and pair[1] in ("", unit) for pair in split):
+        return texts, tuple(pair[0] for pair in split), unit
+    return texts, None, ""
+
+
+def _range(name: str, text: str, points: int) -> Swept:
+    option = "--" + name.replace("_", "-")
+    ends = text.split("..")
+    if len(ends) != 2:
+        raise InputError(option, "expected a range FROM..TO", example=f"{option} 0.5..4", got=repr(text))
+    _, numbers, unit = _shared(option, ends, text)
+    if numbers is None:
+        raise InputError(option, "expected a range of two numbers in one unit", example=f"{option} 0.5..4kg", got=repr(text))
+    low, high = numbers
+    if not (math.isfinite(low) and math.isfinite(high)) or low == high:
+        raise InputError(option, "expected a range between two different finite numbers", example=f"{option} 0.5..4", got=repr(text))
+    values = tuple(low + (high - low) * i / (points - 1) for i in range(points - 1)) + (high,)
+    texts = tuple(f"{value!r} {unit}".strip() for value in values)
+    return Swept(name, text, texts, values, unit, True)
+
+
+_DECIMAL_COMMA = re.compile(r"\s*[-+]?\d+,\d+(?:[eE][-+]?\d+)?\s*[^\d\s.,][^,]*|\s*[-+]?\d+,\d+\s*")
+_THOUSANDS = re.compile(r"\s*[-+]?\d{1,3}(?:,\d{3})+(?:\.\d*)?\s*[^,]*")
+
+
+def _list(name: str, text: str) -> Swept:
+    option = "--" + name.replace("_", "-")
+    if _DECIMAL_COMMA.fullmatch(text) or _THOUSANDS.fullmatch(text):
+        raise InputError(
+            option,
+            "is ambiguous: a comma could be a decimal comma, a thousands separator or a list",
+            example=f"{option} 4.5kg for a number, {option} 4kg,5kg for a list",
+            got=repr(text),
+        )
+    texts, numbers, unit = _shared(option, text.split(","), text)
+    return Swept(name, text, tuple(texts), numbers, unit, False)
+
+
+def find(given: Mapping[str, object], points: int | None) -> tuple[Swept | None, Swept | None]:
+    """The range and the list among the options ``given`` (None where there is none)."""
+    ranges, lists = [], []
+    for name, value in given.items():
+        if name in NOT_QUANTITIES or not isinstance(value, str):
+            continue
+        if ".." in value:
+            ranges.append(name)
+        elif "," in value:
+            lists.append(name)
+    for found, what, example in ((ranges, "range", "--inertia 0.5..4kg*m^2"), (lists, "list", "--torque 3N*m,6N*m")):
+        if len(found) > 1:
+            options = " and ".join("--" + name.replace("_", "-") for name in found)
+            raise InputError(options, f"are each a {what}: a sweep takes at most one range and one list", example=example)
+    count = DEFAULT_POINTS if points is None else points
+    if not 2 <= count <= MAX_POINTS:
+        raise InputError("--points", f"expected a whole number from 2 to {MAX_POINTS:,}", example="--points 50", got=str(count))
+    if points is not None and not ranges:
+        raise InputError("--points", "applies to a range (FROM..TO)", example="--inertia 0.5..4kg*m^2 --points 20")
+    swept_range = _range(ranges[0], str(given[ranges[0]]), count) if ranges else None
+    swept_list = _list(lists[0], str(given[lists[0]])) if lists else None
+    return swept_range, swept_list
+
+
+@dataclass
+class Point:
+    """One solved point of the sweep: which value of the range and of the list, and its report."""
+
+    range_index: int | None
+    list_index: int | None
+    report: Report
+
+
+def solve_all(
+    swept_range: Swept | None, swept_list: Swept | None, given: Mapping[str, object], solve: Callable[[dict], Report]
+) -> list[Point]:
+    """Each combination of the range's and the list's values, list outermost; a bad point names itself."""
+    outer = range(len(swept_list.texts)) if swept_list else [None]
+    inner = range(len(swept_range.texts)) if swept_range else [None]
+    points = []
+    for list_index in outer:
+        for range_index in inner:
+            options = dict(given)
+            for swept, index in ((swept_list, list_index), (swept_range, range_index)):
+                if swept is not None:
+                    options[swept.name] = swept.texts[index]
+            try:
+                report = solve(options)
+            except InputError as err:
+                where = [s.label(i) for s, i in ((swept_range, range_index), (swept_list, list_index)) if s is not None]
+                err.expected += f" (at the sweep's point {', '.join(where)})"
+                raise
+            points.append(Point(range_index, list_index, report))
+    return points
+
+
+
+
+def _swept_columns(swept: Swept, points: list[Point]) -> tuple[str, list[float]]:
+    """A swept option's heading and its value at each point: in the unit the user typed, else SI."""
+    if swept.numbers is not None and swept.unit:
+        return f"{swept.name} ({pretty_unit(swept.unit)})", [swept.numbers[point.range_index if swept.is_range else point.list_index] for point in points]
+    value = points[0].report.inputs.get(swept.name)
+    unit = pretty_unit(value.unit) if value is not None else ""
+    return (f"{swept.name} ({unit})" if unit else swept.name), [point.report.inputs[swept.name].value for point in points]
+
+
+def range_chart(points: list[Point], swept_range: Swept, swept_list: Swept | None, names: list[str]):
+    """Each result named against the range, one series per value of the list."""
+    from taucli import plot
+
+    first = points[0].report
+    per_series = len(swept_range.texts)
+    groups = [points[i : i + per_series] for i in range(0, len(points), per_series)]
+    heading, xs = _swept_columns(swept_range, groups[0])
+    x_unit = heading.partition(" (")[2].removesuffix(")")
+    panels = []
+    for name in names:
+        value = first.results[name]
+        series = tuple(
+            plot.Series(
+                swept_list.label(group[0].list_index) if swept_list else "",
+                tuple(xs),
+                tuple(None if isinstance(p.report.results[name].value, bool) else p.report.results[name].value for p in group),
+            )
+            for group in groups
+        )
+        panels.append(plot.Panel(name, value.label or name, value.unit or "", series))
+    title = f"{first.scene}: {', '.join(names)} against {swept_range.name}"
+    return plot.Chart(title, swept_range.name, swept_range.name, x_unit, tuple(panels))
+
+
+def chart_names(points: list[Point], y: list[str]) -> list[str]:
+    """The results a range's chart shows: --y, else the scene's headline result."""
+    from taucli.errors import did_you_mean
+
+    results = points[0].report.results
+    names = y or [HEADLINE[points[0].report.scene]]
+    for name in names:
+        if name not in results:
+            raise InputError("--y", f"expected the name of a result of {points[0].report.scene}: {', '.join(results)}", got=repr(name), hint=did_you_mean(name, results))
+    return names
+
+
+def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | None, output, y: list[str], stream) -> None:
+    """The sweep in the format asked for: --get lines, a JSON array or lines, or a table and a chart."""
+    from taucli import plot
+    from taucli import render as renderer
+
+    points = [Point(p.range_index, p.list_index, renderer.prepared(p.report, output)) for p in points]
+    swept = [s for s in (swept_list, swept_range) if s is not None]
+    chart = None
+    if swept_range is not None:
+        chart = range_chart(points, swept_range, swept_list, chart_names(points, y))
+    elif output.charted:
+        runs = [(swept_list.label(p.list_index), p.report) for p in points]
+        chart = plot.motion_chart(runs, renderer.chart_units(points[0].report, output.to))
+    if output.get:
+        for point in points:
+            values = [point.report.inputs[s.name].value for s in swept]
+            values += [renderer.named_result(point.report, name, "--get").value for name in output.get]
+            stream.write("\t".join(renderer.bare(value) for value in values) + "\n")
+    elif output.json:
+        documents = []
+        for point in points:
+            doc = renderer.document(point.report, steps=output.steps)
+            if output.charted and swept_range is None:
+                doc["plot"] = plot.plot_document(point.report)
+            documents.append(doc)
+        if output.json_lines:
+            stream.write("".join(renderer.STRICT_JSON.encode(doc) + "\n" for doc in documents))
+        else:
+            stream.write(renderer.STRICT_JSON.encode(documents) + "\n")
+    else:
+        _render_table(points, swept, stream)
+        if chart is not None and (swept_range is not None or output.plot):
+            columns, colour = renderer.terminal_style(stream)
+            stream.write("\n" + plot.terminal(chart, columns, colour=colour))
+    if output.out is not None and chart is not None:
+        plot.write_file(chart, output.out)
+    stream.flush()
+
+
+def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
+    """One row per point: the swept values, then every result that has a value somewhere."""
+    from rich import box
+    from rich.console import Console
+    from rich.table import Table as RichTable
+    from rich.text import Text
+
+    from taucli.render import shown, terminal_style
+
+    _, colour = terminal_style(stream)
+    console = Console(file=stream, highlight=False, emoji=False, color_system="auto" if colour else None, no_color=not colour)
+    first = points[0].report
+    what = " × ".join(f"{s.option} {s.given} ({len(s.texts)} values)" for s in reversed(swept))
+    console.print(Text.assemble((first.scene, "bold"), f": {what}"))
+    models = dict.fromkeys(p.report.model for p in points)
+    console.print(Text(f"model: {first.model}" if len(models) == 1 else f"model: varies ({len(models)} kinds; see --json)", style="dim"))
+    names = [name for name in first.results if any(p.report.results.get(name) and p.report.results[name].value is not None for p in points)]
+    table = RichTable(box=box.SIMPLE_HEAD, pad_edge=False)
+    columns = [_swept_columns(s, points) for s in swept]
+    for heading, _ in columns:
+        table.add_column(heading, justify="right", style="bold")
+    for name in names:
+        unit = pretty_unit(first.results[name].unit)
+        table.add_column(f"{name} ({unit})" if unit else name, justify="right")
+    for row, point in enumerate(points):
+        cells = [shown(values[row], 4) for _, values in columns]
+        cells += [shown(point.report.results[name].value if name in point.report.results else None, 4) for name in names]
+        table.add_row(*(Text(cell) for cell in cells))
+    console.print(table)
+    notes = list(dict.fromkeys(n for p in points for n in p.report.notes))
+    for note in notes[:MAX_NOTES]:
+        console.print(Text.assemble(("note: ", "yellow"), note))
+    if len(notes) > MAX_NOTES:
+        console.print(Text(f"… and {len(notes) - MAX_NOTES} more notes that differ from point to point (see --json)", style="dim"))
+    console.print(Text("steps: run one point alone to see its worked solution", style="dim"))
