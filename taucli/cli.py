@@ -133,7 +133,11 @@ JsonLinesFlag = Annotated[bool, typer.Option("--jsonl", help="Like --json, but a
 _SWEEP = "Sweep and plot (any quantity option takes a range FROM..TO or a list A,B)"
 PlotFlag = Annotated[
     bool,
-    typer.Option("--plot", help="Draw the motion against time in the terminal; with a list, one curve per value. With --json: its samples.", rich_help_panel=_SWEEP),
+    typer.Option(
+        "--plot",
+        help="Draw the motion against time (a list: one curve per value; a range: its chart), leaving out a sweep's table. With --json: the samples.",
+        rich_help_panel=_SWEEP,
+    ),
 ]
 OutOption = Annotated[
     Optional[str],

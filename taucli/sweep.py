@@ -5,9 +5,10 @@
 
 At most one range and one list per run. Each point is an ordinary run of the command with those
 options replaced by one value, so a sweep's documents are exactly the single runs' documents.
-Output: a table (one row per point) and, for a range, a chart of results against it; --json an
+Output: a table (one row per point) and, for a range, a chart of results against it; --plot shows
+the chart alone, and for a list without a range overlays the motions in time. --json gives an
 array of the documents, --jsonl one per line; --get one line per point, the swept values (SI) then
-the results, tab-separated. A list without a range, with --plot, overlays the motions in time.
+the results, tab-separated.
 """
 
 from __future__ import annotations
@@ -234,10 +235,11 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
         else:
             stream.write(renderer.STRICT_JSON.encode(documents) + "\n")
     else:
-        _render_table(points, swept, stream)
+        if not output.plot:
+            _render_table(points, swept, stream)
         if chart is not None and (swept_range is not None or output.plot):
             columns, colour = renderer.terminal_style(stream)
-            stream.write("\n" + plot.terminal(chart, columns, colour=colour))
+            stream.write(("" if output.plot else "\n") + plot.terminal(chart, columns, colour=colour))
     if output.out is not None and chart is not None:
         plot.write_file(chart, output.out)
     stream.flush()

@@ -238,3 +238,22 @@ def test_out_writes_a_valid_svg_and_png(tmp_path):
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and data[12:16] == b"IHDR"
     width, height = struct.unpack(">II", data[16:24])
     assert (width, height) == (700, 580)  # 7 in × (2.6 in per panel × 2 + 0.6 in) at matplotlib's 100 dpi
+
+
+README = Path(__file__).parent.parent / "README.md"
+
+
+def _readme_charts() -> list[tuple[str, str]]:
+    """(command, output) of each chart block in the README: ```text, then $ taucli ... --plot."""
+    blocks = re.findall(r"```text\n\$ taucli ([^\n]*--plot)\n(.*?)```", README.read_text(encoding="utf-8"), re.S)
+    assert len(blocks) >= 3, "the README's article figures are missing"
+    return blocks
+
+
+@pytest.mark.parametrize("command, shown", _readme_charts())
+def test_the_readme_figures_are_what_their_commands_print_at_72_columns(command, shown):
+    import shlex
+
+    result = run_taucli(*shlex.split(command), env={"COLUMNS": "72"})
+    assert result.code == 0, result.err
+    assert result.out == shown
