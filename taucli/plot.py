@@ -45,6 +45,7 @@ class Chart:
     x_unit: str
     panels: tuple[Panel, ...]
     marks: tuple[tuple[float, str], ...] = ()  # (x, what happens there)
+    notes: tuple[str, ...] = ()  # how the chart was drawn, where the user did not say
 
 
 SAMPLES = 201  # times at which a motion is sampled for a chart or for --json's "plot"
@@ -102,7 +103,8 @@ def motion_chart(runs: Sequence[tuple[str, Report]], units: Mapping[str, tuple[s
         (t, f"{what} ({run_label})" if len(runs) > 1 else what) for run_label, report in runs for t, what in report.trajectory.marks
     )
     title = f"{first.scene}: the motion in time" + (", one curve per value" if len(runs) > 1 else "")
-    return Chart(title, "t", "time", "s", tuple(panels), marks)
+    notes = tuple(dict.fromkeys(report.trajectory.note for _, report in runs if report.trajectory.note))
+    return Chart(title, "t", "time", "s", tuple(panels), marks, notes)
 
 
 def axis_title(label: str, unit: str) -> str:
@@ -174,6 +176,8 @@ def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> s
         out += textwrap.wrap(legend, columns)
     for x, what in chart.marks:
         out += textwrap.wrap(f"│ at {chart.x_key} = {fmt(x, 4)} {pretty_unit(chart.x_unit)}: {what}", columns, subsequent_indent="  ")
+    for note in chart.notes:
+        out += textwrap.wrap(f"note: {note}", columns, subsequent_indent="  ")
     return "\n".join(out) + "\n"
 
 

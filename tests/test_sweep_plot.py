@@ -257,3 +257,12 @@ def test_the_readme_figures_are_what_their_commands_print_at_72_columns(command,
     result = run_taucli(*shlex.split(command), env={"COLUMNS": "72"})
     assert result.code == 0, result.err
     assert result.out == shown
+
+
+def test_a_horizon_taucli_chose_is_said_under_the_chart_and_in_the_json():
+    """Uniform spin-up never ends: with no --time, the plot covers 1 s and says so."""
+    text = run_taucli("spin-down", "--inertia", "1", "--torque", "1", "--plot", "--no-steps", env={"COLUMNS": "80"}).out
+    assert text.rstrip().endswith("note: plotted for 1 s; --time to change")
+    plot = _plot(run_taucli("spin-down", "--inertia", "1", "--torque", "1", "--plot", "--json"))
+    assert plot["notes"] == ["plotted for 1 s; --time to change"] and plot["points"][-1]["t"] == 1.0
+    assert plot["points"][-1]["omega"] == 1.0 and plot["points"][-1]["theta"] == 0.5  # ω = t, θ = t²/2 at τ/I = 1
