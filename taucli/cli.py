@@ -148,7 +148,6 @@ YOption = Annotated[
     Optional[list[str]],
     typer.Option("--y", metavar="NAME", help="A result to chart against a range (repeatable; default the scene's main result).", rich_help_panel=_SWEEP),
 ]
-OUTPUT_OPTIONS = ("json_", "get", "to", "no_steps", "batch", "jsonl", "plot", "out", "points", "y")
 
 _collected: list | None = None  # while a sweep solves its points, emit hands reports here
 
