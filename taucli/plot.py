@@ -59,7 +59,7 @@ def trajectory_of(report: Report) -> Trajectory:
             f"needs a motion in time, and {report.scene} has none here (a range, FROM..TO, is charted against its parameter)",
             example="taucli spin-down --inertia 0.1kg*m^2 --omega0 30rad/s --friction 0.3N*m --plot",
         )
-    return report.trajectory
+    return report.trajectory()
 
 
 def motion_points(report: Report, t_end: float | None = None) -> list[tuple[float, ...]]:
@@ -93,17 +93,17 @@ def motion_chart(runs: Sequence[tuple[str, Report]], units: Mapping[str, tuple[s
     horizon = max(trajectory_of(report).t_end for _, report in runs)
     sampled = [(label, motion_points(report, horizon)) for label, report in runs]
     panels = []
-    for column, (key, unit, label) in enumerate(first.trajectory.curves, start=1):
+    for column, (key, unit, label) in enumerate(trajectory_of(first).curves, start=1):
         shown_unit, factor = units.get(key, (unit, 1.0))
         series = tuple(
             Series(run_label, tuple(p[0] for p in points), tuple(p[column] / factor for p in points)) for run_label, points in sampled
         )
         panels.append(Panel(key, label, shown_unit, series))
     marks = tuple(
-        (t, f"{what} ({run_label})" if len(runs) > 1 else what) for run_label, report in runs for t, what in report.trajectory.marks
+        (t, f"{what} ({run_label})" if len(runs) > 1 else what) for run_label, report in runs for t, what in trajectory_of(report).marks
     )
     title = f"{first.scene}: the motion in time" + (", one curve per value" if len(runs) > 1 else "")
-    notes = tuple(dict.fromkeys(report.trajectory.note for _, report in runs if report.trajectory.note))
+    notes = tuple(dict.fromkeys(trajectory_of(report).note for _, report in runs if trajectory_of(report).note))
     return Chart(title, "t", "time", "s", tuple(panels), marks, notes)
 
 

@@ -51,7 +51,7 @@ def chart_units(report: Report, to: Sequence[str]) -> dict[str, tuple[str, float
     """For each curve of the report's motion named in --to: (unit, SI value of one of it)."""
     from taucli import units
 
-    curves = {key: unit for key, unit, _ in report.trajectory.curves} if report.trajectory else {}
+    curves = {key: unit for key, unit, _ in report.trajectory().curves} if report.trajectory else {}
     in_units = {}
     for request in to:
         name, _, unit = (part.strip() for part in request.partition("="))

@@ -6,6 +6,7 @@ reads back ("kg*m**2", "N*m", "rad/s"). A result that does not exist is ``None``
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -105,7 +106,13 @@ class Report:
     notes: list[str] = field(default_factory=list)
     inputs: dict[str, Value] = field(default_factory=dict)
     tables: dict[str, Table] = field(default_factory=dict)
-    trajectory: Trajectory | None = None
+    trajectory: Callable[[], Trajectory] | None = None  # built when a plot asks for it (see deferred)
+
+
+def deferred(build: Callable[..., Trajectory], *args, **kwargs) -> Callable[[], Trajectory]:
+    """``build(*args, **kwargs)``, run when first called and kept: a trajectory's horizon may
+    take an integration of its own, which a run that draws no plot must not pay for (or fail on)."""
+    return functools.cache(functools.partial(build, *args, **kwargs))
 
 
 def fmt(x: float, digits: int = 4) -> str:

@@ -266,3 +266,14 @@ def test_a_horizon_taucli_chose_is_said_under_the_chart_and_in_the_json():
     plot = _plot(run_taucli("spin-down", "--inertia", "1", "--torque", "1", "--plot", "--json"))
     assert plot["notes"] == ["plotted for 1 s; --time to change"] and plot["points"][-1]["t"] == 1.0
     assert plot["points"][-1]["omega"] == 1.0 and plot["points"][-1]["theta"] == 0.5  # ω = t, θ = t²/2 at τ/I = 1
+
+
+def test_a_run_without_plot_does_no_work_for_one():
+    """The plot's horizon (99% of the way to the steady speed) is found only when a plot asks:
+    at rk4 dt = 0.1 ms it would take about 10 million steps, which a run that plots nothing must not
+    try, or refuse."""
+    args = ("spin-down", "--inertia", "1kg*m^2", "--torque", "1N*m", "--viscous", "0.1N*m*s", "--method", "rk4", "--dt", "0.1ms")
+    result = run_taucli(*args, "--get", "omega_inf")
+    assert result.code == 0, result.err
+    assert float(result.out) == pytest.approx(10.0, rel=1e-12)  # ω∞ = τ/b
+    assert_usage_error(run_taucli(*args, "--plot", "--json"), "--dt", "steps, more than 2,000,000")

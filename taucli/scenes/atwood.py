@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError
-from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, fmt, quantity_text
+from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
 
 HANGING = math.pi / 2
@@ -170,7 +170,7 @@ def solve(
         model += "; friction holds it at rest"
     elif loads.friction:
         model += "; friction overcome"
-    return Report("atwood", model, "closed form", results, steps, notes, trajectory=_trajectory(motion, distance, time, results))
+    return Report("atwood", model, "closed form", results, steps, notes, trajectory=deferred(_trajectory, motion, distance, time, results))
 
 
 def _trajectory(motion, distance: float | None, time: float | None, results: dict[str, Value]) -> Trajectory:

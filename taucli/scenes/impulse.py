@@ -13,11 +13,12 @@ from collections.abc import Iterable, Sequence
 
 from taucli.errors import InputError
 from taucli.numerics import StreamingQuadrature
-from taucli.report import Report, Step, Table, Trajectory, Value, fmt, quantity_text
+from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
 
 BRIEF_BLOW = 0.1  # s: a blow this short is remembered by its impulse alone
 SAMPLES_SHOWN = 10_000  # ω at the samples is reported for profiles up to this many rows
 PLOTTED = 500  # a profile's plot keeps between this many and twice as many of its samples
+CURVES = (("torque", "N*m", "torque τ"), ("omega", "rad/s", "angular velocity ω"))  # what its plot shows
 AGREEMENT = 1e-9  # relative: all five given must satisfy τΔt = IΔω this closely
 
 UNKNOWNS = ("inertia", "omega0", "omega1", "torque", "duration")
@@ -115,8 +116,7 @@ def solve_balance(
         steps.append(Step(f"Solve for {_OPTIONS[unknown].lstrip('-')}", equation, numbers, result, "the one quantity not given"))
     steps.append(Step("The impulse", "J = τΔt", f"{fmt(tau)} × {fmt(dt)}", quantity_text(impulse, "N*m*s"), "the same as the change of angular momentum ΔL = IΔω"))
     model = "constant torque: τΔt = IΔω" + (f", solved for {unknown}" if unknown else ", all five given and consistent")
-    curves = (("torque", "N*m", "torque τ"), ("omega", "rad/s", "angular velocity ω"))
-    trajectory = Trajectory(curves, dt, lambda t: (tau, w0 + tau * t / i))
+    trajectory = deferred(Trajectory, CURVES, dt, lambda t: (tau, w0 + tau * t / i))
     return Report("impulse", model, "closed form", results, steps, notes, trajectory=trajectory)
 
 
@@ -219,7 +219,6 @@ def solve_profile(
     model = f"sampled torque profile ({count} samples), J by the {chosen} rule"
     if plotted[-1][0] != t:
         plotted.append((t, torque, omega1))
-    curves = (("torque", "N*m", "torque τ"), ("omega", "rad/s", "angular velocity ω"))
     points = tuple((sample - start, torque_at, omega_at) for sample, torque_at, omega_at in plotted)
-    trajectory = Trajectory(curves, duration, points=points, note="" if stride == 1 else f"plotted at every {stride}th sample")
-    return Report("impulse", model, chosen, results, steps, notes, {}, tables, trajectory)
+    note = "" if stride == 1 else f"plotted at every {stride}th sample"
+    return Report("impulse", model, chosen, results, steps, notes, {}, tables, deferred(Trajectory, CURVES, duration, points=points, note=note))

@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError, did_you_mean
-from taucli.report import Report, Step, Trajectory, Value, fmt, quantity_text
+from taucli.report import Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 RIGHT_ANGLE = math.pi / 2
@@ -142,7 +142,7 @@ def solve_incline(
     steps = _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_mass, results)
     model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) on a {fmt(math.degrees(angle))}° slope, "
     model += "rolling without slipping" if rolls else "slipping (kinetic friction)"
-    return Report("rolling", model, "closed form", results, steps, notes, trajectory=_incline_trajectory(a, v0, results))
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=deferred(_incline_trajectory, a, v0, results))
 
 
 def _incline_trajectory(a: float, v0: float, results: dict[str, Value]) -> Trajectory:
@@ -257,7 +257,7 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
              quantity_text(v_roll, "m/s"), "friction acts at the contact, so angular momentum about the contact point is conserved"),
     ]
     model = f"{roller.description} (k² = {fmt(k2)}) skidding on the flat until it rolls"
-    return Report("rolling", model, "closed form", results, steps, notes, trajectory=_skid_trajectory(v0, v_roll, t_roll))
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=deferred(_skid_trajectory, v0, v_roll, t_roll))
 
 
 def _skid_trajectory(v0: float, v_roll: float, t_roll: float) -> Trajectory:

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from taucli.errors import InputError
 from taucli.numerics import METHODS
-from taucli.report import Report, Step, Trajectory, Value, fmt, quantity_text
+from taucli.report import Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.coulomb import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
 
 TWO_PI = 2 * math.pi
@@ -164,7 +164,7 @@ def solve(
     model = _model(torques, chosen)
     if held_from_start or (stop is not None and second is None):
         model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
-    trajectory = None if evolver.unstable else _trajectory(motion, time, omega_inf)
+    trajectory = None if evolver.unstable else deferred(_trajectory, motion, time, omega_inf)
     return Report("spin-down", model, chosen.describe(evolver.steps), results, steps, notes, trajectory=trajectory)
 
 
