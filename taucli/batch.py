@@ -24,10 +24,9 @@ from typing import TextIO, get_args, get_origin
 
 from taucli import __version__
 from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean
-from taucli.sweep import NOT_QUANTITIES
+from taucli.sweep import marked
 
 NOT_PER_LINE = ("batch", "json_", "get", "jsonl", "plot", "out", "points", "y")  # output: fixed for the whole run
-SWEEP_MARKS = ("..", ",")  # a range or a list: one scene per line instead
 
 
 def run(command: Callable, given: dict, lines: Iterable[str] | None, out: TextIO) -> int:
@@ -105,8 +104,10 @@ def _options(line: str, options: dict[str, str], scene: str) -> dict:
             raise InputError(key, f"is not an option of {scene.replace('_', '-')} in a batch", hint=did_you_mean(name, known))
         if value is not None:
             arguments[name] = _argument(value, options[name], name)
-            if isinstance(arguments[name], str) and any(mark in arguments[name] for mark in SWEEP_MARKS) and name not in NOT_QUANTITIES:
-                raise InputError(key, "cannot be a range or a list in a batch: give one scene per line", got=json.dumps(value, ensure_ascii=False))
+    ranges, lists = marked(arguments)
+    if ranges or lists:
+        name = (ranges + lists)[0]
+        raise InputError("--" + name.replace("_", "-"), "cannot be a range or a list in a batch: give one scene per line", got=repr(arguments[name]))
     if arguments.get("torque_profile") == "-":
         raise InputError("--torque-profile", "cannot be - in a batch: stdin holds the scenes", example='"torque_profile": "pulse.csv"')
     return arguments

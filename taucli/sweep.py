@@ -101,8 +101,8 @@ def _list(name: str, text: str) -> Swept:
     return Swept(name, text, tuple(texts), numbers, unit, False)
 
 
-def find(given: Mapping[str, object], points: int | None) -> tuple[Swept | None, Swept | None]:
-    """The range and the list among the options ``given`` (None where there is none)."""
+def marked(given: Mapping[str, object]) -> tuple[list[str], list[str]]:
+    """The names of the quantity options ``given`` as a range (FROM..TO), and as a list (A,B)."""
     ranges, lists = [], []
     for name, value in given.items():
         if name in NOT_QUANTITIES or not isinstance(value, str):
@@ -111,6 +111,12 @@ def find(given: Mapping[str, object], points: int | None) -> tuple[Swept | None,
             ranges.append(name)
         elif "," in value:
             lists.append(name)
+    return ranges, lists
+
+
+def find(given: Mapping[str, object], points: int | None) -> tuple[Swept | None, Swept | None]:
+    """The range and the list among the options ``given`` (None where there is none)."""
+    ranges, lists = marked(given)
     for found, what, example in ((ranges, "range", "--inertia 0.5..4kg*m^2"), (lists, "list", "--torque 3N*m,6N*m")):
         if len(found) > 1:
             options = " and ".join("--" + name.replace("_", "-") for name in found)
