@@ -52,12 +52,7 @@ def chart_units(report: Report, to: Sequence[str]) -> dict[str, tuple[str, float
     from taucli import units
 
     curves = {key: unit for key, unit, _ in report.trajectory().curves} if report.trajectory else {}
-    in_units = {}
-    for request in to:
-        name, _, unit = (part.strip() for part in request.partition("="))
-        if name in curves and unit:
-            in_units[name] = (unit, 1.0 / units.convert(1.0, curves[name], unit, "--to"))
-    return in_units
+    return {name: (unit, 1.0 / units.convert(1.0, curves[name], unit, "--to")) for name, unit in conversions(to) if name in curves}
 
 
 def prepared(report: Report, output: Output) -> Report:
@@ -78,6 +73,18 @@ def finite_only(report: Report) -> Report:
     return replace(report, results=results, notes=notes)
 
 
+def conversions(to: Sequence[str]) -> list[tuple[str, str]]:
+    """The (name, unit) of each --to NAME=UNIT."""
+    pairs = []
+    for request in to:
+        name, sep, unit = request.partition("=")
+        name, unit = name.strip(), unit.strip()
+        if not sep or not name or not unit:
+            raise InputError("--to", "expected NAME=UNIT", example="--to omega=rpm", got=repr(request))
+        pairs.append((name, unit))
+    return pairs
+
+
 def apply_conversions(report: Report, to: Sequence[str]) -> Report:
     """Express the results named in --to NAME=UNIT in those units."""
     if not to:
@@ -85,11 +92,7 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
     from taucli import units
 
     results = dict(report.results)
-    for request in to:
-        name, sep, unit = request.partition("=")
-        name, unit = name.strip(), unit.strip()
-        if not sep or not name or not unit:
-            raise InputError("--to", "expected NAME=UNIT", example="--to omega=rpm", got=repr(request))
+    for name, unit in conversions(to):
         value = named_result(report, name, "--to")
         if value.unit is None or not isinstance(value.value, (float, int)) or isinstance(value.value, bool):
             if value.value is None:
