@@ -37,6 +37,11 @@ class Output:
     def charted(self) -> bool:
         return self.plot or self.out is not None
 
+    @property
+    def drawn(self) -> bool:
+        """A chart is drawn: in the terminal, or to a file. (--json --plot gives the samples only.)"""
+        return self.out is not None or (self.plot and not self.json)
+
 
 def terminal_style(stream: TextIO) -> tuple[int, bool]:
     """(columns, colour) for text drawn on ``stream``: no colour under NO_COLOR, TERM=dumb or a pipe."""
@@ -152,11 +157,9 @@ def document(report: Report, *, steps: bool = True) -> dict:
 def render(report: Report, output: Output, stream: TextIO) -> None:
     """Write the report in the format the user asked for."""
     report = prepared(report, output)
-    chart = None
     if output.charted:
         from taucli import plot
-
-        chart = plot.motion_chart([("", report)], chart_units(report, output.to))
+    chart = plot.motion_chart([("", report)], chart_units(report, output.to)) if output.drawn else None
     if output.get:
         stream.write("".join(bare(named_result(report, name, "--get").value) + "\n" for name in output.get))
     elif output.json:

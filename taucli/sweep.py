@@ -221,7 +221,7 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
     chart = None
     if swept_range is not None:
         chart = range_chart(points, swept_range, swept_list, chart_names(points, y))
-    elif output.charted:
+    elif output.drawn:
         runs = [(swept_list.label(p.list_index), p.report) for p in points]
         chart = plot.motion_chart(runs, renderer.chart_units(points[0].report, output.to))
     if output.get:
