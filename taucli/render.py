@@ -9,8 +9,8 @@ import json
 import math
 import os
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, replace
-from typing import TextIO
+from dataclasses import replace
+from typing import NamedTuple, TextIO
 
 from taucli import __version__
 from taucli.errors import InputError, did_you_mean
@@ -21,9 +21,11 @@ from taucli.report import Report, Table, Value, fmt, pretty_unit
 STRICT_JSON = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(",", ":"))
 
 
-@dataclass(frozen=True)
-class Output:
-    """How the user asked for the answer: the format and unit conversions."""
+class Output(NamedTuple):
+    """How the user asked for the answer: the format and unit conversions.
+
+    A NamedTuple, as Value is: made twice on every run, batch lines included.
+    """
 
     json: bool = False
     get: Sequence[str] = ()

@@ -6,7 +6,6 @@ reads back ("kg*m**2", "N*m", "rad/s"). A result that does not exist is ``None``
 
 from __future__ import annotations
 
-import functools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -109,10 +108,24 @@ class Report:
     trajectory: Callable[[], Trajectory] | None = None  # built when a plot asks for it (see deferred)
 
 
-def deferred(build: Callable[..., Trajectory], *args, **kwargs) -> Callable[[], Trajectory]:
+class deferred:
     """``build(*args, **kwargs)``, run when first called and kept: a trajectory's horizon may
-    take an integration of its own, which a run that draws no plot must not pay for (or fail on)."""
-    return functools.cache(functools.partial(build, *args, **kwargs))
+    take an integration of its own, which a run that draws no plot must not pay for (or fail on).
+
+    A class of its own rather than functools.cache(partial(...)): one of these is made on every
+    run, batch lines included, and functools' wrapper costs several microseconds to make.
+    """
+
+    __slots__ = ("_build", "_args", "_kwargs", "_built")
+
+    def __init__(self, build: Callable[..., Trajectory], *args, **kwargs):
+        self._build, self._args, self._kwargs, self._built = build, args, kwargs, None
+
+    def __call__(self) -> Trajectory:
+        if self._built is None:
+            self._built = self._build(*self._args, **self._kwargs)
+            self._args, self._kwargs = (), {}
+        return self._built
 
 
 def fmt(x: float, digits: int = 4) -> str:
