@@ -160,11 +160,17 @@ def integrate(
         landed = omega + d_omega
         if event_at is not None and (landed - event_at) * (omega - event_at) <= 0 and omega != event_at:
             h_event, landed, d_theta = _locate(tableau, f, omega, step, event_at)
-            return Solution(t + h_event, landed, theta + d_theta, True, steps, worst > tableau.stability_limit, worst)
+            return Solution(t + h_event, landed, theta + d_theta, True, steps, _unstable(tableau, worst), worst)
         if not math.isfinite(landed):
             return Solution(t + step, math.nan, math.nan, False, steps, True, worst)
         t, omega, theta = t + step, landed, theta + d_theta
-    return Solution(t, omega, theta, False, steps, worst > tableau.stability_limit, worst)
+    return Solution(t, omega, theta, False, steps, _unstable(tableau, worst), worst)
+
+
+def _unstable(tableau: Tableau, worst_rate: float) -> bool:
+    """Whether a fixed step left the method's stable region. An adaptive step may pass the limit
+    for a step: its error estimate then grows, and the step is rejected and shortened."""
+    return tableau.embedded is None and worst_rate > tableau.stability_limit
 
 
 def naive_coulomb_euler(torque: Callable[[float], float], inertia: float, omega0: float, t_end: float, dt: float) -> list[float]:

@@ -269,6 +269,18 @@ def test_a_requested_unstable_method_reports_it_and_withholds_results():
     assert not any("unstable" in note for note in stable.notes)
 
 
+def test_rk45_settling_on_a_stiff_steady_speed_is_not_called_unstable():
+    """Found by the fuzz suite (#9): rk45's adaptive steps hover at its stability limit once ω
+    has settled, and the fixed-step check called the run unstable, then failed writing the
+    advice (rk45 has no --dt). The error control keeps an adaptive step stable; the steady speed
+    is the root of τ = bω + kωⁿ, found here by mpmath."""
+    torques = Torques(drive=1.0, viscous=0.1, drag=0.01, drag_exponent=3.3)
+    report = solve(1.0, torques, 0.0, time=1999.0, method="rk45")
+    steady = float(mpmath.findroot(lambda w: 1 - 0.1 * w - 0.01 * w ** mpmath.mpf("3.3"), 3.5))
+    assert report.results["omega"].value == pytest.approx(steady, rel=1e-6)
+    assert not any("unstable" in note for note in report.notes)
+
+
 def test_a_stepper_without_events_chatters_under_coulomb_friction_and_ours_does_not():
     """Friction as −τ_f·sgn(ω): naive Euler overshoots zero and flips sign every step thereafter."""
     inertia, friction, dt = 0.1, 0.3, 0.007
