@@ -77,7 +77,7 @@ def plot_document(report: Report) -> dict:
     keys = ["t", *(key for key, _, _ in trajectory.curves)]
     return {
         "units": {"t": "s", **{key: unit for key, unit, _ in trajectory.curves}},
-        "points": [dict(zip(keys, point)) for point in points],
+        "points": [dict(zip(keys, (x if math.isfinite(x) else None for x in point))) for point in points],
         "marks": [{"t": t, "what": what} for t, what in trajectory.marks],
         "notes": [trajectory.note] if trajectory.note else [],
     }
@@ -186,7 +186,16 @@ def check_file(path: str) -> None:
     if not path.lower().endswith((".svg", ".png")):
         raise InputError("--out", "expected a file name ending in .svg or .png", example="--out chart.svg", got=repr(path))
     import importlib.util
+    import os
 
+    existed = os.path.exists(path)
+    try:  # open it now, so that a file that cannot be written is refused before any answer is printed
+        with open(path, "ab"):
+            pass
+    except OSError as err:
+        raise InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}") from None
+    if not existed:
+        os.remove(path)
     if importlib.util.find_spec("matplotlib") is None:
         raise InputError("--out", "needs matplotlib to draw files", hint="pip install 'taucli[plot]'")
 
@@ -215,5 +224,9 @@ def write_file(chart: Chart, path: str) -> None:
     axes[-1][0].set_xlabel(axis_title(chart.x_label, chart.x_unit))
     figure.suptitle(chart.title, fontsize="medium")
     figure.tight_layout()
-    figure.savefig(path)
-    pyplot.close(figure)
+    try:
+        figure.savefig(path)
+    except OSError as err:  # the folder was checked first; the file itself may still refuse
+        raise InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}") from None
+    finally:
+        pyplot.close(figure)
