@@ -67,17 +67,28 @@ def prepared(report: Report, output: Output) -> Report:
     return apply_conversions(finite_only(report), output.to)
 
 
+def _finite(x) -> bool:
+    return not isinstance(x, float) or math.isfinite(x)
+
+
 def finite_only(report: Report) -> Report:
-    """Replace any non-finite result with None and a note, so JSON stays strict."""
-    if all(not isinstance(v.value, float) or math.isfinite(v.value) for v in report.results.values()):
+    """Replace any non-finite result or table cell with None and a note, so JSON stays strict."""
+    tables_finite = all(_finite(cell) for table in report.tables.values() for row in table.rows for cell in row)
+    if tables_finite and all(_finite(v.value) for v in report.results.values()):
         return report
     results = dict(report.results)
     notes = list(report.notes)
     for name, value in report.results.items():
-        if isinstance(value.value, float) and not math.isfinite(value.value):
+        if not _finite(value.value):
             results[name] = value._replace(value=None)
             notes.append(f"{name} has no finite value here")
-    return replace(report, results=results, notes=notes)
+    tables = dict(report.tables)
+    for name, table in report.tables.items():
+        rows = tuple(tuple(cell if _finite(cell) else None for cell in row) for row in table.rows)
+        if rows != table.rows:
+            tables[name] = replace(table, rows=rows)
+            notes.append(f"the {name} table has values that are not finite here, shown as null")
+    return replace(report, results=results, notes=notes, tables=tables)
 
 
 def conversions(to: Sequence[str]) -> list[tuple[str, str]]:
