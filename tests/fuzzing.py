@@ -1,0 +1,359 @@
+"""The fuzz suite's grammar of hostile command lines, and the harness that runs one (issue #9).
+
+A vector is a scene, its arguments and what stdin holds. Option values come from a grammar of
+numbers (huge, tiny, signed, odd spellings), units (right, wrong, look-alike), operators and
+typography (· × − µ ² °), ranges and lists, empty and very long text, and random unicode; options
+are repeated and combined with conflicting output options. Options come from the Typer app
+itself, so a new option is fuzzed without a change here.
+
+``run`` calls ``taucli.__main__.main``, the console script's entry point, in this process (a
+subprocess per vector would take hours for 50,000 of them), with stdin, stdout and stderr as
+text buffers that are not terminals, and checks the contract: exit 0 or 2 only, no traceback,
+one line on stderr for an error, no run over a second, strict JSON with finite numbers after
+``--json``/``--jsonl``, no NaN or infinity after ``--get``, no ANSI codes anywhere.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import math
+import os
+import signal
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from hypothesis import strategies as st
+
+SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse")
+SECONDS = 1.0  # the longest a run may take
+
+# Units by the metavar of the option that takes them.
+UNITS = {
+    "MASS": ["kg", "g", "lb", "oz", "tonne", "mg", "µg"],
+    "LENGTH": ["m", "cm", "mm", "km", "in", "ft", "µm", "nm"],
+    "I": ["kg*m^2", "g*cm^2", "lb*ft^2", "kg·m²", "kg m**2"],
+    "TORQUE": ["N*m", "mN*m", "kN*m", "lbf*ft", "N·m", "N m", "J"],
+    "FORCE": ["N", "kN", "lbf", "dyn"],
+    "ANGLE": ["deg", "rad", "rev", "°", "arcmin", "grad"],
+    "OMEGA": ["rad/s", "rpm", "rev/s", "deg/s", "Hz", "1/s", "s^-1", "rps"],
+    "TIME": ["s", "ms", "min", "h", "µs", "ns", "day", "year"],
+    "SPEED": ["m/s", "km/h", "ft/s", "mph", "knot"],
+    "ACCEL": ["m/s^2", "ft/s^2", "g0", "m/s²", "gal"],
+    "B": ["N*m*s", "N*m/(rad/s)", "N·m·s"],
+    "K": ["N*m*s^2", "N*m*s**2", "kg*m^2"],
+    "NUMBER": ["", "%", "dimensionless"],
+    "N": ["", "1"],
+}
+WRONG_UNITS = ["kgg", "furlong", "m/s", "kg", "s", "N", "degC", "K", "Ω", "mol", "bit", "%", "ppm", "dozen", "Hz", "c", "1/(", "m^", "**", "xyz"]
+CHOICES = {  # metavar: (valid, not valid)
+    "SHAPE": (["point", "ring", "disc", "tube", "sphere", "shell", "thick-shell", "rod", "plate", "box", "cone"], ["Disc", "disk", "cylinder", "hoop", "ball"]),
+    "AXIS": (["central", "diameter", "center", "end", "normal", "center-width", "edge-height", "height", "width", "depth"], ["middle", ""]),
+    "METHOD": (["auto", "exact", "euler", "rk4", "rk45"], ["RK4", "newton", "simpson", "trapezoid"]),
+    "disc|ring": (["disc", "ring"], ["hoop", "sphere", "DISC"]),
+}
+RESULT_NAMES = ["I", "a", "T1", "T2", "alpha", "alpha0", "omega", "omega_inf", "t_stop", "theta_stop", "revs_stop", "v", "t",
+                "distance", "friction", "rolls", "v_bottom", "L", "impulse", "torque", "duration", "omega1", "a_massless", "k2", "x", "nope", ""]
+LOOK_ALIKES = ["·", "×", "−", "–", "µ", "μ", "²", "³", "⁻¹", "°", "÷", "\u00a0", "\u202f", "，", "．", "５", "٣", "e", "E", "_", "'"]
+OPERATORS = ["+", "-", "*", "/", "**", "^", "(", ")", " ", "..", ",", "e", "**-", "^(", "))"]
+
+numbers = st.one_of(
+    st.integers(-10**6, 10**6).map(str),
+    st.floats(allow_nan=False, allow_infinity=False).map(repr),
+    st.floats(min_value=1e-3, max_value=1e3).map(lambda x: f"{x:.4g}"),
+    st.sampled_from(["0", "-0", "+3", ".5", "5.", "1e308", "1e309", "1e-320", "-1e400", "1e999999", "9" * 40, "0x10", "1_000", "1,5",
+                     "nan", "inf", "-inf", "NaN", "Infinity", "1e", "e5", "--2", "2..", "1/0", "0/0", "3.14.15", "²", "½"]),
+)
+
+
+def quantity_texts(metavar: str) -> st.SearchStrategy[str]:
+    """Values for an option that takes a quantity: mostly plausible, often hostile."""
+    units = UNITS.get(metavar, ["kg", "m", "s"])
+    plausible = st.tuples(numbers, st.sampled_from(["", " "]), st.sampled_from(units)).map("".join)
+    sane = st.tuples(st.floats(min_value=0.01, max_value=100).map(lambda x: f"{x:.3g}"), st.sampled_from(units)).map("".join)
+    tokens = st.lists(st.one_of(numbers, st.sampled_from(units + WRONG_UNITS), st.sampled_from(OPERATORS), st.sampled_from(LOOK_ALIKES)), max_size=8).map("".join)
+    sweep = st.one_of(
+        st.tuples(sane, st.just(".."), sane).map("".join),
+        st.lists(sane, min_size=2, max_size=4).map(",".join),
+        st.tuples(numbers, st.just(".."), numbers, st.sampled_from(units)).map("".join),
+    )
+    hostile = st.one_of(
+        st.sampled_from(["", " ", "\t", "\n", "-", "--", "..", ",", "kg", "9**9**9 kg", "2^2^2^2 m", "(" * 200 + "1" + ")" * 200, "1" * 5000,
+                         "kg*" * 2000 + "kg", "10**400 kg", "1e-400 kg", "4 kg + 200 g", "4 kg - 4 kg", "4 kg * 0", "__import__('os')",
+                         "exp(10000)", "1 kg / 0 m", "$(rm -rf /)", "; ls", "1\x00kg", "\x1b[31m4kg", "4 kg\r", "∞", "4 m/s / 0 s"]),
+        st.text(max_size=40),
+        st.text(alphabet="0123456789.eE+-*/^() kgmsNHzrpdλ·×−µ²°,", max_size=60),
+    )
+    return st.one_of(sane, sane, plausible, tokens, sweep, hostile)
+
+
+def sane_value(option: str, metavar: str | None, files: dict[str, str]) -> st.SearchStrategy[str]:
+    """A value a careful user might give: a plain positive number with a unit of the right kind."""
+    if metavar in CHOICES:
+        return st.sampled_from(CHOICES[metavar][0])
+    if option in ("--get", "--y", "--to", "--points", "--out", "--torque-profile", "--part"):
+        return option_value(option, metavar, files)
+    units = [unit for unit in UNITS.get(metavar, ["kg"]) if unit] or [""]
+    return st.tuples(st.floats(min_value=0.01, max_value=50).map(lambda x: f"{x:.3g}"), st.sampled_from(units)).map("".join)
+
+
+def option_value(option: str, metavar: str | None, files: dict[str, str]) -> st.SearchStrategy[str]:
+    if metavar in CHOICES:
+        return st.one_of(st.sampled_from(sum(CHOICES[metavar], [])), st.text(max_size=12))
+    if option in ("--get", "--y"):
+        return st.one_of(st.sampled_from(RESULT_NAMES), st.text(max_size=12))
+    if option == "--to":
+        to = st.tuples(st.sampled_from(RESULT_NAMES), st.sampled_from(["=", "", "=="]), st.sampled_from(sum(UNITS.values(), []) + WRONG_UNITS + ["", "9**9**9"]))
+        return st.one_of(to.map("".join), st.text(max_size=20))
+    if option == "--points":
+        return st.one_of(st.integers(-3, 60).map(str), st.sampled_from(["10001", "1e3", "99999999999999999999", "", "5.5", "two"]))
+    if option == "--out":
+        return st.sampled_from(["chart.svg", "chart.png", "chart.txt", "", "/nonexistent/dir/c.svg", "/proc/c.svg", ".svg"])
+    if option in ("--torque-profile",):
+        return st.sampled_from(sorted(files.values()) + ["-", "/dev/null", "/nonexistent.csv", "/dev/zero", "/proc/self/status"])
+    if option == "--part":
+        part = st.tuples(st.sampled_from(sum(CHOICES["SHAPE"], [])), st.sampled_from([" mass=", " mass = ", " m="]), quantity_texts("MASS"),
+                         st.sampled_from([" radius=", " offset=", " length=", " "]), quantity_texts("LENGTH")).map("".join)
+        return st.one_of(part, st.text(max_size=30))
+    return quantity_texts(metavar or "")
+
+
+@dataclass
+class Vector:
+    scene: str
+    args: list[str]
+    stdin: str = ""
+
+    def __repr__(self) -> str:  # as a shell line, to paste into a terminal
+        import shlex
+
+        return f"taucli {shlex.join([self.scene, *self.args])}" + (f"  <<< {self.stdin[:200]!r}" if self.stdin else "")
+
+
+def command_options(scene: str) -> list[tuple[str, str | None, bool]]:
+    """(flag or "" for the positional, metavar, is_flag) of each parameter of the scene's command."""
+    import typer
+
+    from taucli import cli
+
+    command = typer.main.get_command(cli.app).commands[scene]
+    return [("" if p.param_type_name == "argument" else p.opts[0], p.metavar, bool(getattr(p, "is_flag", False))) for p in command.params]
+
+
+# The options a scene needs to get past "required", included more often than the rest.
+CORE = {
+    "inertia": ["", "--mass", "--radius"],
+    "spin-down": ["--inertia", "--omega0", "--friction", "--torque"],
+    "atwood": ["--m1", "--m2", "--pulley-mass", "--pulley-radius"],
+    "rolling": ["", "--angle", "--mu-s", "--length"],
+    "impulse": ["--inertia", "--torque", "--duration", "--omega0"],
+}
+
+
+# Scenes that work (the README's), for vectors that change a few of their numbers to extremes.
+BASES = {
+    "inertia": ["disc --mass 5kg --radius 0.2m", "rod --mass 2kg --length 1m --axis end", "thick-shell --mass 1kg --inner-radius 1m --outer-radius 2m",
+                "box --mass 1kg --width 1m --height 2m --depth 3m", "cone --mass 1kg --radius 1m --height 1m --offset 1m",
+                "disc --mass 5kg --radius 0.2m --part 'point mass=100g offset=20cm'"],
+    "spin-down": ["--shape disc --mass 5kg --radius 0.2m --omega0 30rad/s --friction 0.3N*m", "--inertia 2kg*m^2 --torque 1N*m --viscous 0.1N*m*s --time 4s",
+                  "--inertia 1kg*m^2 --omega0 100rad/s --drag 0.01N*m*s^2 --drag-exponent 2.5 --until-omega 10rad/s",
+                  "--inertia 1kg*m^2 --omega0 10rad/s --friction 1N*m --viscous 0.5N*m*s --method rk4 --dt 10ms",
+                  "--shape disc --mass 8kg --radius 0.25m --force 6N --lever 0.25m --push-angle 60deg --time 4s --method rk45"],
+    "atwood": ["--m1 4kg --m2 1kg --pulley-mass 2kg --pulley-radius 0.1m --g 9.8", "--m1 1kg --m2 3kg --incline 30deg --mu-k 0.2 --mu-s 0.3 --distance 1m",
+               "--m1 2kg --m2 2kg --axle-friction 0.5N*m --pulley-radius 0.1m --v0 1m/s --time 2s", "--m1 1kg --pulley-inertia 0.01kg*m^2 --pulley-radius 0.05m --pulley-shape ring"],
+    "rolling": ["sphere --angle 30deg --length 2m --mass 1kg --radius 0.1m", "disc --angle 40deg --mu-s 0.2 --mu-k 0.15", "sphere --v0 7m/s --mu-k 0.2",
+                "ring --angle 10deg --height 1m --v0 1m/s", "--k2 0.3 --angle 20deg --mu-s 0.1 --length 3m --omega0 5rad/s --radius 0.1m"],
+    "impulse": ["--inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s", "--inertia 4kg*m^2 --inertia-final 1.5kg*m^2 --omega0 1rev/s --to omega1=rev/s",
+                "--inertia 0.01kg*m^2 --torque-profile {good} --method simpson", "--shape rod --mass 1kg --length 1m --omega0 10rpm --omega1 60rpm --duration 2s"],
+}
+extreme_numbers = st.one_of(
+    st.sampled_from(["0", "-0", "-1", "1e-320", "5e-324", "1e-300", "1e-30", "1e-9", "1e9", "1e30", "1e300", "1.7e308", "-1e308", "1e-16", "0.9999999999999999", "1.0000000000000002"]),
+    st.floats(min_value=-1e308, max_value=1e308, allow_nan=False).map(repr),
+    st.integers(-12, 12).map(lambda e: f"{10.0 ** e:g}"),
+)
+
+
+@st.composite
+def near_base(draw, scene: str, files: dict[str, str]) -> list[str]:
+    """A working scene with a few of its numbers made extreme, and an output option or two."""
+    import re
+    import shlex
+
+    args = shlex.split(draw(st.sampled_from(BASES[scene])).format(**files))
+    numeric = [i for i, word in enumerate(args) if re.match(r"-?\d", word) and i > 0 and args[i - 1].startswith("--")]
+    for i in draw(st.lists(st.sampled_from(numeric), max_size=3, unique=True)) if numeric else []:
+        unit = re.sub(r"^-?[\d.e+-]*", "", args[i])
+        args[i] = draw(extreme_numbers) + unit
+    args += draw(st.lists(st.sampled_from(["--json", "--no-steps", "--plot", "--jsonl", "--get", "--to"]), max_size=2, unique=True))
+    for i, word in enumerate(args):
+        if word in ("--get", "--to") and (i + 1 == len(args) or args[i + 1].startswith("--")):
+            args.insert(i + 1, draw(option_value(word, None, files)))
+    return args
+
+
+@st.composite
+def vectors(draw, scene: str, files: dict[str, str]) -> Vector:
+    if draw(st.integers(0, 2)) == 0:
+        return Vector(scene, draw(near_base(scene, files)))
+    options = command_options(scene)
+    core = [o for o in options if o[0] in CORE[scene]]
+    rest = [o for o in options if o[0] not in CORE[scene]]
+    chosen = [o for o in core if draw(st.integers(0, 9)) < 8]
+    chosen += draw(st.lists(st.sampled_from(rest), max_size=6))
+    if draw(st.integers(0, 9)) == 0:  # the same option again, maybe with another value
+        chosen += draw(st.lists(st.sampled_from(options), min_size=1, max_size=3))
+    args: list[str] = []
+    careful = draw(st.booleans())  # half the vectors mostly sane, so that they reach the solvers
+    for flag, metavar, is_flag in draw(st.permutations(chosen)):
+        values = sane_value if careful and draw(st.integers(0, 9)) else option_value
+        if is_flag:
+            args.append(flag)
+        elif flag == "":
+            args.append(draw(values("", metavar, files)))
+        else:
+            value = draw(values(flag, metavar, files))
+            args += [f"{flag}={value}"] if draw(st.integers(0, 9)) == 0 else [flag, value]
+    stdin = ""
+    if "--batch" in args or "-" in args:
+        line = st.dictionaries(st.sampled_from([o[0].lstrip("-").replace("-", "_") or "shape" for o in options]), st.one_of(quantity_texts("MASS"), st.floats(), st.integers(), st.none(), st.booleans()), max_size=5)
+        stdin = "\n".join(draw(st.lists(st.one_of(line.map(json.dumps), st.text(max_size=30)), max_size=5)))
+    return Vector(scene, args, stdin)
+
+
+def profile_files(folder: Path) -> dict[str, str]:
+    """Torque profiles to name in --torque-profile: good, odd and bad."""
+    files = {
+        "good": "t [s], torque [N*m]\n0, 1\n0.5, 2\n1, 1\n",
+        "bare": "t,torque\n0,1\n1,1\n",
+        "unsorted": "t [s], torque [N*m]\n1, 1\n0, 1\n",
+        "nan": "t [s], torque [N*m]\n0, nan\n1, 1\n",
+        "huge": "t [s], torque [N*m]\n0, 1e308\n1, 1e308\n2, -1e308\n",
+        "long_line": "t [s], torque [N*m]\n" + "1" * 100_000 + ", 1\n",
+        "binary": "\x00\x01\x02\xff",
+        "empty": "",
+    }
+    paths = {}
+    for name, text in files.items():
+        path = folder / f"{name}.csv"
+        path.write_text(text, encoding="utf-8", errors="surrogateescape")
+        paths[name] = str(path)
+    (folder / "a_folder.csv").mkdir(exist_ok=True)
+    paths["folder"] = str(folder / "a_folder.csv")
+    return paths
+
+
+@dataclass
+class Outcome:
+    status: int
+    out: str
+    err: str
+    seconds: float
+    problems: list[str] = field(default_factory=list)
+
+
+class TookTooLong(BaseException):
+    """Raised by the alarm in a run that has gone on far past the limit (a hang)."""
+
+
+def _alarm(signum, frame):
+    raise TookTooLong()
+
+
+def _strict(text: str):
+    def reject(name):
+        raise ValueError(f"non-strict JSON constant {name}")
+
+    return json.loads(text, parse_constant=reject)
+
+
+def _numbers(node):
+    if isinstance(node, dict):
+        for value in node.values():
+            yield from _numbers(value)
+    elif isinstance(node, list):
+        for value in node:
+            yield from _numbers(value)
+    elif isinstance(node, float):
+        yield node
+
+
+def run(vector: Vector, workdir: str) -> Outcome:
+    """Run the vector through taucli's entry point in this process; list what breaks the contract."""
+    from taucli.__main__ import main
+
+    stdin, stdout, stderr = io.StringIO(vector.stdin), io.StringIO(), io.StringIO()
+    saved = sys.argv, sys.stdin, os.getcwd()
+    signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, 20 * SECONDS)
+    start = time.perf_counter()
+    hung = False
+    try:
+        sys.argv, sys.stdin = ["taucli", vector.scene, *vector.args], stdin
+        os.chdir(workdir)
+        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+            try:
+                status = main()
+            except SystemExit as err:  # main returns its status; an exit from inside is a finding
+                status = f"SystemExit({err.code!r})"
+            except TookTooLong:
+                status, hung = "hung", True
+            except BaseException as err:  # noqa: BLE001 - anything escaping main is a finding
+                import traceback
+
+                status = f"escaped: {type(err).__name__}: {err}"
+                stderr.write(traceback.format_exc())
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        sys.argv, sys.stdin = saved[0], saved[1]
+        os.chdir(saved[2])
+    seconds = time.perf_counter() - start
+    outcome = Outcome(status if isinstance(status, int) else -1, stdout.getvalue(), stderr.getvalue(), seconds)
+    problems = outcome.problems
+    if not isinstance(status, int):
+        problems.append(f"status {status}")
+    elif status not in (0, 2):
+        problems.append(f"exit {status}: {outcome.err.strip()[:300]}")
+    if hung or seconds > SECONDS:
+        problems.append(f"took {seconds:.2f} s")
+    if "Traceback" in outcome.err or "Traceback" in outcome.out:
+        problems.append("a traceback")
+    if "\x1b[" in outcome.out or "\x1b[" in outcome.err:
+        problems.append("ANSI codes in a pipe")
+    if outcome.status == 2 and "--batch" not in vector.args and outcome.out:
+        problems.append(f"exit 2 after printing an answer: {outcome.out[:100]!r}")
+    if outcome.status == 2:
+        lines = outcome.err.strip().splitlines()
+        if "--batch" not in vector.args and (len(lines) != 1 or not lines[0].startswith("taucli: error: ")):
+            problems.append(f"not one error line: {outcome.err[:300]!r}")
+    if outcome.status == 0:
+        problems += _output_problems(vector, outcome.out)
+    return outcome
+
+
+def _output_problems(vector: Vector, out: str) -> list[str]:
+    args = vector.args
+    structured = "--batch" in args or "--jsonl" in args or (any(a.startswith("--json") for a in args) and not any(a.startswith("--get") for a in args))
+    if not structured:
+        if any(a.startswith("--get") for a in args):
+            bad = [word for word in out.split() if word.lower().lstrip("-+") in ("nan", "inf", "infinity")]
+            return [f"--get printed {bad}"] if bad else []
+        return []
+    try:
+        documents = [_strict(line) for line in out.splitlines()] if ("--batch" in args or "--jsonl" in args) else [_strict(out)]
+    except ValueError as err:
+        return [f"not strict JSON: {err}: {out[:200]!r}"]
+    if "--batch" in args and len(documents) != len(vector.stdin.splitlines()):
+        return [f"{len(vector.stdin.splitlines())} lines in, {len(documents)} out"]
+    if not documents and "--batch" not in args:
+        return ["no JSON at all"]
+    if any(not math.isfinite(x) for doc in documents for x in _numbers(doc)):
+        return ["a number that is not finite"]
+    return []
+
+
+def scratch_folder() -> tempfile.TemporaryDirectory:
+    return tempfile.TemporaryDirectory(prefix="taucli-fuzz-")
