@@ -112,6 +112,18 @@ def test_backspin_slows_the_ball_more():
     assert result["v_roll"] == pytest.approx((5.0 - 0.4 * 2.0) / 1.4)
 
 
+def test_without_friction_a_skidding_ball_never_rolls():
+    """Found by the fuzz suite (#9): μk = 0 divided by zero (exit 1). With no force at the contact
+    v and ω stay as they are (m dv/dt = 0, I dω/dt = 0): it never rolls, and loses no energy."""
+    report = solve_flat(Roller(0.4, "sphere", 2.0, 0.1), 9.8, mu_k=0.0, v0=3.0, omega0=5.0)
+    result = values(report)
+    assert result["t_roll"] is None and result["v_roll"] is None and result["d_roll"] is None
+    assert result["energy_lost"] == 0.0
+    assert any("never rolls" in note for note in report.notes)
+    trajectory = report.trajectory()
+    assert [trajectory.state(t) for t in (0.0, 0.5, 1.0)] == [(0.0, 3.0), (1.5, 3.0), (3.0, 3.0)]
+
+
 @given(shape=st.sampled_from(sorted(K2)), v0=st.floats(0.1, 50), angle=st.floats(0.05, 1.5))
 def test_climbing_turns_all_kinetic_energy_into_height(shape, v0, angle):
     k2 = K2[shape]

@@ -229,6 +229,8 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
     notes: list[str] = []
     if slip != 0 and mu_k is None:
         raise InputError("--mu-k", "is required: the ball skids (v ≠ Rω) and kinetic friction brings it to rolling", example="--mu-k 0.2")
+    if slip != 0 and mu_k == 0:
+        return _skids_forever(roller, v0, spin_speed)
     v_roll = (v0 + k2 * spin_speed) / (1 + k2)
     if slip == 0:
         t_roll = 0.0
@@ -260,6 +262,25 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
     return Report("rolling", model, "closed form", results, steps, notes, trajectory=deferred(_skid_trajectory, v0, v_roll, t_roll))
 
 
+def _skids_forever(roller: Roller, v0: float, spin_speed: float) -> Report:
+    """μk = 0 with v ≠ Rω: no force at the contact, so v and ω never change and it never rolls."""
+    results: dict[str, Value] = {
+        "t_roll": Value(None, "s", "time until it rolls without slipping"),
+        "d_roll": Value(None, "m", "distance skidded until then"),
+        "v_roll": Value(None, "m/s", "speed once it rolls"),
+        "omega_roll": Value(None, "rad/s", "angular velocity once it rolls"),
+    }
+    if roller.mass is not None:
+        results["energy_lost"] = Value(0.0, "J", "kinetic energy turned to heat by sliding friction")
+    notes = [f"μk = 0: no friction at the contact, so it skids for ever at v = {quantity_text(v0, 'm/s')} with the slip it started with, and never rolls"]
+    steps = [
+        Step("With no friction nothing acts at the contact", "m dv/dt = 0,  I dω/dt = 0", "", "",
+             f"the slip s = v − Rω = {fmt(v0 - spin_speed)} m/s stays as it is"),
+    ]
+    model = f"{roller.description} (k² = {fmt(roller.k2)}) skidding on a frictionless flat"
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=deferred(_skid_trajectory, v0, v0, math.inf))
+
+
 def _skid_trajectory(v0: float, v_roll: float, t_roll: float) -> Trajectory:
     """Distance and speed of the centre: uniform change while it skids, then steady rolling."""
     change = 0.0 if t_roll == 0 else (v_roll - v0) / t_roll  # ±μk g while it skids
@@ -270,6 +291,8 @@ def _skid_trajectory(v0: float, v_roll: float, t_roll: float) -> Trajectory:
         return (v0 + v_roll) / 2 * t_roll + v_roll * (t - t_roll), v_roll
 
     curves = (("x", "m", "distance travelled"), ("v", "m/s", "speed of the centre"))
+    if math.isinf(t_roll):
+        return Trajectory(curves, 1.0, lambda t: (v0 * t, v0), note="plotted for 1 s: it never rolls")
     if t_roll == 0:
         return Trajectory(curves, 1.0, state, note="plotted for 1 s: it rolls from the start")
     return Trajectory(curves, 1.5 * t_roll, state, marks=((t_roll, "rolls without slipping"),))
