@@ -23,7 +23,7 @@ from collections.abc import Callable, Iterable
 from typing import TextIO, get_args, get_origin
 
 from taucli import __version__
-from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean
+from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean, out_of_range
 from taucli.sweep import marked
 
 NOT_PER_LINE = ("batch", "json_", "get", "jsonl", "plot", "out", "points", "y")  # output: fixed for the whole run
@@ -50,6 +50,8 @@ def run(command: Callable, given: dict, lines: Iterable[str] | None, out: TextIO
             continue
         except TaucliError as err:
             status, option, message = err.exit_status, getattr(err, "option", None), str(err)
+        except OverflowError:
+            status, option, message = ExitStatus.USAGE, None, str(out_of_range())
         except (KeyboardInterrupt, BrokenPipeError):
             raise
         except Exception as err:  # a bug: reported on its line, and the run goes on

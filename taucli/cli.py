@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
-from taucli.errors import ExitStatus, InputError, TaucliError
+from taucli.errors import ExitStatus, InputError, TaucliError, out_of_range
 from taucli.names import BENCH_SCENES, METHOD_NAMES, PULLEY_SHAPES, QUADRATURE_NAMES, ROLLING_BODIES, SHAPE_AXES, SHAPE_NAMES
 
 if TYPE_CHECKING:
@@ -811,6 +811,8 @@ def main(argv: list[str] | None = None) -> int:
         result = app_for(args)(args=args, prog_name="taucli", standalone_mode=False)
     except TaucliError as err:
         return _fail(err.exit_status, str(err))
+    except OverflowError:
+        return _fail(ExitStatus.USAGE, str(out_of_range()))
     except KeyboardInterrupt:
         print(file=sys.stderr)
         return int(ExitStatus.INTERRUPTED)

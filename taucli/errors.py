@@ -61,6 +61,15 @@ class InputError(TaucliError, ValueError):
         return message
 
 
+def out_of_range() -> InputError:
+    """What an OverflowError from a solver means: inputs so large (or small) that a result passes
+    the largest double. Float ``**`` and math functions raise where ``*`` would give inf."""
+    return InputError(
+        "", "the inputs are out of range: a result would pass the largest number a double holds (about 1.8e308)",
+        hint="give magnitudes nearer everyday sizes",
+    )
+
+
 def did_you_mean(name: str, choices, cutoff: float = 0.6) -> str | None:
     """'did you mean ...?' for the closest of ``choices`` to a mistyped ``name``, or None."""
     import difflib

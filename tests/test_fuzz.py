@@ -35,6 +35,10 @@ FOUND = [
     Vector("atwood", ["--m1", "0.01kg", "--out", "/proc/c.svg", "--no-steps"]),
     # exit 1: an inertia of 5e-324 gives infinite speeds in the profile's table, which strict JSON refused
     Vector("impulse", ["--inertia", "5e-324kg*m^2", "--torque-profile", "{good}", "--method", "simpson", "--jsonl"]),
+    # exit 1: float ** raised OverflowError for lengths and masses of 1e185
+    Vector("inertia", ["rod", "--mass", "1.5187990587061118e+185kg", "--length", "1.5187990587061118e+185m", "--axis", "end", "--json", "--no-steps"]),
+    # exit 1: a skidding ball with μk = 0 divided by zero for the time it takes to roll
+    Vector("rolling", ["sphere", "--v0", "1m/s", "--mu-k", "0"]),
 ]
 
 
