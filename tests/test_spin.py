@@ -312,6 +312,39 @@ def test_methods_table_and_input_errors():
         solve(0.1, Torques(friction=0.3), 30.0, time=1e4, method="euler", dt=1e-6)
 
 
+def test_a_plot_with_a_stepping_method_steps_through_the_motion_once(monkeypatch):
+    """Issue #9: 201 plot samples used to integrate from 0 each (201 runs; over a second for
+    rk45 with power-law drag). The sampler steps on from the last sample. Under friction c and
+    viscous b, ω(t) = (ω₀ + c/b)·e^(−bt/I) − c/b until it stops: the samples must follow it."""
+    taken = []
+    original = numerics.integrate
+
+    def counting(*args, **kwargs):
+        solution = original(*args, **kwargs)
+        taken.append(solution.steps)
+        return solution
+
+    monkeypatch.setattr(numerics, "integrate", counting)
+    inertia, friction, viscous, omega0 = 1.0, 1.0, 0.01, 10.0
+    report = solve(inertia, Torques(friction=friction, viscous=viscous), omega0, method="rk4", dt=1e-3)
+    answer_steps = sum(taken)
+    samples = report.trajectory().sample(201)
+    plot_steps = sum(taken) - answer_steps
+    t_stop = report.results["t_stop"].value
+    assert plot_steps <= 1.25 * t_stop / 1e-3 + 2 * 201  # one pass to 1.25 t_stop, and a short step at each sample
+    for t, omega, _ in samples:
+        exact = max((omega0 + friction / viscous) * math.exp(-viscous * t / inertia) - friction / viscous, 0.0)
+        assert omega == pytest.approx(exact, abs=1e-9)
+
+
+def test_a_run_has_a_budget_of_steps_in_all():
+    """About a second of stepping at most: rk4 may take 125,000 steps for its answers and plot."""
+    fits = solve(1.0, Torques(viscous=0.1), 10.0, time=100.0, method="rk4", dt=1e-3)  # 100,000 steps
+    assert fits.results["omega"].value == pytest.approx(10.0 * math.exp(-10.0), rel=1e-9)
+    with pytest.raises(InputError, match="more than 125,000 rk4 steps"):
+        solve(1.0, Torques(viscous=0.1), 10.0, time=130.0, method="rk4", dt=1e-3)
+
+
 @pytest.mark.parametrize("inertia", [1e-3, 0.1, 10.0])
 @pytest.mark.parametrize("viscous", [0.0, 0.01, 5.0])
 @pytest.mark.parametrize("exponent", [1.5, 2.0, 3.0])

@@ -276,4 +276,4 @@ def test_a_run_without_plot_does_no_work_for_one():
     result = run_taucli(*args, "--get", "omega_inf")
     assert result.code == 0, result.err
     assert float(result.out) == pytest.approx(10.0, rel=1e-12)  # ω∞ = τ/b
-    assert_usage_error(run_taucli(*args, "--plot", "--json"), "--dt", "steps, more than 2,000,000")
+    assert_usage_error(run_taucli(*args, "--plot", "--json"), "--dt", "more than 125,000 rk4 steps in all")

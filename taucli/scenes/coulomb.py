@@ -12,9 +12,11 @@ frame, evolved by the closed form (axle.py) or by a stepper (numerics.py).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from taucli import numerics
+from taucli.errors import InputError
 from taucli.report import fmt
 from taucli.scenes.axle import AxlePhase
 
@@ -105,19 +107,27 @@ class Evolver:
         self.steps = 0
         self.unstable: list[str] = []
 
-    def _run(self, phase: Phase, t_end: float, event_at: float | None) -> numerics.Solution:
-        solution = numerics.integrate(
-            phase.rate,
-            phase.closed.omega0,
-            t_end,
-            self.method.name,
-            dt=self.method.dt,
-            rtol=self.method.rtol,
-            event_at=event_at,
-            stiffness=phase.stiffness,
-        )
+    def _run(self, phase: Phase, t_end: float, event_at: float | None, omega_start: float | None = None) -> numerics.Solution:
+        name = self.method.name
+        try:
+            solution = numerics.integrate(
+                phase.rate,
+                phase.closed.omega0 if omega_start is None else omega_start,
+                t_end,
+                name,
+                dt=self.method.dt,
+                rtol=self.method.rtol,
+                event_at=event_at,
+                stiffness=phase.stiffness,
+                max_steps=numerics.MAX_STEPS[name] - self.steps,
+            )
+        except numerics.TooManySteps:
+            option, hint = ("--rtol", "use a looser --rtol, or --method auto") if name == "rk45" else ("--dt", "use a larger --dt, or --method rk45 or auto")
+            raise InputError(option, f"this run needs more than {numerics.MAX_STEPS[name]:,} {name} steps in all (answers and plot)", hint=hint) from None
         self.steps += solution.steps
-        if solution.unstable:
+        if solution.unstable and not math.isfinite(solution.omega) and self.method.dt is None:
+            self.unstable.append(f"{self.method.name}: ω left the range of a double (it is not finite); results withheld")
+        elif solution.unstable:
             limit = numerics.METHODS[self.method.name].stability_limit
             self.unstable.append(
                 f"{self.method.name} went unstable: dt·|∂α/∂ω| reached {fmt(solution.worst_rate, 3)}, above its limit "
@@ -132,6 +142,14 @@ class Evolver:
             return phase.closed.omega(t), phase.closed.theta(t)
         solution = self._run(phase, t, None)
         return solution.omega, solution.theta
+
+    def state_after(self, phase: Phase, start: tuple[float, float, float], t: float) -> tuple[float, float]:
+        """(ω, θ) at time t ≥ start's t within the phase, stepping on from start = (t, ω, θ)."""
+        t0, omega0, theta0 = start
+        if t == t0:
+            return omega0, theta0
+        solution = self._run(phase, t - t0, None, omega_start=omega0)
+        return solution.omega, theta0 + solution.theta
 
     def reach(self, phase: Phase, target: float) -> tuple[float, float] | None:
         """(t, θ) when the phase first reaches ω = target, or None if it never does."""
@@ -197,6 +215,30 @@ class Motion:
             return 0.0, direction * stop[1]
         speed, distance = self.evolver.state(second, t - stop[0])
         return second.direction * speed, direction * stop[1] + second.direction * distance
+
+    def sampler(self) -> Callable[[float], tuple[float, float]]:
+        """``state_at`` for times asked in increasing order, as a plot asks them: a stepping method
+        steps on from the last time asked instead of from 0, so 201 samples cost one run, not 201.
+        Each sample then lies on a grid restarted at the previous one; a plot cannot tell."""
+        if self.evolver.method.name == "exact" or self.held_from_start:
+            return self.state_at
+        last: dict[int, tuple[float, float, float]] = {}  # phase number: (t, ω, θ) in its own frame
+
+        def state(t: float) -> tuple[float, float]:
+            direction, stop, second = self.direction, self.stop, self.second
+            number, phase, offset = (1, self.first, 0.0) if stop is None or t <= stop[0] else (2, second, stop[0])
+            if phase is None:
+                return 0.0, direction * stop[1]
+            start = last.get(number, (0.0, phase.closed.omega0, 0.0))
+            if t - offset < start[0]:
+                start = (0.0, phase.closed.omega0, 0.0)
+            speed, distance = self.evolver.state_after(phase, start, t - offset)
+            last[number] = (t - offset, speed, distance)
+            if number == 1:
+                return direction * speed, direction * distance
+            return second.direction * speed, direction * stop[1] + second.direction * distance
+
+        return state
 
     def reach(self, target: float) -> tuple[float, float] | None:
         """(t, x) when the speed first equals target, or None if it never does."""

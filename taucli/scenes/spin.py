@@ -182,7 +182,7 @@ def _trajectory(motion, time: float | None, omega_inf: float | None) -> Trajecto
         note = "plotted until ω is 99% of the way to its steady speed; --time to change" if near else "plotted for 1 s; --time to change"
     marks = ((stop[0], "stops"),) if stop is not None and stop[0] > 0 else ()
     curves = (("omega", "rad/s", "angular velocity ω"), ("theta", "rad", "angle turned θ"))
-    return Trajectory(curves, t_end, motion.state_at, marks=marks, note=note)
+    return Trajectory(curves, t_end, motion.sampler(), marks=marks, note=note)
 
 
 def _choose_method(method: str, closed_form: bool, dt: float | None, rtol: float | None) -> Method:
