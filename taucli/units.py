@@ -71,6 +71,11 @@ _DIMENSION_NAMES = {
     )
 }
 
+# Every quantity is 0 or within 1e-40..1e40 in SI: wider than physics asks of a turning body (an
+# electron's mass is 9e-31 kg, the observable universe 9e26 m across), and narrow enough that the
+# products a solver forms (m r², ω² I t², ...) stay inside a double's range, 1e-308..1.8e308,
+# so that nothing underflows to a zero divisor or overflows.
+SMALLEST, LARGEST = 1e-40, 1e40
 MAX_TEXT_LENGTH = 80
 MAX_DIGITS = 25  # digits in one numeric literal
 MAX_EXPONENT = 12  # |n| in x**n
@@ -307,11 +312,24 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive") -> 
     note = f"{option} {text.strip()}: Hz read as revolutions per second (omega = 2*pi*f)" if hertz_power else None
     if not math.isfinite(value):
         raise InputError(option, f"expected a finite {kind.name}", example=kind.example, got=repr(text))
+    if value and not SMALLEST <= abs(value) <= LARGEST:
+        raise InputError(
+            option, f"expected {_article(kind.name)} of 0 or between 1e-40 and 1e40 {kind.si_unit or ''} in size".replace("  ", " "),
+            example=kind.example, got=repr(text) if _is_number(text) else f"{text!r} = {value:g} {kind.si_unit}".rstrip(),
+        )
     if sign == "positive" and value <= 0:
         raise InputError(option, f"expected a positive {kind.name}", example=kind.example, got=repr(text))
     if sign == "nonnegative" and value < 0:
         raise InputError(option, f"expected a {kind.name} of zero or more", example=kind.example, got=repr(text))
     return Parsed(value, note)
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def convert(value: float, si_unit: str, target: str, option: str) -> float:

@@ -86,6 +86,10 @@ REJECTED = [
     ("4 kg; import os", "mass", "character ';'"),
     ("__import__('os')", "mass", "character"),
     ("4 kg)", "mass", "not a quantity"),
+    ("1e-41 kg", "mass", "between 1e-40 and 1e40 kg"),
+    ("1e-38 g", "mass", "= 1e-41 kg"),
+    ("2e40", "length", "between 1e-40 and 1e40 m"),
+    ("-1e41 N*m", "torque", "between"),
 ]
 
 
@@ -98,6 +102,30 @@ def test_refuses_with_a_message_naming_option_and_kind(text, kind, fragment):
     assert kind.split()[0] in message
     assert fragment in message
     assert "(e.g. " in message
+
+
+def test_the_bounds_of_size_are_inclusive_and_zero_is_allowed():
+    assert units.parse("1e-40", "--m", "mass").value == 1e-40
+    assert units.parse("1e40 kg", "--m", "mass").value == 1e40
+    assert units.parse("0 kg", "--m", "mass", sign="nonnegative").value == 0.0
+    assert units.parse("-1e40 N*m", "--t", "torque", sign="any").value == -1e40
+
+
+HOSTILE = [
+    "9**9**9 kg", "2^2^2^2^2 kg", "10**400 kg", "(" * 500 + "4" + ")" * 500 + " kg", "9" * 100_000 + " kg",
+    "*".join(["kg"] * 5000), "*".join(["kg/kg"] * 3000), "4 kg" + " + 1 kg" * 2000, "1e999999999 kg",
+    "__import__('os').system('true')", "exp(1000) kg", "kg" * 50_000,
+]
+
+
+@pytest.mark.parametrize("text", HOSTILE, ids=lambda text: text[:24])
+def test_hostile_expressions_are_refused_at_once_by_the_cli(text):
+    """Through the console script's entry point (tests/fuzzing.py): exit 2, one line, under a second."""
+    from fuzzing import Vector, run
+
+    outcome = run(Vector("inertia", ["disc", "--mass", text, "--radius", "1m"]), ".")
+    assert outcome.status == 2 and not outcome.problems, outcome.problems
+    assert outcome.err.startswith("taucli: error: --mass: expected a ") and "mass" in outcome.err
 
 
 def test_exponent_tower_is_refused_at_once():
