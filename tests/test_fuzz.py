@@ -39,6 +39,16 @@ FOUND = [
     Vector("inertia", ["rod", "--mass", "1.5187990587061118e+185kg", "--length", "1.5187990587061118e+185m", "--axis", "end", "--json", "--no-steps"]),
     # exit 1: a skidding ball with μk = 0 divided by zero for the time it takes to roll
     Vector("rolling", ["sphere", "--v0", "1m/s", "--mu-k", "0"]),
+    # exit 1: rk45 overflowed (ω not finite) and the advice to lower --dt multiplied rk45's dt of None
+    Vector("spin-down", ["--shape", "disc", "--mass", "8kg", "--radius", "1e-08m", "--force", "1.7e308N", "--lever", "1e-08m", "--push-angle", "60deg", "--time", "4s", "--method", "rk45", "--json"]),
+    # exit 1: a radius of 1e-320 m made I = ½MR² underflow to 0, a divisor
+    Vector("spin-down", ["--shape", "disc", "--mass", "8kg", "--radius", "1e-320m", "--force", "6N", "--lever", "0.25m", "--time", "4s", "--method", "rk45"]),
+    # 1.1-1.2 s: the plot's 201 samples each integrated from 0 (rk45, power-law drag)
+    Vector("spin-down", ["--inertia", "1kg*m^2", "--omega0", "1e+07rad/s", "--drag", "0.01N*m*s^2", "--drag-exponent", "2.5", "--until-omega", "10rad/s", "--json", "--plot"]),
+    # 9.5-13.5 s: a million rk4 steps were allowed (2 million per integration)
+    Vector("spin-down", ["--inertia", "1kg*m^2", "--omega0", "10rad/s", "--friction", "1N*m", "--viscous", "0.01N*m*s", "--method", "rk4", "--dt", "0.01ms", "--jsonl"]),
+    # exit 1: float ** overflowed in rk4 for I and ω₀ of 1e300 (now refused as out of range when read)
+    Vector("spin-down", ["--inertia", "1e300kg*m^2", "--omega0", "1e300rad/s", "--friction", "6.5699540919324514e-80N*m", "--viscous", "0.5N*m*s", "--method", "rk4", "--dt", "10ms", "--json"]),
 ]
 
 
