@@ -210,6 +210,9 @@ def shown(value, digits: int = 6) -> str:
     return str(value)
 
 
+NARROW = 60  # columns below which results are listed rather than tabled
+
+
 def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> None:
     """The rich table of results, then the steps (equation, numbers, result, why) and notes."""
     from rich import box
@@ -223,19 +226,25 @@ def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> 
     console.print(Text.assemble((f"{report.scene}", "bold"), f": {report.model}"))
     console.print(Text(f"method: {report.method}", style="dim"))
 
-    results = RichTable(box=box.SIMPLE_HEAD, pad_edge=False)
-    results.add_column("result", style="bold")
-    results.add_column("value", justify="right")
-    results.add_column("unit")
-    results.add_column("what it is", style="dim", overflow="fold")
-    for name, value in report.results.items():
-        results.add_row(Text(name), Text(shown(value.value)), Text(pretty_unit(value.unit)), Text(value.label))
-    console.print(results)
+    if console.width < NARROW:  # a table would cut its numbers short: one result to a line instead
+        for name, value in report.results.items():
+            console.print(Text.assemble((name, "bold"), f" = {shown(value.value)} {pretty_unit(value.unit)}".rstrip()))
+            if value.label:
+                console.print(Padding(Text(value.label, style="dim"), (0, 0, 0, 2)))
+    else:
+        results = RichTable(box=box.SIMPLE_HEAD, pad_edge=False)
+        results.add_column("result", style="bold")
+        results.add_column("value", justify="right")
+        results.add_column("unit")
+        results.add_column("what it is", style="dim", overflow="fold")
+        for name, value in report.results.items():
+            results.add_row(Text(name), Text(shown(value.value)), Text(pretty_unit(value.unit)), Text(value.label))
+        console.print(results)
 
     for name, table in report.tables.items():
         drawn = RichTable(title=name, box=box.SIMPLE_HEAD, pad_edge=False)
         for _, unit, heading in table.columns:
-            drawn.add_column(f"{heading} ({pretty_unit(unit)})" if unit else heading, justify="right" if unit else "left")
+            drawn.add_column(f"{heading} ({pretty_unit(unit)})" if unit else heading, justify="right" if unit else "left", overflow="fold")
         for row in table.rows:
             drawn.add_row(*(Text(shown(cell, 4)) for cell in row))
         console.print(drawn)

@@ -270,11 +270,11 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
     names = [name for name in first.results if any(p.report.results.get(name) and p.report.results[name].value is not None for p in points)]
     table = RichTable(box=box.SIMPLE_HEAD, pad_edge=False)
     columns = [_swept_columns(s, points) for s in swept]
-    for heading, _ in columns:
-        table.add_column(heading, justify="right", style="bold")
+    for heading, _ in columns:  # fold, never cut: a narrow terminal wraps a number rather than lose its digits
+        table.add_column(heading, justify="right", style="bold", overflow="fold")
     for name in names:
         unit = pretty_unit(first.results[name].unit)
-        table.add_column(f"{name} ({unit})" if unit else name, justify="right")
+        table.add_column(f"{name} ({unit})" if unit else name, justify="right", overflow="fold")
     for row, point in enumerate(points):
         cells = [shown(values[row], 4) for _, values in columns]
         cells += [shown(point.report.results[name].value if name in point.report.results else None, 4) for name in names]
