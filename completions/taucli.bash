@@ -18,7 +18,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse bench completions --version --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse bench completions --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in

@@ -11,6 +11,7 @@ end
 
 complete -c taucli -f
 complete -c taucli -n __fish_use_subcommand -l version -d 'Print the version and exit.'
+complete -c taucli -n __fish_use_subcommand -l debug -d 'On an internal error (exit 1), print the traceback (or set TAUCLI_DEBUG=1).'
 complete -c taucli -n __fish_use_subcommand -l help -d 'Show this message and exit.'
 complete -c taucli -n __fish_use_subcommand -a inertia -d 'Moment of inertia of a standard shape: shifted...'
 complete -c taucli -n __fish_use_subcommand -a spin-down -d 'A wheel on a fixed axle, slowing or spun up: I dω/dt =...'

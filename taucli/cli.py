@@ -76,12 +76,17 @@ class TaucliCommand(_Lean, typer.core.TyperCommand):
     pass
 
 
+EXIT_STATUSES = (
+    "Exit status: 0 success; 1 internal error (a bug in taucli: please report it, and --debug shows "
+    "the traceback); 2 bad input (one line on stderr names the option); 130 interrupted (Ctrl-C)."
+)
+
 app = typer.Typer(
     name="taucli",
     cls=TaucliGroup,
     help="Rigid-body rotation about a fixed axis: τ_net = Iα and what follows from it.\n\n"
     "Quantities take units: 4kg, 300 rpm, 0.3 N*m, 30deg. A bare number is SI.\n\n"
-    "Exit status: 0 success, 1 internal error (a bug), 2 bad input, 130 interrupted.",
+    + EXIT_STATUSES,
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -101,6 +106,9 @@ def _show_version(value: bool) -> None:
 def taucli(
     version: Annotated[
         bool, typer.Option("--version", callback=_show_version, is_eager=True, help="Print the version and exit.")
+    ] = False,
+    debug: Annotated[
+        bool, typer.Option("--debug", help="On an internal error (exit 1), print the traceback (or set TAUCLI_DEBUG=1).")
     ] = False,
 ) -> None:
     """Rigid-body rotation about a fixed axis: τ_net = Iα and what follows from it."""
@@ -272,7 +280,7 @@ def emit(report, inputs: "Inputs", given: dict) -> None:
     render.render(report, _output(given), sys.stdout)
 
 
-@app.command(cls=TaucliCommand)
+@app.command(cls=TaucliCommand, epilog=EXIT_STATUSES)
 def inertia(
     shape: Annotated[
         Optional[str], typer.Argument(metavar="SHAPE", help=f"One of: {', '.join(SHAPE_NAMES)}.", show_default=False)
@@ -465,7 +473,7 @@ def read_gravity(inputs: "Inputs", g: str | None) -> float:
 _PULLEY = "Pulley"
 
 
-@app.command(cls=TaucliCommand)
+@app.command(cls=TaucliCommand, epilog=EXIT_STATUSES)
 def atwood(
     m1: Annotated[Optional[str], typer.Option("--m1", metavar="MASS", help="The hanging mass; its downward motion is positive.")] = None,
     m2: Annotated[Optional[str], typer.Option("--m2", metavar="MASS", help="The other mass (0: one mass on a string wound on the pulley).")] = None,
@@ -536,7 +544,7 @@ def atwood(
     emit(report, inputs, given)
 
 
-@app.command(cls=TaucliCommand)
+@app.command(cls=TaucliCommand, epilog=EXIT_STATUSES)
 def rolling(
     shape: Annotated[Optional[str], typer.Argument(metavar="SHAPE", help=f"{', '.join(ROLLING_BODIES)} (or give --k2 or --inertia).", show_default=False)] = None,
     k2: Annotated[Optional[str], typer.Option("--k2", metavar="NUMBER", help="I/(mR²) of the body, instead of SHAPE.", rich_help_panel=_BODY)] = None,
@@ -613,7 +621,7 @@ def rolling(
     emit(report, inputs, given)
 
 
-@app.command(cls=TaucliCommand)
+@app.command(cls=TaucliCommand, epilog=EXIT_STATUSES)
 def impulse(
     inertia: InertiaOption = None,
     shape: ShapeOption = None,
@@ -711,7 +719,7 @@ def _impulse_from_profile(scene, read_profile, source: str, moment: float, start
         raise InputError("--torque-profile", "expected a UTF-8 text file", got=repr(source)) from None
 
 
-@app.command(cls=TaucliCommand)
+@app.command(cls=TaucliCommand, epilog=EXIT_STATUSES)
 def bench(
     scene: Annotated[Optional[list[str]], typer.Option("--scene", metavar="SCENE", help=" or ".join(BENCH_SCENES) + " (repeatable; default both).")] = None,
     quick: Annotated[bool, typer.Option("--quick", help="Fewer settings and repeats: a few seconds.")] = False,
@@ -759,7 +767,7 @@ def bench(
         print(f"charts written to {out}")
 
 
-@app.command(cls=TaucliCommand)
+@app.command(cls=TaucliCommand, epilog=EXIT_STATUSES)
 def completions(
     shell: Annotated[Optional[str], typer.Argument(metavar="SHELL", help="bash, zsh or fish.", show_default=False)] = None,
 ) -> None:
@@ -804,6 +812,18 @@ def app_for(args: list[str]):
     return lean
 
 
+def _reader_gone() -> int:
+    """The reader went away (`| head -c1`): say nothing more, and do not fail again on exit."""
+    os.dup2(os.open(os.devnull, os.O_WRONLY), sys.__stdout__.fileno())
+    return int(ExitStatus.OK)
+
+
+def _debugging(args: list[str]) -> bool:
+    """--debug before the command's name (taucli's own option), or TAUCLI_DEBUG in the environment."""
+    own = args[: next((i for i, word in enumerate(args) if not word.startswith("-")), len(args))]
+    return "--debug" in own or bool(os.environ.get("TAUCLI_DEBUG"))
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run taucli; every exception becomes one line on stderr and an exit status."""
     args = sys.argv[1:] if argv is None else list(argv)
@@ -817,9 +837,13 @@ def main(argv: list[str] | None = None) -> int:
         print(file=sys.stderr)
         return int(ExitStatus.INTERRUPTED)
     except BrokenPipeError:
-        # The reader went away (`| head`): say nothing more, and do not fail again on exit.
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return int(ExitStatus.OK)
+        return _reader_gone()
+    except SystemExit as err:
+        # With standalone_mode off, click's only sys.exit is its answer to a broken pipe (EPIPE:
+        # exit 1), and rich's Console answers one with SystemExit(1) too.
+        if err.code == 1:
+            return _reader_gone()
+        raise
     except Exception as err:
         if _is_usage_error(err):
             if type(err).__name__ == "NoArgsIsHelpError":  # `taucli` alone: the help, on stderr
@@ -828,11 +852,13 @@ def main(argv: list[str] | None = None) -> int:
             ctx = getattr(err, "ctx", None)
             where = f" (see '{ctx.command_path} --help')" if ctx is not None else " (see 'taucli --help')"
             return _fail(ExitStatus.USAGE, err.format_message() + where)
-        if os.environ.get("TAUCLI_DEBUG"):
-            raise
+        if _debugging(args):
+            import traceback
+
+            traceback.print_exc()
         return _fail(
             ExitStatus.INTERNAL,
             f"internal error ({type(err).__name__}: {err}); this is a bug in taucli, please report it "
-            "with the command line (set TAUCLI_DEBUG=1 for the traceback)",
+            "with the command line (taucli --debug ... shows the traceback)",
         )
     return result if isinstance(result, int) else int(ExitStatus.OK)
