@@ -110,15 +110,18 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
     from taucli import units
 
     results = dict(report.results)
+    notes = list(report.notes)
     for name, unit in conversions(to):
         value = named_result(report, name, "--to")
         if value.unit is None or not isinstance(value.value, (float, int)) or isinstance(value.value, bool):
             if value.value is None:
                 continue
             raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to I=g*cm^2")
-        converted = units.convert(float(value.value), value.unit, unit, "--to")
+        converted, note = units.converted(float(value.value), value.unit, unit, "--to")
         results[name] = value._replace(value=converted, unit=unit)
-    return replace(report, results=results)
+        if note and note not in notes:
+            notes.append(note)
+    return replace(report, results=results, notes=notes)
 
 
 def named_result(report: Report, name: str, option: str) -> Value:

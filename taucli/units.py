@@ -334,6 +334,11 @@ def _is_number(text: str) -> bool:
 
 def convert(value: float, si_unit: str, target: str, option: str) -> float:
     """Express an SI value in the unit ``target`` (``--to``), with Hz read as rev/s."""
+    return converted(value, si_unit, target, option).value
+
+
+def converted(value: float, si_unit: str, target: str, option: str) -> Parsed:
+    """``convert``, with a note when Hz was read as revolutions per second."""
     kind = next((k for k in KINDS.values() if k.si_unit == si_unit), Kind("quantity", si_unit, si_unit))
     example = kind.common_units[0] if kind.common_units else si_unit
     cleaned = _screen(target, option, kind)
@@ -341,7 +346,8 @@ def convert(value: float, si_unit: str, target: str, option: str) -> float:
     if split is None or split[0] != 1.0 or not split[1] or cleaned.strip() != split[1]:
         raise InputError(option, f"expected a unit of {_article(kind.name)}", example=example, got=repr(target))
     try:
-        factor, _ = unit_factor(split[1], target, option, kind)
+        factor, hertz_power = unit_factor(split[1], target, option, kind)
     except InputError:
         raise InputError(option, f"expected a unit of {_article(kind.name)}", example=example, got=repr(target)) from None
-    return value / factor
+    note = f"{option} {target.strip()}: Hz read as revolutions per second (f = omega/(2*pi))" if hertz_power else None
+    return Parsed(value / factor, note)
