@@ -108,6 +108,8 @@ def solve(
     mu_s = slope.mu_k if slope.mu_s is None else slope.mu_s
 
     pulley_mass = pulley.effective_mass()
+    if pulley_mass:
+        notes.append("the string taken not to slip on the pulley (a = αR): friction at the rim turns it")
     moving_mass = m1 + m2 + pulley_mass
     # (m1 − m2) is exact for near-equal masses (Sterbenz); m1·g − m2·g would lose the difference.
     drive = (m1 - m2) * g if slope.hanging else m1 * g - m2 * g * sin_angle
