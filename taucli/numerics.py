@@ -11,11 +11,10 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from math import fsum
-from operator import mul, sub
 from collections.abc import Callable
 from dataclasses import dataclass
-
+from math import fsum
+from operator import mul, sub
 
 Rate = Callable[[float], float]
 

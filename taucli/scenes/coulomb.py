@@ -203,42 +203,36 @@ class Motion:
         steady = final.steady_speed()
         return None if steady is None else final.direction * steady
 
-    def state_at(self, t: float) -> tuple[float, float]:
-        """(v, x) at time t."""
+    def state_at(self, t: float, resume: dict[int, tuple[float, float, float]] | None = None) -> tuple[float, float]:
+        """(v, x) at time t.
+
+        With ``resume`` (see ``sampler``), a stepping method steps on from the (t, ω, θ) kept
+        there for the phase, when t is not before it, and keeps where it got to.
+        """
         if self.held_from_start:
             return 0.0, 0.0
         direction, stop, second = self.direction, self.stop, self.second
-        if stop is None or t <= stop[0]:
-            speed, distance = self.evolver.state(self.first, t)
-            return direction * speed, direction * distance
-        if second is None:
+        number, phase, offset = (1, self.first, 0.0) if stop is None or t <= stop[0] else (2, second, stop[0])
+        if phase is None:
             return 0.0, direction * stop[1]
-        speed, distance = self.evolver.state(second, t - stop[0])
+        if resume is None or self.evolver.method.name == "exact":
+            speed, distance = self.evolver.state(phase, t - offset)
+        else:
+            start = resume.get(number, (0.0, phase.closed.omega0, 0.0))
+            if t - offset < start[0]:
+                start = (0.0, phase.closed.omega0, 0.0)
+            speed, distance = self.evolver.state_after(phase, start, t - offset)
+            resume[number] = (t - offset, speed, distance)
+        if number == 1:
+            return direction * speed, direction * distance
         return second.direction * speed, direction * stop[1] + second.direction * distance
 
     def sampler(self) -> Callable[[float], tuple[float, float]]:
         """``state_at`` for times asked in increasing order, as a plot asks them: a stepping method
         steps on from the last time asked instead of from 0, so 201 samples cost one run, not 201.
         Each sample then lies on a grid restarted at the previous one; a plot cannot tell."""
-        if self.evolver.method.name == "exact" or self.held_from_start:
-            return self.state_at
-        last: dict[int, tuple[float, float, float]] = {}  # phase number: (t, ω, θ) in its own frame
-
-        def state(t: float) -> tuple[float, float]:
-            direction, stop, second = self.direction, self.stop, self.second
-            number, phase, offset = (1, self.first, 0.0) if stop is None or t <= stop[0] else (2, second, stop[0])
-            if phase is None:
-                return 0.0, direction * stop[1]
-            start = last.get(number, (0.0, phase.closed.omega0, 0.0))
-            if t - offset < start[0]:
-                start = (0.0, phase.closed.omega0, 0.0)
-            speed, distance = self.evolver.state_after(phase, start, t - offset)
-            last[number] = (t - offset, speed, distance)
-            if number == 1:
-                return direction * speed, direction * distance
-            return second.direction * speed, direction * stop[1] + second.direction * distance
-
-        return state
+        resume: dict[int, tuple[float, float, float]] = {}  # phase number: (t, ω, θ) in its own frame
+        return lambda t: self.state_at(t, resume)
 
     def reach(self, target: float) -> tuple[float, float] | None:
         """(t, x) when the speed first equals target, or None if it never does."""
