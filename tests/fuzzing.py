@@ -16,6 +16,7 @@ one line on stderr for an error, no run over a second, strict JSON with finite n
 from __future__ import annotations
 
 import contextlib
+import functools
 import io
 import json
 import math
@@ -134,6 +135,7 @@ class Vector:
         return f"taucli {shlex.join([self.scene, *self.args])}" + (f"  <<< {self.stdin[:200]!r}" if self.stdin else "")
 
 
+@functools.lru_cache(maxsize=None)
 def command_options(scene: str) -> list[tuple[str, str | None, bool]]:
     """(flag or "" for the positional, metavar, is_flag) of each parameter of the scene's command."""
     import typer

@@ -60,7 +60,6 @@ def tally():
 
 
 def _check(vector: Vector) -> None:
-    vector = Vector(vector.scene, [arg.format(**FILES) for arg in vector.args], vector.stdin)
     outcome = run(vector, _scratch.name)
     TRIED[vector.scene] += 1
     assert not outcome.problems, f"{vector!r}\n  -> {outcome.problems}\n  stderr: {outcome.err[-800:]}"
@@ -84,4 +83,4 @@ def test_hostile_command_lines_keep_the_contract(scene):
 
 @pytest.mark.parametrize("vector", FOUND, ids=repr)
 def test_vectors_that_once_failed(vector):
-    _check(vector)
+    _check(Vector(vector.scene, [arg.format(**FILES) for arg in vector.args], vector.stdin))
