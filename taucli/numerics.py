@@ -157,7 +157,10 @@ def integrate(
         step = min(h, t_end - t)
         if stiffness is not None:
             worst = max(worst, step * stiffness(omega))
-        d_omega, d_theta, error = _step(tableau, f, omega, step)
+        try:
+            d_omega, d_theta, error = _step(tableau, f, omega, step)
+        except (ValueError, OverflowError):  # fsum met inf − inf or overflowed: the run has blown up
+            return Solution(t + step, math.nan, math.nan, False, steps + 1, True, worst)
         if adaptive:
             scale = rtol * max(abs(omega), abs(omega + d_omega), abs(theta), 1e-300) + 1e-300
             ratio = error / scale

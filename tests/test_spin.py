@@ -337,6 +337,15 @@ def test_a_plot_with_a_stepping_method_steps_through_the_motion_once(monkeypatch
         assert omega == pytest.approx(exact, abs=1e-9)
 
 
+def test_a_stepper_that_blows_up_says_so_and_nothing_else():
+    """Found by the fuzz suite (#9): with b = 1e9 and rk4 at dt = 10 ms (b·dt/I = 1e7 against a
+    limit of 2.785) ω reached ±inf within a step, and fsum raised on inf − inf (exit 1). Then a
+    note said that 'drag alone' never stops a wheel that friction stops."""
+    report = solve(1.0, Torques(friction=1.0, viscous=1e9), 10.0, until_omega=5.0, method="rk4", dt=0.01)
+    assert report.results["t_stop"].value is None and report.results["t_until"].value is None
+    assert len(report.notes) == 1 and "rk4 went unstable" in report.notes[0]
+
+
 def test_a_run_has_a_budget_of_steps_in_all():
     """About a second of stepping at most: rk4 may take 125,000 steps for its answers and plot."""
     fits = solve(1.0, Torques(viscous=0.1), 10.0, time=100.0, method="rk4", dt=1e-3)  # 100,000 steps

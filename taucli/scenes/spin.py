@@ -123,7 +123,7 @@ def solve(
             f"static friction holds the wheel at rest: |τ_drive| = {quantity_text(abs(torques.drive), 'N*m')} "
             f"does not exceed τ_f = {quantity_text(torques.holding, 'N*m')}"
         )
-    elif stop is None:
+    elif stop is None and not first.stops:  # (a stop that a stepper blew up before finding is said below)
         notes.append(_never_stops_note(torques, first))
     signed_stop = motion.signed_stop
     results["t_stop"] = Value(None if stop is None else stop[0], "s", "time until the wheel stops")
@@ -142,7 +142,7 @@ def solve(
         results["revs"] = Value(theta_t / TWO_PI, "rev", f"revolutions by t = {fmt(time)} s")
     if until_omega is not None:
         reached = motion.reach(until_omega)
-        if reached is None:
+        if reached is None and not evolver.unstable:
             notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
         results["t_until"] = Value(None if reached is None else reached[0], "s", f"time to reach ω = {fmt(until_omega)} rad/s")
         results["theta_until"] = Value(None if reached is None else reached[1], "rad", f"angle turned until ω = {fmt(until_omega)} rad/s")
