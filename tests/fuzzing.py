@@ -284,7 +284,22 @@ def _numbers(node):
 
 
 def run(vector: Vector, workdir: str) -> Outcome:
-    """Run the vector through taucli's entry point in this process; list what breaks the contract."""
+    """Run the vector through taucli's entry point in this process; list what breaks the contract.
+
+    A run over the time limit is run once more and judged by the faster of the two: taucli's work
+    for a vector is the same each time, so a hang repeats, while a stall of the machine (another
+    process, the disk) seldom does.
+    """
+    outcome = _run_once(vector, workdir)
+    if outcome.seconds > SECONDS and outcome.status != -1:
+        again = _run_once(vector, workdir)
+        if again.seconds < outcome.seconds:
+            outcome = again
+    _judge(vector, outcome)
+    return outcome
+
+
+def _run_once(vector: Vector, workdir: str) -> Outcome:
     from taucli.__main__ import main
 
     stdin, stdout, stderr = io.StringIO(vector.stdin), io.StringIO(), io.StringIO()
@@ -292,7 +307,6 @@ def run(vector: Vector, workdir: str) -> Outcome:
     signal.signal(signal.SIGALRM, _alarm)
     signal.setitimer(signal.ITIMER_REAL, 20 * SECONDS)
     start = time.perf_counter()
-    hung = False
     try:
         sys.argv, sys.stdin = ["taucli", vector.scene, *vector.args], stdin
         os.chdir(workdir)
@@ -302,7 +316,7 @@ def run(vector: Vector, workdir: str) -> Outcome:
             except SystemExit as err:  # main returns its status; an exit from inside is a finding
                 status = f"SystemExit({err.code!r})"
             except TookTooLong:
-                status, hung = "hung", True
+                status = f"hung: stopped after {20 * SECONDS:.0f} s"
             except BaseException as err:  # noqa: BLE001 - anything escaping main is a finding
                 import traceback
 
@@ -314,13 +328,17 @@ def run(vector: Vector, workdir: str) -> Outcome:
         os.chdir(saved[2])
     seconds = time.perf_counter() - start
     outcome = Outcome(status if isinstance(status, int) else -1, stdout.getvalue(), stderr.getvalue(), seconds)
-    problems = outcome.problems
     if not isinstance(status, int):
-        problems.append(f"status {status}")
-    elif status not in (0, 2):
-        problems.append(f"exit {status}: {outcome.err.strip()[:300]}")
-    if hung or seconds > SECONDS:
-        problems.append(f"took {seconds:.2f} s")
+        outcome.problems.append(f"status {status}")
+    return outcome
+
+
+def _judge(vector: Vector, outcome: Outcome) -> None:
+    problems = outcome.problems
+    if outcome.status not in (-1, 0, 2):  # -1: main did not return, already listed
+        problems.append(f"exit {outcome.status}: {outcome.err.strip()[:300]}")
+    if outcome.seconds > SECONDS:
+        problems.append(f"took {outcome.seconds:.2f} s")
     if "Traceback" in outcome.err or "Traceback" in outcome.out:
         problems.append("a traceback")
     if "\x1b[" in outcome.out or "\x1b[" in outcome.err:
@@ -333,7 +351,6 @@ def run(vector: Vector, workdir: str) -> Outcome:
             problems.append(f"not one error line: {outcome.err[:300]!r}")
     if outcome.status == 0:
         problems += _output_problems(vector, outcome.out)
-    return outcome
 
 
 def _output_problems(vector: Vector, out: str) -> list[str]:

@@ -49,6 +49,8 @@ FOUND = [
     Vector("spin-down", ["--inertia", "1kg*m^2", "--omega0", "10rad/s", "--friction", "1N*m", "--viscous", "0.01N*m*s", "--method", "rk4", "--dt", "0.01ms", "--jsonl"]),
     # exit 1: float ** overflowed in rk4 for I and ω₀ of 1e300 (now refused as out of range when read)
     Vector("spin-down", ["--inertia", "1e300kg*m^2", "--omega0", "1e300rad/s", "--friction", "6.5699540919324514e-80N*m", "--viscous", "0.5N*m*s", "--method", "rk4", "--dt", "10ms", "--json"]),
+    # exit 1: rk4 far past its stability limit reached inf − inf inside fsum (10,000-vector run)
+    Vector("spin-down", ["--inertia", "0.9999999999999999kg*m^2", "--omega0", "10rad/s", "--friction", "1N*m", "--viscous", "1e9N*m*s", "--method", "rk4", "--dt", "10ms"]),
 ]
 
 
