@@ -65,7 +65,8 @@ for line in sys.stdin:
         },
         "steps": [],
         "notes": ["g = 9.80665 m/s\u00b2 (standard gravity); --g to change it",
-                  "pulley taken as a uniform solid disc (I = \u00bdMR\u00b2); --pulley-shape ring for a thin ring"],
+                  "pulley taken as a uniform solid disc (I = \u00bdMR\u00b2); --pulley-shape ring for a thin ring",
+                  "the string taken not to slip on the pulley (a = \u03b1R): friction at the rim turns it"],
     }
     sys.stdout.write(encoder.encode(document) + "\n")
     sys.stdout.flush()
