@@ -315,7 +315,7 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive") -> 
     if value and not SMALLEST <= abs(value) <= LARGEST:
         raise InputError(
             option,
-            f"expected {_article(kind.name)} of {'' if sign == 'positive' else '0 or '}between 1e-40 and 1e40 {kind.si_unit} in size".replace("  ", " "),
+            f"expected {_article(kind.name)} {'' if sign == 'positive' else 'of 0 or '}between 1e-40 and 1e40 {kind.si_unit} in size".replace("  ", " "),
             example=kind.example, got=repr(text) if _is_number(text) else f"{text!r} = {value:g} {kind.si_unit}".rstrip(),
         )
     if sign == "positive" and value <= 0:
