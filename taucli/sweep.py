@@ -24,7 +24,7 @@ from taucli.report import Report, pretty_unit
 # Options whose values are names or files, not quantities: never read as a range or a list.
 NOT_QUANTITIES = frozenset({"shape", "axis", "method", "pulley_shape", "torque_profile", "out"})
 DEFAULT_POINTS = 50
-MAX_POINTS = 10_000
+MAX_POINTS = 10_000  # in all: a range's points times a list's values
 MAX_NOTES = 8  # distinct notes shown under a sweep's table
 # The result a range's chart shows unless --y names others.
 HEADLINE = {"inertia": "I", "spin-down": "alpha0", "atwood": "a", "rolling": "a", "impulse": "omega1"}
@@ -128,6 +128,10 @@ def find(given: Mapping[str, object], points: int | None) -> tuple[Swept | None,
         raise InputError("--points", "applies to a range (FROM..TO)", example="--inertia 0.5..4kg*m^2 --points 20")
     swept_range = _range(ranges[0], str(given[ranges[0]]), count) if ranges else None
     swept_list = _list(lists[0], str(given[lists[0]])) if lists else None
+    total = (len(swept_range.texts) if swept_range else 1) * (len(swept_list.texts) if swept_list else 1)
+    if total > MAX_POINTS:  # a range times a list: 10,000 × 10,000 would run for hours
+        option = (swept_list or swept_range).option
+        raise InputError(option, f"makes a sweep of {total:,} points, more than {MAX_POINTS:,} in all", hint="use fewer --points or a shorter list")
     return swept_range, swept_list
 
 

@@ -96,6 +96,9 @@ def test_alpha_against_inertia_for_two_torques_stays_a_factor_of_two_apart():
         (["atwood", "--m1", "1..2 m", "--points", "3"], ("--m1", "a mass", "point m1 = 1.0 m")),
         (["inertia", "disc", "--mass", "1kg", "--radius", "1m", "--plot"], ("--plot", "motion in time")),
         (["atwood", "--m1", "1..2kg", "--batch"], ("--m1", "--batch")),
+        # a range times a list: 10,000 × 10,000 points would run for hours (#9)
+        (["atwood", "--m1", "1..2kg", "--points", "10000", "--m2", ",".join(["1kg"] * 10000)], ("--m2", "sweep of 100,000,000 points", "more than 10,000 in all")),
+        (["atwood", "--m1", ",".join(["1kg"] * 10001)], ("--m1", "sweep of 10,001 points")),
     ],
 )
 def test_sweep_mistakes_exit_2_with_one_line(args, fragments):
