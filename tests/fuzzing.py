@@ -80,6 +80,7 @@ def quantity_texts(metavar: str) -> st.SearchStrategy[str]:
     sweep = st.one_of(
         st.tuples(sane, st.just(".."), sane).map("".join),
         st.lists(sane, min_size=2, max_size=4).map(",".join),
+        st.tuples(sane, st.integers(2, 20_000)).map(lambda pair: ",".join([pair[0]] * pair[1])),  # a list as long as a command line allows
         st.tuples(numbers, st.just(".."), numbers, st.sampled_from(units)).map("".join),
     )
     hostile = st.one_of(
