@@ -25,9 +25,9 @@ from taucli.report import Report, pretty_unit
 NOT_QUANTITIES = frozenset({"shape", "axis", "method", "pulley_shape", "torque_profile", "out"})
 DEFAULT_POINTS = 50
 # Points in all, a range's points times a list's values: enough for any chart (a terminal has
-# ~100 columns, a file 700 pixels), and a human table of 500 rows is drawn in under a second.
-# More scenes than that are what --batch is for: it streams them.
-MAX_POINTS = 500
+# ~100 columns, a file 700 pixels). rich lays out a wide table at 1.6-2.8 ms a row here, so 200
+# rows keep the slowest human view (impulse's) near 0.4 s. More scenes are what --batch is for.
+MAX_POINTS = 200
 MAX_NOTES = 8  # distinct notes shown under a sweep's table
 # The result a range's chart shows unless --y names others.
 HEADLINE = {"inertia": "I", "spin-down": "alpha0", "atwood": "a", "rolling": "a", "impulse": "omega1"}
