@@ -26,7 +26,7 @@ NOT_QUANTITIES = frozenset({"shape", "axis", "method", "pulley_shape", "torque_p
 DEFAULT_POINTS = 50
 # Points in all, a range's points times a list's values: enough for any chart (a terminal has
 # ~100 columns, a file 700 pixels). rich lays out a wide table at 1.6-2.8 ms a row here, so 200
-# rows keep the slowest human view (impulse's) near 0.4 s. More scenes are what --batch is for.
+# rows keep the slowest human view (impulse's) at 0.56 s. More scenes are what --batch is for.
 MAX_POINTS = 200
 MAX_NOTES = 8  # distinct notes shown under a sweep's table
 # The result a range's chart shows unless --y names others.
