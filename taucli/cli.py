@@ -803,7 +803,8 @@ def app_for(args: list[str]):
     """
     import copy
 
-    name = next((word for word in args if not word.startswith("-")), None)
+    at = _command_at(args)
+    name = args[at] if at < len(args) else None
     chosen = [info for info in app.registered_commands if (info.name or info.callback.__name__.replace("_", "-")) == name]
     if not chosen:
         return app
@@ -818,10 +819,15 @@ def _reader_gone() -> int:
     return int(ExitStatus.OK)
 
 
+def _command_at(args: list[str]) -> int:
+    """Where the command's name is in ``args``: the first word that is not an option (taucli's
+    own options take no value), or len(args) when there is none."""
+    return next((i for i, word in enumerate(args) if not word.startswith("-")), len(args))
+
+
 def _debugging(args: list[str]) -> bool:
     """--debug before the command's name (taucli's own option), or TAUCLI_DEBUG in the environment."""
-    own = args[: next((i for i, word in enumerate(args) if not word.startswith("-")), len(args))]
-    return "--debug" in own or bool(os.environ.get("TAUCLI_DEBUG"))
+    return "--debug" in args[: _command_at(args)] or bool(os.environ.get("TAUCLI_DEBUG"))
 
 
 def main(argv: list[str] | None = None) -> int:
