@@ -193,11 +193,15 @@ def check_file(path: str) -> None:
         with open(path, "ab"):
             pass
     except OSError as err:
-        raise InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}") from None
+        raise _unwritable(path, err) from None
     if not existed:
         os.remove(path)
     if importlib.util.find_spec("matplotlib") is None:
         raise InputError("--out", "needs matplotlib to draw files", hint="pip install 'taucli[plot]'")
+
+
+def _unwritable(path: str, err: OSError) -> InputError:
+    return InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}")
 
 
 def write_file(chart: Chart, path: str) -> None:
@@ -227,6 +231,6 @@ def write_file(chart: Chart, path: str) -> None:
     try:
         figure.savefig(path)
     except OSError as err:  # the folder was checked first; the file itself may still refuse
-        raise InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}") from None
+        raise _unwritable(path, err) from None
     finally:
         pyplot.close(figure)
