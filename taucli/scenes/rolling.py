@@ -239,16 +239,12 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
     else:
         t_roll = abs(slip) * k2 / (mu_k * g * (1 + k2))
         d_roll = (v0 + v_roll) / 2 * t_roll  # uniform deceleration: the mean speed times the time
-    results: dict[str, Value] = {
-        "t_roll": Value(t_roll, "s", "time until it rolls without slipping"),
-        "d_roll": Value(d_roll, "m", "distance skidded until then"),
-        "v_roll": Value(v_roll, "m/s", "speed once it rolls"),
-        "omega_roll": Value(None if radius is None else v_roll / radius, "rad/s", "angular velocity once it rolls"),
-    }
+    energy_lost = None
     if mass is not None:
         before = 0.5 * mass * (v0 * v0 + k2 * spin_speed * spin_speed)
         after = 0.5 * mass * v_roll * v_roll * (1 + k2)
-        results["energy_lost"] = Value(before - after, "J", "kinetic energy turned to heat by sliding friction")
+        energy_lost = before - after
+    results = _skid_results(t_roll, d_roll, v_roll, None if radius is None else v_roll / radius, energy_lost)
     steps = [
         Step("While it skids, kinetic friction acts against the slip", "m dv/dt = −μₖ m g·sgn s,  I dω/dt = +μₖ m g R·sgn s,  s = v − Rω", "", "",
              "friction slows the centre and spins the ball up (or the reverse, for backspin)"),
@@ -262,16 +258,22 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
     return Report("rolling", model, "closed form", results, steps, notes, trajectory=deferred(_skid_trajectory, v0, v_roll, t_roll))
 
 
+def _skid_results(t_roll, d_roll, v_roll, omega_roll, energy_lost: float | None) -> dict[str, Value]:
+    """The skidding ball's results (energy_lost only when the mass is known)."""
+    results = {
+        "t_roll": Value(t_roll, "s", "time until it rolls without slipping"),
+        "d_roll": Value(d_roll, "m", "distance skidded until then"),
+        "v_roll": Value(v_roll, "m/s", "speed once it rolls"),
+        "omega_roll": Value(omega_roll, "rad/s", "angular velocity once it rolls"),
+    }
+    if energy_lost is not None:
+        results["energy_lost"] = Value(energy_lost, "J", "kinetic energy turned to heat by sliding friction")
+    return results
+
+
 def _skids_forever(roller: Roller, v0: float, spin_speed: float) -> Report:
     """μk = 0 with v ≠ Rω: no force at the contact, so v and ω never change and it never rolls."""
-    results: dict[str, Value] = {
-        "t_roll": Value(None, "s", "time until it rolls without slipping"),
-        "d_roll": Value(None, "m", "distance skidded until then"),
-        "v_roll": Value(None, "m/s", "speed once it rolls"),
-        "omega_roll": Value(None, "rad/s", "angular velocity once it rolls"),
-    }
-    if roller.mass is not None:
-        results["energy_lost"] = Value(0.0, "J", "kinetic energy turned to heat by sliding friction")
+    results = _skid_results(None, None, None, None, None if roller.mass is None else 0.0)
     notes = [f"μk = 0: no friction at the contact, so it skids for ever at v = {quantity_text(v0, 'm/s')} with the slip it started with, and never rolls"]
     steps = [
         Step("With no friction nothing acts at the contact", "m dv/dt = 0,  I dω/dt = 0", "", "",
