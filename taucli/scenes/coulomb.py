@@ -136,16 +136,12 @@ class Evolver:
             )
         return solution
 
-    def state(self, phase: Phase, t: float) -> tuple[float, float]:
-        """(ω, θ) at time t within the phase (before its stop)."""
+    def state(self, phase: Phase, t: float, start: tuple[float, float, float] | None = None) -> tuple[float, float]:
+        """(ω, θ) at time t within the phase (before its stop); a stepping method steps from the
+        phase's start, or on from ``start`` = (t₀, ω, θ) with t₀ ≤ t."""
         if self.method.name == "exact":
             return phase.closed.omega(t), phase.closed.theta(t)
-        solution = self._run(phase, t, None)
-        return solution.omega, solution.theta
-
-    def state_after(self, phase: Phase, start: tuple[float, float, float], t: float) -> tuple[float, float]:
-        """(ω, θ) at time t ≥ start's t within the phase, stepping on from start = (t, ω, θ)."""
-        t0, omega0, theta0 = start
+        t0, omega0, theta0 = start or (0.0, phase.closed.omega0, 0.0)
         if t == t0:
             return omega0, theta0
         solution = self._run(phase, t - t0, None, omega_start=omega0)
@@ -215,13 +211,11 @@ class Motion:
         number, phase, offset = (1, self.first, 0.0) if stop is None or t <= stop[0] else (2, second, stop[0])
         if phase is None:
             return 0.0, direction * stop[1]
-        if resume is None or self.evolver.method.name == "exact":
+        if resume is None:
             speed, distance = self.evolver.state(phase, t - offset)
         else:
-            start = resume.get(number, (0.0, phase.closed.omega0, 0.0))
-            if t - offset < start[0]:
-                start = (0.0, phase.closed.omega0, 0.0)
-            speed, distance = self.evolver.state_after(phase, start, t - offset)
+            start = resume.get(number)
+            speed, distance = self.evolver.state(phase, t - offset, start if start and start[0] <= t - offset else None)
             resume[number] = (t - offset, speed, distance)
         if number == 1:
             return direction * speed, direction * distance
