@@ -24,7 +24,12 @@ class Run:
     err: str
 
     def json(self) -> dict:
-        return json.loads(self.out, parse_constant=_reject_constant)
+        return strict_json(self.out)
+
+
+def strict_json(text: str):
+    """json.loads that refuses NaN, Infinity and -Infinity, as strict JSON does."""
+    return json.loads(text, parse_constant=_reject_constant)
 
 
 def _reject_constant(name: str):

@@ -28,6 +28,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from conftest import strict_json
 from hypothesis import strategies as st
 
 SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse")
@@ -266,13 +267,6 @@ def _alarm(signum, frame):
     raise TookTooLong()
 
 
-def _strict(text: str):
-    def reject(name):
-        raise ValueError(f"non-strict JSON constant {name}")
-
-    return json.loads(text, parse_constant=reject)
-
-
 def _numbers(node):
     if isinstance(node, dict):
         for value in node.values():
@@ -363,7 +357,7 @@ def _output_problems(vector: Vector, out: str) -> list[str]:
             return [f"--get printed {bad}"] if bad else []
         return []
     try:
-        documents = [_strict(line) for line in out.splitlines()] if ("--batch" in args or "--jsonl" in args) else [_strict(out)]
+        documents = [strict_json(line) for line in out.splitlines()] if ("--batch" in args or "--jsonl" in args) else [strict_json(out)]
     except ValueError as err:
         return [f"not strict JSON: {err}: {out[:200]!r}"]
     if "--batch" in args and len(documents) != len(vector.stdin.splitlines()):
