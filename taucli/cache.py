@@ -1,10 +1,8 @@
-"""What taucli keeps between runs: its cache folder, pint's SI factors, typer's help texts.
+"""What taucli keeps between runs: its cache folder and pint's SI factors.
 
 A one-off run spends most of its time importing pint and loading its registry (~150 ms) to read
 "4 kg". pint's answer for a unit text ("kg", "rpm", "N*m") never changes for one pint and one
 taucli, so it is kept in ``units-*.json`` and pint is asked again only for a text not seen before.
-Likewise the help typer renders for a command at a terminal width (``help-*.json``): importing
-typer alone takes longer than printing a help text should.
 
 Nothing here may cost an answer: a missing, unreadable, corrupt, stale or read-only cache is
 ignored (and rewritten when it can be). The folder is ``$TAUCLI_CACHE_DIR`` if set (empty: keep
@@ -52,7 +50,7 @@ def stamp(*origins: str | None) -> str:
 
 
 def package_file(name: str) -> str | None:
-    """The file a package is imported from (found, not imported): pint's or typer's __init__.py."""
+    """The file a package is imported from (found, not imported): pint's __init__.py."""
     import importlib.util
 
     try:
@@ -127,9 +125,3 @@ def _no_constants(name: str):
 def unit_factors() -> Store:
     """(unit text, kind) -> [SI factor, power of Hz]: pint's answers for this pint and units.py."""
     return Store(folder(), "units", lambda: stamp(own_file("units.py"), package_file("pint")))
-
-
-@lru_cache(maxsize=1)
-def help_texts() -> Store:
-    """(command, width) -> the help typer rendered, for this typer and cli.py."""
-    return Store(folder(), "help", lambda: stamp(own_file("cli.py"), own_file("names.py"), package_file("typer")))

@@ -1,49 +1,23 @@
-"""Shell completion scripts for bash, zsh and fish, generated from the Typer app itself.
+"""Shell completion scripts for bash, zsh and fish, generated from the commands' tables.
 
 The scripts are static: pressing TAB runs the shell's own code and never starts Python. What
-each option takes comes from the app (its commands, options, metavars and help) and from
-names.py (shapes, axes, methods). A quantity option's metavar names its kind (MASS, TORQUE,
-...); after a number, TAB offers that number with each of the kind's common units (units.KINDS):
-``--m1 4`` TAB gives 4kg 4g 4lb 4oz 4tonne. completions/ holds the output, and
-tests/test_completions.py fails when it differs from a fresh generation.
+each option takes comes from its table entry: a quantity's kind (after a number, TAB offers
+that number with each of the kind's common units, units.KINDS: ``--m1 4`` TAB gives 4kg 4g 4lb
+4oz 4tonne), a choice's words, a file, or the command's result names (after --get and --y).
+completions/ holds the output, and tests/test_completions.py fails when it differs from a fresh
+generation.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from taucli import names
+from taucli import table
+from taucli.names import SHELLS
 from taucli.units import KINDS
 
-SHELLS = ("bash", "zsh", "fish")
 FILE_NAMES = {"bash": "taucli.bash", "zsh": "_taucli", "fish": "taucli.fish"}
-
-# The metavar of a quantity option names its kind.
-METAVAR_KINDS = {
-    "MASS": "mass",
-    "LENGTH": "length",
-    "ANGLE": "angle",
-    "TIME": "time",
-    "OMEGA": "angular velocity",
-    "TORQUE": "torque",
-    "I": "moment of inertia",
-    "FORCE": "force",
-    "ACCEL": "acceleration",
-    "SPEED": "velocity",
-    "B": "viscous coefficient",
-    "K": "drag coefficient",
-}
-ALL_AXES = tuple(dict.fromkeys(axis for axes in names.SHAPE_AXES.values() for axis in axes))
-# (command, option) or option -> the words it takes.
-CHOICES = {
-    "--shape": names.SHAPE_NAMES,
-    "--axis": ALL_AXES,
-    "--pulley-shape": names.PULLEY_SHAPES,
-    "--scene": names.BENCH_SCENES,
-    ("spin-down", "--method"): names.METHOD_NAMES,
-    ("impulse", "--method"): names.QUADRATURE_NAMES,
-}
-POSITIONAL_CHOICES = {"inertia": names.SHAPE_NAMES, "rolling": names.ROLLING_BODIES, "completions": SHELLS}
+RESULT_NAMES = ("get", "y")  # options whose value is one of the command's results
 
 
 @dataclass(frozen=True)
@@ -67,39 +41,42 @@ class Command:
 
 
 def spec() -> tuple[tuple[Option, ...], tuple[Command, ...]]:
-    """taucli's own options, and each command with its options, read off the Typer app."""
-    import typer.main
+    """taucli's own options, and each command with its options, read off the commands' tables."""
+    from taucli.options import COMMANDS
+    from taucli.options.tools import ROOT
 
-    from taucli.cli import app
-
-    group = typer.main.get_command(app)
-    return _options("", group.params), tuple(
-        Command(name, _sentence(command.get_short_help_str(limit=60)), _options(name, command.params), POSITIONAL_CHOICES.get(name, ()))
-        for name, command in group.commands.items()
+    return _options(ROOT, ROOT.options), tuple(
+        Command(
+            command.name,
+            _sentence(command.summary),
+            _options(command, (*command.options, *command.output)),
+            next((option.choices for option in command.options if option.positional), ()),
+        )
+        for command in COMMANDS.values()
     )
 
 
-def _options(command: str, params) -> tuple[Option, ...]:
+def _options(command: table.Command, options) -> tuple[Option, ...]:
     found = [Option("--help", "Show this message and exit.")]
-    for param in params:
-        if param.param_type_name != "option":
+    for option in options:
+        if option.positional:
             continue
-        flag = next(opt for opt in param.opts if opt.startswith("--"))
-        metavar = param.metavar or ""
-        if param.is_flag:
-            found.append(Option(flag, _sentence(param.help)))
+        if not option.takes_value:
+            found.append(Option(option.flag, _sentence(option.help_text())))
             continue
-        kind = METAVAR_KINDS.get(metavar)
+        choices = option.choices
+        if option.name in RESULT_NAMES and command.results:
+            choices = tuple(result.key for result in command.results)
         found.append(
             Option(
-                flag,
-                _sentence(param.help),
+                option.flag,
+                _sentence(option.help_text()),
                 takes_value=True,
-                repeatable=param.multiple,
-                label=(kind or metavar.split()[0].strip('"')).lower(),
-                choices=tuple(CHOICES.get((command, flag), CHOICES.get(flag, ()))),
-                units=KINDS[kind].common_units if kind else (),
-                files=metavar == "FILE",
+                repeatable=option.repeatable,
+                label=(option.kind if option.is_quantity and not option.metavar else option.shown_metavar.split()[0].strip('"')).lower(),
+                choices=choices,
+                units=KINDS[option.kind].common_units if option.is_quantity else (),
+                files=option.kind == table.FILE,
             )
         )
     return tuple(sorted(found, key=lambda option: option.flag == "--help"))

@@ -6,6 +6,8 @@ Every error carries structured fields and builds its one-line message in ``__str
 
 from __future__ import annotations
 
+import re
+from collections.abc import Callable
 from enum import IntEnum
 
 
@@ -42,6 +44,8 @@ class InputError(TaucliError, ValueError):
         hint: str | None = None,
     ) -> None:
         super().__init__(option, expected, got, example, hint)
+        if option.startswith("{") and option.endswith("}") and _PARAMETER.fullmatch(option[1:-1]):
+            option = option[1:-1]  # "{m1}": a parameter's name written as the texts write one
         self.option = option
         self.expected = expected
         self.got = got
@@ -49,16 +53,33 @@ class InputError(TaucliError, ValueError):
         self.hint = hint
 
     def __str__(self) -> str:
+        return self.spelled(lambda name: name)
+
+    def spelled(self, spell: Callable[[str], str]) -> str:
+        """The one-line message, each parameter named as ``spell`` names it.
+
+        The option, and each {name} in the texts, is a parameter's name (``pulley_mass``); the
+        command line spells it as its flag (--pulley-mass), the Python API and batch as it is.
+        """
+        from taucli.table import spelled
+
+        def name(text: str) -> str:
+            return spelled(text, spell, lambda word: word)
+
+        option = spell(self.option) if _PARAMETER.fullmatch(self.option) else name(self.option)
         # "--mass is required ..." reads as a sentence; "--mass: expected a mass" as a label.
         joiner = " " if self.expected.split(" ", 1)[0] in _VERBS else ": "
-        message = f"{self.option}{joiner}{self.expected}" if self.option else self.expected
+        message = f"{option}{joiner}{name(self.expected)}" if option else name(self.expected)
         if self.example:
-            message += f" (e.g. {self.example})"
+            message += f" (e.g. {name(self.example)})"
         if self.got is not None:
             message += f", got {self.got}"
         if self.hint:
-            message += f"; {self.hint}"
+            message += f"; {name(self.hint)}"
         return message
+
+
+_PARAMETER = re.compile(r"[a-z][a-z0-9_]*")
 
 
 def out_of_range() -> InputError:

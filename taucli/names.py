@@ -24,4 +24,4 @@ METHOD_NAMES = ("auto", "exact", "euler", "rk4", "rk45")  # "auto", "exact", *nu
 QUADRATURE_NAMES = ("auto", "trapezoid", "simpson")  # scenes.impulse rules
 PULLEY_SHAPES = ("disc", "ring")  # scenes.atwood.Pulley.SHAPE_FACTORS
 BENCH_SCENES = ("spin-down", "impulse")  # bench.SCENES
-COMMAND_NAMES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "bench", "completions")  # cli.app's commands
+SHELLS = ("bash", "zsh", "fish")  # completions.FILE_NAMES

@@ -20,17 +20,14 @@ from dataclasses import dataclass
 
 from taucli.errors import InputError
 from taucli.report import Report, pretty_unit
+from taucli.table import Command
 
-# Options whose values are names or files, not quantities: never read as a range or a list.
-NOT_QUANTITIES = frozenset({"shape", "axis", "method", "pulley_shape", "torque_profile", "out"})
 DEFAULT_POINTS = 50
 # Points in all, a range's points times a list's values: enough for any chart (a terminal has
 # ~100 columns, a file 700 pixels). rich lays out a wide table at 1.6-2.8 ms a row here, so 200
 # rows keep the slowest human view (impulse's) at 0.56 s. More scenes are what --batch is for.
 MAX_POINTS = 200
 MAX_NOTES = 8  # distinct notes shown under a sweep's table
-# The result a range's chart shows unless --y names others.
-HEADLINE = {"inertia": "I", "spin-down": "alpha0", "atwood": "a", "rolling": "a", "impulse": "omega1"}
 
 _NUMBER_THEN_UNIT = re.compile(r"\s*(?P<number>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?P<unit>.*?)\s*")
 
@@ -48,7 +45,8 @@ class Swept:
 
     @property
     def option(self) -> str:
-        return "--" + self.name.replace("_", "-")
+        """The option's name as a message names it ({pulley_mass}: the surface spells it)."""
+        return "{" + self.name + "}"
 
     def label(self, index: int) -> str:
         return f"{self.name} = {pretty_unit(self.texts[index])}"
@@ -72,7 +70,7 @@ def _shared(option: str, items: list[str], given: str) -> tuple[list[str], tuple
 
 
 def _range(name: str, text: str, points: int) -> Swept:
-    option = "--" + name.replace("_", "-")
+    option = "{" + name + "}"
     ends = text.split("..")
     if len(ends) != 2:
         raise InputError(option, "expected a range FROM..TO", example=f"{option} 0.5..4", got=repr(text))
@@ -92,7 +90,7 @@ _THOUSANDS = re.compile(r"\s*[-+]?\d{1,3}(?:,\d{3})+(?:\.\d*)?\s*[^,]*")
 
 
 def _list(name: str, text: str) -> Swept:
-    option = "--" + name.replace("_", "-")
+    option = "{" + name + "}"
     if _DECIMAL_COMMA.fullmatch(text) or _THOUSANDS.fullmatch(text):
         raise InputError(
             option,
@@ -104,11 +102,12 @@ def _list(name: str, text: str) -> Swept:
     return Swept(name, text, tuple(texts), numbers, unit, False)
 
 
-def marked(given: Mapping[str, object]) -> tuple[list[str], list[str]]:
+def marked(command: Command, given: Mapping[str, object]) -> tuple[list[str], list[str]]:
     """The names of the quantity options ``given`` as a range (FROM..TO), and as a list (A,B)."""
     ranges, lists = [], []
     for name, value in given.items():
-        if name in NOT_QUANTITIES or not isinstance(value, str):
+        option = command.option(name)
+        if option is None or not option.sweepable or not isinstance(value, str):
             continue
         if ".." in value:
             ranges.append(name)
@@ -117,24 +116,24 @@ def marked(given: Mapping[str, object]) -> tuple[list[str], list[str]]:
     return ranges, lists
 
 
-def find(given: Mapping[str, object], points: int | None) -> tuple[Swept | None, Swept | None]:
+def find(command: Command, given: Mapping[str, object], points: int | None) -> tuple[Swept | None, Swept | None]:
     """The range and the list among the options ``given`` (None where there is none)."""
-    ranges, lists = marked(given)
+    ranges, lists = marked(command, given)
     for found, what, example in ((ranges, "range", "--inertia 0.5..4kg*m^2"), (lists, "list", "--torque 3N*m,6N*m")):
         if len(found) > 1:
-            options = " and ".join("--" + name.replace("_", "-") for name in found)
+            options = " and ".join("{" + name + "}" for name in found)
             raise InputError(options, f"are each a {what}: a sweep takes at most one range and one list", example=example)
     count = DEFAULT_POINTS if points is None else points
     if not 2 <= count <= MAX_POINTS:
-        raise InputError("--points", f"expected a whole number from 2 to {MAX_POINTS:,}", example="--points 50", got=str(count))
+        raise InputError("points", f"expected a whole number from 2 to {MAX_POINTS:,}", example="{points} 50", got=str(count))
     if points is not None and not ranges:
-        raise InputError("--points", "applies to a range (FROM..TO)", example="--inertia 0.5..4kg*m^2 --points 20")
+        raise InputError("points", "applies to a range (FROM..TO)", example="--inertia 0.5..4kg*m^2 {points} 20")
     swept_range = _range(ranges[0], str(given[ranges[0]]), count) if ranges else None
     swept_list = _list(lists[0], str(given[lists[0]])) if lists else None
     total = (len(swept_range.texts) if swept_range else 1) * (len(swept_list.texts) if swept_list else 1)
     if total > MAX_POINTS:  # a range times a list of as many values would otherwise run for hours
         option = (swept_list or swept_range).option
-        raise InputError(option, f"makes a sweep of {total:,} points, more than {MAX_POINTS:,} in all", hint="use fewer --points or a shorter list, or --batch for many scenes")
+        raise InputError(option, f"makes a sweep of {total:,} points, more than {MAX_POINTS:,} in all", hint="use fewer {points} or a shorter list, or {batch} for many scenes")
     return swept_range, swept_list
 
 
@@ -148,7 +147,7 @@ class Point:
 
 
 def solve_all(
-    swept_range: Swept | None, swept_list: Swept | None, given: Mapping[str, object], solve: Callable[[dict], Report]
+    command: Command, swept_range: Swept | None, swept_list: Swept | None, given: Mapping[str, object], solve: Callable[[dict], Report]
 ) -> list[Point]:
     """Each combination of the range's and the list's values, list outermost; a bad point names itself."""
     outer = range(len(swept_list.texts)) if swept_list else [None]
@@ -209,12 +208,13 @@ def range_chart(points: list[Point], swept_range: Swept, swept_list: Swept | Non
 def chart_names(points: list[Point], y: list[str]) -> list[str]:
     """The results a range's chart shows: --y, else the scene's headline result."""
     from taucli.errors import did_you_mean
+    from taucli.options import scene
 
     results = points[0].report.results
-    names = y or [HEADLINE[points[0].report.scene]]
+    names = y or [scene(points[0].report.scene).headline]
     for name in names:
         if name not in results:
-            raise InputError("--y", f"expected the name of a result of {points[0].report.scene}: {', '.join(results)}", got=repr(name), hint=did_you_mean(name, results))
+            raise InputError("y", f"expected the name of a result of {points[0].report.scene}: {', '.join(results)}", got=repr(name), hint=did_you_mean(name, results))
     return names
 
 
@@ -270,7 +270,7 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
     _, colour = terminal_style(stream)
     console = Console(file=stream, highlight=False, emoji=False, color_system="auto" if colour else None, no_color=not colour)
     first = points[0].report
-    what = " × ".join(f"{s.option} {s.given} ({len(s.texts)} values)" for s in reversed(swept))
+    what = " × ".join(f"--{s.name.replace('_', '-')} {s.given} ({len(s.texts)} values)" for s in reversed(swept))
     console.print(Text.assemble((first.scene, "bold"), f": {what}"))
     models = dict.fromkeys(p.report.model for p in points)
     console.print(Text(f"model: {first.model}" if len(models) == 1 else f"model: varies ({len(models)} kinds; see --json)", style="dim"))

@@ -139,13 +139,12 @@ class Vector:
 
 @functools.lru_cache(maxsize=None)
 def command_options(scene: str) -> list[tuple[str, str | None, bool]]:
-    """(flag or "" for the positional, metavar, is_flag) of each parameter of the scene's command."""
-    import typer
+    """(flag or "" for the positional, metavar, is_flag) of each option in the scene's table."""
+    from taucli.options import SCENES
+    from taucli.table import FLAG
 
-    from taucli import cli
-
-    command = typer.main.get_command(cli.app).commands[scene]
-    return [("" if p.param_type_name == "argument" else p.opts[0], p.metavar, bool(getattr(p, "is_flag", False))) for p in command.params]
+    command = SCENES[scene]
+    return [("" if o.positional else o.flag, o.shown_metavar, o.kind == FLAG) for o in (*command.options, *command.output)]
 
 
 # The options a scene needs to get past "required", included more often than the rest.

@@ -50,14 +50,15 @@ def test_an_unknown_shell_is_a_usage_error():
 def test_every_option_of_every_command_is_offered():
     import typer.main
 
-    from taucli.cli import app
+    from taucli.cli import Environment, build_app
+    from taucli.options import COMMANDS
 
     _, commands = completions.spec()
     offered = {command.name: {option.flag for option in command.options} for command in commands}
-    for name, command in typer.main.get_command(app).commands.items():
+    for name, command in typer.main.get_command(build_app(Environment())).commands.items():
         flags = {opt for param in command.params if param.param_type_name == "option" for opt in param.opts}
         assert flags | {"--help"} == offered[name]
-    assert tuple(offered) == names.COMMAND_NAMES
+    assert tuple(offered) == tuple(COMMANDS)
 
 
 # --- in the real shells -------------------------------------------------------------------

@@ -60,11 +60,3 @@ def test_the_names_offered_match_the_tables_they_stand_for():
     assert names.QUADRATURE_NAMES == ("auto", *numerics.StreamingQuadrature.RULES)
     assert names.PULLEY_SHAPES == tuple(Pulley.SHAPE_FACTORS)
     assert names.BENCH_SCENES == tuple(bench.SCENES)
-
-
-def test_the_command_names_are_the_apps_commands():
-    import typer.main
-
-    from taucli import cli, names
-
-    assert names.COMMAND_NAMES == tuple(typer.main.get_command(cli.app).commands)

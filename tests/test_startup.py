@@ -39,37 +39,19 @@ def _top(modules: set[str]) -> set[str]:
     return {name.split(".")[0] for name in modules}
 
 
-@pytest.mark.parametrize("argv", [["--help"], ["atwood", "--help"], ["inertia", "--help"], ["--version"]])
-def test_help_imports_no_solver_no_units_no_rich_no_pydantic(argv, tmp_path):
+@pytest.mark.parametrize("argv", [["--help"], ["atwood", "--help"], ["inertia", "-h"], ["spin-down", "--omega0", "3", "--help"]])
+def test_help_is_written_from_the_tables_without_typer(argv, tmp_path):
+    """No typer, click, pint, rich or pydantic, no solver, and nothing kept in a cache."""
     loaded = _modules_after(argv, {"TAUCLI_CACHE_DIR": str(tmp_path)})
+    assert not _top(loaded) & {"typer", "click", "pint", "rich", "pydantic"}
+    assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.numerics", "taucli.cli"))}
+    assert not list(tmp_path.iterdir())
+
+
+def test_version_imports_no_solver_no_units_no_rich_no_pydantic(tmp_path):
+    loaded = _modules_after(["--version"], {"TAUCLI_CACHE_DIR": str(tmp_path)})
     assert not _top(loaded) & {"pint", "rich", "pydantic"}
-    assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.units", "taucli.numerics"))}
-
-
-@pytest.mark.parametrize("argv", [["--help"], ["spin-down", "--help"]])
-def test_a_repeat_help_imports_not_even_typer(argv, tmp_path):
-    env = {"TAUCLI_CACHE_DIR": str(tmp_path)}
-    assert "typer" in _top(_modules_after(argv, env))
-    assert not _top(_modules_after(argv, env)) & {"typer", "click", "pint", "rich", "pydantic"}
-
-
-@pytest.mark.parametrize("columns", ["60", "100"])
-def test_a_help_from_the_cache_is_the_help_typer_renders(columns, tmp_path):
-    env = {"TAUCLI_CACHE_DIR": str(tmp_path), "COLUMNS": columns}
-    rendered = subprocess.run(
-        [sys.executable, "-c", "import sys; from taucli.cli import main; sys.exit(main(['rolling', '--help']))"],
-        capture_output=True, text=True, env={**os.environ, **env},
-    ).stdout  # fmt: skip
-    first, again = (run_taucli("rolling", "--help", env=env) for _ in range(2))
-    assert first.out == again.out == rendered
-    assert first.code == again.code == 0
-    (help_file,) = tmp_path.glob("help-*.json")
-    stored = json.loads(help_file.read_text())
-    assert stored["entries"] == {f"rolling|{columns}": rendered}
-    stored["stamp"] = "an older typer"
-    stored["entries"][f"rolling|{columns}"] = "stale help"
-    help_file.write_text(json.dumps(stored))
-    assert run_taucli("rolling", "--help", env=env).out == rendered
+    assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.numerics"))}
 
 
 def test_a_repeat_computation_imports_neither_pint_nor_pydantic(tmp_path):

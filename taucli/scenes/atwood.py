@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 from taucli.errors import InputError
 from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
+from taucli.scenes.assumed import Assumed
 from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
 
 HANGING = math.pi / 2
@@ -328,3 +329,34 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
     if pulley.radius is not None:
         steps.append(Step("Angular acceleration of the pulley", "α = a/R", f"{fmt(a)} / {fmt(pulley.radius)}", quantity_text(a / pulley.radius, "rad/s**2"), "the string does not slip on the rim"))
     return steps
+
+
+def atwood(
+    *,
+    m1: float | None = None,
+    m2: float | None = None,
+    pulley_mass: float | None = None,
+    pulley_radius: float | None = None,
+    pulley_shape: str | None = None,
+    pulley_inertia: float | None = None,
+    axle_friction: float | None = None,
+    incline: float | None = None,
+    mu_k: float | None = None,
+    mu_s: float | None = None,
+    g: float | None = None,
+    v0: float | None = None,
+    distance: float | None = None,
+    time: float | None = None,
+) -> Report:
+    """``taucli atwood``: m2 hangs unless --incline puts it on a slope; the pulley is massless
+    unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia."""
+    if m1 is None:
+        raise InputError("m1", "is required", example="{m1} 4kg")
+    assumed = Assumed()
+    if m2 is None:
+        assumed.notes.append("no --m2: a single mass on a string wound on the pulley")
+    pulley = Pulley(pulley_mass or 0.0, pulley_radius, pulley_shape, pulley_inertia, axle_friction or 0.0)
+    slope = Slope(HANGING if incline is None else incline, mu_k or 0.0, mu_s)
+    gravity = assumed.gravity(g)
+    report = solve(m1, m2 or 0.0, pulley, gravity, slope=slope, v0=v0 or 0.0, distance=distance, time=time)
+    return assumed.applied(report)

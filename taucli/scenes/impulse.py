@@ -14,6 +14,7 @@ from collections.abc import Iterable, Sequence
 from taucli.errors import InputError
 from taucli.numerics import StreamingQuadrature
 from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
+from taucli.scenes.assumed import Assumed
 
 BRIEF_BLOW = 0.1  # s: a blow this short is remembered by its impulse alone
 SAMPLES_SHOWN = 10_000  # ω at the samples is reported for profiles up to this many rows
@@ -222,3 +223,38 @@ def solve_profile(
     points = tuple((sample - start, torque_at, omega_at) for sample, torque_at, omega_at in plotted)
     note = "" if stride == 1 else f"plotted at every {stride}th sample"
     return Report("impulse", model, chosen, results, steps, notes, {}, tables, deferred(Trajectory, CURVES, duration, points=points, note=note))
+
+
+def impulse(
+    *,
+    omega0: float | None = None,
+    omega1: float | None = None,
+    torque: float | None = None,
+    duration: float | None = None,
+    inertia_final: float | None = None,
+    torque_profile: Iterable[tuple[float, float]] | None = None,
+    method: str = "auto",
+    **body_options,
+) -> Report:
+    """``taucli impulse``: τΔt = IΔω solved for the one left out; or a moment of inertia that
+    changes with no torque (--inertia-final); or a sampled torque (--torque-profile)."""
+    from taucli.scenes.inertia import body
+
+    body_given = body_options.get("inertia") is not None or body_options.get("shape") is not None
+    moment, body_steps = body(**body_options) if body_given else (None, ())
+    if inertia_final is None and torque_profile is None:
+        if method != "auto":
+            raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); constant torque has a closed form")
+        return solve_balance(moment, omega0, omega1, torque, duration, inertia_steps=body_steps)
+    mode = "inertia_final" if inertia_final is not None else "torque_profile"
+    for name, value in (("omega1", omega1), ("torque", torque), ("duration", duration), ("inertia_final", inertia_final if mode != "inertia_final" else None)):
+        if value is not None:
+            raise InputError(name, f"conflicts with {{{mode}}}")
+    if moment is None:
+        raise InputError("inertia", f"or {{shape}} is required with {{{mode}}}", example="{inertia} 2kg*m^2")
+    if mode == "inertia_final":
+        return solve_changing_inertia(moment, inertia_final, omega0 or 0.0, inertia_steps=body_steps)
+    assumed = Assumed()
+    if omega0 is None:
+        omega0 = assumed.value("omega0", 0.0, "rad/s", "no --omega0: the body starts at rest")
+    return assumed.applied(solve_profile(moment, omega0, torque_profile, rule=method, inertia_steps=body_steps))

@@ -361,3 +361,36 @@ def solve(parts: Sequence[Part]) -> Report:
         )
         tables["parts"] = Table(columns, rows)
     return Report("inertia", body.description, "closed form", results, steps, [], {}, tables)
+
+
+def main_part(shape: str | None, mass: float | None, axis: str | None, offset: float | None, dims: Mapping[str, float | None]) -> Part:
+    """The part the main options describe: SHAPE (or --shape) with --mass and its dimensions."""
+    if shape is None:
+        raise InputError("shape", f"is required, one of {', '.join(SHAPES)}", example="taucli inertia disc --mass 5kg --radius 0.2m")
+    found = lookup_shape(shape, "shape")
+    if mass is None:
+        raise InputError("mass", f"is required for a {found.title}", example="{mass} 5kg")
+    return Part(found.name, mass, {name: value for name, value in dims.items() if value is not None}, axis, offset)
+
+
+def inertia(*, shape: str | None = None, mass: float | None = None, axis: str | None = None, offset: float | None = None, part: Sequence[Part] = (), **dims: float | None) -> Report:
+    """``taucli inertia``: a shape's moment of inertia (shifted by --offset), or a body of parts."""
+    return solve([main_part(shape, mass, axis, offset, dims), *part])
+
+
+def body(
+    *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
+    offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,
+) -> tuple[float, Sequence[Step]]:
+    """The moment of inertia of a scene's body and its steps: --inertia, or --shape with its options."""
+    shape_options = [name for name, value in (("mass", mass), ("axis", axis), ("offset", offset), *dims.items()) if value is not None]
+    if inertia is not None:
+        if shape is not None:
+            raise InputError("inertia", "conflicts with {shape}: give one of them")
+        if shape_options:
+            raise InputError(shape_options[0], "goes with {shape}; with {inertia} it is not used")
+        return inertia, ()
+    if shape is None:
+        raise InputError("inertia", "or {shape} is required", example="{inertia} 0.1kg*m^2, or {shape} disc {mass} 5kg {radius} 0.2m")
+    found = body_inertia([main_part(shape, mass, axis, offset, dims), *part])
+    return found.inertia, found.steps

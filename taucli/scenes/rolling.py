@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 from taucli.errors import InputError, did_you_mean
 from taucli.report import Report, Step, Trajectory, Value, deferred, fmt, quantity_text
+from taucli.scenes.assumed import Assumed
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 RIGHT_ANGLE = math.pi / 2
@@ -298,3 +299,36 @@ def _skid_trajectory(v0: float, v_roll: float, t_roll: float) -> Trajectory:
     if t_roll == 0:
         return Trajectory(curves, 1.0, state, note="plotted for 1 s: it rolls from the start")
     return Trajectory(curves, 1.5 * t_roll, state, marks=((t_roll, "rolls without slipping"),))
+
+
+def rolling(
+    *,
+    shape: str | None = None,
+    k2: float | None = None,
+    inertia: float | None = None,
+    mass: float | None = None,
+    radius: float | None = None,
+    angle: float | None = None,
+    mu_s: float | None = None,
+    mu_k: float | None = None,
+    length: float | None = None,
+    height: float | None = None,
+    v0: float | None = None,
+    omega0: float | None = None,
+    g: float | None = None,
+) -> Report:
+    """``taucli rolling``: down (or up) an incline, or a ball skidding on the flat (--v0 or
+    --omega0 with no slope, length or height) until it rolls."""
+    body = roller(shape, k2, inertia, mass, radius)
+    assumed = Assumed()
+    gravity = assumed.gravity(g)
+    on_the_flat = (angle is None or angle == 0) and (v0 is not None or omega0 is not None) and length is None and height is None
+    if on_the_flat:
+        report = solve_flat(body, gravity, mu_k=mu_k, v0=v0 or 0.0, omega0=omega0 or 0.0, mu_s=mu_s)
+    else:
+        if angle is None:
+            raise InputError("angle", "is required on an incline", example="{angle} 30deg")
+        if omega0 is not None:
+            raise InputError("omega0", "applies on the flat ({angle} 0 with {v0}): a skidding ball")
+        report = solve_incline(body, angle, gravity, mu_s=mu_s, mu_k=mu_k, length=length, height=height, v0=v0 or 0.0)
+    return assumed.applied(report)

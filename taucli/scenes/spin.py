@@ -276,3 +276,47 @@ def _kinematics_steps(torques, first, stop, results, time, method, omega0) -> li
                               "", f"{quantity_text(stop[0], 's')}, {quantity_text(abs(stop[1]), 'rad')} = {fmt(abs(stop[1]) / TWO_PI)} rev",
                               "friction keeps a constant torque against the motion, so the wheel stops in a finite time"))
     return steps
+
+
+def spin_down(
+    *,
+    omega0: float | None = None,
+    torque: float | None = None,
+    force: float | None = None,
+    lever: float | None = None,
+    push_angle: float | None = None,
+    friction: float | None = None,
+    viscous: float | None = None,
+    drag: float | None = None,
+    drag_exponent: float | None = None,
+    time: float | None = None,
+    until_omega: float | None = None,
+    method: str = "auto",
+    dt: float | None = None,
+    rtol: float | None = None,
+    **body_options,
+) -> Report:
+    """``taucli spin-down``: the body (--inertia or --shape ...), its torques, and what to report.
+
+    The drive is --torque, or the push --force at --lever (at --push-angle, default 90°) that
+    makes it; the losses left out are zero; the wheel starts at ω₀ = 0 unless --omega0 says.
+    """
+    from taucli.scenes.inertia import body
+
+    moment, body_steps = body(**body_options)
+    push = None
+    if force is not None or lever is not None or push_angle is not None:
+        if torque is not None:
+            raise InputError("torque", "conflicts with {force} and {lever}: give the torque, or the push that makes it")
+        if force is None:
+            raise InputError("force", "is required with {lever}", example="{force} 6N")
+        if lever is None:
+            raise InputError("lever", "is required with {force}", example="{lever} 0.2m")
+        push = Push(force, lever) if push_angle is None else Push(force, lever, push_angle)
+        drive = push.torque
+    else:
+        drive = torque or 0.0
+    torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent)
+    return solve(
+        moment, torques, omega0 or 0.0, time=time, until_omega=until_omega, method=method, dt=dt, rtol=rtol, push=push, inertia_steps=body_steps
+    )

@@ -1,0 +1,57 @@
+"""The Python API: one function per scene, made from the scene's table.
+
+``taucli.spin_down(omega0="30 rad/s", inertia=0.1, friction="0.3 N*m")`` reads its keywords as
+the command line reads its options (texts with units; a number is SI), solves, and returns the
+Report. A scene's positional argument (inertia's and rolling's SHAPE) may be given first.
+"""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable
+
+from taucli.report import Report
+from taucli.table import Command
+
+
+def function(name: str) -> Callable[..., Report] | None:
+    """The API function of the scene called ``name`` (spin_down), or None."""
+    from taucli.options import SCENES
+
+    command = SCENES.get(name.replace("_", "-"))
+    if command is None or command.function_name != name:
+        return None
+    return _made(command)
+
+
+def _made(command: Command) -> Callable[..., Report]:
+    from taucli import pipeline
+
+    positional = [option.name for option in command.options if option.positional]
+
+    def scene(*args, **given) -> Report:
+        if len(args) > len(positional):
+            raise TypeError(f"{command.function_name}() takes {len(positional)} positional argument(s) but {len(args)} were given")
+        for name, value in zip(positional, args):
+            if name in given:
+                raise TypeError(f"{command.function_name}() got multiple values for argument {name!r}")
+            given[name] = value
+        return pipeline.solve(command, {name.replace("-", "_"): value for name, value in given.items()})
+
+    parameters = [
+        inspect.Parameter(
+            option.name,
+            inspect.Parameter.POSITIONAL_OR_KEYWORD if option.positional else inspect.Parameter.KEYWORD_ONLY,
+            default=None,
+        )
+        for option in command.options
+    ]
+    scene.__signature__ = inspect.Signature(parameters, return_annotation=Report)
+    scene.__name__ = scene.__qualname__ = command.function_name
+    scene.__module__ = "taucli"
+    scene.__doc__ = (
+        f"{command.summary}\n\nKeywords (texts with units, or SI numbers): "
+        + ", ".join(option.name for option in command.options)
+        + f".\n\nResults: {command.results_line()}.\n\nAs on the command line: {command.example}"
+    )
+    return scene

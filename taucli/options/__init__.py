@@ -1,0 +1,20 @@
+"""Every command's one table, in the order ``taucli --help`` lists them.
+
+The scenes' tables (one module each) and the tools'. Plain data: importing this module loads
+no solver, no typer, no rich and no pint, so ``--help`` and completion can read it at once.
+"""
+
+from taucli.options import atwood, impulse, inertia, rolling, spin_down, tools
+from taucli.options.common import ANSWER
+from taucli.table import Command
+
+SCENES: dict[str, Command] = {
+    module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse)
+}
+COMMANDS: dict[str, Command] = {**SCENES, "bench": tools.BENCH, "completions": tools.COMPLETIONS}
+OUTPUT_OPTIONS = ANSWER
+
+
+def scene(name: str) -> Command:
+    """The table of scene ``name`` ("spin-down" or "spin_down")."""
+    return SCENES[name.replace("_", "-")]

@@ -1,0 +1,42 @@
+"""taucli atwood: two masses on a string over a pulley with mass."""
+
+from taucli.names import PULLEY_SHAPES
+from taucli.options.common import ANSWER, GRAVITY, MOTION
+from taucli.table import CHOICE, Command, Option, Result
+
+PULLEY = "Pulley"
+
+COMMAND = Command(
+    name="atwood",
+    summary="Two masses on a string over a pulley with mass: acceleration and tensions.",
+    example="taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg --pulley-radius 0.1m",
+    options=(
+        Option("m1", "mass", "The hanging mass; its downward motion is positive.", sign="nonnegative"),
+        Option("m2", "mass", "The other mass (0: one mass on a string wound on the pulley).", sign="nonnegative"),
+        Option("pulley_mass", "mass", "Pulley mass (0: massless).", sign="nonnegative", default="0", panel=PULLEY),
+        Option("pulley_radius", "length", "Pulley radius (needed only for alpha, axle friction or --pulley-inertia).", panel=PULLEY),
+        Option("pulley_shape", CHOICE, "Pulley shape.", choices=PULLEY_SHAPES, default="disc", panel=PULLEY),
+        Option("pulley_inertia", "moment of inertia", "Pulley moment of inertia, instead of mass and shape.", sign="nonnegative", panel=PULLEY),
+        Option("axle_friction", "torque", "Constant friction torque at the axle (holds at rest too).", sign="nonnegative", panel=PULLEY),
+        Option("incline", "angle", "m2 on a slope at this angle (0deg: a table) instead of hanging.", sign="any"),
+        Option("mu_k", "dimensionless", "Kinetic friction coefficient under m2.", sign="nonnegative"),
+        Option("mu_s", "dimensionless", "Static friction coefficient under m2.", sign="nonnegative"),
+        GRAVITY,
+        Option("v0", "velocity", "Initial speed of m1 (down positive).", sign="any", default="0", panel=MOTION),
+        Option("distance", "length", "Report the time and speed after this distance.", sign="nonnegative", panel=MOTION),
+        Option("time", "time", "Report the speed and displacement at this time.", sign="nonnegative", panel=MOTION),
+    ),
+    results=(
+        Result("a", "m/s**2", "acceleration of the masses (m1 downward positive)"),
+        Result("T1", "N", "tension on m1's side"),
+        Result("T2", "N", "tension on m2's side"),
+        Result("alpha", "rad/s**2", "angular acceleration of the pulley"),
+        Result("a_massless", "m/s**2", "acceleration with a massless pulley, for comparison"),
+        Result("t", "s", "time to travel {distance} m"),
+        Result("v", "m/s", "velocity {when}"),
+        Result("distance", "m", "displacement of m1 (down positive) at t = {time} s"),
+    ),
+    output=ANSWER,
+    headline="a",
+    library="taucli.scenes.atwood:atwood",
+)

@@ -1,0 +1,92 @@
+"""Options several commands share: the body, gravity, the method, and how to answer."""
+
+from __future__ import annotations
+
+from taucli.names import METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
+from taucli.table import CHOICE, COUNT, FILE, FLAG, PART, TEXT, Option
+
+BODY = "Body (shape and dimensions)"
+MOTION = "Motion and method"
+OUTPUT = "Output"
+SWEEP = "Sweep and plot (any quantity option takes a range FROM..TO or a list A,B)"
+
+STANDARD_GRAVITY = 9.80665
+
+
+def _length(name: str, help: str, sign: str = "positive") -> Option:
+    return Option(name, "length", help, sign=sign, panel=BODY)
+
+
+# The dimensions of a shape, as in ``taucli inertia`` and ``--shape`` (scenes.inertia.SHAPES).
+DIMENSIONS = (
+    _length("radius", "Radius (a point's distance from the axis), e.g. 0.2m."),
+    _length("inner_radius", "Inner radius (tube, thick-shell).", sign="nonnegative"),
+    _length("outer_radius", "Outer radius (tube, thick-shell)."),
+    _length("length", "Length (rod; cylinder along its axis)."),
+    _length("width", "Width (plate, box)."),
+    _length("height", "Height (plate, box, cone)."),
+    _length("depth", "Depth (box)."),
+)
+DIMENSION_NAMES = tuple(option.name for option in DIMENSIONS)
+
+MASS = Option("mass", "mass", "Mass of the body, e.g. 5kg.", panel=BODY)
+AXIS = Option(
+    "axis",
+    CHOICE,
+    "Axis, where the shape has several: "
+    + "; ".join(f"{'|'.join(axes)} ({name})" for name, axes in SHAPE_AXES.items() if len(axes) > 1)
+    + " (default: the first).",
+    panel=BODY,
+    choices=tuple(dict.fromkeys(axis for axes in SHAPE_AXES.values() for axis in axes)),
+    metavar="AXIS",
+)
+OFFSET = _length("offset", "Distance of the rotation axis from the parallel axis through the centre of mass.", sign="nonnegative")
+PARTS = Option(
+    "part",
+    PART,
+    'Another part of the same body about the same axis, e.g. --part "point mass=100g offset=0.2m" (repeatable).',
+    panel=BODY,
+    repeatable=True,
+    metavar='"SHAPE key=value ..."',
+)
+SHAPE_WORDS = ", ".join(SHAPE_NAMES)
+
+# A body on an axle: its moment of inertia, or a shape with its mass and dimensions.
+BODY_OPTIONS = (
+    Option("inertia", "moment of inertia", "Moment of inertia about the axle, e.g. 0.1kg*m^2 (or give --shape).", panel=BODY),
+    Option("shape", CHOICE, f"The body's shape, with --mass and its dimensions: {SHAPE_WORDS}.", panel=BODY, choices=SHAPE_NAMES, metavar="SHAPE"),
+    MASS,
+    *DIMENSIONS,
+    AXIS,
+    OFFSET,
+)
+
+GRAVITY = Option("g", "acceleration", "Gravity.", default="9.80665 m/s^2")
+
+METHOD = Option("method", CHOICE, " | ".join(METHOD_NAMES) + ".", panel=MOTION, choices=METHOD_NAMES, default="auto", metavar="METHOD")
+DT = Option("dt", "time", "Fixed step for euler and rk4.", panel=MOTION, default="1 ms")
+RTOL = Option("rtol", "dimensionless", "Relative tolerance for rk45.", panel=MOTION, default="1e-10")
+
+# How to answer: read by the command line, not by the scene.
+ANSWER = (
+    Option("json", FLAG, "Print one strict JSON document on stdout.", panel=OUTPUT),
+    Option("get", TEXT, "Print only this result's number (repeatable, one per line).", panel=OUTPUT, repeatable=True, metavar="NAME"),
+    Option("to", TEXT, "Show a result in this unit, e.g. --to I=g*cm^2 (repeatable).", panel=OUTPUT, repeatable=True, metavar="NAME=UNIT"),
+    Option("no_steps", FLAG, "Leave out the worked steps (the human view, and --json's steps list).", panel=OUTPUT),
+    Option(
+        "batch",
+        FLAG,
+        "Many scenes: read JSON lines on stdin, keys the option names (m1, pulley_mass), and write one --json document per line.",
+        panel=OUTPUT,
+    ),
+    Option("jsonl", FLAG, "Like --json, but a sweep's documents one per line rather than one array.", panel=OUTPUT),
+    Option(
+        "plot",
+        FLAG,
+        "Draw the motion against time (a list: one curve per value; a range: its chart), leaving out a sweep's table. With --json: the samples.",
+        panel=SWEEP,
+    ),
+    Option("out", FILE, "Also draw the chart to FILE.svg or FILE.png (needs matplotlib: pip install 'taucli[plot]').", panel=SWEEP, metavar="FILE"),
+    Option("points", COUNT, "Values in a range FROM..TO, ends included.", panel=SWEEP, default="50", metavar="N"),
+    Option("y", TEXT, "A result to chart against a range (repeatable; default the scene's main result).", panel=SWEEP, repeatable=True, metavar="NAME"),
+)

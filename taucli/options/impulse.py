@@ -1,0 +1,39 @@
+"""taucli impulse: angular impulse and momentum, τΔt = IΔω."""
+
+from taucli.names import QUADRATURE_NAMES
+from taucli.options.common import ANSWER, BODY_OPTIONS
+from taucli.table import CHOICE, FILE, Command, Option, Result
+
+COMMAND = Command(
+    name="impulse",
+    summary="Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.",
+    example="taucli impulse --inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s",
+    options=(
+        *BODY_OPTIONS,
+        Option("omega0", "angular velocity", "Angular velocity before.", sign="any"),
+        Option("omega1", "angular velocity", "Angular velocity after.", sign="any"),
+        Option("torque", "torque", "Constant torque while it acts.", sign="any"),
+        Option("duration", "time", "How long the torque acts."),
+        Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
+        Option("torque_profile", FILE, "CSV 't [ms], torque [N*m]' then rows; - for stdin.", metavar="FILE"),
+        Option("method", CHOICE, "Quadrature for a profile: " + " | ".join(QUADRATURE_NAMES) + ".", choices=QUADRATURE_NAMES, default="auto", metavar="METHOD"),
+    ),
+    results=(
+        Result("J", "N*m*s", "angular impulse {how}"),
+        Result("delta_omega", "rad/s", "change of angular velocity"),
+        Result("inertia", "kg*m**2", "moment of inertia{solved}"),
+        Result("omega0", "rad/s", "angular velocity before{solved}"),
+        Result("omega1", "rad/s", "angular velocity after{solved}"),
+        Result("torque", "N*m", "constant torque{solved}"),
+        Result("duration", "s", "time {how}"),
+        Result("L0", "kg*m**2/s", "angular momentum before"),
+        Result("L1", "kg*m**2/s", "angular momentum after{same}"),
+        Result("KE0", "J", "rotational kinetic energy before"),
+        Result("KE1", "J", "rotational kinetic energy after"),
+        Result("work", "J", "work the body does on itself (KE1 − KE0)"),
+        Result("peak_torque", "N*m", "largest torque, at t = {time} s"),
+    ),
+    output=ANSWER,
+    headline="omega1",
+    library="taucli.scenes.impulse:impulse",
+)

@@ -1,0 +1,28 @@
+"""taucli inertia: the moment of inertia of a shape, shifted, or of a body of several parts."""
+
+from taucli.options.common import ANSWER, AXIS, DIMENSIONS, MASS, OFFSET, PARTS, SHAPE_WORDS
+from taucli.table import CHOICE, Command, Option, Result
+from taucli.names import SHAPE_NAMES
+
+COMMAND = Command(
+    name="inertia",
+    summary="Moment of inertia of a standard shape: shifted (--offset), or a body of several parts.",
+    example="taucli inertia disc --mass 5kg --radius 0.2m",
+    options=(
+        Option("shape", CHOICE, f"One of: {SHAPE_WORDS}.", choices=SHAPE_NAMES, positional=True, metavar="SHAPE"),
+        MASS,
+        *DIMENSIONS,
+        AXIS,
+        OFFSET,
+        PARTS,
+    ),
+    results=(
+        Result("I", "kg*m**2", "moment of inertia about the rotation axis"),
+        Result("k", "m", "radius of gyration, √(I/M)"),
+        Result("I_cm", "kg*m**2", "moment of inertia about the parallel axis through the centre of mass"),
+        Result("mass", "kg", "total mass"),
+    ),
+    output=ANSWER,
+    headline="I",
+    library="taucli.scenes.inertia:inertia",
+)

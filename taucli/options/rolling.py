@@ -1,0 +1,48 @@
+"""taucli rolling: a round body on an incline, or a skidding ball on the flat."""
+
+from taucli.names import ROLLING_BODIES
+from taucli.options.common import ANSWER, BODY, GRAVITY, MOTION
+from taucli.table import CHOICE, Command, Option, Result
+
+COMMAND = Command(
+    name="rolling",
+    summary="A round body on an incline: does it roll or slip, and how fast; or a skidding ball on the flat.",
+    example="taucli rolling sphere --angle 30deg --length 2m",
+    options=(
+        Option("shape", CHOICE, f"{', '.join(ROLLING_BODIES)} (or give --k2 or --inertia).", choices=ROLLING_BODIES, positional=True, metavar="SHAPE"),
+        Option("k2", "dimensionless", "I/(mR²) of the body, instead of SHAPE.", sign="nonnegative", panel=BODY),
+        Option("inertia", "moment of inertia", "Moment of inertia about the centre (with --mass and --radius).", sign="nonnegative", panel=BODY),
+        Option("mass", "mass", "Mass (needed only for forces and energies).", panel=BODY),
+        Option("radius", "length", "Radius (needed only for α and ω).", panel=BODY),
+        Option("angle", "angle", "Slope of the incline, 0 to 90deg.", sign="any"),
+        Option("mu_s", "dimensionless", "Static friction coefficient (decides roll or slip).", sign="nonnegative"),
+        Option("mu_k", "dimensionless", "Kinetic friction coefficient (when it slips or skids).", sign="nonnegative"),
+        Option("length", "length", "Distance down the slope to the bottom.", panel=MOTION),
+        Option("height", "length", "Height of the slope, instead of --length.", panel=MOTION),
+        Option("v0", "velocity", "Speed up the slope (how far it climbs), or on the flat (skid).", sign="any", panel=MOTION),
+        Option("omega0", "angular velocity", "Spin on the flat, in the rolling sense (skid to roll).", sign="any", panel=MOTION),
+        GRAVITY,
+    ),
+    results=(
+        Result("a", "m/s**2", "acceleration of the centre, down the slope"),
+        Result("alpha", "rad/s**2", "angular acceleration"),
+        Result("friction", "N", "friction force at the contact, up the slope"),
+        Result("mu_min", "", "least static coefficient for rolling"),
+        Result("rolls", None, "rolls without slipping"),
+        Result("v", "m/s", "speed at the bottom{start}"),
+        Result("t", "s", "time to the bottom"),
+        Result("KE_trans", "J", "kinetic energy of translation at the bottom"),
+        Result("KE_rot", "J", "kinetic energy of rotation at the bottom"),
+        Result("d_climb", "m", "distance it climbs up the slope"),
+        Result("h_climb", "m", "height it climbs"),
+        Result("t_climb", "s", "time to the highest point"),
+        Result("t_roll", "s", "time until it rolls without slipping"),
+        Result("d_roll", "m", "distance skidded until then"),
+        Result("v_roll", "m/s", "speed once it rolls"),
+        Result("omega_roll", "rad/s", "angular velocity once it rolls"),
+        Result("energy_lost", "J", "kinetic energy turned to heat by sliding friction"),
+    ),
+    output=ANSWER,
+    headline="a",
+    library="taucli.scenes.rolling:rolling",
+)

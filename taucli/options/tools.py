@@ -1,0 +1,48 @@
+"""The commands that are not scenes: taucli bench and taucli completions."""
+
+from taucli.names import BENCH_SCENES, SHELLS
+from taucli.table import CHOICE, FILE, FLAG, Command, Option
+
+BENCH = Command(
+    name="bench",
+    summary="Speed against accuracy: time per solve and error of every method, charted (log-log).",
+    description=(
+        "Each point is one method at one step, tolerance or sample count on a fixed problem (the "
+        "article's potter's wheel, a friction + viscous + drag coast, a power-law drag, a stiff brake, "
+        "a half-sine torque pulse), its error against a 50-digit reference. '!' marks a run that "
+        "diverged. scipy's solve_ivp is charted too when scipy is installed."
+    ),
+    example="taucli bench --quick",
+    options=(
+        Option("scene", CHOICE, " or ".join(BENCH_SCENES) + " (repeatable; default both).", choices=BENCH_SCENES, repeatable=True, metavar="SCENE"),
+        Option("quick", FLAG, "Fewer settings and repeats: a few seconds."),
+        Option("out", FILE, "Also draw the charts to FILE.svg or FILE.png (needs matplotlib).", metavar="FILE"),
+        Option("json", FLAG, "Print one strict JSON document on stdout."),
+    ),
+    handler="taucli.tools:bench",
+)
+
+COMPLETIONS = Command(
+    name="completions",
+    summary="Print the completion script for SHELL: commands, options, shapes, methods, and units after a number.",
+    description="The scripts are static: pressing TAB never starts Python. The README says where each goes.",
+    example="taucli completions bash > ~/.local/share/bash-completion/completions/taucli",
+    options=(Option("shell", CHOICE, "bash, zsh or fish.", choices=SHELLS, positional=True, metavar="SHELL"),),
+    handler="taucli.tools:completions",
+)
+
+EXIT_STATUSES = (
+    "Exit status: 0 success; 1 internal error (a bug in taucli: please report it, and --debug shows "
+    "the traceback); 2 bad input (one line on stderr names the option); 130 interrupted (Ctrl-C)."
+)
+
+ROOT = Command(
+    name="taucli",
+    summary="Rigid-body rotation about a fixed axis: τ_net = Iα and what follows from it.",
+    description="Quantities take units: 4kg, 300 rpm, 0.3 N*m, 30deg. A bare number is SI.",
+    example="taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg",
+    options=(
+        Option("version", FLAG, "Print the version and exit."),
+        Option("debug", FLAG, "On an internal error (exit 1), print the traceback (or set TAUCLI_DEBUG=1)."),
+    ),
+)

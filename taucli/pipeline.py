@@ -1,0 +1,42 @@
+"""One pipeline for every way in: text -> read (the command's table) -> library -> Report.
+
+A single run, a sweep's point, a batch line and a Python call all come through ``solve``; none
+of them calls back into a command of the command line.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable, Mapping
+from dataclasses import replace
+from functools import lru_cache
+from typing import TextIO
+
+from taucli.inputs import read
+from taucli.report import Report
+from taucli.table import Command, spelled
+
+
+@lru_cache(maxsize=None)
+def library(target: str) -> Callable[..., Report]:
+    """The function named by a table's "module:function"."""
+    module, _, name = target.partition(":")
+    return getattr(importlib.import_module(module), name)
+
+
+def _as_named(name: str) -> str:
+    return name
+
+
+def solve(
+    command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None, spell: Callable[[str], str] = _as_named
+) -> Report:
+    """The scene's report for the options ``given`` (names -> text, SI numbers, flags or lists).
+
+    Notes name options as {name}; ``spell`` writes each as the caller's surface does (the
+    command line: its flag; Python and batch: the name).
+    """
+    arguments, inputs = read(command, given, stdin=stdin)
+    report = library(command.library)(**arguments)
+    notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
+    return replace(report, inputs={**inputs.values, **report.inputs}, notes=notes)

@@ -1,0 +1,179 @@
+"""The vocabulary of the one table each command is described by: its options and its results.
+
+A command's table is the single description that the command line (typer), ``--help``, the
+batch keys, sweeps, completions, the fuzz grammar, the README's option tables and the Python
+API all read. Plain data: importing a table imports no solver, no typer, no rich and no pint.
+
+An option's ``name`` is the solver's keyword and the batch key; the flag is derived from it
+(``pulley_mass`` -> ``--pulley-mass``). Its ``kind`` is a quantity kind of taucli.units
+("mass", "angular velocity", ...) or one of the other kinds below.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+from taucli.report import Value
+
+# Kinds that are not quantities.
+CHOICE = "choice"  # a word from ``choices``
+FLAG = "flag"  # on or off
+FILE = "file"  # a path (- for stdin where the option says so)
+PART = "part"  # "SHAPE key=value ...", repeatable
+TEXT = "text"  # free text, read by the command itself (--to NAME=UNIT, --get NAME)
+COUNT = "count"  # a whole number
+NOT_QUANTITIES = frozenset({CHOICE, FLAG, FILE, PART, TEXT, COUNT})
+
+# The metavar of each quantity kind, shown in help and read by the completion scripts.
+METAVARS = {
+    "mass": "MASS",
+    "length": "LENGTH",
+    "angle": "ANGLE",
+    "time": "TIME",
+    "angular velocity": "OMEGA",
+    "angular acceleration": "ALPHA",
+    "torque": "TORQUE",
+    "moment of inertia": "I",
+    "force": "FORCE",
+    "acceleration": "ACCEL",
+    "velocity": "SPEED",
+    "viscous coefficient": "B",
+    "drag coefficient": "K",
+    "dimensionless": "NUMBER",
+}
+
+
+@dataclass(frozen=True)
+class Option:
+    """One input of a command: what it takes, its help, and where it shows."""
+
+    name: str
+    kind: str
+    help: str
+    sign: str = "positive"  # for quantities: "positive" (> 0), "nonnegative" (>= 0) or "any"
+    default: str | None = None  # as help shows it; the library applies it
+    panel: str | None = None  # the heading it is listed under in --help
+    choices: tuple[str, ...] = ()
+    repeatable: bool = False
+    positional: bool = False  # the command's argument (SHAPE) rather than an option
+    metavar: str | None = None  # else the kind's
+
+    @property
+    def flag(self) -> str:
+        """How the command line spells it: --pulley-mass, or SHAPE for the argument."""
+        return self.name.upper() if self.positional else "--" + self.name.replace("_", "-")
+
+    @property
+    def is_quantity(self) -> bool:
+        return self.kind not in NOT_QUANTITIES
+
+    @property
+    def takes_value(self) -> bool:
+        return self.kind != FLAG
+
+    @property
+    def shown_metavar(self) -> str:
+        if self.metavar:
+            return self.metavar
+        if self.kind == CHOICE:
+            return "|".join(self.choices) if len(self.choices) <= 3 else self.name.upper()
+        return METAVARS.get(self.kind) or self.kind.upper()
+
+    @property
+    def sweepable(self) -> bool:
+        """A range FROM..TO or a list A,B may stand for its value (quantities only)."""
+        return self.is_quantity and not self.repeatable
+
+    def help_text(self) -> str:
+        """The help, with the default (as shown) before its closing full stop."""
+        if not self.default:
+            return self.help
+        return f"{self.help.removesuffix('.')} (default {self.default})."
+
+
+@dataclass(frozen=True)
+class Result:
+    """One result of a scene: its JSON key, SI unit, and what it is.
+
+    The label may hold {placeholders} that the solver fills in ("velocity after {distance}").
+    """
+
+    key: str
+    unit: str | None
+    label: str
+
+
+@dataclass(frozen=True)
+class Command:
+    """A command of the command line, described once."""
+
+    name: str  # as typed: "spin-down"
+    summary: str  # one line: the first of --help and the command list
+    example: str
+    options: tuple[Option, ...]
+    description: str = ""  # more of --help, after the summary
+    results: tuple[Result, ...] = ()
+    headline: str | None = None  # the result a range's chart shows by default
+    library: str | None = None  # "module:function" that takes the options' values in SI
+    handler: str | None = None  # for commands that are not scenes: "module:function"
+    output: tuple[Option, ...] = ()  # how to answer (--json, --get, ...), not read as inputs
+    _index: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        self._index.update({option.name: option for option in (*self.options, *self.output)})
+        self._index.update({"result:" + result.key: result for result in self.results})
+
+    @property
+    def function_name(self) -> str:
+        """The Python API's name for it: taucli.spin_down."""
+        return self.name.replace("-", "_")
+
+    def option(self, name: str) -> Option | None:
+        return self._index.get(name)
+
+    def result(self, key: str) -> Result | None:
+        return self._index.get("result:" + key)
+
+    def flag(self, name: str) -> str:
+        """The flag of an option (or the name unchanged when it is none of this command's)."""
+        found = self.option(name)
+        return found.flag if found is not None else name
+
+    @property
+    def inputs(self) -> tuple[Option, ...]:
+        return self.options
+
+    def results_line(self) -> str:
+        return ", ".join(result.key for result in self.results)
+
+
+_NAMED = re.compile(r"\{([a-z][a-z0-9_]*)\}")
+
+
+def spelled(text: str, spell: Callable[[str], str], known: Mapping[str, object] | Callable[[str], object]) -> str:
+    """``text`` with each {name} of a known option written as ``spell`` writes it (--name, name)."""
+    found = known if callable(known) else known.get
+    return _NAMED.sub(lambda m: spell(m[1]) if found(m[1]) is not None else m[0], text)
+
+
+class Results:
+    """The results a solver fills in, each from its scene's table: unit and label come from there.
+
+    ``put("t", 1.2, distance="2 m")`` checks that ``t`` is one of the scene's results, so a name
+    that is not in the table fails at once rather than reaching a user.
+    """
+
+    __slots__ = ("command", "values")
+
+    def __init__(self, command: Command):
+        self.command = command
+        self.values: dict = {}
+
+    def put(self, key: str, value, **label_args) -> None:
+        result = self.command.result(key)
+        if result is None:
+            raise KeyError(f"{key!r} is not a result of {self.command.name} in its table")
+        label = result.label.format(**label_args) if label_args else result.label
+        self.values[key] = Value(value, result.unit, label)
