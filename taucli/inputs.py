@@ -57,10 +57,9 @@ def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None 
     """
     inputs = Inputs()
     arguments: dict[str, object] = {}
-    for name in given:
-        if command.option(name) is None or command.option(name) in command.output:
-            known = [option.name for option in command.options]
-            raise InputError(name, f"is not an option of {command.name}", hint=did_you_mean(name, known))
+    if not command.input_names.issuperset(given):
+        name = next(name for name in given if name not in command.input_names)
+        raise InputError(name, f"is not an option of {command.name}", hint=did_you_mean(name, sorted(command.input_names)))
     for option in command.options:
         value = given.get(option.name)
         if value is None or value == () or value == [] or value is False:

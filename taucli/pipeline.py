@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Callable, Mapping
-from dataclasses import replace
 from functools import lru_cache
 from typing import TextIO
 
@@ -39,4 +38,7 @@ def solve(
     arguments, inputs = read(command, given, stdin=stdin)
     report = library(command.library)(**arguments)
     notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
-    return replace(report, inputs={**inputs.values, **report.inputs}, notes=notes)
+    return Report(
+        report.scene, report.model, report.method, report.results, report.steps, notes,
+        {**inputs.values, **report.inputs}, report.tables, report.trajectory,
+    )  # fmt: skip

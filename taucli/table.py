@@ -123,6 +123,7 @@ class Command:
 
     def __post_init__(self) -> None:
         self._index.update({option.name: option for option in (*self.options, *self.output)})
+        self._index["inputs:"] = frozenset(option.name for option in self.options)
         self._index.update({"result:" + result.key: result for result in self.results})
 
     @property
@@ -142,8 +143,9 @@ class Command:
         return found.flag if found is not None else name
 
     @property
-    def inputs(self) -> tuple[Option, ...]:
-        return self.options
+    def input_names(self) -> frozenset[str]:
+        """The names of its inputs (the options a scene reads), not of how to answer."""
+        return self._index["inputs:"]
 
     def results_line(self) -> str:
         return ", ".join(result.key for result in self.results)
