@@ -128,3 +128,48 @@ def answer(args: list[str], stdout, stderr) -> int | None:
     except BrokenPipeError:
         os.dup2(os.open(os.devnull, os.O_WRONLY), stream.fileno())
     return 2 if not args else 0
+
+
+# README.md holds each scene's options and results as generated here, between these markers;
+# tests/test_table.py checks them, and ``python -m taucli.help README.md`` rewrites them.
+README_START = "<!-- options of {name}: generated from its table by `python -m taucli.help README.md` -->"
+README_END = "<!-- end of the options of {name} -->"
+
+
+def markdown(command: Command) -> str:
+    """The options and results of a scene as Markdown tables, for the README."""
+    from taucli.report import pretty_unit
+
+    lines = ["| option | takes | what it is |", "|---|---|---|"]
+    for option in command.options:
+        takes = option.kind if option.is_quantity else option.shown_metavar.replace("|", " or ")
+        lines.append(f"| `{option.flag}` | {takes} | {option.help_text().replace('|', '/')} |")
+    lines += ["", "| result | unit | what it is |", "|---|---|---|"]
+    for result in command.results:
+        lines.append(f"| `{result.key}` | {pretty_unit(result.unit) or '–'} | {result.label} |")
+    return "\n".join(lines)
+
+
+def update_readme(path: str) -> bool:
+    """Rewrite the generated sections of the README at ``path``; whether anything changed."""
+    from taucli.options import SCENES
+
+    with open(path, encoding="utf-8") as handle:
+        old = handle.read()
+    new = old
+    for command in SCENES.values():
+        start, end = README_START.format(name=command.name), README_END.format(name=command.name)
+        if start in new:
+            before, _, rest = new.partition(start)
+            _, _, after = rest.partition(end)
+            new = f"{before}{start}\n{markdown(command)}\n{end}{after}"
+    if new != old:
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(new)
+    return new != old
+
+
+if __name__ == "__main__":
+    import sys
+
+    sys.exit(1 if update_readme(sys.argv[1]) else 0)

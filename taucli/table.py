@@ -97,7 +97,8 @@ class Option:
 class Result:
     """One result of a scene: its JSON key, SI unit, and what it is.
 
-    The label may hold {placeholders} that the solver fills in ("velocity after {distance}").
+    A label with "…" has a part the solver fills in: "velocity …" is "velocity after 2 m" in
+    one run and "velocity at t = 3 s" in another (the part brings its own leading space).
     """
 
     key: str
@@ -163,8 +164,8 @@ def spelled(text: str, spell: Callable[[str], str], known: Mapping[str, object] 
 class Results:
     """The results a solver fills in, each from its scene's table: unit and label come from there.
 
-    ``put("t", 1.2, distance="2 m")`` checks that ``t`` is one of the scene's results, so a name
-    that is not in the table fails at once rather than reaching a user.
+    ``put("t", 1.2, " 2 m")`` checks that ``t`` is one of the scene's results, so a name that
+    is not in the table fails at once rather than reaching a user, and fills the label's "…".
     """
 
     __slots__ = ("command", "values")
@@ -173,9 +174,11 @@ class Results:
         self.command = command
         self.values: dict = {}
 
-    def put(self, key: str, value, **label_args) -> None:
+    def put(self, key: str, value, part: str = "") -> None:
         result = self.command.result(key)
         if result is None:
             raise KeyError(f"{key!r} is not a result of {self.command.name} in its table")
-        label = result.label.format(**label_args) if label_args else result.label
-        self.values[key] = Value(value, result.unit, label)
+        self.values[key] = Value(value, result.unit, result.label.replace(FILLED, part))
+
+
+FILLED = "…"  # where a result's label takes the part its solver fills in

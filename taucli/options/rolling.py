@@ -29,7 +29,7 @@ COMMAND = Command(
         Result("friction", "N", "friction force at the contact, up the slope"),
         Result("mu_min", "", "least static coefficient for rolling"),
         Result("rolls", None, "rolls without slipping"),
-        Result("v", "m/s", "speed at the bottom{start}"),
+        Result("v", "m/s", "speed at the bottom…"),
         Result("t", "s", "time to the bottom"),
         Result("KE_trans", "J", "kinetic energy of translation at the bottom"),
         Result("KE_rot", "J", "kinetic energy of rotation at the bottom"),
