@@ -22,6 +22,7 @@ from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferr
 from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
 
 HANGING = math.pi / 2
+EPSILON = 2.0**-52
 
 
 @dataclass(frozen=True)
@@ -125,7 +126,7 @@ def solve(
 
     results: dict[str, Value] = {"a": Value(a, "m/s**2", "acceleration of the masses (m1 downward positive)")}
     if motion.held_from_start:
-        tension_high, tension_low = _statics(m1, m2, g, sin_angle, normal, pulley, notes)
+        tension_high, tension_low = _statics(m1, m2, g, sin_angle, mu_s * normal, pulley, notes)
         notes.append(
             "nothing moves: "
             + ("the masses balance" if drive == 0 and not loads.holding else "friction can hold the system")
@@ -201,14 +202,26 @@ def _pulley_words(pulley: Pulley) -> str:
     return "solid disc" if (pulley.shape or "disc") == "disc" else "thin ring"
 
 
-def _statics(m1, m2, g, sin_angle, normal, pulley, notes) -> tuple[float | None, float | None]:
-    """Tensions at rest: T1 = m1 g; T2 is fixed unless friction acts both at the axle and on m2."""
+def _statics(m1, m2, g, sin_angle, grip, pulley, notes) -> tuple[float, float | None]:
+    """Tensions at rest. T1 = m1 g. T2 must balance the pulley, |T1 − T2| ≤ τ_a/R, and m2,
+    |T2 − m2 g sin θ| ≤ μs N (``grip``): statics fixes it wherever one of the two frictions is
+    absent, or where the two intervals meet in one point (both frictions at their limits, on
+    the point of slipping). Otherwise any T2 in their overlap balances, and it is null with
+    the bounds in a note."""
     tension_high = m1 * g
-    if not pulley.axle_friction:
+    along = m2 * g * sin_angle
+    axle = pulley.axle_force()
+    if not axle:
         return tension_high, tension_high  # no torque on the pulley at rest: equal tensions
-    if not normal:
-        return tension_high, m2 * g * sin_angle
-    notes.append("T2: statically indeterminate (friction at the axle and under m2 share the load in a way statics cannot fix)")
+    if not grip:
+        return tension_high, along  # nothing along the surface but the string and gravity
+    low, high = max(tension_high - axle, along - grip), min(tension_high + axle, along + grip)
+    if high - low <= 16 * EPSILON * (tension_high + along + axle + grip):
+        return tension_high, (low + high) / 2
+    notes.append(
+        "T2: statically indeterminate: friction at the axle and under m2 share the load in a way statics cannot fix; "
+        f"it lies between {fmt(low, 6)} and {fmt(high, 6)} N"
+    )
     return tension_high, None
 
 
