@@ -152,7 +152,6 @@ def test_thrown_upward_it_stops_and_comes_back():
         (dict(m1=1.0, m2=1.0, pulley=Pulley(0.0, None, None, None, 0.1)), "--pulley-radius is required"),
         (dict(m1=1.0, m2=1.0, pulley=Pulley(1.0, 0.1, "cone")), "--pulley-shape"),
         (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(math.radians(95))), "--incline"),
-        (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(HANGING, 0.2)), "--mu-k applies"),
         (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(0.3, 0.5, 0.2)), "--mu-k must not exceed"),
     ],
 )
@@ -194,7 +193,7 @@ def statics_reference(m1, m2, angle, mu_s, axle, radius, g):
         grip = 0 if hanging else mu_s * m2 * g * mpmath.cos(angle)
         low = max(tension_high - axle / radius, along - grip)
         high = min(tension_high + axle / radius, along + grip)
-        assert low <= high + 1e-13 * (tension_high + along + axle / radius)  # at rest: they meet (to rounding)
+        assert low <= high + 1e-13 * (tension_high + along + axle / radius) + 1e-300  # at rest: they meet (to rounding)
         return tension_high, low, high
 
 
@@ -252,3 +251,26 @@ def test_at_the_point_of_slipping_both_frictions_are_at_their_limits_and_t2_is_f
     assert held["a"] == 0 and held["T2"] == 4.0 and held["T1"] == 8.0
     moving = values(solve(1.0 + 1e-12, **machine))
     assert moving["a"] > 0 and moving["T2"] == pytest.approx(4.0, rel=1e-11)
+
+
+def test_a_vertical_face_takes_no_friction():
+    """#16: `atwood --incline 90deg --mu-k 0.2` was refused. m2 against a vertical face has no
+    normal force, so no friction: the hanging machine, a = (m1 − m2) g/(m1 + m2 + M/2)."""
+    report = solve(3.0, 1.0, Pulley(2.0), 9.8, slope=Slope(HANGING, 0.2, 0.3))
+    assert values(report)["a"] == pytest.approx(2 * 9.8 / 5, rel=1e-15)
+    assert any("no normal force" in note for note in report.notes)
+    near = values(solve(3.0, 1.0, Pulley(2.0), 9.8, slope=Slope(HANGING - 1e-9, 0.2, 0.3)))
+    assert near["a"] == pytest.approx(2 * 9.8 / 5, rel=1e-8)
+
+
+def test_with_only_mu_s_a_moving_machine_needs_mu_k_and_a_held_one_does_not():
+    """The same rule as rolling's (#16 items 9-10): μs decides whether it moves; if it moves, a
+    and the tensions need μk (null, with a note). Slope.mu_k = None is 'not given'."""
+    held = solve(1.0, 2.0, Pulley(), 9.8, slope=Slope(0.0, None, 0.6))
+    assert values(held)["a"] == 0 and values(held)["T1"] == pytest.approx(9.8)
+    moving = solve(3.0, 2.0, Pulley(), 9.8, slope=Slope(0.0, None, 0.6), distance=1.0)
+    result = values(moving)
+    for name in ("a", "T1", "T2", "t", "v"):
+        assert result[name] is None, name
+    assert any("--mu-k" in note for note in moving.notes)
+    moving.steps[:]
