@@ -8,7 +8,7 @@ import sys
 
 import mpmath
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from conftest import assert_usage_error
@@ -188,3 +188,20 @@ def test_a_million_rows_stream_in_flat_memory():
     # Measured: 20 MB streaming (46 MB when pint is loaded, cold unit cache); holding just the
     # lines of text in a list adds 61 MB.
     assert peak_kib < 80 * 1024
+
+
+# Digits of Δω (#16, item 8) -------------------------------------------------------------------
+
+
+@settings(max_examples=300, deadline=None)
+@given(inertia=st.floats(1e-3, 1e3), omega=st.floats(-1e6, 1e6), torque=st.floats(-1e3, 1e3).filter(lambda x: abs(x) > 1e-100), duration=st.floats(1e-6, 1e3))
+@example(inertia=1.0, omega=1e6, torque=1e-3, duration=1.0)
+def test_delta_omega_keeps_its_digits_when_an_angular_velocity_is_solved_for(inertia, omega, torque, duration):
+    """#16: Δω was ω₁ − ω₀ after solving for one of them, which loses the digits of a small
+    change on a fast spin (1e-3 on 1e6 rad/s kept 7 of 16). It is τΔt/I: within 2 ulp of the
+    40-digit value, whichever of ω₀, ω₁ is solved for."""
+    with mpmath.workdps(40):
+        exact = mpmath.mpf(torque) * mpmath.mpf(duration) / mpmath.mpf(inertia)
+    for given_values in ((inertia, omega, None, torque, duration), (inertia, None, omega, torque, duration)):
+        got = solve_balance(*given_values).results["delta_omega"].value
+        assert abs(mpmath.mpf(got) - exact) <= 2 * abs(exact) * mpmath.mpf(2) ** -53

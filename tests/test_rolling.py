@@ -7,7 +7,7 @@ import math
 
 import mpmath
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from taucli.errors import InputError
@@ -239,3 +239,43 @@ def test_a_body_with_no_rotational_inertia_needs_no_friction_to_roll():
     assert flat["t_roll"] == 0.0 and flat["v_roll"] == 3.0 and flat["energy_lost"] == 0.0
     vertical = values(solve_incline(Roller(0.0, "body", 1.0, 0.1), math.pi / 2, G))
     assert vertical["a"] == G and vertical["alpha"] is None  # no torque on no inertia: α is not fixed
+
+
+def friction_work_reference(k2, mass, radius, mu_k, g, v0, omega0):
+    """The heat made while the ball skids, from the equations of motion alone (40 digits):
+    m dv/dt = −μk m g sgn s, k² m R² dω/dt = μk m g R sgn s, s = v − Rω; friction does work
+    μk m g |s| per unit time on the sliding contact until s = 0 (found by findroot)."""
+    with mpmath.workdps(40):
+        k2, m, r, mu, g, v0, w0 = (mpmath.mpf(x) for x in (k2, mass, radius, mu_k, g, v0, omega0))
+        sign = mpmath.sign(v0 - r * w0)
+        slip = lambda t: (v0 - sign * mu * g * t) - r * (w0 + sign * mu * g * t / (k2 * r))  # noqa: E731
+        if sign == 0:
+            return mpmath.mpf(0)
+        t_roll = mpmath.findroot(slip, abs(v0 - r * w0) / (mu * g))
+        return mpmath.quad(lambda t: mu * m * g * abs(slip(t)), [0, t_roll])
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    k2=st.one_of(st.sampled_from(sorted(K2.values())), st.floats(1e-3, 2)),
+    v0=st.floats(-50, 50),
+    spin=st.one_of(st.floats(-50, 50), st.just(None)),
+    closeness=st.one_of(st.just(0.0), st.integers(1, 50).map(lambda e: 2.0**-e)),
+)
+@example(k2=0.4, v0=81.33599174441359, spin=None, closeness=2.0**-30)
+def test_skidding_energy_lost_is_never_negative_and_matches_the_work_of_friction(k2, v0, spin, closeness):
+    """#16: energy_lost was KE before − KE after, which cancels when the ball nearly rolls
+    already and came out negative (−9e-13 J for v0 = 81.3 m/s, Rω0 = v0(1 − 1e-9)). It is
+    ½ m k²/(1 + k²) (v0 − Rω0)²: ≥ 0, and within 1e-13 of the friction's work where the slip
+    is well conditioned; where v0 and Rω0 nearly cancel, within the rounding of Rω0 itself,
+    amplified by κ = (|v0| + |Rω0|)/|v0 − Rω0| (twice: the energy goes as the slip squared)."""
+    mass, radius, mu_k, g = 0.16, 0.11, 0.2, 9.81
+    spin_speed = v0 * (1 - closeness) if spin is None else spin  # R ω0; near v0 the two cancel
+    omega0 = spin_speed / radius
+    lost = solve_flat(Roller(k2, "body", mass, radius), g, mu_k=mu_k, v0=v0, omega0=omega0).results["energy_lost"].value
+    assert lost >= 0
+    exact = friction_work_reference(k2, mass, radius, mu_k, g, v0, omega0)
+    with mpmath.workdps(40):
+        slip = abs(v0 - mpmath.mpf(radius) * omega0)
+        conditioning = float((abs(v0) + abs(spin_speed)) / slip) if slip else 1.0
+    assert abs(mpmath.mpf(lost) - exact) <= max(1e-13, 8 * 2.0**-53 * conditioning) * exact + 1e-300

@@ -55,10 +55,13 @@ def solve_balance(
     notes: list[str] = []
     unknown = missing[0] if missing else None
     i, w0, w1, tau, dt = inertia, omega0, omega1, torque, duration
+    change = None  # Δω where it is known before ω₀ or ω₁ is rounded
     if unknown == "omega1":
-        w1 = w0 + tau * dt / i
+        change = tau * dt / i
+        w1 = w0 + change
     elif unknown == "omega0":
-        w0 = w1 - tau * dt / i
+        change = tau * dt / i
+        w0 = w1 - change
     elif unknown == "torque":
         tau = i * (w1 - w0) / dt
     elif unknown == "duration":
@@ -84,7 +87,7 @@ def solve_balance(
     impulse = tau * dt
     results: dict[str, Value] = {
         "J": Value(impulse, "N*m*s", "angular impulse τΔt"),
-        "delta_omega": Value(w1 - w0, "rad/s", "change of angular velocity"),
+        "delta_omega": Value(w1 - w0 if change is None else change, "rad/s", "change of angular velocity"),
         "inertia": Value(i, "kg*m**2", "moment of inertia" + (" (solved for)" if unknown == "inertia" else "")),
         "omega0": Value(w0, "rad/s", "angular velocity before" + (" (solved for)" if unknown == "omega0" else "")),
         "omega1": Value(w1, "rad/s", "angular velocity after" + (" (solved for)" if unknown == "omega1" else "")),

@@ -282,11 +282,10 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
     else:
         t_roll = abs(slip) * k2 / (mu_k * g * (1 + k2))
         d_roll = (v0 + v_roll) / 2 * t_roll  # uniform deceleration: the mean speed times the time
-    energy_lost = None
-    if mass is not None:
-        before = 0.5 * mass * (v0 * v0 + k2 * spin_speed * spin_speed)
-        after = 0.5 * mass * v_roll * v_roll * (1 + k2)
-        energy_lost = before - after
+    # KE before − KE after = ½m(v₀² + k²u²) − ½m(1 + k²)v_roll², u = Rω₀, v_roll = (v₀ + k²u)/(1 + k²),
+    # = ½m[(1 + k²)(v₀² + k²u²) − (v₀ + k²u)²]/(1 + k²) = ½m k²(v₀ − u)²/(1 + k²): the difference
+    # cancels as the ball nearly rolls (it came out negative); this form is ≥ 0 and keeps its digits.
+    energy_lost = None if mass is None else 0.5 * mass * k2 / (1 + k2) * slip * slip
     results = _skid_results(t_roll, d_roll, v_roll, None if radius is None else v_roll / radius, energy_lost)
     steps = [
         Step("While it skids, kinetic friction acts against the slip", "m dv/dt = −μₖ m g·sgn s,  I dω/dt = +μₖ m g R·sgn s,  s = v − Rω", "", "",
