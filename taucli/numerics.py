@@ -136,7 +136,8 @@ def integrate(
 
     ``dt`` is the fixed step (euler, rk4) or the first step (rk45); ``rtol`` the relative
     tolerance of rk45. ``stiffness(ω)`` gives |∂f/∂ω|, to check fixed steps against the
-    method's stability limit. More than ``max_steps`` steps (default MAX_STEPS) raise TooManySteps.
+    method's stability limit. More than ``max_steps`` steps (default MAX_STEPS) raise TooManySteps:
+    at once for a fixed step with no event (t_end/dt is the count), as they are taken otherwise.
     """
     tableau = METHODS[method]
     limit = MAX_STEPS[method] if max_steps is None else max_steps
@@ -148,7 +149,7 @@ def integrate(
     else:
         assert dt is not None
         h = dt
-        if t_end / h > limit:
+        if event_at is None and t_end / h > limit:  # an event may end the run long before t_end
             raise TooManySteps()
     steps, worst = 0, 0.0
     while t < t_end:

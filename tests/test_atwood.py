@@ -152,7 +152,6 @@ def test_thrown_upward_it_stops_and_comes_back():
         (dict(m1=1.0, m2=1.0, pulley=Pulley(0.0, None, None, None, 0.1)), "--pulley-radius is required"),
         (dict(m1=1.0, m2=1.0, pulley=Pulley(1.0, 0.1, "cone")), "--pulley-shape"),
         (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(math.radians(95))), "--incline"),
-        (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(HANGING, 0.2)), "--mu-k applies"),
         (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(0.3, 0.5, 0.2)), "--mu-k must not exceed"),
     ],
 )
@@ -175,3 +174,104 @@ def test_near_equal_masses_keep_full_precision(m2, gap, pulley_mass):
     with mpmath.workdps(50):
         exact = (mpmath.mpf(m1) - m2) * mpmath.mpf(9.80665) / (mpmath.mpf(m1) + m2 + mpmath.mpf(pulley_mass) / 2)
     assert abs(mpmath.mpf(a) - exact) <= 4 * abs(exact) * mpmath.mpf(2) ** -52
+
+
+# At rest: what statics fixes (#16, item 4) --------------------------------------------------
+
+
+def statics_reference(m1, m2, angle, mu_s, axle, radius, g):
+    """The tensions statics allows at rest, from the three bodies' balances (40 digits).
+
+    m1: T1 = m1 g.  m2 (along the slope, towards the pulley): T2 − m2 g sin θ + f = 0 with
+    |f| ≤ μs N.  Pulley: (T1 − T2) R = τ with |τ| ≤ τ_a. T2 lies in both intervals; statics fixes
+    it only where they meet in one point. Returns T1 and the interval (low, high) for T2."""
+    with mpmath.workdps(40):
+        m1, m2, angle, mu_s, axle, radius, g = (mpmath.mpf(x) for x in (m1, m2, angle, mu_s, axle, radius, g))
+        tension_high = m1 * g
+        hanging = angle == mpmath.mpf(HANGING)
+        along = m2 * g * (1 if hanging else mpmath.sin(angle))
+        grip = 0 if hanging else mu_s * m2 * g * mpmath.cos(angle)
+        low = max(tension_high - axle / radius, along - grip)
+        high = min(tension_high + axle / radius, along + grip)
+        assert low <= high + 1e-13 * (tension_high + along + axle / radius) + 1e-300  # at rest: they meet (to rounding)
+        return tension_high, low, high
+
+
+def test_held_on_a_frictionless_slope_the_tension_on_m2_is_m2_g_sin_theta():
+    """#16: m1 = m2 = 1 kg, 30° slope with no friction under m2, axle friction 0.5 N·m at
+    R = 0.1 m holds it: T2 = m2 g sin θ (it was null, 'indeterminate'); T1 = m1 g."""
+    g = 9.80665
+    report = solve(1.0, 1.0, Pulley(0.0, 0.1, None, None, 0.5), g, slope=Slope(math.radians(30)))
+    result = values(report)
+    tension_high, low, high = statics_reference(1.0, 1.0, math.radians(30), 0.0, 0.5, 0.1, g)
+    assert result["a"] == 0 and low == high
+    assert result["T1"] == pytest.approx(float(tension_high), rel=1e-15)
+    assert result["T2"] == pytest.approx(float(low), rel=1e-15)
+    assert not any("indeterminate" in note for note in report.notes)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    m2=masses,
+    angle=st.one_of(st.just(HANGING), st.just(0.0), st.floats(0, HANGING)),
+    # 0, or within the bounds every quantity has (units.SMALLEST): a subnormal friction is no input
+    mu_s=st.one_of(st.just(0.0), st.floats(1e-40, 1)),
+    axle=st.one_of(st.just(0.0), st.floats(1e-40, 50)),
+    radius=st.floats(0.01, 1),
+    share=st.one_of(st.just(1.0), st.just(-1.0), st.floats(-1, 1)),
+)
+def test_at_rest_each_tension_is_given_where_statics_fixes_it_and_bounded_where_it_does_not(m2, angle, mu_s, axle, radius, share):
+    """m1 is drawn so the pull is a ``share`` of the most friction can hold: at rest, mostly."""
+    g = 9.80665
+    mu_s = 0.0 if angle == HANGING else mu_s
+    sin_a, cos_a = (1.0, 0.0) if angle == HANGING else (math.sin(angle), math.cos(angle))
+    m1 = m2 * sin_a + share * (mu_s * m2 * cos_a + axle / radius / g)
+    assume(m1 >= 0)
+    report = solve(m1, m2, Pulley(0.0, radius, None, None, axle), g, slope=Slope(angle, mu_s, mu_s))
+    result = values(report)
+    assume(result["a"] == 0)
+    tension_high, low, high = statics_reference(m1, m2, angle, mu_s, axle, radius, g)
+    assert result["T1"] == pytest.approx(float(tension_high), rel=1e-14)
+    scale = float(tension_high + high + axle / radius)
+    if high - low <= 16 * 2.0**-52 * scale:  # the frictions' intervals meet in one point (to rounding)
+        assert result["T2"] == pytest.approx(float(low), rel=1e-12, abs=1e-12 * scale)
+    elif high - low > 1e-12 * scale:
+        assert result["T2"] is None
+        (note,) = [note for note in report.notes if note.startswith("T2")]
+        assert "indeterminate" in note
+        shown = [float(x) for x in note.split("between ")[1].split(" N")[0].split(" and ")]
+        assert shown == pytest.approx([float(low), float(high)], rel=1e-3, abs=1e-3 * float(high - low))
+
+
+def test_at_the_point_of_slipping_both_frictions_are_at_their_limits_and_t2_is_fixed():
+    """Table, m1 = 1 kg, m2 = 2 kg, μs = 0.25, τ_a/R = 4 N, g = 8: the pull 8 N meets 4 N + 4 N
+    of friction exactly. Both frictions are at their limits, so T2 = μs m2 g = 4 N; a hair
+    more m1 moves it (μk = μs) with T2 continuous."""
+    machine = dict(m2=2.0, pulley=Pulley(0.0, 0.125, None, None, 0.5), g=8.0, slope=Slope(0.0, 0.25, 0.25))
+    held = values(solve(1.0, **machine))
+    assert held["a"] == 0 and held["T2"] == 4.0 and held["T1"] == 8.0
+    moving = values(solve(1.0 + 1e-12, **machine))
+    assert moving["a"] > 0 and moving["T2"] == pytest.approx(4.0, rel=1e-11)
+
+
+def test_a_vertical_face_takes_no_friction():
+    """#16: `atwood --incline 90deg --mu-k 0.2` was refused. m2 against a vertical face has no
+    normal force, so no friction: the hanging machine, a = (m1 − m2) g/(m1 + m2 + M/2)."""
+    report = solve(3.0, 1.0, Pulley(2.0), 9.8, slope=Slope(HANGING, 0.2, 0.3))
+    assert values(report)["a"] == pytest.approx(2 * 9.8 / 5, rel=1e-15)
+    assert any("no normal force" in note for note in report.notes)
+    near = values(solve(3.0, 1.0, Pulley(2.0), 9.8, slope=Slope(HANGING - 1e-9, 0.2, 0.3)))
+    assert near["a"] == pytest.approx(2 * 9.8 / 5, rel=1e-8)
+
+
+def test_with_only_mu_s_a_moving_machine_needs_mu_k_and_a_held_one_does_not():
+    """The same rule as rolling's (#16 items 9-10): μs decides whether it moves; if it moves, a
+    and the tensions need μk (null, with a note). Slope.mu_k = None is 'not given'."""
+    held = solve(1.0, 2.0, Pulley(), 9.8, slope=Slope(0.0, None, 0.6))
+    assert values(held)["a"] == 0 and values(held)["T1"] == pytest.approx(9.8)
+    moving = solve(3.0, 2.0, Pulley(), 9.8, slope=Slope(0.0, None, 0.6), distance=1.0)
+    result = values(moving)
+    for name in ("a", "T1", "T2", "t", "v"):
+        assert result[name] is None, name
+    assert any("--mu-k" in note for note in moving.notes)
+    moving.steps[:]

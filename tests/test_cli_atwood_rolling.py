@@ -44,7 +44,6 @@ def test_atwood_in_pounds_and_feet(taucli):
         (("--m2", "1kg"), ("--m1 is required",)),
         (("--m1", "0kg", "--m2", "0kg"), ("cannot both be zero",)),
         (("--m1", "1kg", "--m2", "1kg", "--incline", "100deg"), ("--incline", "0 to 90")),
-        (("--m1", "1kg", "--m2", "1kg", "--mu-k", "0.2"), ("--mu-k applies",)),
         (("--m1", "1kg", "--m2", "1kg", "--incline", "0deg", "--mu-k", "0.5", "--mu-s", "0.2"), ("--mu-k must not exceed",)),
         (("--m1", "1kg", "--m2", "1kg", "--pulley-inertia", "0.01"), ("--pulley-radius is required",)),
         (("--m1", "1kg", "--m2", "1kg", "--axle-friction", "0.1 N"), ("--axle-friction", "torque", "force")),
@@ -85,10 +84,9 @@ def test_skidding_ball_on_the_flat(taucli):
 @pytest.mark.parametrize(
     "args,fragments",
     [
-        (("sphere", "--angle", "90deg"), ("--angle", "90")),
+        (("sphere", "--angle", "95deg"), ("--angle", "90")),
         (("sphere", "--angle", "-5deg"), ("--angle",)),
         (("sphere", "--angle", "30"), ("--angle",)),  # a bare number is radians: 30 rad is no slope
-        (("sphere", "--angle", "60deg", "--mu-s", "0.1"), ("--mu-k is required", "slips")),
         (("sphere", "--angle", "30deg", "--mu-s", "0.1", "--mu-k", "0.3"), ("--mu-k must not exceed",)),
         (("sphere", "--angle", "30deg", "--mass", "-1kg"), ("--mass", "positive")),
         (("sphear", "--angle", "30deg"), ("SHAPE", "did you mean 'sphere'")),

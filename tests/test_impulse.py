@@ -8,7 +8,7 @@ import sys
 
 import mpmath
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from conftest import assert_usage_error
@@ -66,7 +66,8 @@ def test_all_five_must_agree():
 @pytest.mark.parametrize(
     "args,fragment",
     [
-        ((0.1, None, None, 2.0, 0.5), "--omega0 and --omega1 are missing"),
+        ((0.1, 0.0, None, None, None), "--omega1 and --torque and --duration are missing"),
+        ((None, 0.0, None, 2.0, None), "--inertia and --omega1 and --duration are missing"),
         ((0.1, 0.0, 10.0, 0.0, None), "--torque must not be zero"),
         ((0.1, 0.0, 10.0, -2.0, None), "--torque must act in the sense"),
         ((None, 0.0, 0.0, 2.0, 0.5), "--omega1 must differ"),
@@ -188,3 +189,57 @@ def test_a_million_rows_stream_in_flat_memory():
     # Measured: 20 MB streaming (46 MB when pint is loaded, cold unit cache); holding just the
     # lines of text in a list adds 61 MB.
     assert peak_kib < 80 * 1024
+
+
+# Digits of Δω (#16, item 8) -------------------------------------------------------------------
+
+
+@settings(max_examples=300, deadline=None)
+@given(inertia=st.floats(1e-3, 1e3), omega=st.floats(-1e6, 1e6), torque=st.floats(-1e3, 1e3).filter(lambda x: abs(x) > 1e-100), duration=st.floats(1e-6, 1e3))
+@example(inertia=1.0, omega=1e6, torque=1e-3, duration=1.0)
+def test_delta_omega_keeps_its_digits_when_an_angular_velocity_is_solved_for(inertia, omega, torque, duration):
+    """#16: Δω was ω₁ − ω₀ after solving for one of them, which loses the digits of a small
+    change on a fast spin (1e-3 on 1e6 rad/s kept 7 of 16). It is τΔt/I: within 2 ulp of the
+    40-digit value, whichever of ω₀, ω₁ is solved for."""
+    with mpmath.workdps(40):
+        exact = mpmath.mpf(torque) * mpmath.mpf(duration) / mpmath.mpf(inertia)
+    for given_values in ((inertia, omega, None, torque, duration), (inertia, None, omega, torque, duration)):
+        got = solve_balance(*given_values).results["delta_omega"].value
+        assert abs(mpmath.mpf(got) - exact) <= 2 * abs(exact) * mpmath.mpf(2) ** -53
+
+
+# What the inputs determine (#16, item 13) ------------------------------------------------------
+
+
+def test_torque_and_duration_on_a_body_at_rest_give_the_spin_up():
+    """#16: `impulse --inertia 0.1 --torque 2N*m --duration 0.5s` refused, though J = τΔt = 1
+    N·m·s and Δω = J/I = 10 rad/s are fixed. ω₀ is taken as 0 (at rest, as spin-down does),
+    with a note, and the answer is the one for ω₀ = 0 given."""
+    report = solve_balance(0.1, None, None, 2.0, 0.5)
+    assert values(report) == values(solve_balance(0.1, 0.0, None, 2.0, 0.5))
+    assert values(report)["omega1"] == pytest.approx(10.0, rel=1e-15) and values(report)["J"] == pytest.approx(1.0, rel=1e-15)
+    assert any("--omega0" in note and "at rest" in note for note in report.notes)
+
+
+@pytest.mark.parametrize(
+    "args,known,unknown",
+    [
+        ((None, None, None, 2.0, 0.5), {"J": 1.0, "torque": 2.0, "duration": 0.5}, ("delta_omega", "inertia", "omega0", "omega1", "L0", "L1", "KE0", "KE1")),
+        ((None, 3.0, None, 2.0, 0.5), {"J": 1.0, "omega0": 3.0}, ("delta_omega", "inertia", "omega1", "L0", "KE1")),
+        ((0.1, 0.0, 10.0, None, None), {"J": 1.0, "delta_omega": 10.0, "L1": 1.0, "KE1": 5.0}, ("torque", "duration")),
+        ((None, 1.0, 3.0, 2.0, None), {"delta_omega": 2.0}, ("J", "inertia", "duration", "L0", "KE1")),
+        ((None, 1.0, 3.0, None, None), {"delta_omega": 2.0}, ("J", "inertia", "torque", "duration")),
+    ],
+)
+def test_two_or_more_left_out_answer_what_the_rest_determine(args, known, unknown):
+    """J = τΔt needs τ and Δt (or I, ω₀ and ω₁); Δω = ω₁ − ω₀ needs both (or τΔt/I): each is
+    given where its inputs are, the rest null with a note naming them; refused only where
+    neither J nor Δω is fixed."""
+    report = solve_balance(*args)
+    result = values(report)
+    for name, value in known.items():
+        assert result[name] == pytest.approx(value, rel=1e-15), name
+    for name in unknown:
+        assert result[name] is None, name
+    assert any("not fixed" in note for note in report.notes)
+    report.steps[:]

@@ -276,3 +276,68 @@ def test_impossible_bodies_are_input_errors(part, fragment):
     with pytest.raises(InputError) as caught:
         body_inertia([part])
     assert fragment in str(caught.value)
+
+
+# The parts table (#16, item 3) ---------------------------------------------------------------
+
+
+def centre_reference(shape: str, axis: str, m, d):
+    """(I about the parallel axis through the centre of mass, distance to it) of a part whose axis
+    is not through its centre, from ∫(x − x̄)² dm over the body (x measured from the axis)."""
+    m = mpmath.mpf(m)
+    d = {k: mpmath.mpf(v) for k, v in d.items()}
+    if shape == "point":
+        return mpmath.mpf(0), d["radius"]
+    if shape == "rod":  # mass along 0 ≤ x ≤ L
+        extent = d["length"]
+    elif axis == "edge-width":  # strips at distances 0 ≤ x ≤ H from the edge
+        extent = d["height"]
+    else:  # edge-height
+        extent = d["width"]
+    density = m / extent
+    centre = quad(lambda x: density * x, [0, extent]) / m
+    return quad(lambda x: density * (x - centre) ** 2, [0, extent]), centre
+
+
+@pytest.mark.parametrize(
+    "shape,axis,dims",
+    [("rod", "end", {"length": 0.31}), ("plate", "edge-width", {"width": 0.4, "height": 0.9}), ("plate", "edge-height", {"width": 0.4, "height": 0.9}), ("point", "distance", {"radius": 0.2})],
+)
+def test_parts_table_gives_the_centre_moment_and_offset_of_a_part_turning_off_centre(shape, axis, dims):
+    """#16: a rod part with axis=end showed I_cm = ML²/3 (0.011532 for 360 g, 0.31 m; the true
+    I_cm is 0.002883) and offset 0; a point given by radius= showed offset 0."""
+    mass = 0.36
+    report = solve([Part("disc", 1.0, {"radius": 0.1}), Part(shape, mass, dims, axis, source="--part 2")])
+    columns = [key for key, _, _ in report.tables["parts"].columns]
+    row = dict(zip(columns, report.tables["parts"].rows[1]))
+    with mp.workdps(30):
+        centre_moment, offset = centre_reference(shape, axis, mass, dims)
+    assert row["I_cm"] == pytest.approx(float(centre_moment), rel=1e-14, abs=1e-300)
+    assert row["offset"] == pytest.approx(float(offset), rel=1e-15)
+    if shape == "rod":
+        assert row["I_cm"] == pytest.approx(0.002883, rel=1e-3) and row["I"] == pytest.approx(0.011532, rel=1e-4)
+
+
+part_specs = st.one_of(
+    st.tuples(st.sampled_from([c for c in CASES if c[0] != "point"]), st.one_of(st.none(), st.floats(0, 10))),
+    st.tuples(st.just(("point", "distance", {})), st.floats(0, 10)),
+    st.tuples(st.just(("point", "distance", {"radius": 0.3})), st.none()),
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(specs=st.lists(st.tuples(part_specs, st.floats(1e-3, 1e3), st.floats(1e-2, 1e2)), min_size=2, max_size=5))
+def test_every_row_of_the_parts_table_obeys_the_parallel_axis_theorem(specs):
+    """I = I_cm + m·offset² in every row, whatever the shape, axis and shift; I_cm ≤ I, offset ≥ 0."""
+    parts = []
+    for number, (((shape, axis, dims), offset), mass, scale) in enumerate(specs, start=1):
+        if offset is not None and not SHAPES[shape].axis(axis).through_centre:
+            offset = None
+        sized = {k: v * scale for k, v in dims.items()}
+        parts.append(Part(shape, mass, sized, axis, offset, source=f"--part {number}"))
+    table = solve(parts).tables["parts"]
+    columns = [key for key, _, _ in table.columns]
+    for cells in table.rows:
+        row = dict(zip(columns, cells))
+        assert row["offset"] >= 0 and 0 <= row["I_cm"] <= row["I"] * (1 + 1e-15)
+        assert row["I"] == pytest.approx(row["I_cm"] + row["mass"] * row["offset"] ** 2, rel=4e-16 * 4)

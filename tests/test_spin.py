@@ -367,3 +367,25 @@ def test_auto_never_lands_in_an_unstable_or_inaccurate_regime(inertia, viscous, 
     t_ref, theta_ref = stop_reference(inertia, -0.3, viscous, 0.001, 40.0, exponent=mpmath.mpf(exponent))
     assert rel_error(report.results["t_stop"].value, t_ref) <= (1e-14 if exponent == 2 else 1e-8)
     assert rel_error(report.results["theta_stop"].value, theta_ref) <= (1e-14 if exponent == 2 else 1e-8)
+
+
+# Fixed steps: the budget and the error of what they answer (#16, items 5-6) -------------------
+
+STIFF_WHEEL = (0.01, Torques(friction=0.05, viscous=2.0), 100.0)  # b/I = 200 /s: stops in 0.041 s
+
+
+def steps_taken(report) -> int:
+    return int(report.method.split(" steps")[0].split(", ")[-1])
+
+
+def test_a_fixed_step_budget_counts_the_steps_to_the_stop_not_to_a_bound_on_it():
+    """#16: rk4 at dt = 0.1 ms on a wheel that stops in 0.041 s takes about 415 steps, and was
+    refused at 125,000: its budget came from the time friction alone would take (20 s)."""
+    inertia, torques, omega0 = STIFF_WHEEL
+    report = solve(inertia, torques, omega0, method="rk4", dt=1e-4)
+    t_ref, theta_ref = stop_reference(inertia, -torques.friction, torques.viscous, 0.0, omega0)
+    assert rel_error(report.results["t_stop"].value, t_ref) <= 1e-8  # measured 1.4e-9: rk4 at b·dt/I = 0.02
+    assert rel_error(report.results["theta_stop"].value, theta_ref) <= 1e-8
+    assert 400 <= steps_taken(report) <= 430
+    with pytest.raises(InputError, match="more than 125,000 rk4 steps"):  # 1,000 s to stop at 1 ms a step: still refused
+        solve(1.0, Torques(friction=0.01), 10.0, method="rk4", dt=1e-3)

@@ -21,8 +21,10 @@ from taucli.errors import InputError
 from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
+from taucli.scenes.friction import needs_kinetic, static_coefficient
 
 HANGING = math.pi / 2
+EPSILON = 2.0**-52
 
 
 @dataclass(frozen=True)
@@ -59,7 +61,7 @@ class Slope:
     """Where m2 is: hanging (θ = 90°), on a table (0°) or a slope; its friction coefficients."""
 
     angle: float = HANGING
-    mu_k: float = 0.0
+    mu_k: float | None = 0.0  # None: not given (friction.py's rule: needed only if m2 slides)
     mu_s: float | None = None
 
     @property
@@ -80,9 +82,7 @@ def _check(m1: float, m2: float, pulley: Pulley, slope: Slope) -> None:
         raise InputError("--pulley-shape", "expected disc or ring", example="--pulley-shape ring", got=repr(pulley.shape))
     if not 0 <= slope.angle <= HANGING:
         raise InputError("--incline", "expected an angle from 0 to 90 deg", example="--incline 30deg", got=f"{fmt(math.degrees(slope.angle))} deg")
-    if slope.hanging and (slope.mu_k or slope.mu_s):
-        raise InputError("--mu-k", "applies when m2 slides: give --incline (0deg for a table)", example="--incline 0deg --mu-k 0.2")
-    if slope.mu_s is not None and slope.mu_k > slope.mu_s:
+    if slope.mu_s is not None and slope.mu_k is not None and slope.mu_k > slope.mu_s:
         raise InputError("--mu-k", "must not exceed --mu-s (kinetic friction is at most static friction)", got=f"{fmt(slope.mu_k)} > {fmt(slope.mu_s)}")
 
 
@@ -102,11 +102,13 @@ def solve(
     notes: list[str] = []
     if pulley.mass and pulley.shape is None:
         notes.append("pulley taken as a uniform solid disc (I = ½MR²); --pulley-shape ring for a thin ring")
+    if slope.hanging and (slope.mu_k or slope.mu_s):
+        notes.append("m2 hangs (or slides along a vertical face): no normal force, so no friction; --mu-k and --mu-s play no part")
+        slope = Slope()
     sin_angle = 1.0 if slope.hanging else math.sin(slope.angle)
     normal = 0.0 if slope.hanging else m2 * g * math.cos(slope.angle)
-    if slope.mu_s is None and slope.mu_k:
-        notes.append("no --mu-s: static friction taken as equal to kinetic friction")
-    mu_s = slope.mu_k if slope.mu_s is None else slope.mu_s
+    mu_s = static_coefficient(slope.mu_s, slope.mu_k or None, notes) or 0.0
+    kinetic = slope.mu_k or 0.0  # a placeholder where μk is not given: the motion then goes unreported
 
     pulley_mass = pulley.effective_mass()
     if pulley_mass:
@@ -115,7 +117,7 @@ def solve(
     # (m1 − m2) is exact for near-equal masses (Sterbenz); m1·g − m2·g would lose the difference.
     drive = (m1 - m2) * g if slope.hanging else m1 * g - m2 * g * sin_angle
     axle = pulley.axle_force()
-    loads = Loads(drive=drive, friction=slope.mu_k * normal + axle, static=mu_s * normal + axle)
+    loads = Loads(drive=drive, friction=kinetic * normal + axle, static=mu_s * normal + axle)
     motion = evolve(moving_mass, loads, v0, Evolver(Method("exact")))
     a = motion.initial_rate
     direction = motion.direction
@@ -126,7 +128,7 @@ def solve(
 
     results: dict[str, Value] = {"a": Value(a, "m/s**2", "acceleration of the masses (m1 downward positive)")}
     if motion.held_from_start:
-        tension_high, tension_low = _statics(m1, m2, g, sin_angle, normal, pulley, notes)
+        tension_high, tension_low = _statics(m1, m2, g, sin_angle, mu_s * normal, pulley, notes)
         notes.append(
             "nothing moves: "
             + ("the masses balance" if drive == 0 and not loads.holding else "friction can hold the system")
@@ -135,7 +137,7 @@ def solve(
     else:
         # T1 = m1(g − a) and T2 = m2(a + g sin θ) + s μk N, with g − a and a + g sin θ written out
         # from a's formula: sums of positive terms, where the differences cancel as a -> g or −g sin θ.
-        sliding = direction * slope.mu_k * normal
+        sliding = direction * kinetic * normal
         g_less_a = (g * (m2 * (1 + sin_angle) + pulley_mass) + direction * loads.friction) / moving_mass
         tension_high = m1 * g_less_a
         if pulley_mass == 0 and axle == 0:
@@ -163,6 +165,11 @@ def solve(
         if distance is not None:
             notes.append("v is given at the distance; distance at the time")
 
+    unknown = slope.mu_k is None and normal > 0 and not motion.held_from_start
+    if unknown:  # it slides, and the sliding friction is not known: only that it moves, and which way
+        needs_kinetic(", ".join(name for name, value in results.items() if value.value is not None), notes)
+        results = {name: value._replace(value=None) for name, value in results.items()}
+        a = massless = None
     steps = DeferredSteps(_steps, m1, m2, pulley, g, slope, sin_angle, normal, a, massless, dict(results), motion.held_from_start, direction)
     model = ("massless pulley" if not pulley_mass else f"massive pulley ({_pulley_words(pulley)})") + ", string does not slip"
     if not slope.hanging:
@@ -173,7 +180,8 @@ def solve(
         model += "; friction holds it at rest"
     elif loads.friction:
         model += "; friction overcome"
-    return Report("atwood", model, "closed form", results, steps, notes, trajectory=deferred(_trajectory, motion, distance, time, results))
+    trajectory = None if unknown else deferred(_trajectory, motion, distance, time, results)
+    return Report("atwood", model, "closed form", results, steps, notes, trajectory=trajectory)
 
 
 def _trajectory(motion, distance: float | None, time: float | None, results: dict[str, Value]) -> Trajectory:
@@ -202,14 +210,26 @@ def _pulley_words(pulley: Pulley) -> str:
     return "solid disc" if (pulley.shape or "disc") == "disc" else "thin ring"
 
 
-def _statics(m1, m2, g, sin_angle, normal, pulley, notes) -> tuple[float | None, float | None]:
-    """Tensions at rest: T1 = m1 g; T2 is fixed unless friction acts both at the axle and on m2."""
+def _statics(m1, m2, g, sin_angle, grip, pulley, notes) -> tuple[float, float | None]:
+    """Tensions at rest. T1 = m1 g. T2 must balance the pulley, |T1 − T2| ≤ τ_a/R, and m2,
+    |T2 − m2 g sin θ| ≤ μs N (``grip``): statics fixes it wherever one of the two frictions is
+    absent, or where the two intervals meet in one point (both frictions at their limits, on
+    the point of slipping). Otherwise any T2 in their overlap balances, and it is null with
+    the bounds in a note."""
     tension_high = m1 * g
-    if not pulley.axle_friction:
+    along = m2 * g * sin_angle
+    axle = pulley.axle_force()
+    if not axle:
         return tension_high, tension_high  # no torque on the pulley at rest: equal tensions
-    if not normal:
-        return tension_high, m2 * g * sin_angle
-    notes.append("T2: statically indeterminate (friction at the axle and under m2 share the load in a way statics cannot fix)")
+    if not grip:
+        return tension_high, along  # nothing along the surface but the string and gravity
+    low, high = max(tension_high - axle, along - grip), min(tension_high + axle, along + grip)
+    if high - low <= 16 * EPSILON * (tension_high + along + axle + grip):
+        return tension_high, (low + high) / 2
+    notes.append(
+        "T2: statically indeterminate: friction at the axle and under m2 share the load in a way statics cannot fix; "
+        f"it lies between {fmt(low, 6)} and {fmt(high, 6)} N"
+    )
     return tension_high, None
 
 
@@ -251,7 +271,7 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
     if slope.hanging:
         steps.append(Step("For m₂ (moving up)", "T₂ − m₂g = m₂a", "", "", "the net upward force on m₂ is the string tension minus its weight"))
     else:
-        friction_term = " − μₖm₂g cos θ" if slope.mu_k else ""
+        friction_term = " − μₖm₂g cos θ" if slope.mu_k != 0 else ""  # None: not given, but acting
         steps.append(
             Step(
                 f"For m₂ (pulled along the {'table' if slope.angle == 0 else 'slope'})",
@@ -275,10 +295,10 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
     )
     pulley_term = f" + {pulley.symbol()}" if pulley.effective_mass() else ""
     drive_text = "m₁g − m₂g" if slope.hanging else "m₁g − m₂g sin θ"
-    resist = (" − μₖm₂g cos θ" if slope.mu_k else "") + (" − τ_a/R" if pulley.axle_friction else "")
+    resist = (" − μₖm₂g cos θ" if slope.mu_k != 0 and not slope.hanging else "") + (" − τ_a/R" if pulley.axle_friction else "")
     numbers = (
         f"({quantity_text(m1 * g, 'N')} − {quantity_text(m2 * g * sin_angle, 'N')}"
-        + (f" − {quantity_text(slope.mu_k * normal + pulley.axle_force(), 'N')}" if resist else "")
+        + (f" − {quantity_text((slope.mu_k or 0.0) * normal + pulley.axle_force(), 'N')}" if resist and slope.mu_k is not None else " − friction" if resist else "")
         + f") / ({fmt(m1)} + {fmt(m2)}"
         + (f" + {fmt(pulley.effective_mass())}" if pulley_term else "")
         + " kg)"
@@ -288,7 +308,7 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
             "Add the three equations: the tensions cancel",
             f"a = ({drive_text}{resist}) / (m₁ + m₂{pulley_term})",
             numbers,
-            quantity_text(a, "m/s**2") + ("  (held: static friction wins, a = 0)" if held else ""),
+            "needs μₖ (--mu-k)" if a is None else quantity_text(a, "m/s**2") + ("  (held: static friction wins, a = 0)" if held else ""),
             "adding the equations eliminates T₁ and T₂; the pulley's "
             f"{pulley.symbol()} in the denominator slows the system, as extra mass would"
             if pulley_term
@@ -306,7 +326,7 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
             )
         )
     tension_high, tension_low = results["T1"].value, results["T2"].value
-    if not held:
+    if not held and a is not None:
         steps.append(Step("Tension on m₁'s side", "T₁ = m₁(g − a)", f"{fmt(m1)} × ({fmt(g)} − {fmt(a)})", quantity_text(tension_high, "N"), "from m₁'s equation"))
         if slope.hanging:
             steps.append(Step("Tension on m₂'s side", "T₂ = m₂(g + a)", f"{fmt(m2)} × ({fmt(g)} + {fmt(a)})", quantity_text(tension_low, "N"), "from m₂'s equation"))
@@ -326,7 +346,7 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
                     "difference is exactly the force needed to turn the pulley",
                 )
             )
-    if pulley.radius is not None:
+    if pulley.radius is not None and a is not None:
         steps.append(Step("Angular acceleration of the pulley", "α = a/R", f"{fmt(a)} / {fmt(pulley.radius)}", quantity_text(a / pulley.radius, "rad/s**2"), "the string does not slip on the rim"))
     return steps
 
@@ -356,7 +376,7 @@ def atwood(
     if m2 is None:
         assumed.notes.append("no --m2: a single mass on a string wound on the pulley")
     pulley = Pulley(pulley_mass or 0.0, pulley_radius, pulley_shape, pulley_inertia, axle_friction or 0.0)
-    slope = Slope(HANGING if incline is None else incline, mu_k or 0.0, mu_s)
+    slope = Slope(HANGING if incline is None else incline, mu_k, mu_s)
     gravity = assumed.gravity(g)
     report = solve(m1, m2 or 0.0, pulley, gravity, slope=slope, v0=v0 or 0.0, distance=distance, time=time)
     return assumed.applied(report)

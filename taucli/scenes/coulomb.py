@@ -122,8 +122,7 @@ class Evolver:
                 max_steps=numerics.MAX_STEPS[name] - self.steps,
             )
         except numerics.TooManySteps:
-            option, hint = ("--rtol", "use a looser --rtol, or --method auto") if name == "rk45" else ("--dt", "use a larger --dt, or --method rk45 or auto")
-            raise InputError(option, f"this run needs more than {numerics.MAX_STEPS[name]:,} {name} steps in all (answers and plot)", hint=hint) from None
+            self._refuse()
         self.steps += solution.steps
         if solution.unstable and not math.isfinite(solution.omega) and self.method.dt is None:
             self.unstable.append(f"{self.method.name}: ω left the range of a double (it is not finite); results withheld")
@@ -135,6 +134,11 @@ class Evolver:
                 "or --method auto"
             )
         return solution
+
+    def _refuse(self):
+        name = self.method.name
+        option, hint = ("--rtol", "use a looser --rtol, or --method auto") if name == "rk45" else ("--dt", "use a larger --dt, or --method rk45 or auto")
+        raise InputError(option, f"this run needs more than {numerics.MAX_STEPS[name]:,} {name} steps in all (answers and plot)", hint=hint) from None
 
     def state(self, phase: Phase, t: float, start: tuple[float, float, float] | None = None) -> tuple[float, float]:
         """(ω, θ) at time t within the phase (before its stop); a stepping method steps from the
@@ -160,8 +164,14 @@ class Evolver:
             return None
         if target < 0:
             return None
-        # |dω/dt| only grows from the target back to ω₀, so this bounds the time to get there.
-        bound = 1.01 * abs(phase.closed.omega0 - target) / abs(rate)
+        # |dω/dt| only grows from the target back to ω₀, so this bounds the time to get there,
+        # and its value at ω₀ bounds the time from below: a fixed step that cannot get there
+        # within the budget even at that pace is refused at once, not after a second of stepping.
+        gap = abs(phase.closed.omega0 - target)
+        bound = 1.01 * gap / abs(rate)
+        least = gap / abs(phase.rate(phase.closed.omega0))
+        if self.method.dt is not None and self.method.name != "rk45" and least / self.method.dt > numerics.MAX_STEPS[self.method.name] - self.steps:
+            self._refuse()
         solution = self._run(phase, bound, target)
         return (solution.t, solution.theta) if solution.event else None
 

@@ -45,21 +45,23 @@ def solve_balance(
     inertia_steps: Sequence[Step] = (),
 ) -> Report:
     """τΔt = I(ω₁ − ω₀) with any four given: the fifth, J, Δω, L and KE before and after."""
+    notes: list[str] = []
+    if omega0 is None and omega1 is None and None not in (inertia, torque, duration):
+        omega0 = 0.0  # as spin-down takes it: what the torque does to a body at rest
+        notes.append("no --omega0: the body starts at rest (ω₀ = 0); give --omega0 for another start")
     given = {"inertia": inertia, "omega0": omega0, "omega1": omega1, "torque": torque, "duration": duration}
     missing = [name for name, value in given.items() if value is None]
     if len(missing) > 1:
-        raise InputError(
-            " and ".join(_OPTIONS[name] for name in missing),
-            "are missing: give four of --inertia, --omega0, --omega1, --torque, --duration, and the fifth is solved for",
-            example="--inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s",
-        )
-    notes: list[str] = []
+        return _partial_balance(given, missing, notes, inertia_steps)
     unknown = missing[0] if missing else None
     i, w0, w1, tau, dt = inertia, omega0, omega1, torque, duration
+    change = None  # Δω where it is known before ω₀ or ω₁ is rounded
     if unknown == "omega1":
-        w1 = w0 + tau * dt / i
+        change = tau * dt / i
+        w1 = w0 + change
     elif unknown == "omega0":
-        w0 = w1 - tau * dt / i
+        change = tau * dt / i
+        w0 = w1 - change
     elif unknown == "torque":
         tau = i * (w1 - w0) / dt
     elif unknown == "duration":
@@ -85,7 +87,7 @@ def solve_balance(
     impulse = tau * dt
     results: dict[str, Value] = {
         "J": Value(impulse, "N*m*s", "angular impulse τΔt"),
-        "delta_omega": Value(w1 - w0, "rad/s", "change of angular velocity"),
+        "delta_omega": Value(w1 - w0 if change is None else change, "rad/s", "change of angular velocity"),
         "inertia": Value(i, "kg*m**2", "moment of inertia" + (" (solved for)" if unknown == "inertia" else "")),
         "omega0": Value(w0, "rad/s", "angular velocity before" + (" (solved for)" if unknown == "omega0" else "")),
         "omega1": Value(w1, "rad/s", "angular velocity after" + (" (solved for)" if unknown == "omega1" else "")),
@@ -119,6 +121,52 @@ def solve_balance(
     model = "constant torque: τΔt = IΔω" + (f", solved for {unknown}" if unknown else ", all five given and consistent")
     trajectory = deferred(Trajectory, CURVES, dt, lambda t: (tau, w0 + tau * t / i))
     return Report("impulse", model, "closed form", results, steps, notes, trajectory=trajectory)
+
+
+def _partial_balance(given: dict[str, float | None], missing: list[str], notes: list[str], inertia_steps: Sequence[Step]) -> Report:
+    """Two or more of I, ω₀, ω₁, τ, Δt left out: one equation, τΔt = I(ω₁ − ω₀), cannot fix them
+    all, but J = τΔt (or I(ω₁ − ω₀)) and Δω = ω₁ − ω₀ may still be known. Those are given, the
+    rest null with a note; refused where neither is known."""
+    i, w0, w1, tau, dt = (given[name] for name in UNKNOWNS)
+    impulse = tau * dt if tau is not None and dt is not None else None
+    if impulse is None and None not in (i, w0, w1):
+        impulse = i * (w1 - w0)
+    change = None if w0 is None or w1 is None else w1 - w0
+    if impulse is None and change is None:
+        raise InputError(
+            " and ".join(_OPTIONS[name] for name in missing),
+            "are missing: give four of --inertia, --omega0, --omega1, --torque, --duration, and the fifth is solved for",
+            example="--inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s",
+        )
+    results: dict[str, Value] = {
+        "J": Value(impulse, "N*m*s", "angular impulse τΔt"),
+        "delta_omega": Value(change, "rad/s", "change of angular velocity"),
+        "inertia": Value(i, "kg*m**2", "moment of inertia"),
+        "omega0": Value(w0, "rad/s", "angular velocity before"),
+        "omega1": Value(w1, "rad/s", "angular velocity after"),
+        "torque": Value(tau, "N*m", "constant torque"),
+        "duration": Value(dt, "s", "time the torque acts"),
+        "L0": Value(None if i is None or w0 is None else i * w0, "kg*m**2/s", "angular momentum before"),
+        "L1": Value(None if i is None or w1 is None else i * w1, "kg*m**2/s", "angular momentum after"),
+        "KE0": Value(None if i is None or w0 is None else 0.5 * i * w0 * w0, "J", "rotational kinetic energy before"),
+        "KE1": Value(None if i is None or w1 is None else 0.5 * i * w1 * w1, "J", "rotational kinetic energy after"),
+    }
+    unfixed = [name for name, value in results.items() if value.value is None]
+    notes.append(
+        f"{', '.join(unfixed)}: not fixed by what is given: τΔt = I(ω₁ − ω₀) is one equation, and "
+        f"{', '.join(_OPTIONS[name] for name in missing)} are all left out; give all but one of them to solve for it"
+    )
+    steps = [*inertia_steps, Step("Angular impulse equals the change of angular momentum", "J = τΔt = IΔω = I(ω₁ − ω₀)", "", "",
+                                  "multiply τ = Iα by Δt: with the torque constant, αΔt = Δω")]
+    if impulse is not None:
+        by_torque = tau is not None and dt is not None
+        steps.append(Step("The impulse", "J = τΔt" if by_torque else "J = I(ω₁ − ω₀)",
+                          f"{fmt(tau)} × {fmt(dt)}" if by_torque else f"{fmt(i)} × ({fmt(w1)} − {fmt(w0)})", quantity_text(impulse, "N*m*s"),
+                          "all the motion remembers of the torque"))
+    if change is not None:
+        steps.append(Step("The change of angular velocity", "Δω = ω₁ − ω₀", f"{fmt(w1)} − {fmt(w0)}", quantity_text(change, "rad/s"), "from the two given"))
+    known = " and ".join(name for name, value in (("J", impulse), ("Δω", change)) if value is not None)
+    return Report("impulse", f"constant torque: τΔt = IΔω, which fixes only {known} here", "closed form", results, steps, notes)
 
 
 def solve_changing_inertia(inertia0: float, inertia1: float, omega0: float, *, inertia_steps: Sequence[Step] = ()) -> Report:

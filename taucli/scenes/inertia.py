@@ -37,6 +37,9 @@ class Axis:
     moment: Callable[..., float]  # moment(mass, **dims) -> I about this axis
     why: str
     through_centre: bool = True  # the parallel-axis theorem needs an axis through the centre of mass
+    # For an axis not through the centre: the name of the parallel axis through it, and the
+    # distance between the two from the dimensions (so a parts table can show I_cm and offset).
+    centre: tuple[str, Callable[..., float]] | None = None
 
 
 @dataclass(frozen=True)
@@ -118,7 +121,7 @@ SHAPES: dict[str, Shape] = {
             Axis("center", "a perpendicular axis through its centre", "I = ML²/12", "{M} × {L}²/12", lambda mass, length: mass * length**2 / 12,
                  "∫x² (M/L) dx from −L/2 to L/2"),
             Axis("end", "a perpendicular axis through one end", "I = ML²/3", "{M} × {L}²/3", lambda mass, length: mass * length**2 / 3,
-                 "∫x² (M/L) dx from 0 to L", through_centre=False),
+                 "∫x² (M/L) dx from 0 to L", through_centre=False, centre=("center", lambda length: length / 2)),
         )),
         Shape("plate", "rectangular plate", ("width", "height"), (
             Axis("normal", "the axis normal to it through its centre", "I = M(W² + H²)/12", "{M} × ({W}² + {H}²)/12",
@@ -129,9 +132,11 @@ SHAPES: dict[str, Shape] = {
             Axis("center-height", "the in-plane axis through its centre parallel to the height", "I = MW²/12", "{M} × {W}²/12",
                  lambda mass, width, height: mass * width**2 / 12, "strips along the height, each at its distance across the width"),
             Axis("edge-width", "an edge of length W", "I = MH²/3", "{M} × {H}²/3",
-                 lambda mass, width, height: mass * height**2 / 3, "strips parallel to the edge, at distances 0 to H", through_centre=False),
+                 lambda mass, width, height: mass * height**2 / 3, "strips parallel to the edge, at distances 0 to H", through_centre=False,
+                 centre=("center-width", lambda width, height: height / 2)),
             Axis("edge-height", "an edge of length H", "I = MW²/3", "{M} × {W}²/3",
-                 lambda mass, width, height: mass * width**2 / 3, "strips parallel to the edge, at distances 0 to W", through_centre=False),
+                 lambda mass, width, height: mass * width**2 / 3, "strips parallel to the edge, at distances 0 to W", through_centre=False,
+                 centre=("center-height", lambda width, height: width / 2)),
         )),
         Shape("box", "rectangular box", ("width", "height", "depth"), (
             Axis("height", "the axis through its centre parallel to the height", "I = M(W² + D²)/12", "{M} × ({W}² + {D}²)/12",
@@ -175,14 +180,21 @@ class Part:
 
 @dataclass(frozen=True)
 class PartInertia:
-    """A part's moment of inertia about its own centre and about the rotation axis."""
+    """A part's moment of inertia about its own centre and about the rotation axis.
+
+    ``inertia_centre`` is about the axis through the part's centre of mass parallel to the
+    rotation axis, and ``offset`` the distance between the two, so that always
+    inertia = inertia_centre + mass·offset² (a point: 0 and its distance; a rod about its end:
+    ML²/12 and L/2).
+    """
 
     part: Part
     shape: Shape
     axis: Axis
-    inertia_centre: float | None  # None where the axis is not through the centre of mass
+    inertia_centre: float
     inertia: float
     steps: tuple[Step, ...]
+    offset: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -234,7 +246,7 @@ def part_inertia(part: Part) -> PartInertia:
         return _point_inertia(part, shape, axis, dims)
 
     mass = part.mass
-    inertia_centre = axis.moment(mass, **dims)
+    inertia_centre = axis.moment(mass, **dims)  # about the axis named, before any shift
     shifted = part.offset is not None
     if shifted and not axis.through_centre:
         raise InputError(
@@ -266,6 +278,10 @@ def part_inertia(part: Part) -> PartInertia:
                 "the cross term ∫2x·d dm vanishes because the centre of mass is on the first axis",
             )
         )
+        return PartInertia(part, shape, axis, inertia_centre, inertia, tuple(steps), offset)
+    if axis.centre is not None:  # about an end or an edge: the same I seen from the centre of mass
+        central, distance = axis.centre
+        return PartInertia(part, shape, axis, shape.axis(central).moment(mass, **dims), inertia, tuple(steps), distance(**dims))
     return PartInertia(part, shape, axis, inertia_centre, inertia, tuple(steps))
 
 
@@ -283,7 +299,7 @@ def _point_inertia(part: Part, shape: Shape, axis: Axis, dims: Mapping[str, floa
         quantity_text(inertia, "kg*m**2"),
         axis.why,
     )
-    return PartInertia(part, shape, axis, 0.0, inertia, (step,))
+    return PartInertia(part, shape, axis, 0.0, inertia, (step,), distance)
 
 
 def describe_part(result: PartInertia) -> str:
@@ -348,7 +364,7 @@ def solve(parts: Sequence[Part]) -> Report:
     tables = {}
     if single is None:
         rows = tuple(
-            (r.shape.name, r.part.mass, r.inertia_centre, r.part.offset or 0.0, r.inertia, 100 * r.inertia / body.inertia)
+            (r.shape.name, r.part.mass, r.inertia_centre, r.offset, r.inertia, 100 * r.inertia / body.inertia if body.inertia else None)
             for r in body.parts
         )
         columns = (

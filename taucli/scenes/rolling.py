@@ -18,8 +18,9 @@ import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError, did_you_mean
-from taucli.report import Report, Step, Trajectory, Value, deferred, fmt, quantity_text
+from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.friction import needs_kinetic, static_coefficient
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 RIGHT_ANGLE = math.pi / 2
@@ -71,10 +72,15 @@ def solve_incline(
     height: float | None = None,
     v0: float = 0.0,
 ) -> Report:
-    """Roll or slip on a slope of ``angle``; with --length or --height, the state at the bottom;
-    with v0 > 0 (up the slope), how far it climbs."""
-    if not 0 <= angle < RIGHT_ANGLE:
-        raise InputError("--angle", "expected an angle from 0 up to (not including) 90 deg", example="--angle 30deg", got=f"{fmt(math.degrees(angle))} deg")
+    """Roll or slip on a slope of ``angle`` (0 to 90°); with --length or --height, the state at
+    the bottom; with v0 > 0 (up the slope), how far it climbs.
+
+    Friction coefficients follow friction.py's rule: only μk given, μs = μk; slipping with no μk,
+    what needs it is null. On a vertical face (90°) there is no normal force and so no friction:
+    it falls freely, a = g, and its spin does not change; no μs can make it roll.
+    """
+    if not 0 <= angle <= RIGHT_ANGLE:
+        raise InputError("--angle", "expected an angle from 0 to 90 deg", example="--angle 30deg", got=f"{fmt(math.degrees(angle))} deg")
     _check_friction(mu_s, mu_k)
     if length is not None and height is not None:
         raise InputError("--length", "conflicts with --height: give the distance along the slope or the height, not both")
@@ -82,39 +88,61 @@ def solve_incline(
         raise InputError("--height", "needs a slope: on the flat there is no height to roll down", example="--angle 30deg --height 1m")
     k2, mass, radius = roller.k2, roller.mass, roller.radius
     notes: list[str] = []
-    sin_a, cos_a = math.sin(angle), math.cos(angle)
-    mu_min = math.tan(angle) * k2 / (1 + k2)
-    if mu_s is None:
-        rolls = True
-        notes.append(f"no --mu-s: assumed to roll without slipping, which needs μs ≥ μ_min = {fmt(mu_min)}")
+    vertical = angle == RIGHT_ANGLE
+    sin_a, cos_a = (1.0, 0.0) if vertical else (math.sin(angle), math.cos(angle))
+    mu_min = None if vertical else math.tan(angle) * k2 / (1 + k2)
+    static = None
+    if vertical:
+        rolls = False
+        notes.append(
+            "a vertical face: no normal force, so no friction: it falls freely (a = g) and its spin does not change; "
+            "mu_min: none, no μs makes it roll (μ_min = tan θ · k²/(1 + k²) grows without bound as θ -> 90°)"
+        )
     else:
-        rolls = mu_s >= mu_min
-    if not rolls and mu_k is None:
-        raise InputError("--mu-k", f"is required: μs = {fmt(mu_s)} is below μ_min = {fmt(mu_min)}, so the body slips", example="--mu-k 0.1")
+        static = static_coefficient(mu_s, mu_k, notes)
+        rolls = True if static is None else static >= mu_min
+        if static is None:
+            notes.append(f"no --mu-s: assumed to roll without slipping, which needs μs ≥ μ_min = {fmt(mu_min)}")
 
+    a: float | None
+    friction_per_mass: float | None
     if rolls:
         a = g * sin_a / (1 + k2)
         friction_per_mass = g * sin_a * k2 / (1 + k2)
+    elif vertical:
+        a, friction_per_mass = g, 0.0
+    elif mu_k is None:
+        a = friction_per_mass = None
     else:
         a = g * (sin_a - mu_k * cos_a)
         friction_per_mass = mu_k * g * cos_a
-    angular = None if radius is None else (a / radius if rolls else friction_per_mass / (k2 * radius))
+    angular = None
+    if radius is not None and a is not None:
+        if rolls:
+            angular = a / radius
+        elif k2 > 0:
+            angular = friction_per_mass / (k2 * radius)
+        else:  # no friction torque (the vertical face) on no rotational inertia: 0/0
+            notes.append("alpha: no torque acts on a body with no rotational inertia (k² = 0), so its spin is not fixed")
 
     results: dict[str, Value] = {
         "a": Value(a, "m/s**2", "acceleration of the centre, down the slope"),
         "alpha": Value(angular, "rad/s**2", "angular acceleration"),
-        "friction": Value(None if mass is None else mass * friction_per_mass, "N", "friction force at the contact, up the slope"),
+        "friction": Value(None if mass is None or friction_per_mass is None else mass * friction_per_mass, "N", "friction force at the contact, up the slope"),
         "mu_min": Value(mu_min, "", "least static coefficient for rolling"),
         "rolls": Value(rolls, None, "rolls without slipping"),
     }
-    if radius is None:
+    if a is not None and radius is None:
         notes.append("alpha: give --radius (a does not need it)")
-    if mass is None:
+    if a is not None and mass is None:
         notes.append("friction: give --mass (a does not need it)")
 
     run = length if length is not None else (None if height is None else height / sin_a)
     if run is not None:
-        if a <= 0:
+        if a is None:
+            results["v"] = Value(None, "m/s", "speed at the bottom")
+            results["t"] = Value(None, "s", "time to the bottom")
+        elif a <= 0:
             if angle == 0:
                 notes.append("on the flat nothing pulls it along: from rest it stays where it is")
             else:
@@ -126,24 +154,33 @@ def solve_incline(
             duration = 2 * run / speed
             results["v"] = Value(speed, "m/s", "speed at the bottom, from rest")
             results["t"] = Value(duration, "s", "time to the bottom")
-            spin_speed = speed if rolls else friction_per_mass / k2 * duration  # R ω at the bottom
+            spin_speed = speed if rolls else (friction_per_mass / k2 * duration if friction_per_mass else 0.0)  # R ω at the bottom
             if mass is not None:
                 results["KE_trans"] = Value(0.5 * mass * speed**2, "J", "kinetic energy of translation at the bottom")
                 results["KE_rot"] = Value(0.5 * k2 * mass * spin_speed**2, "J", "kinetic energy of rotation at the bottom")
     if v0 > 0:
         deceleration = a
-        if deceleration <= 0:
+        if deceleration is None:
+            for name, unit, label in (("d_climb", "m", "distance it climbs up the slope"), ("h_climb", "m", "height it climbs"), ("t_climb", "s", "time to the highest point")):
+                results[name] = Value(None, unit, label)
+        elif deceleration <= 0:
             notes.append("going up, friction never lets gravity stop it: it does not come back")
         else:
             climb = v0 * v0 / (2 * deceleration)
             results["d_climb"] = Value(climb, "m", "distance it climbs up the slope")
             results["h_climb"] = Value(climb * sin_a, "m", "height it climbs")
             results["t_climb"] = Value(v0 / deceleration, "s", "time to the highest point")
+    if a is None:
+        needs_kinetic(", ".join(name for name in ("a", "alpha", "friction", "v", "t", "d_climb", "h_climb", "t_climb") if name in results), notes)
 
-    steps = _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_mass, results)
+    steps = DeferredSteps(_incline_steps, roller, angle, g, static, mu_k, mu_min, rolls, a, results)
     model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) on a {fmt(math.degrees(angle))}° slope, "
-    model += "rolling without slipping" if rolls else "slipping (kinetic friction)"
-    return Report("rolling", model, "closed form", results, steps, notes, trajectory=deferred(_incline_trajectory, a, v0, results))
+    if vertical:
+        model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) falling along a vertical face (no normal force, no friction)"
+    else:
+        model += "rolling without slipping" if rolls else "slipping (kinetic friction)" if mu_k is not None else "slipping (μk not given)"
+    trajectory = None if a is None else deferred(_incline_trajectory, a, v0, results)
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
 
 
 def _incline_trajectory(a: float, v0: float, results: dict[str, Value]) -> Trajectory:
@@ -162,13 +199,18 @@ def _incline_trajectory(a: float, v0: float, results: dict[str, Value]) -> Traje
     return Trajectory(curves, bottom, lambda t: (a * t * t / 2, a * t), marks=((bottom, "reaches the bottom"),))
 
 
-def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_mass, results) -> list[Step]:
+def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, results) -> list[Step]:
     k2 = roller.k2
     degrees = fmt(math.degrees(angle))
     steps = [
         Step("Translation of the centre (along the slope)", "m a = m g sin θ − f", "", "", "gravity's component pulls it down the slope; friction f at the contact acts up the slope"),
         Step("Rotation about the centre", "I α = f R,  I = k² m R²", f"k² = {fmt(k2)} for a {roller.description}", "", "only friction has a lever arm about the centre"),
     ]
+    if mu_min is None:  # the vertical face
+        steps.append(
+            Step("No normal force on a vertical face, so no friction", "N = m g cos 90° = 0  ⇒  f = 0,  a = g,  α = 0", "",
+                 quantity_text(a, "m/s**2"), "friction can be at most μN, and N = 0: nothing at the contact acts on it")
+        )
     if rolls:
         steps.append(Step("No slip", "a = R α", "", "", "the contact point is instantaneously at rest"))
         steps.append(
@@ -180,23 +222,24 @@ def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_
                 "f = k² m a from the rotation and no-slip equations; put into the translation equation, m cancels and so does R",
             )
         )
-    steps.append(
-        Step(
-            "Friction needed to roll, and the least μs that supplies it",
-            "f = m g sin θ · k²/(1 + k²),  μ_min = tan θ · k²/(1 + k²)",
-            f"tan {degrees}° × {fmt(k2)} / (1 + {fmt(k2)})",
-            fmt(mu_min),
-            "static friction can give at most μs N = μs m g cos θ"
-            + ("" if mu_s is None else f"; here μs = {fmt(mu_s)} {'≥' if rolls else '<'} μ_min, so it {'rolls' if rolls else 'slips'}"),
+    if mu_min is not None:
+        steps.append(
+            Step(
+                "Friction needed to roll, and the least μs that supplies it",
+                "f = m g sin θ · k²/(1 + k²),  μ_min = tan θ · k²/(1 + k²)",
+                f"tan {degrees}° × {fmt(k2)} / (1 + {fmt(k2)})",
+                fmt(mu_min),
+                "static friction can give at most μs N = μs m g cos θ"
+                + ("" if mu_s is None else f"; here μs = {fmt(mu_s)} {'≥' if rolls else '<'} μ_min, so it {'rolls' if rolls else 'slips'}"),
+            )
         )
-    )
-    if not rolls:
+    if not rolls and mu_min is not None:
         steps.append(
             Step(
                 "Slipping: kinetic friction instead of the no-slip condition",
                 "f = μₖ m g cos θ,  a = g (sin θ − μₖ cos θ),  α = μₖ g cos θ / (k² R)",
-                f"{fmt(g)} × (sin {degrees}° − {fmt(mu_k)} × cos {degrees}°)",
-                quantity_text(a, "m/s**2"),
+                "" if mu_k is None else f"{fmt(g)} × (sin {degrees}° − {fmt(mu_k)} × cos {degrees}°)",
+                "needs μₖ (--mu-k)" if a is None else quantity_text(a, "m/s**2"),
                 "the contact slides, so friction takes its kinetic value and a no longer equals Rα",
             )
         )
@@ -210,7 +253,7 @@ def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, friction_per_
                 Step("Energy check", "m g h = ½ m v² + ½ I ω² = ½ m v² (1 + k²)", "", "",
                      f"a share k²/(1 + k²) = {fmt(100 * k2 / (1 + k2), 3)}% of the kinetic energy is rotation; no energy is lost to static friction")
             )
-    if "d_climb" in results:
+    if "d_climb" in results and results["d_climb"].value is not None:
         steps.append(Step("How far it climbs", "d = v₀² / (2a)", "", quantity_text(results["d_climb"].value, "m"), "going up, the same a slows it"))
     return steps
 
@@ -240,11 +283,10 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
     else:
         t_roll = abs(slip) * k2 / (mu_k * g * (1 + k2))
         d_roll = (v0 + v_roll) / 2 * t_roll  # uniform deceleration: the mean speed times the time
-    energy_lost = None
-    if mass is not None:
-        before = 0.5 * mass * (v0 * v0 + k2 * spin_speed * spin_speed)
-        after = 0.5 * mass * v_roll * v_roll * (1 + k2)
-        energy_lost = before - after
+    # KE before − KE after = ½m(v₀² + k²u²) − ½m(1 + k²)v_roll², u = Rω₀, v_roll = (v₀ + k²u)/(1 + k²),
+    # = ½m[(1 + k²)(v₀² + k²u²) − (v₀ + k²u)²]/(1 + k²) = ½m k²(v₀ − u)²/(1 + k²): the difference
+    # cancels as the ball nearly rolls (it came out negative); this form is ≥ 0 and keeps its digits.
+    energy_lost = None if mass is None else 0.5 * mass * k2 / (1 + k2) * slip * slip
     results = _skid_results(t_roll, d_roll, v_roll, None if radius is None else v_roll / radius, energy_lost)
     steps = [
         Step("While it skids, kinetic friction acts against the slip", "m dv/dt = −μₖ m g·sgn s,  I dω/dt = +μₖ m g R·sgn s,  s = v − Rω", "", "",
