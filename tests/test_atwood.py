@@ -147,12 +147,12 @@ def test_thrown_upward_it_stops_and_comes_back():
     "args,fragment",
     [
         (dict(m1=0.0, m2=0.0, pulley=Pulley()), "cannot both be zero"),
-        (dict(m1=1.0, m2=1.0, pulley=Pulley(1.0, 0.1, None, 0.01)), "--pulley-inertia"),
-        (dict(m1=1.0, m2=1.0, pulley=Pulley(0.0, None, None, 0.01)), "--pulley-radius is required"),
-        (dict(m1=1.0, m2=1.0, pulley=Pulley(0.0, None, None, None, 0.1)), "--pulley-radius is required"),
-        (dict(m1=1.0, m2=1.0, pulley=Pulley(1.0, 0.1, "cone")), "--pulley-shape"),
-        (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(math.radians(95))), "--incline"),
-        (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(0.3, 0.5, 0.2)), "--mu-k must not exceed"),
+        (dict(m1=1.0, m2=1.0, pulley=Pulley(1.0, 0.1, None, 0.01)), "pulley_inertia"),
+        (dict(m1=1.0, m2=1.0, pulley=Pulley(0.0, None, None, 0.01)), "pulley_radius is required"),
+        (dict(m1=1.0, m2=1.0, pulley=Pulley(0.0, None, None, None, 0.1)), "pulley_radius is required"),
+        (dict(m1=1.0, m2=1.0, pulley=Pulley(1.0, 0.1, "cone")), "pulley_shape"),
+        (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(math.radians(95))), "incline"),
+        (dict(m1=1.0, m2=1.0, pulley=Pulley(), slope=Slope(0.3, 0.5, 0.2)), "mu_k must not exceed"),
     ],
 )
 def test_impossible_machines_are_input_errors(args, fragment):

@@ -66,12 +66,12 @@ def test_all_five_must_agree():
 @pytest.mark.parametrize(
     "args,fragment",
     [
-        ((0.1, 0.0, None, None, None), "--omega1 and --torque and --duration are missing"),
-        ((None, 0.0, None, 2.0, None), "--inertia and --omega1 and --duration are missing"),
-        ((0.1, 0.0, 10.0, 0.0, None), "--torque must not be zero"),
-        ((0.1, 0.0, 10.0, -2.0, None), "--torque must act in the sense"),
-        ((None, 0.0, 0.0, 2.0, 0.5), "--omega1 must differ"),
-        ((None, 0.0, 10.0, -2.0, 0.5), "--torque must act in the sense"),
+        ((0.1, 0.0, None, None, None), "omega1 and torque and duration are missing"),
+        ((None, 0.0, None, 2.0, None), "inertia and omega1 and duration are missing"),
+        ((0.1, 0.0, 10.0, 0.0, None), "torque must not be zero"),
+        ((0.1, 0.0, 10.0, -2.0, None), "torque must act in the sense"),
+        ((None, 0.0, 0.0, 2.0, 0.5), "omega1 must differ"),
+        ((None, 0.0, 10.0, -2.0, 0.5), "torque must act in the sense"),
     ],
 )
 def test_impossible_balances_are_input_errors(args, fragment):

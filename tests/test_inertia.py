@@ -262,13 +262,13 @@ def test_offset_reports_the_centre_of_mass_moment():
 @pytest.mark.parametrize(
     "part,fragment",
     [
-        (Part("tube", 1.0, {"inner_radius": 0.3, "outer_radius": 0.2}), "--inner-radius: expected at most the outer radius"),
-        (Part("disc", 1.0, {}), "--radius is needed for a solid disc"),
-        (Part("disc", 1.0, {"radius": 1.0, "width": 2.0}), "--width does not apply"),
-        (Part("rod", 1.0, {"length": 1.0}, "end", offset=0.2), "--offset needs an axis through the centre"),
-        (Part("disc", 1.0, {"radius": 1.0}, "edge"), "--axis: expected one of central, diameter"),
-        (Part("point", 1.0, {"radius": 1.0}, offset=0.5), "--offset conflicts"),
-        (Part("point", 1.0, {}), "--radius is needed for a point mass"),
+        (Part("tube", 1.0, {"inner_radius": 0.3, "outer_radius": 0.2}), "inner_radius: expected at most the outer radius"),
+        (Part("disc", 1.0, {}), "radius is needed for a solid disc"),
+        (Part("disc", 1.0, {"radius": 1.0, "width": 2.0}), "width does not apply"),
+        (Part("rod", 1.0, {"length": 1.0}, "end", offset=0.2), "offset needs an axis through the centre"),
+        (Part("disc", 1.0, {"radius": 1.0}, "edge"), "axis: expected one of central, diameter"),
+        (Part("point", 1.0, {"radius": 1.0}, offset=0.5), "offset conflicts"),
+        (Part("point", 1.0, {}), "radius is needed for a point mass"),
         (Part("disk", 1.0, {"radius": 1.0}), "did you mean 'disc'?"),
     ],
 )

@@ -134,16 +134,16 @@ def test_climbing_turns_all_kinetic_energy_into_height(shape, v0, angle):
 @pytest.mark.parametrize(
     "call,fragment",
     [
-        (lambda: solve_incline(Roller(0.4, "sphere"), math.radians(90.5), 9.8), "--angle"),
-        (lambda: solve_incline(Roller(0.4, "sphere"), -0.1, 9.8), "--angle"),
-        (lambda: solve_incline(Roller(0.4, "sphere"), 0.5, 9.8, mu_s=0.1, mu_k=0.2), "--mu-k must not exceed"),
-        (lambda: solve_incline(Roller(0.4, "sphere"), 0.5, 9.8, length=1, height=1), "--length conflicts"),
-        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=None, v0=3.0), "--mu-k is required"),
-        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=0.3, mu_s=0.2, v0=3.0), "--mu-k must not exceed"),
+        (lambda: solve_incline(Roller(0.4, "sphere"), math.radians(90.5), 9.8), "angle"),
+        (lambda: solve_incline(Roller(0.4, "sphere"), -0.1, 9.8), "angle"),
+        (lambda: solve_incline(Roller(0.4, "sphere"), 0.5, 9.8, mu_s=0.1, mu_k=0.2), "mu_k must not exceed"),
+        (lambda: solve_incline(Roller(0.4, "sphere"), 0.5, 9.8, length=1, height=1), "length conflicts"),
+        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=None, v0=3.0), "mu_k is required"),
+        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=0.3, mu_s=0.2, v0=3.0), "mu_k must not exceed"),
         (lambda: roller("sphear", None, None, None, None), "did you mean 'sphere'?"),
-        (lambda: roller("sphere", 0.4, None, None, None), "--k2 conflicts with SHAPE"),
-        (lambda: roller(None, None, 0.01, 1.0, None), "--radius is required with --inertia"),
-        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=0.2, v0=3.0, omega0=5.0), "--radius is required"),
+        (lambda: roller("sphere", 0.4, None, None, None), "k2 conflicts with shape"),
+        (lambda: roller(None, None, 0.01, 1.0, None), "radius is required with inertia"),
+        (lambda: solve_flat(Roller(0.4, "sphere"), 9.8, mu_k=0.2, v0=3.0, omega0=5.0), "radius is required"),
     ],
 )
 def test_impossible_scenes_are_input_errors(call, fragment):

@@ -71,19 +71,19 @@ class Slope:
 
 def _check(m1: float, m2: float, pulley: Pulley, slope: Slope) -> None:
     if m1 + m2 == 0 and pulley.mass == 0 and pulley.inertia is None:
-        raise InputError("--m1", "and --m2 cannot both be zero (with a massless pulley nothing is there to move)", example="--m1 4kg --m2 1kg")
+        raise InputError("m1", "and {m2} cannot both be zero (with a massless pulley nothing is there to move)", example="{m1} 4kg {m2} 1kg")
     if pulley.inertia is not None and (pulley.mass or pulley.shape):
-        raise InputError("--pulley-inertia", "conflicts with --pulley-mass and --pulley-shape: give one description of the pulley")
+        raise InputError("pulley_inertia", "conflicts with {pulley_mass} and {pulley_shape}: give one description of the pulley")
     if pulley.inertia is not None and pulley.radius is None:
-        raise InputError("--pulley-radius", "is required with --pulley-inertia (the pulley adds I/R² to the moving mass)", example="--pulley-radius 0.1m")
+        raise InputError("pulley_radius", "is required with {pulley_inertia} (the pulley adds I/R² to the moving mass)", example="{pulley_radius} 0.1m")
     if pulley.axle_friction and pulley.radius is None:
-        raise InputError("--pulley-radius", "is required with --axle-friction (the friction torque acts on the string as τ/R)", example="--pulley-radius 0.1m")
+        raise InputError("pulley_radius", "is required with {axle_friction} (the friction torque acts on the string as τ/R)", example="{pulley_radius} 0.1m")
     if pulley.shape is not None and pulley.shape not in Pulley.SHAPE_FACTORS:
-        raise InputError("--pulley-shape", "expected disc or ring", example="--pulley-shape ring", got=repr(pulley.shape))
+        raise InputError("pulley_shape", "expected disc or ring", example="{pulley_shape} ring", got=repr(pulley.shape))
     if not 0 <= slope.angle <= HANGING:
-        raise InputError("--incline", "expected an angle from 0 to 90 deg", example="--incline 30deg", got=f"{fmt(math.degrees(slope.angle))} deg")
+        raise InputError("incline", "expected an angle from 0 to 90 deg", example="{incline} 30deg", got=f"{fmt(math.degrees(slope.angle))} deg")
     if slope.mu_s is not None and slope.mu_k is not None and slope.mu_k > slope.mu_s:
-        raise InputError("--mu-k", "must not exceed --mu-s (kinetic friction is at most static friction)", got=f"{fmt(slope.mu_k)} > {fmt(slope.mu_s)}")
+        raise InputError("mu_k", "must not exceed {mu_s} (kinetic friction is at most static friction)", got=f"{fmt(slope.mu_k)} > {fmt(slope.mu_s)}")
 
 
 def solve(

@@ -23,7 +23,6 @@ CURVES = (("torque", "N*m", "torque τ"), ("omega", "rad/s", "angular velocity �
 AGREEMENT = 1e-9  # relative: all five given must satisfy τΔt = IΔω this closely
 
 UNKNOWNS = ("inertia", "omega0", "omega1", "torque", "duration")
-_OPTIONS = {"inertia": "--inertia", "omega0": "--omega0", "omega1": "--omega1", "torque": "--torque", "duration": "--duration"}
 
 
 def _momentum_results(inertia: float, omega0: float, omega1: float) -> dict[str, Value]:
@@ -66,21 +65,20 @@ def solve_balance(
         tau = i * (w1 - w0) / dt
     elif unknown == "duration":
         if tau == 0:
-            raise InputError("--torque", "must not be zero when the duration is solved for: no torque, no change of ω")
+            raise InputError("torque", "must not be zero when the duration is solved for: no torque, no change of ω")
         dt = i * (w1 - w0) / tau
         if dt <= 0:
-            raise InputError("--torque", "must act in the sense of the change ω₁ − ω₀ for a positive duration", got=f"τ = {fmt(tau)} N·m, Δω = {fmt(w1 - w0)} rad/s")
+            raise InputError("torque", "must act in the sense of the change ω₁ − ω₀ for a positive duration", got=f"τ = {fmt(tau)} N·m, Δω = {fmt(w1 - w0)} rad/s")
     elif unknown == "inertia":
         if w1 == w0:
-            raise InputError("--omega1", "must differ from --omega0 when the inertia is solved for")
+            raise InputError("omega1", "must differ from {omega0} when the inertia is solved for")
         i = tau * dt / (w1 - w0)
         if i <= 0:
-            raise InputError("--torque", "must act in the sense of the change ω₁ − ω₀ for a positive inertia", got=f"τΔt = {fmt(tau * dt)} N·m·s, Δω = {fmt(w1 - w0)} rad/s")
+            raise InputError("torque", "must act in the sense of the change ω₁ − ω₀ for a positive inertia", got=f"τΔt = {fmt(tau * dt)} N·m·s, Δω = {fmt(w1 - w0)} rad/s")
     else:
         impulse, change = tau * dt, i * (w1 - w0)
         if abs(impulse - change) > AGREEMENT * max(abs(impulse), abs(i * w0), abs(i * w1), 1e-300):
-            raise InputError(
-                "--omega1",
+            raise InputError("omega1",
                 f"and the other four disagree: τΔt = {fmt(impulse, 6)} N·m·s but I(ω₁ − ω₀) = {fmt(change, 6)} N·m·s",
                 hint="leave out the one to solve for",
             )
@@ -116,7 +114,7 @@ def solve_balance(
     }
     if unknown is not None:
         equation, numbers, result = solved[unknown]
-        steps.append(Step(f"Solve for {_OPTIONS[unknown].lstrip('-')}", equation, numbers, result, "the one quantity not given"))
+        steps.append(Step(f"Solve for {unknown}", equation, numbers, result, "the one quantity not given"))
     steps.append(Step("The impulse", "J = τΔt", f"{fmt(tau)} × {fmt(dt)}", quantity_text(impulse, "N*m*s"), "the same as the change of angular momentum ΔL = IΔω"))
     model = "constant torque: τΔt = IΔω" + (f", solved for {unknown}" if unknown else ", all five given and consistent")
     trajectory = deferred(Trajectory, CURVES, dt, lambda t: (tau, w0 + tau * t / i))
@@ -134,9 +132,9 @@ def _partial_balance(given: dict[str, float | None], missing: list[str], notes: 
     change = None if w0 is None or w1 is None else w1 - w0
     if impulse is None and change is None:
         raise InputError(
-            " and ".join(_OPTIONS[name] for name in missing),
-            "are missing: give four of --inertia, --omega0, --omega1, --torque, --duration, and the fifth is solved for",
-            example="--inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s",
+            " and ".join("{" + name + "}" for name in missing),
+            "are missing: give four of {inertia}, {omega0}, {omega1}, {torque}, {duration}, and the fifth is solved for",
+            example="{inertia} 0.1kg*m^2 {omega0} 0 {torque} 2N*m {duration} 0.5s",
         )
     results: dict[str, Value] = {
         "J": Value(impulse, "N*m*s", "angular impulse τΔt"),
@@ -154,7 +152,7 @@ def _partial_balance(given: dict[str, float | None], missing: list[str], notes: 
     unfixed = [name for name, value in results.items() if value.value is None]
     notes.append(
         f"{', '.join(unfixed)}: not fixed by what is given: τΔt = I(ω₁ − ω₀) is one equation, and "
-        f"{', '.join(_OPTIONS[name] for name in missing)} are all left out; give all but one of them to solve for it"
+        f"{', '.join('{' + name + '}' for name in missing)} are all left out; give all but one of them to solve for it"
     )
     steps = [*inertia_steps, Step("Angular impulse equals the change of angular momentum", "J = τΔt = IΔω = I(ω₁ − ω₀)", "", "",
                                   "multiply τ = Iα by Δt: with the torque constant, αΔt = Δω")]
@@ -210,7 +208,7 @@ def solve_profile(
 ) -> Report:
     """A sampled torque τ(t): J by quadrature, ω at the samples, ω₁ = ω₀ + J/I, the peak torque."""
     if rule not in ("auto", *StreamingQuadrature.RULES):
-        raise InputError("--method", "expected auto, trapezoid or simpson for a torque profile", got=repr(rule))
+        raise InputError("method", "expected auto, trapezoid or simpson for a torque profile", got=repr(rule))
     notes: list[str] = []
     quadrature = StreamingQuadrature()
     shown: list[tuple[float, float, float]] = []
@@ -230,7 +228,7 @@ def solve_profile(
                 plotted, stride = plotted[::2], 2 * stride
     count = quadrature.count
     if count < 2:
-        raise InputError("--torque-profile", "needs at least two samples for an integral")
+        raise InputError("torque_profile", "needs at least two samples for an integral")
     if rule == "auto" and count < 3:
         chosen = "trapezoid"
     impulse = quadrature.result(chosen)

@@ -59,7 +59,7 @@ class Shape:
             if axis.name == name:
                 return axis
         choices = ", ".join(a.name for a in self.axes)
-        raise InputError("--axis", f"expected one of {choices} for a {self.title}", example=f"--axis {self.axes[0].name}", got=repr(name))
+        raise InputError("axis", f"expected one of {choices} for a {self.title}", example=f"{{axis}} {self.axes[0].name}", got=repr(name))
 
 
 def _thick_shell(mass: float, inner_radius: float, outer_radius: float) -> float:
@@ -159,7 +159,7 @@ class Part:
     """One part of a body: a shape, its mass and dimensions, its axis and its parallel shift.
 
     ``source`` names where the part came from in messages ("" for the main options, else
-    "--part 2").
+    "{part} 2": the option's name, spelled by whoever shows the message).
     """
 
     shape: str
@@ -171,11 +171,11 @@ class Part:
 
     def option(self, name: str) -> str:
         flag = name.replace("_", "-")
-        return f"{self.source} {flag}=" if self.source else f"--{flag}"
+        return f"{self.source} {flag}=" if self.source else name
 
     def example(self, name: str, value: str) -> str:
         flag = name.replace("_", "-")
-        return f'--part "{self.shape} mass=1kg {flag}={value}"' if self.source else f"--{flag} {value}"
+        return f'{{part}} "{self.shape} mass=1kg {flag}={value}"' if self.source else f"{{{name}}} {value}"
 
 
 @dataclass(frozen=True)
@@ -252,7 +252,7 @@ def part_inertia(part: Part) -> PartInertia:
         raise InputError(
             part.option("offset"),
             f"needs an axis through the centre of mass, and {axis.description} is not one",
-            hint=f"use --axis {shape.axes[0].name} with the offset",
+            hint=f"use {{axis}} {shape.axes[0].name} with the offset",
         )
     symbol = "I_cm" if shifted else "I"
     steps = [
@@ -382,7 +382,7 @@ def solve(parts: Sequence[Part]) -> Report:
 def main_part(shape: str | None, mass: float | None, axis: str | None, offset: float | None, dims: Mapping[str, float | None]) -> Part:
     """The part the main options describe: SHAPE (or --shape) with --mass and its dimensions."""
     if shape is None:
-        raise InputError("shape", f"is required, one of {', '.join(SHAPES)}", example="taucli inertia disc --mass 5kg --radius 0.2m")
+        raise InputError("shape", f"is required, one of {', '.join(SHAPES)}", example="taucli inertia disc {mass} 5kg {radius} 0.2m")
     found = lookup_shape(shape, "shape")
     if mass is None:
         raise InputError("mass", f"is required for a {found.title}", example="{mass} 5kg")

@@ -38,27 +38,27 @@ class Roller:
 
 def roller(shape: str | None, k2: float | None, inertia: float | None, mass: float | None, radius: float | None) -> Roller:
     """The body from exactly one of SHAPE, k2 = I/(mR²), or I with the mass and radius."""
-    given = [name for name, value in (("SHAPE", shape), ("--k2", k2), ("--inertia", inertia)) if value is not None]
+    given = [name for name, value in (("shape", shape), ("k2", k2), ("inertia", inertia)) if value is not None]
     if len(given) != 1:
         raise InputError(
-            "SHAPE" if not given else given[1],
-            "is required: SHAPE, --k2 or --inertia (one of them)" if not given else f"conflicts with {given[0]}: describe the body once",
-            example="taucli rolling sphere --angle 30deg",
+            "shape" if not given else given[1],
+            "is required: {shape}, {k2} or {inertia} (one of them)" if not given else f"conflicts with {{{given[0]}}}: describe the body once",
+            example="taucli rolling sphere {angle} 30deg",
         )
     if shape is not None:
         if shape not in K2:
-            raise InputError("SHAPE", f"expected one of {', '.join(K2)}", example="sphere", got=repr(shape), hint=did_you_mean(shape, K2))
+            raise InputError("shape", f"expected one of {', '.join(K2)}", example="sphere", got=repr(shape), hint=did_you_mean(shape, K2))
         return Roller(K2[shape], shape, mass, radius)
     if k2 is not None:
         return Roller(k2, "body", mass, radius)
     if mass is None or radius is None:
-        raise InputError("--mass" if mass is None else "--radius", "is required with --inertia (k² = I/(mR²))", example="--mass 2kg --radius 0.1m")
+        raise InputError("mass" if mass is None else "{radius}", "is required with {inertia} (k² = I/(mR²))", example="{mass} 2kg {radius} 0.1m")
     return Roller(inertia / (mass * radius**2), "body", mass, radius)
 
 
 def _check_friction(mu_s: float | None, mu_k: float | None) -> None:
     if mu_s is not None and mu_k is not None and mu_k > mu_s:
-        raise InputError("--mu-k", "must not exceed --mu-s (kinetic friction is at most static friction)", got=f"{fmt(mu_k)} > {fmt(mu_s)}")
+        raise InputError("mu_k", "must not exceed {mu_s} (kinetic friction is at most static friction)", got=f"{fmt(mu_k)} > {fmt(mu_s)}")
 
 
 def solve_incline(
@@ -80,12 +80,12 @@ def solve_incline(
     it falls freely, a = g, and its spin does not change; no μs can make it roll.
     """
     if not 0 <= angle <= RIGHT_ANGLE:
-        raise InputError("--angle", "expected an angle from 0 to 90 deg", example="--angle 30deg", got=f"{fmt(math.degrees(angle))} deg")
+        raise InputError("angle", "expected an angle from 0 to 90 deg", example="{angle} 30deg", got=f"{fmt(math.degrees(angle))} deg")
     _check_friction(mu_s, mu_k)
     if length is not None and height is not None:
-        raise InputError("--length", "conflicts with --height: give the distance along the slope or the height, not both")
+        raise InputError("length", "conflicts with {height}: give the distance along the slope or the height, not both")
     if height is not None and angle == 0:
-        raise InputError("--height", "needs a slope: on the flat there is no height to roll down", example="--angle 30deg --height 1m")
+        raise InputError("height", "needs a slope: on the flat there is no height to roll down", example="{angle} 30deg {height} 1m")
     k2, mass, radius = roller.k2, roller.mass, roller.radius
     notes: list[str] = []
     vertical = angle == RIGHT_ANGLE
@@ -267,12 +267,12 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
     _check_friction(mu_s, mu_k)  # μs plays no part in skidding, but a μk above it is still a mistake
     k2, mass, radius = roller.k2, roller.mass, roller.radius
     if omega0 and radius is None:
-        raise InputError("--radius", "is required with --omega0 (the slip is v − Rω)", example="--radius 0.11m")
+        raise InputError("radius", "is required with {omega0} (the slip is v − Rω)", example="{radius} 0.11m")
     spin_speed = 0.0 if not omega0 else radius * omega0
     slip = v0 - spin_speed
     notes: list[str] = []
     if slip != 0 and mu_k is None:
-        raise InputError("--mu-k", "is required: the ball skids (v ≠ Rω) and kinetic friction brings it to rolling", example="--mu-k 0.2")
+        raise InputError("mu_k", "is required: the ball skids (v ≠ Rω) and kinetic friction brings it to rolling", example="{mu_k} 0.2")
     if slip != 0 and mu_k == 0:
         return _skids_forever(roller, v0, spin_speed)
     v_roll = (v0 + k2 * spin_speed) / (1 + k2)

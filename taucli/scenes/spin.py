@@ -103,7 +103,7 @@ def solve(
 ) -> Report:
     """Spin-down or spin-up of a wheel on a fixed axle; see the module docstring for the model."""
     if torques.drag and not 1 <= torques.drag_exponent <= 10:
-        raise InputError("--drag-exponent", "expected a number from 1 to 10", example="--drag-exponent 1.5", got=fmt(torques.drag_exponent))
+        raise InputError("drag_exponent", "expected a number from 1 to 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
     if torques.drag and torques.drag_exponent == 1:
         torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0, torques.static)
     closed_form = torques.drag == 0 or torques.drag_exponent == 2
@@ -190,13 +190,13 @@ def _choose_method(method: str, closed_form: bool, dt: float | None, rtol: float
         return Method("exact") if closed_form else Method("rk45", None, rtol or DEFAULT_RTOL)
     if method == "exact":
         if not closed_form:
-            raise InputError("--method", "exact has no closed form for a drag exponent other than 1 or 2", hint="use --method auto or rk45")
+            raise InputError("method", "exact has no closed form for a drag exponent other than 1 or 2", hint="use {method} auto or rk45")
         return Method("exact")
     if method in ("euler", "rk4"):
         return Method(method, dt or DEFAULT_DT)
     if method == "rk45":
         return Method("rk45", dt, rtol or DEFAULT_RTOL)
-    raise InputError("--method", f"expected one of auto, exact, {', '.join(METHODS)}", example="--method rk4 --dt 1ms", got=repr(method))
+    raise InputError("method", f"expected one of auto, exact, {', '.join(METHODS)}", example="{method} rk4 {dt} 1ms", got=repr(method))
 
 
 def _never_stops_note(torques: Torques, phase: Phase) -> str:
