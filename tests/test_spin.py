@@ -389,3 +389,115 @@ def test_a_fixed_step_budget_counts_the_steps_to_the_stop_not_to_a_bound_on_it()
     assert 400 <= steps_taken(report) <= 430
     with pytest.raises(InputError, match="more than 125,000 rk4 steps"):  # 1,000 s to stop at 1 ms a step: still refused
         solve(1.0, Torques(friction=0.01), 10.0, method="rk4", dt=1e-3)
+
+
+# rk45 over long horizons, against quadrature (#16, item 7) ---------------------------------
+#
+# The references are written from the equation of motion alone, I dω/dt = τ(ω): the time from
+# ω₀ to ω₁ is ∫ I dω/τ(ω) and the angle ∫ I ω dω/τ(ω) (mpmath.quad, 30 digits, the interval cut
+# at geometric steps towards where τ vanishes so each piece is smooth).
+
+
+def torque_law(drive, friction, viscous, drag, exponent):
+    """τ(ω) for ω ≥ 0, at mpmath precision."""
+    a, b, k, n = (mpmath.mpf(x) for x in (drive - friction, viscous, drag, exponent))
+    return lambda w: a - b * w - k * w**n
+
+
+def pieces(start, end, limit):
+    """[start, end] cut at geometric steps of the gap to ``limit`` (where τ = 0), for quad."""
+    points = [mpmath.mpf(start)]
+    gap0, gap1 = start - limit, end - limit
+    k = 1
+    while abs(gap0) * mpmath.mpf(10) ** -k > abs(gap1):
+        points.append(limit + gap0 * mpmath.mpf(10) ** -k)
+        k += 1
+    return points + [mpmath.mpf(end)]
+
+
+def passage(inertia, torque, start, end, limit):
+    """(t, θ) from ω = start to ω = end, by quadrature."""
+    cuts = pieces(start, end, limit)
+    return mpmath.quad(lambda w: inertia / torque(w), cuts), mpmath.quad(lambda w: inertia * w / torque(w), cuts)
+
+
+def test_rk45_gives_the_steady_speed_it_approaches_and_the_angle_that_goes_with_it():
+    """#16: I = 2, ω₀ = 10, τ_f = 1, τ = 2, k = 0.05 with n = 3, at t = 1000 s: ω drifted 5e-9
+    from its own omega_inf at rtol 1e-10. ω(1000) is ω∞ to the last digit (the rest of the
+    approach is e^(−550)), and θ(1000) = ω∞t + ∫(ω − ω∞)dt over the whole approach, the integral
+    taken as I∫(ω − ω∞)dω/τ(ω) from ω₀ to ω∞."""
+    report = solve(2.0, Torques(drive=2.0, friction=1.0, drag=0.05, drag_exponent=3), 10.0, time=1000.0)
+    assert report.method.startswith("rk45")
+    with mp.workdps(30):
+        torque = torque_law(2.0, 1.0, 0.0, 0.05, 3)
+        steady = mpmath.findroot(torque, 2.7)
+        lag = mpmath.quad(lambda w: 2 * (w - steady) / torque(w), [10, steady])
+        theta = steady * 1000 + lag
+    result = values(report)
+    assert result["omega_inf"] == pytest.approx(float(steady), rel=2**-52)
+    assert result["omega"] == result["omega_inf"]
+    assert rel_error(result["theta"], theta) <= 1e-10
+
+
+LONG_HORIZONS = [  # (I, ω₀, drive, friction, viscous, drag, exponent, ω₁): ω₁ far along the approach
+    (2.0, 10.0, 0.0, 0.0, 0.01, 0.05, 3.0, 1e-10),  # decays to rest: ω(4444 s) was 4% off
+    (2.0, 10.0, 0.0, 0.0, 0.01, 0.05, 1.5, 1e-12),  # ω(4858 s) was 4.6 times too large
+    (0.0165, 13.4, 0.0, 0.0, 0.966, 4.38e-4, 1.2, 1.34e-5),  # a fast decay, 1e6 in 0.24 s
+    (2.0, 10.0, 2.0, 1.0, 0.0, 0.05, 3.0, None),  # to a steady speed: ω₁ 1e-9 of the way short
+    (1.0, 0.0, 1.0, 0.0, 0.1, 0.01, 3.3, None),  # spin-up from rest to a stiff steady speed
+]
+
+
+@pytest.mark.parametrize("inertia,omega0,drive,friction,viscous,drag,exponent,omega1", LONG_HORIZONS)
+def test_rk45_meets_its_tolerance_over_long_horizons(inertia, omega0, drive, friction, viscous, drag, exponent, omega1):
+    """At the time quadrature gives for reaching ω₁, rk45 (rtol 1e-10) reports ω₁ and the angle
+    within 1e-10; and t_until for ω₁ is the time to some ω within rtol of ω₁: the quadrature's
+    within rtol·(1 + κ), κ = |ω₁ I/(τ(ω₁) t)| (dt/dω = I/τ grows without bound as τ -> 0)."""
+    torques = Torques(drive=drive, friction=friction, viscous=viscous, drag=drag, drag_exponent=exponent)
+    steady = solve(inertia, torques, omega0).results["omega_inf"].value
+    if omega1 is None:
+        omega1 = steady + 1e-9 * (omega0 - steady)
+    with mp.workdps(30):
+        torque = torque_law(drive, friction, viscous, drag, exponent)
+        t, theta = passage(inertia, torque, omega0, omega1, steady)
+        condition = float(abs(inertia * omega1 / torque(omega1)) / t)
+    report = solve(inertia, torques, omega0, time=float(t), until_omega=omega1)
+    result = values(report)
+    assert result["omega"] == pytest.approx(omega1, rel=1e-10)
+    assert rel_error(result["theta"], theta) <= 1e-10
+    assert rel_error(result["t_until"], t) <= 1e-10 * (1 + condition)
+    assert rel_error(result["theta_until"], theta) <= 1e-10 * (1 + condition)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    inertia=st.floats(1e-2, 10),
+    omega0=st.floats(0.1, 100),
+    drive=st.one_of(st.just(0.0), st.floats(1e-2, 10)),
+    friction=st.one_of(st.just(0.0), st.floats(1e-6, 1)),
+    viscous=st.one_of(st.just(0.0), st.floats(1e-4, 1)),
+    drag=st.floats(1e-4, 1),
+    exponent=st.sampled_from([1.2, 1.5, 2.5, 3.0, 4.0]),
+    rtol=st.sampled_from([1e-4, 1e-7, 1e-10]),
+    depth=st.integers(0, 9),
+)
+@example(inertia=0.349, omega0=2.892, drive=0.0, friction=1.74e-6, viscous=0.01097, drag=0.02907, exponent=1.2, rtol=1e-10, depth=0)  # t_stop was 1.1e-6 off
+def test_rk45_answers_are_within_rtol_of_quadrature(inertia, omega0, drive, friction, viscous, drag, exponent, rtol, depth):
+    """Random scenes: a stop (t_stop, θ_stop), or the state when ω is 10^-depth of the way from
+    its steady speed (ω at that time, and the angle), each within rtol of quadrature."""
+    torques = Torques(drive=drive, friction=friction, viscous=viscous, drag=drag, drag_exponent=exponent)
+    with mp.workdps(30):
+        torque = torque_law(drive, friction, viscous, drag, exponent)
+        if drive < friction:
+            report = solve(inertia, torques, omega0, method="rk45", rtol=rtol)
+            t, theta = passage(inertia, torque, omega0, 0.0, -1.0)
+            assert rel_error(report.results["t_stop"].value, t) <= rtol
+            assert rel_error(report.results["theta_stop"].value, theta) <= rtol
+            return
+        steady = solve(inertia, torques, omega0).results["omega_inf"].value
+        omega1 = steady + 10.0**-depth * (omega0 - steady) / 2
+        assume(omega1 != omega0 and omega1 > 0)
+        t, theta = passage(inertia, torque, omega0, omega1, steady)
+    report = solve(inertia, torques, omega0, time=float(t), method="rk45", rtol=rtol)
+    assert report.results["omega"].value == pytest.approx(omega1, rel=rtol)
+    assert rel_error(report.results["theta"].value, theta) <= rtol
