@@ -19,8 +19,6 @@ document, 2 when some line was bad input, 1 when some line met a bug.
 from __future__ import annotations
 
 import json
-import sys
-from typing import TextIO
 
 from taucli import __version__
 from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean, out_of_range

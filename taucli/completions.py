@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from taucli import table
-from taucli.names import SHELLS
+from taucli.names import SHELLS  # noqa: F401 (completions.SHELLS: the shells it writes for)
 from taucli.units import KINDS
 
 FILE_NAMES = {"bash": "taucli.bash", "zsh": "_taucli", "fish": "taucli.fish"}

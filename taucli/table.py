@@ -161,24 +161,25 @@ def spelled(text: str, spell: Callable[[str], str], known: Mapping[str, object] 
     return _NAMED.sub(lambda m: spell(m[1]) if found(m[1]) is not None else m[0], text)
 
 
-class Results:
-    """The results a solver fills in, each from its scene's table: unit and label come from there.
+class Results(dict):
+    """The results a solver fills in (a dict of key -> Value), each from its scene's table: the
+    unit and the label come from there.
 
     ``put("t", 1.2, " 2 m")`` checks that ``t`` is one of the scene's results, so a name that
     is not in the table fails at once rather than reaching a user, and fills the label's "…".
     """
 
-    __slots__ = ("command", "values")
+    __slots__ = ("command",)
 
     def __init__(self, command: Command):
+        super().__init__()
         self.command = command
-        self.values: dict = {}
 
     def put(self, key: str, value, part: str = "") -> None:
         result = self.command.result(key)
         if result is None:
             raise KeyError(f"{key!r} is not a result of {self.command.name} in its table")
-        self.values[key] = Value(value, result.unit, result.label.replace(FILLED, part))
+        self[key] = Value(value, result.unit, result.label.replace(FILLED, part) if part or FILLED in result.label else result.label)
 
 
 FILLED = "…"  # where a result's label takes the part its solver fills in

@@ -18,10 +18,12 @@ import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError
+from taucli.options.atwood import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
 from taucli.scenes.friction import needs_kinetic, static_coefficient
+from taucli.table import Results
 
 HANGING = math.pi / 2
 EPSILON = 2.0**-52
@@ -126,7 +128,8 @@ def solve(
     if m1 + m2 > 0:
         massless = evolve(m1 + m2, loads, v0, Evolver(Method("exact"))).initial_rate
 
-    results: dict[str, Value] = {"a": Value(a, "m/s**2", "acceleration of the masses (m1 downward positive)")}
+    results = Results(TABLE)
+    results.put("a", a)
     if motion.held_from_start:
         tension_high, tension_low = _statics(m1, m2, g, sin_angle, mu_s * normal, pulley, notes)
         notes.append(
@@ -144,24 +147,25 @@ def solve(
             tension_low = tension_high  # the pulley's equation with I = 0: (T1 − T2)R = 0
         else:  # m2(a + g sin θ) + s μk N over one denominator, so the μk N terms do not cancel
             tension_low = (m2 * g * (m1 * (1 + sin_angle) + sin_angle * pulley_mass) - direction * m2 * axle + sliding * (m1 + pulley_mass)) / moving_mass
-    results["T1"] = Value(tension_high, "N", "tension on m1's side")
-    results["T2"] = Value(tension_low, "N", "tension on m2's side")
-    results["alpha"] = Value(None if pulley.radius is None else a / pulley.radius, "rad/s**2", "angular acceleration of the pulley")
+    results.put("T1", tension_high)
+    results.put("T2", tension_low)
+    results.put("alpha", None if pulley.radius is None else a / pulley.radius)
     if pulley.radius is None:
         notes.append("alpha: give --pulley-radius for the pulley's angular acceleration (a and the tensions do not need it)")
-    results["a_massless"] = Value(massless, "m/s**2", "acceleration with a massless pulley, for comparison")
+    results.put("a_massless", massless)
 
     if distance is not None:
         reached = _travel(motion, distance)
         if reached is None:
             notes.append(f"the masses never travel {quantity_text(distance, 'm')}")
         speed = None if reached is None else motion.state_at(reached)[0]
-        results["t"] = Value(reached, "s", f"time to travel {fmt(distance)} m")
-        results["v"] = Value(speed, "m/s", f"velocity after {fmt(distance)} m")
+        results.put("t", reached, f" {fmt(distance)} m")
+        results.put("v", speed, f" after {fmt(distance)} m")
     if time is not None:
         speed, displacement = motion.state_at(time)
-        results.setdefault("v", Value(speed, "m/s", f"velocity at t = {fmt(time)} s"))
-        results["distance"] = Value(displacement, "m", f"displacement of m1 (down positive) at t = {fmt(time)} s")
+        if "v" not in results:
+            results.put("v", speed, f" at t = {fmt(time)} s")
+        results.put("distance", displacement, f" at t = {fmt(time)} s")
         if distance is not None:
             notes.append("v is given at the distance; distance at the time")
 

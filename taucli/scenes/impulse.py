@@ -8,13 +8,14 @@ Three cases:
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Sequence
 
 from taucli.errors import InputError
 from taucli.numerics import StreamingQuadrature
-from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
+from taucli.options.impulse import COMMAND as TABLE
+from taucli.report import Report, Step, Table, Trajectory, deferred, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
+from taucli.table import Results
 
 BRIEF_BLOW = 0.1  # s: a blow this short is remembered by its impulse alone
 SAMPLES_SHOWN = 10_000  # ω at the samples is reported for profiles up to this many rows
@@ -22,16 +23,18 @@ PLOTTED = 500  # a profile's plot keeps between this many and twice as many of i
 CURVES = (("torque", "N*m", "torque τ"), ("omega", "rad/s", "angular velocity ω"))  # what its plot shows
 AGREEMENT = 1e-9  # relative: all five given must satisfy τΔt = IΔω this closely
 
+SOLVED = " (solved for)"  # what a solved result's label adds
 UNKNOWNS = ("inertia", "omega0", "omega1", "torque", "duration")
 
 
-def _momentum_results(inertia: float, omega0: float, omega1: float) -> dict[str, Value]:
-    return {
-        "L0": Value(inertia * omega0, "kg*m**2/s", "angular momentum before"),
-        "L1": Value(inertia * omega1, "kg*m**2/s", "angular momentum after"),
-        "KE0": Value(0.5 * inertia * omega0 * omega0, "J", "rotational kinetic energy before"),
-        "KE1": Value(0.5 * inertia * omega1 * omega1, "J", "rotational kinetic energy after"),
-    }
+def _momentum_results(results: Results, inertia: float | None, omega0: float | None, omega1: float | None) -> None:
+    """L and KE before and after, where the inertia and that speed are known."""
+    known0 = inertia is not None and omega0 is not None
+    known1 = inertia is not None and omega1 is not None
+    results.put("L0", inertia * omega0 if known0 else None)
+    results.put("L1", inertia * omega1 if known1 else None)
+    results.put("KE0", 0.5 * inertia * omega0 * omega0 if known0 else None)
+    results.put("KE1", 0.5 * inertia * omega1 * omega1 if known1 else None)
 
 
 def solve_balance(
@@ -83,16 +86,13 @@ def solve_balance(
                 hint="leave out the one to solve for",
             )
     impulse = tau * dt
-    results: dict[str, Value] = {
-        "J": Value(impulse, "N*m*s", "angular impulse τΔt"),
-        "delta_omega": Value(w1 - w0 if change is None else change, "rad/s", "change of angular velocity"),
-        "inertia": Value(i, "kg*m**2", "moment of inertia" + (" (solved for)" if unknown == "inertia" else "")),
-        "omega0": Value(w0, "rad/s", "angular velocity before" + (" (solved for)" if unknown == "omega0" else "")),
-        "omega1": Value(w1, "rad/s", "angular velocity after" + (" (solved for)" if unknown == "omega1" else "")),
-        "torque": Value(tau, "N*m", "constant torque" + (" (solved for)" if unknown == "torque" else "")),
-        "duration": Value(dt, "s", "time the torque acts" + (" (solved for)" if unknown == "duration" else "")),
-    }
-    results.update(_momentum_results(i, w0, w1))
+    results = Results(TABLE)
+    results.put("J", impulse, " τΔt")
+    results.put("delta_omega", w1 - w0 if change is None else change)
+    for name, value in (("inertia", i), ("omega0", w0), ("omega1", w1), ("torque", tau)):
+        results.put(name, value, SOLVED if unknown == name else "")
+    results.put("duration", dt, " the torque acts" + (SOLVED if unknown == "duration" else ""))
+    _momentum_results(results, i, w0, w1)
     if dt <= BRIEF_BLOW:
         notes.append(f"a brief blow ({fmt(dt)} s): the motion remembers only the impulse J = τΔt, not how the torque was shaped within it")
     steps = list(inertia_steps)
@@ -136,19 +136,13 @@ def _partial_balance(given: dict[str, float | None], missing: list[str], notes: 
             "are missing: give four of {inertia}, {omega0}, {omega1}, {torque}, {duration}, and the fifth is solved for",
             example="{inertia} 0.1kg*m^2 {omega0} 0 {torque} 2N*m {duration} 0.5s",
         )
-    results: dict[str, Value] = {
-        "J": Value(impulse, "N*m*s", "angular impulse τΔt"),
-        "delta_omega": Value(change, "rad/s", "change of angular velocity"),
-        "inertia": Value(i, "kg*m**2", "moment of inertia"),
-        "omega0": Value(w0, "rad/s", "angular velocity before"),
-        "omega1": Value(w1, "rad/s", "angular velocity after"),
-        "torque": Value(tau, "N*m", "constant torque"),
-        "duration": Value(dt, "s", "time the torque acts"),
-        "L0": Value(None if i is None or w0 is None else i * w0, "kg*m**2/s", "angular momentum before"),
-        "L1": Value(None if i is None or w1 is None else i * w1, "kg*m**2/s", "angular momentum after"),
-        "KE0": Value(None if i is None or w0 is None else 0.5 * i * w0 * w0, "J", "rotational kinetic energy before"),
-        "KE1": Value(None if i is None or w1 is None else 0.5 * i * w1 * w1, "J", "rotational kinetic energy after"),
-    }
+    results = Results(TABLE)
+    results.put("J", impulse, " τΔt")
+    results.put("delta_omega", change)
+    for name, value in (("inertia", i), ("omega0", w0), ("omega1", w1), ("torque", tau)):
+        results.put(name, value)
+    results.put("duration", dt, " the torque acts")
+    _momentum_results(results, i, w0, w1)
     unfixed = [name for name, value in results.items() if value.value is None]
     notes.append(
         f"{', '.join(unfixed)}: not fixed by what is given: τΔt = I(ω₁ − ω₀) is one equation, and "
@@ -173,16 +167,15 @@ def solve_changing_inertia(inertia0: float, inertia1: float, omega0: float, *, i
     momentum = inertia0 * omega0
     energy0 = 0.5 * inertia0 * omega0 * omega0
     energy1 = 0.5 * momentum * omega1  # ½ I₁ω₁² = ½ L ω₁
-    results = {
-        "omega1": Value(omega1, "rad/s", "angular velocity after the change"),
-        "delta_omega": Value(omega1 - omega0, "rad/s", "change of angular velocity"),
-        "J": Value(0.0, "N*m*s", "angular impulse: no external torque"),
-        "L0": Value(momentum, "kg*m**2/s", "angular momentum before"),
-        "L1": Value(inertia1 * omega1, "kg*m**2/s", "angular momentum after (the same)"),
-        "KE0": Value(energy0, "J", "rotational kinetic energy before"),
-        "KE1": Value(energy1, "J", "rotational kinetic energy after"),
-        "work": Value(energy1 - energy0, "J", "work the body does on itself (KE1 − KE0)"),
-    }
+    results = Results(TABLE)
+    results.put("omega1", omega1, " the change")
+    results.put("delta_omega", omega1 - omega0)
+    results.put("J", 0.0, ": no external torque")
+    results.put("L0", momentum)
+    results.put("L1", inertia1 * omega1, " (the same)")
+    results.put("KE0", energy0)
+    results.put("KE1", energy1)
+    results.put("work", energy1 - energy0)
     steps = [
         *inertia_steps,
         Step("No external torque: angular momentum is conserved", "τ = dL/dt = 0  ⇒  I₀ω₀ = I₁ω₁", "", "",
@@ -234,14 +227,13 @@ def solve_profile(
     impulse = quadrature.result(chosen)
     duration = t - start
     omega1 = omega0 + impulse / inertia
-    results: dict[str, Value] = {
-        "J": Value(impulse, "N*m*s", f"angular impulse ∫τ dt ({chosen})"),
-        "delta_omega": Value(impulse / inertia, "rad/s", "change of angular velocity"),
-        "omega1": Value(omega1, "rad/s", "angular velocity after the last sample"),
-        "duration": Value(duration, "s", "time from the first sample to the last"),
-        "peak_torque": Value(quadrature.peak[1], "N*m", f"largest torque, at t = {fmt(quadrature.peak[0])} s"),
-    }
-    results.update(_momentum_results(inertia, omega0, omega1))
+    results = Results(TABLE)
+    results.put("J", impulse, f" ∫τ dt ({chosen})")
+    results.put("delta_omega", impulse / inertia)
+    results.put("omega1", omega1, " the last sample")
+    results.put("duration", duration, " from the first sample to the last")
+    results.put("peak_torque", quadrature.peak[1], f", at t = {fmt(quadrature.peak[0])} s")
+    _momentum_results(results, inertia, omega0, omega1)
     if rule == "auto":
         notes.append(
             f"method: {chosen} ("

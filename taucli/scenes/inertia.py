@@ -12,7 +12,9 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from taucli.errors import InputError, did_you_mean
-from taucli.report import Report, Step, Table, Value, fmt, quantity_text
+from taucli.options.inertia import COMMAND as TABLE
+from taucli.report import Report, Step, Table, fmt, quantity_text
+from taucli.table import Results
 
 # Dimension name -> (symbol in equations, placeholder in number templates).
 DIMENSIONS: dict[str, str] = {
@@ -344,13 +346,14 @@ def solve(parts: Sequence[Part]) -> Report:
     """The inertia scene: I about the axis, the radius of gyration k = √(I/M), I_cm when shifted."""
     body = body_inertia(parts)
     gyration = math.sqrt(body.inertia / body.mass)
-    results = {"I": Value(body.inertia, "kg*m**2", "moment of inertia about the rotation axis")}
-    results["k"] = Value(gyration, "m", "radius of gyration, √(I/M)")
+    results = Results(TABLE)
+    results.put("I", body.inertia)
+    results.put("k", gyration)
     single = body.parts[0] if len(body.parts) == 1 else None
     if single is not None and single.shape.name != "point" and single.part.offset is not None:
-        results["I_cm"] = Value(single.inertia_centre, "kg*m**2", "moment of inertia about the parallel axis through the centre of mass")
+        results.put("I_cm", single.inertia_centre)
     if single is None:
-        results["mass"] = Value(body.mass, "kg", "total mass")
+        results.put("mass", body.mass)
     steps = list(body.steps)
     steps.append(
         Step(

@@ -18,9 +18,11 @@ import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError, did_you_mean
+from taucli.options.rolling import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.friction import needs_kinetic, static_coefficient
+from taucli.table import Results
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 RIGHT_ANGLE = math.pi / 2
@@ -125,13 +127,12 @@ def solve_incline(
         else:  # no friction torque (the vertical face) on no rotational inertia: 0/0
             notes.append("alpha: no torque acts on a body with no rotational inertia (k² = 0), so its spin is not fixed")
 
-    results: dict[str, Value] = {
-        "a": Value(a, "m/s**2", "acceleration of the centre, down the slope"),
-        "alpha": Value(angular, "rad/s**2", "angular acceleration"),
-        "friction": Value(None if mass is None or friction_per_mass is None else mass * friction_per_mass, "N", "friction force at the contact, up the slope"),
-        "mu_min": Value(mu_min, "", "least static coefficient for rolling"),
-        "rolls": Value(rolls, None, "rolls without slipping"),
-    }
+    results = Results(TABLE)
+    results.put("a", a)
+    results.put("alpha", angular)
+    results.put("friction", None if mass is None or friction_per_mass is None else mass * friction_per_mass)
+    results.put("mu_min", mu_min)
+    results.put("rolls", rolls)
     if a is not None and radius is None:
         notes.append("alpha: give --radius (a does not need it)")
     if a is not None and mass is None:
@@ -140,36 +141,36 @@ def solve_incline(
     run = length if length is not None else (None if height is None else height / sin_a)
     if run is not None:
         if a is None:
-            results["v"] = Value(None, "m/s", "speed at the bottom")
-            results["t"] = Value(None, "s", "time to the bottom")
+            results.put("v", None)
+            results.put("t", None)
         elif a <= 0:
             if angle == 0:
                 notes.append("on the flat nothing pulls it along: from rest it stays where it is")
             else:
                 notes.append("kinetic friction exceeds gravity's pull along the slope: it does not slide down")
-            results["v"] = Value(None, "m/s", "speed at the bottom")
-            results["t"] = Value(None, "s", "time to the bottom")
+            results.put("v", None)
+            results.put("t", None)
         else:
             speed = math.sqrt(2 * a * run)
             duration = 2 * run / speed
-            results["v"] = Value(speed, "m/s", "speed at the bottom, from rest")
-            results["t"] = Value(duration, "s", "time to the bottom")
+            results.put("v", speed, ", from rest")
+            results.put("t", duration)
             spin_speed = speed if rolls else (friction_per_mass / k2 * duration if friction_per_mass else 0.0)  # R ω at the bottom
             if mass is not None:
-                results["KE_trans"] = Value(0.5 * mass * speed**2, "J", "kinetic energy of translation at the bottom")
-                results["KE_rot"] = Value(0.5 * k2 * mass * spin_speed**2, "J", "kinetic energy of rotation at the bottom")
+                results.put("KE_trans", 0.5 * mass * speed**2)
+                results.put("KE_rot", 0.5 * k2 * mass * spin_speed**2)
     if v0 > 0:
         deceleration = a
         if deceleration is None:
-            for name, unit, label in (("d_climb", "m", "distance it climbs up the slope"), ("h_climb", "m", "height it climbs"), ("t_climb", "s", "time to the highest point")):
-                results[name] = Value(None, unit, label)
+            for name in ("d_climb", "h_climb", "t_climb"):
+                results.put(name, None)
         elif deceleration <= 0:
             notes.append("going up, friction never lets gravity stop it: it does not come back")
         else:
             climb = v0 * v0 / (2 * deceleration)
-            results["d_climb"] = Value(climb, "m", "distance it climbs up the slope")
-            results["h_climb"] = Value(climb * sin_a, "m", "height it climbs")
-            results["t_climb"] = Value(v0 / deceleration, "s", "time to the highest point")
+            results.put("d_climb", climb)
+            results.put("h_climb", climb * sin_a)
+            results.put("t_climb", v0 / deceleration)
     if a is None:
         needs_kinetic(", ".join(name for name in ("a", "alpha", "friction", "v", "t", "d_climb", "h_climb", "t_climb") if name in results), notes)
 
@@ -301,16 +302,13 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
     return Report("rolling", model, "closed form", results, steps, notes, trajectory=deferred(_skid_trajectory, v0, v_roll, t_roll))
 
 
-def _skid_results(t_roll, d_roll, v_roll, omega_roll, energy_lost: float | None) -> dict[str, Value]:
+def _skid_results(t_roll, d_roll, v_roll, omega_roll, energy_lost: float | None) -> Results:
     """The skidding ball's results (energy_lost only when the mass is known)."""
-    results = {
-        "t_roll": Value(t_roll, "s", "time until it rolls without slipping"),
-        "d_roll": Value(d_roll, "m", "distance skidded until then"),
-        "v_roll": Value(v_roll, "m/s", "speed once it rolls"),
-        "omega_roll": Value(omega_roll, "rad/s", "angular velocity once it rolls"),
-    }
+    results = Results(TABLE)
+    for name, value in (("t_roll", t_roll), ("d_roll", d_roll), ("v_roll", v_roll), ("omega_roll", omega_roll)):
+        results.put(name, value)
     if energy_lost is not None:
-        results["energy_lost"] = Value(energy_lost, "J", "kinetic energy turned to heat by sliding friction")
+        results.put("energy_lost", energy_lost)
     return results
 
 

@@ -17,8 +17,10 @@ from dataclasses import dataclass
 
 from taucli.errors import InputError
 from taucli.numerics import METHODS
+from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.coulomb import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
+from taucli.table import Results
 
 TWO_PI = 2 * math.pi
 Torques = Loads  # for a wheel the loads are torques: drive, friction, viscous b, drag k
@@ -114,8 +116,9 @@ def solve(
     first, second, held_from_start, stop = motion.first, motion.second, motion.held_from_start, motion.stop
     alpha0 = motion.initial_rate
 
-    results: dict[str, Value] = {"I": Value(inertia, "kg*m**2", "moment of inertia about the axle")}
-    results["alpha0"] = Value(alpha0, "rad/s**2", "angular acceleration at the start")
+    results = Results(TABLE)
+    results.put("I", inertia)
+    results.put("alpha0", alpha0)
     if held_from_start and not torques.drive:
         notes.append("no initial speed and no driving torque: the wheel stays at rest")
     elif held_from_start:
@@ -126,26 +129,26 @@ def solve(
     elif stop is None and not first.stops:  # (a stop that a stepper blew up before finding is said below)
         notes.append(_never_stops_note(torques, first))
     signed_stop = motion.signed_stop
-    results["t_stop"] = Value(None if stop is None else stop[0], "s", "time until the wheel stops")
-    results["theta_stop"] = Value(None if signed_stop is None else signed_stop[1], "rad", "angle turned until it stops")
-    results["revs_stop"] = Value(None if signed_stop is None else signed_stop[1] / TWO_PI, "rev", "revolutions until it stops")
+    results.put("t_stop", None if stop is None else stop[0])
+    results.put("theta_stop", None if signed_stop is None else signed_stop[1])
+    results.put("revs_stop", None if signed_stop is None else signed_stop[1] / TWO_PI)
 
     omega_inf = motion.final_speed()
     if omega_inf is None:
         notes.append("omega_inf: no steady speed; the driving torque is not balanced by drag, so ω grows without bound")
-    results["omega_inf"] = Value(omega_inf, "rad/s", "steady speed as t -> ∞")
+    results.put("omega_inf", omega_inf)
 
     if time is not None:
         omega_t, theta_t = motion.state_at(time)
-        results["omega"] = Value(omega_t, "rad/s", f"angular velocity at t = {fmt(time)} s")
-        results["theta"] = Value(theta_t, "rad", f"angle turned by t = {fmt(time)} s")
-        results["revs"] = Value(theta_t / TWO_PI, "rev", f"revolutions by t = {fmt(time)} s")
+        results.put("omega", omega_t, f" at t = {fmt(time)} s")
+        results.put("theta", theta_t, f" by t = {fmt(time)} s")
+        results.put("revs", theta_t / TWO_PI, f" by t = {fmt(time)} s")
     if until_omega is not None:
         reached = motion.reach(until_omega)
         if reached is None and not evolver.unstable:
             notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
-        results["t_until"] = Value(None if reached is None else reached[0], "s", f"time to reach ω = {fmt(until_omega)} rad/s")
-        results["theta_until"] = Value(None if reached is None else reached[1], "rad", f"angle turned until ω = {fmt(until_omega)} rad/s")
+        results.put("t_until", None if reached is None else reached[0], f" ω = {fmt(until_omega)} rad/s")
+        results.put("theta_until", None if reached is None else reached[1], f" ω = {fmt(until_omega)} rad/s")
 
     if evolver.unstable:
         notes.extend(dict.fromkeys(evolver.unstable))
