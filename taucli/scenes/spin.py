@@ -18,12 +18,21 @@ from dataclasses import dataclass
 from taucli.errors import InputError
 from taucli.numerics import METHODS
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import Report, Step, Trajectory, Value, deferred, fmt, quantity_text
+from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.coulomb import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
 from taucli.table import Results
 
 TWO_PI = 2 * math.pi
 Torques = Loads  # for a wheel the loads are torques: drive, friction, viscous b, drag k
+
+# A fixed step's answers are checked against a reference: the closed form where there is one,
+# else rk45 at REFERENCE_RTOL (within 0.33 of it, tests/benchmarks/accuracy_rk45.py). Step
+# doubling or Richardson extrapolation would be the method estimating itself, and it misses
+# the worst case: a stop inside the first step is the same at dt, dt/2 and 2dt (Euler's one
+# linear step from ω₀, located), so it would call an answer 88% off exact.
+REFERENCE_RTOL = 1e-11
+WITHHELD_ABOVE = 1e-3  # relative: a fixed-step answer estimated further off is withheld (null)
+DERIVED = {"revs_stop": "theta_stop", "revs": "theta"}  # results that follow another by θ/2π
 
 
 @dataclass(frozen=True)
@@ -102,8 +111,13 @@ def solve(
     rtol: float | None = None,
     push: Push | None = None,
     inertia_steps: Sequence[Step] = (),
+    estimate_error: bool = True,
 ) -> Report:
-    """Spin-down or spin-up of a wheel on a fixed axle; see the module docstring for the model."""
+    """Spin-down or spin-up of a wheel on a fixed axle; see the module docstring for the model.
+
+    A fixed-step method (euler, rk4) has each answer's error estimated against a reference (the
+    ``error_estimate`` table); an answer estimated more than 1e-3 off is withheld, null, with a
+    note. ``estimate_error=False`` leaves that out (the bench times the method alone)."""
     if torques.drag and not 1 <= torques.drag_exponent <= 10:
         raise InputError("drag_exponent", "expected a number from 1 to 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
     if torques.drag and torques.drag_exponent == 1:
@@ -128,10 +142,10 @@ def solve(
         )
     elif stop is None and not first.stops:  # (a stop that a stepper blew up before finding is said below)
         notes.append(_never_stops_note(torques, first))
-    signed_stop = motion.signed_stop
-    results.put("t_stop", None if stop is None else stop[0])
-    results.put("theta_stop", None if signed_stop is None else signed_stop[1])
-    results.put("revs_stop", None if signed_stop is None else signed_stop[1] / TWO_PI)
+    answers = _answers(motion, time, until_omega)
+    results.put("t_stop", answers["t_stop"])
+    results.put("theta_stop", answers["theta_stop"])
+    results.put("revs_stop", None if answers["theta_stop"] is None else answers["theta_stop"] / TWO_PI)
 
     omega_inf = motion.final_speed()
     if omega_inf is None:
@@ -139,22 +153,27 @@ def solve(
     results.put("omega_inf", omega_inf)
 
     if time is not None:
-        omega_t, theta_t = motion.state_at(time)
+        omega_t, theta_t = answers["omega"], answers["theta"]
         results.put("omega", omega_t, f" at t = {fmt(time)} s")
         results.put("theta", theta_t, f" by t = {fmt(time)} s")
         results.put("revs", theta_t / TWO_PI, f" by t = {fmt(time)} s")
     if until_omega is not None:
-        reached = motion.reach(until_omega)
-        if reached is None and not evolver.unstable:
+        if answers["t_until"] is None and not evolver.unstable:
             notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
-        results.put("t_until", None if reached is None else reached[0], f" ω = {fmt(until_omega)} rad/s")
-        results.put("theta_until", None if reached is None else reached[1], f" ω = {fmt(until_omega)} rad/s")
+        results.put("t_until", answers["t_until"], f" ω = {fmt(until_omega)} rad/s")
+        results.put("theta_until", answers["theta_until"], f" ω = {fmt(until_omega)} rad/s")
 
+    tables, described = {}, chosen.describe(evolver.steps)
     if evolver.unstable:
         notes.extend(dict.fromkeys(evolver.unstable))
         for name in results:
             if name not in ("I", "alpha0"):
                 results[name] = Value(None, results[name].unit, results[name].label)
+    elif chosen.name in ("euler", "rk4") and estimate_error:
+        estimate = _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, chosen, results, notes)
+        if estimate is not None:
+            tables["error_estimate"], worst = estimate
+            described += f"; estimated error at most {fmt(worst, 2)} relative" if worst is not None else ""
 
     steps = list(inertia_steps)
     if push is not None:
@@ -168,7 +187,70 @@ def solve(
     if held_from_start or (stop is not None and second is None):
         model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
     trajectory = None if evolver.unstable else deferred(_trajectory, motion, time, omega_inf)
-    return Report("spin-down", model, chosen.describe(evolver.steps), results, steps, notes, trajectory=trajectory)
+    return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
+
+
+def _answers(motion, time: float | None, until_omega: float | None) -> dict[str, float | None]:
+    """What a method's motion answers (the results a step size changes), by name."""
+    stop, signed_stop = motion.stop, motion.signed_stop
+    answers: dict[str, float | None] = {"t_stop": None if stop is None else stop[0], "theta_stop": None if signed_stop is None else signed_stop[1]}
+    if time is not None:
+        answers["omega"], answers["theta"] = motion.state_at(time)
+    if until_omega is not None:
+        reached = motion.reach(until_omega)
+        answers["t_until"], answers["theta_until"] = (None, None) if reached is None else reached
+    return answers
+
+
+def _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, chosen: Method, results, notes) -> tuple[Table, float | None] | None:
+    """The error of each of a fixed step's answers, against the closed form or a tight rk45
+    run: the table of them, and the largest relative error. Answers off by more than
+    WITHHELD_ABOVE are withheld (null) with one note that gives them and a step that would do."""
+    reference_method = Method("exact") if closed_form else Method("rk45", None, REFERENCE_RTOL)
+    against = "the closed form" if closed_form else f"rk45 at rtol {REFERENCE_RTOL:g}"
+    try:
+        reference = _answers(evolve(inertia, torques, omega0, Evolver(reference_method)), time, until_omega)
+    except InputError:
+        notes.append(f"no error estimate: the reference run ({against}) would take too many steps; the {chosen.name} answers are unchecked")
+        return None
+    rows, off, worst = [], [], 0.0
+    for name, exact in reference.items():
+        got, unit = results[name].value, results[name].unit
+        if got is None and exact is None:
+            continue
+        error = relative = None
+        if got is not None and exact is not None:
+            error = abs(got - exact)
+            relative = error / abs(exact) if exact else (0.0 if error == 0 else None)
+        rows.append((name, got, error, unit, relative))
+        if relative is not None and relative <= WITHHELD_ABOVE:
+            worst = max(worst, relative)
+            continue
+        worst = math.inf if relative is None else max(worst, relative)
+        shown = "none" if got is None else quantity_text(got, unit)
+        gap = "" if relative is None else f", {_percent(relative)} off"
+        off.append(f"{name} = {shown}{gap} ({'none' if exact is None else quantity_text(exact, unit)})")
+        for withheld in (name, *(derived for derived, source in DERIVED.items() if source == name)):
+            if withheld in results:
+                results[withheld] = results[withheld]._replace(value=None)
+    if off:
+        order = METHODS[chosen.name].order
+        advice = "--method auto"
+        if math.isfinite(worst) and worst > 0:
+            advice = f"--dt {fmt(chosen.dt * (WITHHELD_ABOVE / worst) ** (1 / order) / 2, 1)} s or less (its error goes as dt{'' if order == 1 else _SUPERSCRIPT[order]}), or {advice}"
+        notes.append(
+            f"{chosen.name} at dt = {fmt(chosen.dt)} s is off by more than {WITHHELD_ABOVE:g} here, estimated against {against} "
+            f"(in brackets): {'; '.join(off)}; withheld. Try {advice}"
+        )
+    columns = (("result", None, "result"), ("value", None, "value"), ("error", None, "estimated error"), ("unit", None, "unit"), ("relative", None, "relative error"))
+    return Table(columns, tuple(rows)), (worst if math.isfinite(worst) else None)
+
+
+_SUPERSCRIPT = {2: "²", 3: "³", 4: "⁴", 5: "⁵"}
+
+
+def _percent(relative: float) -> str:
+    return f"{round(100 * relative)}%" if relative >= 0.01 else f"{fmt(100 * relative, 2)}%"
 
 
 def _trajectory(motion, time: float | None, omega_inf: float | None) -> Trajectory:
