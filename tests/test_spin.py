@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from taucli import numerics
 from taucli.errors import InputError
-from taucli.scenes.axle import AxlePhase
+from taucli.scenes.closed_forms import ClosedFormPhase
 from taucli.scenes.spin import Torques, solve
 
 mp = mpmath.mp
@@ -93,7 +93,7 @@ def test_stop_time_and_angle_match_quadrature_to_1e_14(inertia, friction, viscou
     Measured over 5,000 such scenes, a third at a limit (tests/benchmarks/accuracy_spin.py):
     t_stop at most 3.7 ulp, θ_stop at most 7.4 ulp.
     """
-    phase = AxlePhase(inertia, -friction, viscous, drag, omega0)
+    phase = ClosedFormPhase(inertia, -friction, viscous, drag, omega0)
     t_stop = phase.stop_time()
     theta_stop = phase.theta(t_stop)
     t_ref, theta_ref = stop_reference(inertia, -friction, viscous, drag, omega0)
@@ -114,7 +114,7 @@ def test_omega_theta_and_passage_time_agree_with_quadrature(constant, viscous, d
     """Pick ω₁ part way to where the motion heads; the time and angle to get there come from
     quadrature, and ω(t), θ(t) and time_to(ω₁) must agree with them."""
     assume(constant == 0 or abs(constant) > 1e-100)  # a subnormal torque takes longer than a double can say
-    phase = AxlePhase(0.1, constant, viscous, drag, omega0)
+    phase = ClosedFormPhase(0.1, constant, viscous, drag, omega0)
     limit = 0.0 if phase.stops else phase.steady_speed
     if limit is None:
         limit = omega0 + 10.0  # uniform spin-up grows without bound

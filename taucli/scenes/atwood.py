@@ -9,7 +9,7 @@ Positive is m1 moving down. One equation per body, the string not slipping on th
 
 Adding them cancels the tensions: a = (m1 g − m2 g sin θ − friction) / (m1 + m2 + I/R²). The
 radius cancels too, except where axle friction (τ_a/R) or a given I (I/R²) brings it in. The
-motion under constant forces, stops and static friction included, is coulomb.evolve's.
+motion under constant forces, stops and static friction included, is motion.evolve's.
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from taucli.errors import InputError
 from taucli.options.atwood import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
-from taucli.scenes.coulomb import Evolver, Loads, Method, evolve
+from taucli.scenes.motion import Evolver, Loads, Method, evolve
 from taucli.scenes.friction import needs_kinetic, static_coefficient
 from taucli.table import Results
 

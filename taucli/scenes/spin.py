@@ -5,7 +5,7 @@
 Coulomb friction τ_f is physics, not sgn(ω): the wheel stops at t_stop and stays stopped
 while |τ_drive| ≤ τ_f (static friction holds it); only a larger driving torque starts it again,
 the other way. Each stretch of motion in one direction is a phase with ω ≥ 0 in its own frame.
-Closed forms (axle.py) serve every combination with n = 2; a power-law drag with another
+Closed forms (closed_forms.py) serve every combination with n = 2; a power-law drag with another
 exponent has none and is integrated (numerics.py), with the stop located as an event.
 """
 
@@ -19,7 +19,7 @@ from taucli.errors import InputError
 from taucli.numerics import METHODS
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
-from taucli.scenes.coulomb import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
+from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
 from taucli.table import Results
 
 TWO_PI = 2 * math.pi

@@ -7,7 +7,7 @@ friction, viscous drag and a drive drawn over decades: a stop (t_stop, θ_stop),
 the time ω is half, 1e-6 or 1e-9 of the way from ω₀ to its steady speed (ω, θ). References:
 t = ∫ I dω/τ(ω), θ = ∫ I ω dω/τ(ω) by mpmath.quad at 30 digits, written from the equation of
 motion alone. Prints the worst relative error of each answer, and its ratio to rtol.
-``--margin`` sets coulomb.RTOL_MARGIN (each step's tolerance is rtol/margin) to compare.
+``--margin`` sets motion.RTOL_MARGIN (each step's tolerance is rtol/margin) to compare.
 
 Measured (seed 5, 300 scenes): with the margin at 1, the worst answer was 8.8 rtol at 1e-4,
 5.5 at 1e-6, 4.6 at 1e-8 and 4.3 at 1e-10 (each a long decay's ω, 1e-9 of the way to rest);
@@ -21,7 +21,7 @@ import random
 
 import mpmath
 
-from taucli.scenes import coulomb
+from taucli.scenes import motion
 from taucli.scenes.spin import Torques, solve
 
 mpmath.mp.dps = 30
@@ -82,9 +82,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scenes", type=int, default=300)
     parser.add_argument("--seed", type=int, default=5)
-    parser.add_argument("--margin", type=float, default=coulomb.RTOL_MARGIN)
+    parser.add_argument("--margin", type=float, default=motion.RTOL_MARGIN)
     options = parser.parse_args()
-    coulomb.RTOL_MARGIN = options.margin
+    motion.RTOL_MARGIN = options.margin
     for rtol in (1e-4, 1e-6, 1e-8, 1e-10):
         random.seed(options.seed)
         print(f"rtol {rtol:g} (margin {options.margin:g})")

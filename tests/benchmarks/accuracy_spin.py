@@ -14,7 +14,7 @@ import sys
 
 import mpmath
 
-from taucli.scenes.axle import AxlePhase
+from taucli.scenes.closed_forms import ClosedFormPhase
 
 mpmath.mp.dps = 50
 ULP = mpmath.mpf(2) ** -52
@@ -49,7 +49,7 @@ def main(cases: int) -> None:
     worst = {"t_stop": (0.0, None), "theta_stop": (0.0, None)}
     for _ in range(cases):
         scene = draw(rng)
-        phase = AxlePhase(scene[0], -scene[1], scene[2], scene[3], scene[4])
+        phase = ClosedFormPhase(scene[0], -scene[1], scene[2], scene[3], scene[4])
         t_stop = phase.stop_time()
         got = {"t_stop": t_stop, "theta_stop": phase.theta(t_stop)}
         exact = dict(zip(("t_stop", "theta_stop"), reference(*scene)))

@@ -6,7 +6,7 @@ The wheel of spin-down (m = I, v = ω, F a torque) and the string of the Atwood 
 effective mass, v its speed, F a force) are both this. Friction is physics, not sgn(v): the body
 stops at t_stop and stays stopped while |F| does not exceed the static friction; only a larger
 F starts it again, the other way. Each stretch in one direction is a Phase with v ≥ 0 in its own
-frame, evolved by the closed form (axle.py) or by a stepper (numerics.py).
+frame, evolved by the closed form (closed_forms.py) or by a stepper (numerics.py).
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from taucli import numerics
 from taucli.errors import InputError
 from taucli.report import fmt
-from taucli.scenes.axle import AxlePhase, exp_fraction
+from taucli.scenes.closed_forms import ClosedFormPhase, exp_fraction
 
 DEFAULT_RTOL = 1e-10
 DEFAULT_DT = 1e-3
@@ -54,7 +54,7 @@ class Loads:
 class Phase:
     """A stretch of motion in one direction (v ≥ 0 in its frame): the closed form, and how to integrate it."""
 
-    closed: AxlePhase
+    closed: ClosedFormPhase
     exponent: float  # of the drag term kωⁿ
     direction: int  # +1 or −1: this phase's ω ≥ 0 is direction·ω in the user's frame
 
@@ -327,7 +327,7 @@ def evolve(mass: float, loads: Loads, v0: float, evolver: Evolver) -> Motion:
 
     def phase(sign: int, start: float) -> Phase:
         constant = sign * loads.drive - loads.friction
-        return Phase(AxlePhase(mass, constant, loads.viscous, loads.drag, start), loads.drag_exponent, sign)
+        return Phase(ClosedFormPhase(mass, constant, loads.viscous, loads.drag, start), loads.drag_exponent, sign)
 
     first = phase(direction or 1, abs(v0))
     # After a stop, a drive larger than static friction starts the body the other way.

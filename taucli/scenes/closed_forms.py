@@ -81,7 +81,7 @@ def _real(value: Scalar) -> float:
 
 
 @dataclass(frozen=True)
-class AxlePhase:
+class ClosedFormPhase:
     """One phase of motion with ω ≥ 0: I dω/dt = A − bω − kω², from ω₀ at t = 0."""
 
     inertia: float
