@@ -5,10 +5,12 @@ JSON and --get print nothing on stdout but the answer. rich is imported by the h
 
 from __future__ import annotations
 
+import io
 import json
 import math
 import os
 from collections.abc import Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import replace
 from typing import NamedTuple, TextIO
 
@@ -214,43 +216,97 @@ def shown(value, digits: int = 6) -> str:
 
 
 NARROW = 60  # columns below which results are listed rather than tabled
+LABEL_MIN = 12  # the least width a folding text column ("what it is") is given before a table gives way to a list
 
 
-def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> None:
-    """The rich table of results, then the steps (equation, numbers, result, why) and notes."""
-    from rich import box
+@contextmanager
+def drawing(stream: TextIO):
+    """A rich Console that draws for ``stream``: in colour on a terminal (or with FORCE_COLOR);
+    elsewhere (a file, a pipe) plain, into a buffer whose lines are written without the trailing
+    spaces rich pads them with."""
     from rich.console import Console
+
+    plain = bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
+    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain else "auto")
+    if console.is_terminal:  # a terminal, or FORCE_COLOR
+        yield console
+        return
+    buffer = io.StringIO()
+    yield Console(file=buffer, width=console.width, highlight=False, emoji=False, color_system=None)
+    stream.write("\n".join(line.rstrip() for line in buffer.getvalue().split("\n")))
+
+
+def draw_table(console, headings: Sequence[str], rows: Sequence[Sequence[str]], *, title: str | None = None,
+               folding: Sequence[bool] | None = None, right: Sequence[bool] | None = None, bold_first: bool = False) -> None:
+    """A table whose numbers are never split: a column of numbers keeps each cell whole (and its
+    heading wraps to it); where even so the table is wider than the terminal, each row is listed
+    instead, one "heading = value" to a line."""
+    from rich import box
+    from rich.measure import Measurement
     from rich.padding import Padding
     from rich.table import Table as RichTable
     from rich.text import Text
 
-    plain = bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
-    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain else "auto")
+    folding = folding or [False] * len(headings)
+    right = right or [index > 0 for index in range(len(headings))]
+    cells = [max((len(row[i]) for row in rows), default=0) for i in range(len(headings))]
+
+    def table_of(shown_headings: Sequence[str]):
+        least = [max(LABEL_MIN if fold else width, *(len(line) for line in heading.split("\n"))) for heading, width, fold in zip(shown_headings, cells, folding)]
+        table = RichTable(title=title, box=box.SIMPLE_HEAD, pad_edge=False)
+        for index, (heading, fold) in enumerate(zip(shown_headings, folding)):
+            style = "bold" if bold_first and index == 0 else ("dim" if fold else None)
+            if fold:
+                table.add_column(heading, style=style, overflow="fold")
+            else:
+                table.add_column(heading, style=style, justify="right" if right[index] else "left", no_wrap=True, min_width=least[index])
+        for row in rows:
+            table.add_row(*(Text(cell) for cell in row))
+        return table
+
+    # As it is; else each unit under its name; else, too wide even so, a list
+    stacked = [heading.replace(" (", "\n(", 1) if not fold else heading for heading, fold in zip(headings, folding)]
+    for shown_headings in (headings, stacked):
+        table = table_of(shown_headings)
+        if Measurement.get(console, console.options.update(max_width=10**4), table).minimum <= console.width:
+            console.print(table)
+            return
+    if title:
+        console.print(Text(title, style="bold"))
+    for row in rows:
+        console.print(Text.assemble((f"{headings[0]} {row[0]}", "bold" if bold_first else "")))
+        for heading, cell in zip(headings[1:], row[1:]):
+            if cell:
+                console.print(Padding(Text(f"{heading} = {cell}"), (0, 0, 0, 2)))
+
+
+def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> None:
+    """The rich table of results, then the steps (equation, numbers, result, why) and notes."""
+    with drawing(stream) as console:
+        _draw_report(report, console, show_steps)
+
+
+def _draw_report(report: Report, console, show_steps: bool) -> None:
+    from rich.padding import Padding
+    from rich.text import Text
+
     console.print(Text.assemble((f"{report.scene}", "bold"), f": {report.model}"))
     console.print(Text(f"method: {report.method}", style="dim"))
 
-    if console.width < NARROW:  # a table would cut its numbers short: one result to a line instead
-        for name, value in report.results.items():
-            console.print(Text.assemble((name, "bold"), f" = {shown(value.value)} {pretty_unit(value.unit)}".rstrip()))
-            if value.label:
-                console.print(Padding(Text(value.label, style="dim"), (0, 0, 0, 2)))
+    rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items()]
+    widths = [max((len(row[i]) for row in rows), default=0) for i in range(3)]
+    if console.width < NARROW or sum(widths) + LABEL_MIN + 6 > console.width:  # one result to a line, numbers whole
+        for name, value, unit, label in rows:
+            console.print(Text.assemble((name, "bold"), f" = {value} {unit}".rstrip()))
+            if label:
+                console.print(Padding(Text(label, style="dim"), (0, 0, 0, 2)))
     else:
-        results = RichTable(box=box.SIMPLE_HEAD, pad_edge=False)
-        results.add_column("result", style="bold")
-        results.add_column("value", justify="right")
-        results.add_column("unit")
-        results.add_column("what it is", style="dim", overflow="fold")
-        for name, value in report.results.items():
-            results.add_row(Text(name), Text(shown(value.value)), Text(pretty_unit(value.unit)), Text(value.label))
-        console.print(results)
+        draw_table(console, ("result", "value", "unit", "what it is"), rows, folding=(False, False, False, True), right=(False, True, False, False), bold_first=True)
 
     for name, table in report.tables.items():
-        drawn = RichTable(title=name, box=box.SIMPLE_HEAD, pad_edge=False)
-        for _, unit, heading in table.columns:
-            drawn.add_column(f"{heading} ({pretty_unit(unit)})" if unit else heading, justify="right" if unit else "left", overflow="fold")
-        for row in table.rows:
-            drawn.add_row(*(Text(shown(cell, 4)) for cell in row))
-        console.print(drawn)
+        headings = [f"{heading} ({pretty_unit(unit)})" if unit else heading for _, unit, heading in table.columns]
+        right = [unit is not None for _, unit, _ in table.columns]
+        draw_table(console, headings, [[shown(cell, 4) for cell in row] for row in table.rows], title=name, right=right)
 
     if show_steps and report.steps:
         console.print(Text("Steps", style="bold underline"))

@@ -260,36 +260,32 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
 
 def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
     """One row per point: the swept values, then every result that has a value somewhere."""
-    from rich import box
-    from rich.console import Console
-    from rich.table import Table as RichTable
     from rich.text import Text
 
-    from taucli.render import shown, terminal_style
+    from taucli.render import draw_table, drawing, shown
 
-    _, colour = terminal_style(stream)
-    console = Console(file=stream, highlight=False, emoji=False, color_system="auto" if colour else None, no_color=not colour)
-    first = points[0].report
-    what = " × ".join(f"--{s.name.replace('_', '-')} {s.given} ({len(s.texts)} values)" for s in reversed(swept))
-    console.print(Text.assemble((first.scene, "bold"), f": {what}"))
-    models = dict.fromkeys(p.report.model for p in points)
-    console.print(Text(f"model: {first.model}" if len(models) == 1 else f"model: varies ({len(models)} kinds; see --json)", style="dim"))
-    names = [name for name in first.results if any(p.report.results.get(name) and p.report.results[name].value is not None for p in points)]
-    table = RichTable(box=box.SIMPLE_HEAD, pad_edge=False)
-    columns = [_swept_columns(s, points) for s in swept]
-    for heading, _ in columns:  # fold, never cut: a narrow terminal wraps a number rather than lose its digits
-        table.add_column(heading, justify="right", style="bold", overflow="fold")
-    for name in names:
-        unit = pretty_unit(first.results[name].unit)
-        table.add_column(f"{name} ({unit})" if unit else name, justify="right", overflow="fold")
-    for row, point in enumerate(points):
-        cells = [shown(values[row], 4) for _, values in columns]
-        cells += [shown(point.report.results[name].value if name in point.report.results else None, 4) for name in names]
-        table.add_row(*(Text(cell) for cell in cells))
-    console.print(table)
-    notes = list(dict.fromkeys(n for p in points for n in p.report.notes))
-    for note in notes[:MAX_NOTES]:
-        console.print(Text.assemble(("note: ", "yellow"), note))
-    if len(notes) > MAX_NOTES:
-        console.print(Text(f"… and {len(notes) - MAX_NOTES} more notes that differ from point to point (see --json)", style="dim"))
-    console.print(Text("steps: run one point alone to see its worked solution", style="dim"))
+    with drawing(stream) as console:
+        first = points[0].report
+        what = " × ".join(f"--{s.name.replace('_', '-')} {s.given} ({len(s.texts)} values)" for s in reversed(swept))
+        console.print(Text.assemble((first.scene, "bold"), f": {what}"))
+        models = dict.fromkeys(p.report.model for p in points)
+        console.print(Text(f"model: {first.model}" if len(models) == 1 else f"model: varies ({len(models)} kinds; see --json)", style="dim"))
+        names = [name for name in first.results if any(p.report.results.get(name) and p.report.results[name].value is not None for p in points)]
+        columns = [_swept_columns(s, points) for s in swept]
+        headings = [heading for heading, _ in columns]
+        for name in names:
+            unit = pretty_unit(first.results[name].unit)
+            headings.append(f"{name} ({unit})" if unit else name)
+        rows = []
+        for row, point in enumerate(points):
+            cells = [shown(values[row], 4) for _, values in columns]
+            cells += [shown(point.report.results[name].value if name in point.report.results else None, 4) for name in names]
+            rows.append(cells)
+        # numbers are never split: a table too wide for the terminal becomes a list, one point at a time
+        draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
+        notes = list(dict.fromkeys(n for p in points for n in p.report.notes))
+        for note in notes[:MAX_NOTES]:
+            console.print(Text.assemble(("note: ", "yellow"), note))
+        if len(notes) > MAX_NOTES:
+            console.print(Text(f"… and {len(notes) - MAX_NOTES} more notes that differ from point to point (see --json)", style="dim"))
+        console.print(Text("steps: run one point alone to see its worked solution", style="dim"))
