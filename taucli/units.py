@@ -201,10 +201,14 @@ def quantity(text: str, option: str, kind_name: str, *, original: str | None = N
 # unit powers. For such text the value is the number times pint's SI factor for the unit text,
 # and that factor is cached (taucli.cache); anything else ("4 kg + 200 g") goes to pint whole.
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-_NAME = r"[A-Za-zµμΩ_][A-Za-z0-9µμΩ_]*"
+# Each part matches one way only: a name ends where its letters end, and the space between two
+# factors is a separator or part of one, never both. Else a failed match ("kkkk...k+") would try
+# every way of cutting the letters into names: 2^n of them, minutes for 30 letters.
+_NAME = r"[A-Za-zµμΩ_][A-Za-z0-9µμΩ_]*(?![A-Za-z0-9µμΩ_])"
 _POWER_OF = r"(?:\s*(?:\*\*|\^)\s*-?\d{1,2})?"
-_FACTOR = rf"(?:{_NAME}|\(\s*{_NAME}{_POWER_OF}(?:\s*[*/]?\s*{_NAME}{_POWER_OF})*\s*\)){_POWER_OF}"
-_NUMBER_TIMES_UNIT = re.compile(rf"\s*(?P<number>{_NUMBER})?\s*(?P<unit>{_FACTOR}(?:\s*[*/]?\s*{_FACTOR})*)?\s*")
+_BETWEEN = r"(?:\s*[*/]\s*|\s+)?"
+_FACTOR = rf"(?:{_NAME}|\(\s*{_NAME}{_POWER_OF}(?:{_BETWEEN}{_NAME}{_POWER_OF})*\s*\)){_POWER_OF}"
+_NUMBER_TIMES_UNIT = re.compile(rf"\s*(?P<number>{_NUMBER})?\s*(?P<unit>{_FACTOR}(?:{_BETWEEN}{_FACTOR})*)?\s*")
 
 
 def _number_times_unit(text: str) -> tuple[float, str] | None:

@@ -115,6 +115,7 @@ HOSTILE = [
     "9**9**9 kg", "2^2^2^2^2 kg", "10**400 kg", "(" * 500 + "4" + ")" * 500 + " kg", "9" * 100_000 + " kg",
     "*".join(["kg"] * 5000), "*".join(["kg/kg"] * 3000), "4 kg" + " + 1 kg" * 2000, "1e999999999 kg",
     "__import__('os').system('true')", "exp(1000) kg", "kg" * 50_000,
+    "k" * 40 + "+", "k " * 39 + "+",  # 2^n ways to cut the letters into unit names, once tried one by one
 ]
 
 
