@@ -23,7 +23,8 @@ READINGS = [
     ("1 lbf*ft", "torque", 4.4482216152605 * 0.3048),
     ("30deg", "angle", math.pi / 6),
     ("30°", "angle", math.pi / 6),
-    ("0.5", "angle", 0.5),
+    ("0.5 rad", "angle", 0.5),
+    ("0", "angle", 0.0),  # a bare 0 is the one angle that needs no unit
     ("300 rpm", "angular velocity", 10 * math.pi),
     ("2 rev/s", "angular velocity", 4 * math.pi),
     ("90 deg/s", "angular velocity", math.pi / 2),
