@@ -8,9 +8,12 @@ runs before the unit cache's key is formed: "Nm" and "N*m" share one entry. It o
 sits between two names or right after a name: a minus sign (``-2 N*m``), an exponent (``s^-1``,
 ``1e-3 kg``) and a subtraction (``4kg-200g``, ``4 kg - 200 g``) are left as they are.
 
+Here too: a whole number and a fraction read as a mixed number (``33 1/3 rpm``), where numbers
+stand side by side that pint would multiply (``3 4 kg``), and the words of the notes and fixes.
 What a unit then *means* (a pound in a torque is a pound-force; 1/s for a speed is revolutions
 per second) is decided in units.py, which asks pint. A change here changes only the text pint is
-given, never pint's answer for a text, so the factors units.py keeps stay valid.
+given, never pint's answer for a text, so the factors units.py keeps (stamped with units.py
+alone) stay valid.
 """
 
 from __future__ import annotations
@@ -31,6 +34,7 @@ GLUED: dict[str, str] = {
     **{force + length: f"{force}*{length}" for force in _FORCES for length in _LENGTHS if force + length != "gm"},  # "gm" is a gram
     **{length + force: f"{length}*{force}" for length in ("ft", "in") for force in ("lb", "lbf", "oz", "ozf")},
     "Nms": "N*m*s",
+    "lbm": "lb",  # pound-mass, not a pound-metre
 }
 # Names read whatever their case: no other unit is spelled with these letters.
 CASELESS = {"rpm": "rpm", "rps": "rps", "hz": "Hz"}

@@ -36,7 +36,7 @@ LBF_FT = LBF * FT  # N*m
 # A spelling is its text, or (text, a fragment of the note its reading must carry).
 SPELLINGS = {
     "mass": (4.5, [
-        "4.5kg", "4.5 kg", "4500 g", "4.5e3 g", "4500000 mg", "0.0045 tonne", f"{4.5 / LB!r} lb", f"{4.5 / OZ!r}oz", "4.5",
+        "4.5kg", "4.5 kg", "4500 g", f"{4.5 / LB!r} lbm", "4.5e3 g", "4500000 mg", "0.0045 tonne", f"{4.5 / LB!r} lb", f"{4.5 / OZ!r}oz", "4.5",
         ("4 1/2 kg", "4 1/2 read as the mixed number 4 + 1/2"), ("4½ kg", "mixed number"), "9/2 kg", "4 kg + 500 g", "(4.5) kg",
         ("4.5 kgf", "a weight, read as the mass W/g = 4.5 kg (standard gravity g = 9.80665 m/s²)"), (f"{4.5 * G0!r} N", "W/g"),
     ], ("atwood", "--m2", "1kg"), "--m1"),
