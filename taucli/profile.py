@@ -33,7 +33,10 @@ def _unit_factor(text: str | None, kind: str, column: str, notes: list[str]) -> 
     if text is None or not text.strip():
         notes.append(f"{OPTION}: no unit for the {column} column in the header: read as SI ({units.KINDS[kind].si_unit})")
         return 1.0
-    return units.parse(f"1 {text}", f"{OPTION} header, {column} column", kind).value
+    parsed = units.parse(f"1 {text}", f"{OPTION} header, {column} column", kind)
+    if parsed.note:  # "lb*ft": pound-force
+        notes.append(parsed.note)
+    return parsed.value
 
 
 def read_profile(lines: Iterable[str]) -> Profile:

@@ -23,7 +23,8 @@ READINGS = [
     ("1 lbf*ft", "torque", 4.4482216152605 * 0.3048),
     ("30deg", "angle", math.pi / 6),
     ("30°", "angle", math.pi / 6),
-    ("0.5", "angle", 0.5),
+    ("0.5 rad", "angle", 0.5),
+    ("0", "angle", 0.0),  # a bare 0 is the one angle that needs no unit
     ("300 rpm", "angular velocity", 10 * math.pi),
     ("2 rev/s", "angular velocity", 4 * math.pi),
     ("90 deg/s", "angular velocity", math.pi / 2),
@@ -115,6 +116,7 @@ HOSTILE = [
     "9**9**9 kg", "2^2^2^2^2 kg", "10**400 kg", "(" * 500 + "4" + ")" * 500 + " kg", "9" * 100_000 + " kg",
     "*".join(["kg"] * 5000), "*".join(["kg/kg"] * 3000), "4 kg" + " + 1 kg" * 2000, "1e999999999 kg",
     "__import__('os').system('true')", "exp(1000) kg", "kg" * 50_000,
+    "k" * 40 + "+", "k " * 39 + "+",  # 2^n ways to cut the letters into unit names, once tried one by one
 ]
 
 

@@ -11,6 +11,7 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
+from taucli import units
 from taucli.errors import InputError, did_you_mean
 from taucli.options.inertia import COMMAND as TABLE
 from taucli.report import Report, Step, Table, fmt, quantity_text
@@ -319,6 +320,8 @@ def body_inertia(parts: Sequence[Part]) -> BodyInertia:
     results = tuple(part_inertia(part) for part in parts)
     mass = math.fsum(r.part.mass for r in results)
     inertia = math.fsum(r.inertia for r in results)
+    # The bounds of a typed --inertia hold for one computed from a shape too.
+    units.check_bounds(inertia, "moment of inertia", _given(parts), got=f"I = {inertia:g} kg*m**2")
     if len(results) == 1:
         return BodyInertia(inertia, mass, results, results[0].steps, describe_part(results[0]))
     steps: list[Step] = []
@@ -336,6 +339,17 @@ def body_inertia(parts: Sequence[Part]) -> BodyInertia:
     )
     description = f"body of {len(results)} parts: " + "; ".join(describe_part(r) for r in results)
     return BodyInertia(inertia, mass, results, tuple(steps), description)
+
+
+def _given(parts: Sequence[Part]) -> str:
+    """The options that gave the parts: "--mass and --radius", "--mass, --radius and --part 2"."""
+    named = []
+    for part in parts:
+        if part.source:
+            named.append(part.source)
+        else:
+            named += ["--mass", *(part.option(dim) for dim in part.dims), *(["--offset"] if part.offset is not None else [])]
+    return named[0] if len(named) == 1 else f"{', '.join(named[:-1])} and {named[-1]}"
 
 
 def _subscript(n: int) -> str:
