@@ -7,7 +7,6 @@ library function, with the inputs echoed in SI for the report and any notes thei
 
 from __future__ import annotations
 
-import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -25,28 +24,24 @@ class Inputs:
 
     values: dict[str, Value] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
+    gravity: float | None = None  # the scene's --g, for a weight given as a mass
 
     def quantity(self, name: str, given, kind: str, *, sign: str = "positive", key: str | None = None) -> float | None:
-        """The SI value of ``given`` (text with a unit, or an SI number) read as ``kind``."""
+        """The SI value of ``given``: text with a unit, or a number, which is SI."""
         if given is None:
             return None
-        text = _text(given, name)
-        parsed = units.parse(text, name if name.startswith("{") else "{" + name + "}", kind, sign=sign)
-        self.values[key or name] = Value(parsed.value, units.KINDS[kind].si_unit, "")
-        if parsed.note:
-            self.notes.append(parsed.note)
-        return parsed.value
-
-
-def _text(given, name: str) -> str:
-    """An SI number as the text a bare number is (a bare number means the SI unit)."""
-    if isinstance(given, str):
-        return given
-    if isinstance(given, (int, float)) and not isinstance(given, bool):
-        if isinstance(given, float) and not math.isfinite(given):
-            raise InputError(name, "expected a finite number", got=repr(given))
-        return repr(float(given)) if isinstance(given, float) else str(given)
-    raise InputError(name, "expected a number or a text with a unit", example='"4kg"', got=repr(given))
+        option = name if name.startswith("{") else "{" + name + "}"
+        if isinstance(given, str):
+            parsed = units.parse(given, option, kind, sign=sign, gravity=self.gravity)
+            value, note = parsed.value, parsed.note
+        elif isinstance(given, (int, float)) and not isinstance(given, bool):
+            value, note = units.si_number(given, option, kind, sign=sign), None
+        else:
+            raise InputError(name, "expected a number or a text with a unit", example='"4kg"', got=repr(given))
+        self.values[key or name] = Value(value, units.KINDS[kind].si_unit, "")
+        if note:
+            self.notes.append(note)
+        return value
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:
@@ -60,9 +55,12 @@ def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None 
     if not command.input_names.issuperset(given):
         name = next(name for name in given if name not in command.input_names)
         raise InputError(name, f"is not an option of {command.name}", hint=did_you_mean(name, sorted(command.input_names)))
+    gravity = command.option("g")
+    if gravity is not None and given.get("g") is not None:  # first: a weight given for a mass needs it
+        inputs.gravity = arguments["g"] = READERS[gravity.kind](gravity, given["g"], inputs, stdin)
     for option in command.options:
         value = given.get(option.name)
-        if value is None or value == () or value == [] or value is False:
+        if value is None or value == () or value == [] or value is False or option.name in arguments:
             continue
         arguments[option.name] = READERS[option.kind](option, value, inputs, stdin)
     return arguments, inputs

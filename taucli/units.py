@@ -450,14 +450,26 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive", gra
         if not (math.isfinite(g) and g > 0):
             raise InputError(option, "is a weight, which needs a positive gravity to give a mass", example="--g 9.81", got=f"g = {g!r}")
         value /= g
+    _check(value, text, option, kind, sign)
+    return Parsed(value, _note(option, text.strip(), reading, value, gravity, kind))
+
+
+def _check(value: float, text: str, option: str, kind: Kind, sign: str) -> None:
+    """A value read from ``text`` must be finite, within its kind's bounds, and of its sign."""
     if not math.isfinite(value):
         raise InputError(option, f"expected a finite {kind.name}", example=kind.example, got=repr(text))
-    check_bounds(value, kind_name, option, sign=sign, got=repr(text) if _is_number(text) else None, text=text)
+    check_bounds(value, kind.name, option, sign=sign, got=repr(text) if _is_number(text) else None, text=text)
     if sign == "positive" and value <= 0:
         raise InputError(option, f"expected a positive {kind.name}", example=kind.example, got=repr(text))
     if sign == "nonnegative" and value < 0:
         raise InputError(option, f"expected a {kind.name} of zero or more", example=kind.example, got=repr(text))
-    return Parsed(value, _note(option, text.strip(), reading, value, gravity, kind))
+
+
+def si_number(value: float, option: str, kind_name: str, *, sign: str = "positive") -> float:
+    """A number given as SI (a JSON number in a batch line, a float from Python), checked as a
+    text would be: finite, within bounds, of its sign. No unit to read, so an angle is radians."""
+    _check(float(value), repr(value), option, KINDS[kind_name], sign)
+    return float(value)
 
 
 def check_bounds(value: float, kind_name: str, option: str, *, sign: str = "nonnegative", got: str | None = None, text: str | None = None) -> None:

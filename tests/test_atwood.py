@@ -226,7 +226,8 @@ def test_at_rest_each_tension_is_given_where_statics_fixes_it_and_bounded_where_
     mu_s = 0.0 if angle == HANGING else mu_s
     sin_a, cos_a = (1.0, 0.0) if angle == HANGING else (math.sin(angle), math.cos(angle))
     m1 = m2 * sin_a + share * (mu_s * m2 * cos_a + axle / radius / g)
-    assume(m1 >= 0)
+    # m1 = 0 leaves a band of width 2·τ_a/R around T2 = 0 that a string (T ≥ 0) pins to 0: no case here
+    assume(m1 > 0)
     report = solve(m1, m2, Pulley(0.0, radius, None, None, axle), g, slope=Slope(angle, mu_s, mu_s))
     result = values(report)
     assume(result["a"] == 0)

@@ -98,3 +98,16 @@ def test_skidding_ball_on_the_flat(taucli):
 )
 def test_rolling_bad_input(taucli, args, fragments):
     assert_usage_error(taucli("rolling", *args), *fragments)
+
+
+def test_an_incline_with_no_coefficient_given_is_smooth(taucli):
+    """friction.py's rule through the command line: neither μ given, m2 slides without friction;
+    only μs given and it slides, what needs μk is null with a note."""
+    import math
+
+    smooth = taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--incline", "30deg", "--json").json()
+    expected = (4 - 1 * math.sin(math.radians(30))) * 9.80665 / 5
+    assert smooth["results"]["a"]["value"] == pytest.approx(expected, rel=1e-14)
+    rough = taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--incline", "30deg", "--mu-s", "0.3", "--json").json()
+    assert rough["results"]["a"]["value"] is None
+    assert any("--mu-k" in note for note in rough["notes"])

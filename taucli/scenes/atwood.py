@@ -380,7 +380,8 @@ def atwood(
     if m2 is None:
         assumed.notes.append("no --m2: a single mass on a string wound on the pulley")
     pulley = Pulley(pulley_mass or 0.0, pulley_radius, pulley_shape, pulley_inertia, axle_friction or 0.0)
-    slope = Slope(HANGING if incline is None else incline, mu_k, mu_s)
+    # friction.py's rule: neither coefficient given, a smooth surface (μk = 0); only μs, μk unknown
+    slope = Slope(HANGING if incline is None else incline, 0.0 if mu_k is None and mu_s is None else mu_k, mu_s)
     gravity = assumed.gravity(g)
     report = solve(m1, m2 or 0.0, pulley, gravity, slope=slope, v0=v0 or 0.0, distance=distance, time=time)
     return assumed.applied(report)

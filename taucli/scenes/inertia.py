@@ -342,13 +342,14 @@ def body_inertia(parts: Sequence[Part]) -> BodyInertia:
 
 
 def _given(parts: Sequence[Part]) -> str:
-    """The options that gave the parts: "--mass and --radius", "--mass, --radius and --part 2"."""
+    """The options that gave the parts, as a message names them: "{mass} and {radius}",
+    "{mass}, {radius} and {part} 2"."""
     named = []
     for part in parts:
         if part.source:
             named.append(part.source)
         else:
-            named += ["--mass", *(part.option(dim) for dim in part.dims), *(["--offset"] if part.offset is not None else [])]
+            named += ["{mass}", *("{" + dim + "}" for dim in part.dims), *(["{offset}"] if part.offset is not None else [])]
     return named[0] if len(named) == 1 else f"{', '.join(named[:-1])} and {named[-1]}"
 
 
