@@ -17,6 +17,7 @@ from taucli import units
 from taucli.errors import InputError, did_you_mean
 from taucli.report import Value
 from taucli.table import CHOICE, COUNT, FILE, FLAG, PART, TEXT, Command, Option
+from taucli.table import VECTOR
 
 
 @dataclass
@@ -169,3 +170,66 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs):
     dims = {key: read_field(key, "length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS if key in fields}
     offset = read_field("offset", "length", "nonnegative") if "offset" in fields else None
     return Part(shape, read_field("mass", "mass"), dims, fields.get("axis"), offset, source)
+
+
+# Vectors ("0.3,0.4,0 m") and quantities given more than once (--mass 2kg --mass 3kg).
+_NUMBER_THEN_UNIT = re.compile(r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+AXES = ("x", "y", "z")
+
+
+def _vectors(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each value of a VECTOR option: "x,y,z UNIT" as its three SI components (a tuple), or a lone
+    "20 N" as one signed SI number (a scene that takes a size alone says so; the others refuse it).
+    Python and batch may give a vector as three SI numbers: [0.3, 0.4, 0]."""
+    items = [given] if isinstance(given, str) or _is_triple(given) else list(given) if isinstance(given, (list, tuple)) else [given]
+    read = []
+    for number, item in enumerate(items, start=1):
+        name = f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "")
+        key = option.name + (str(number) if len(items) > 1 else "")
+        read.append(read_vector(item, name, option.of, inputs, key))
+    return tuple(read)
+
+
+def _is_triple(given) -> bool:
+    return isinstance(given, (list, tuple)) and len(given) == 3 and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in given)
+
+
+def read_vector(given, name: str, kind: str, inputs: Inputs, key: str):
+    """One vector "x,y,z UNIT" (one unit after the last component, or a unit on each) in SI."""
+    si = units.KINDS[kind].si_unit
+    example = f'{name.split()[0]} "0.3,0.4,0 {si or "1"}"'
+    if _is_triple(given):
+        components = [_text(x, name) for x in given]
+    else:
+        text = _text(given, name).strip()
+        if text[:1] + text[-1:] in ("()", "[]", "<>"):
+            text = text[1:-1]
+        components = [part.strip() for part in text.split(",")]
+    if len(components) == 1:
+        return inputs.quantity(name, components[0], kind, sign="any", key=key)
+    if len(components) != 3:
+        raise InputError(name, "expected three components x,y,z with a unit", example=example, got=repr(given))
+    split = [_NUMBER_THEN_UNIT.fullmatch(part) for part in components]
+    bare = [match is not None and not match[2] for match in split]
+    if bare[0] and bare[1] and not bare[2] and split[2] is not None:
+        components = [f"{part} {split[2][2]}" for part in components[:2]] + components[2:]
+    elif any(bare) and not all(bare):
+        raise InputError(name, "expected one unit after the last component, or a unit on each", example=example, got=repr(given))
+    vector = tuple(units.parse(part, f"{name} ({axis})", kind, sign="any") for part, axis in zip(components, AXES))
+    inputs.notes.extend(parsed.note for parsed in vector if parsed.note)
+    inputs.values[key] = Value([parsed.value for parsed in vector], si, "")
+    return tuple(parsed.value for parsed in vector)
+
+
+def _repeated(option: Option, given, inputs: Inputs, stdin):
+    """A quantity option: one value, or (repeatable) each value given, as a tuple."""
+    if not option.repeatable:
+        return _quantity(option, given, inputs, stdin)
+    items = list(given) if isinstance(given, (list, tuple)) else [given]
+    keys = [option.name + (str(number) if len(items) > 1 else "") for number in range(1, len(items) + 1)]
+    names = [f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "") for number in range(1, len(items) + 1)]
+    return tuple(inputs.quantity(name, item, option.kind, sign=option.sign, key=key) for name, item, key in zip(names, items, keys))
+
+
+READERS.update({kind: _repeated for kind in units.KINDS})
+READERS[VECTOR] = _vectors
