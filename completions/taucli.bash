@@ -153,14 +153,16 @@ _taucli() {
             --duration) _taucli_units s ms min h; return 0 ;;
             --inertia-final) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --torque-profile) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --particle) :; return 0 ;;
+            --couple) :; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
-            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in

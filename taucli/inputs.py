@@ -18,6 +18,7 @@ from taucli.errors import InputError, did_you_mean
 from taucli.report import Value
 from taucli.table import CHOICE, COUNT, FILE, FLAG, PART, TEXT, Command, Option
 from taucli.table import VECTOR
+from taucli.table import COUPLE, PARTICLE
 
 
 @dataclass
@@ -233,3 +234,92 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
 
 READERS.update({kind: _repeated for kind in units.KINDS})
 READERS[VECTOR] = _vectors
+
+
+# --particle and --couple of impulse (#20): "key=value ..." specs like --part's.
+PARTICLE_FIELDS = {  # key: (kind, sign)
+    "mass": ("mass", "positive"),
+    "speed": ("velocity", "any"),
+    "radius": ("length", "nonnegative"),
+    "angle": ("angle", "nonnegative"),
+    "speed_after": ("velocity", "any"),
+    "radius_after": ("length", "nonnegative"),
+    "e": ("dimensionless", "nonnegative"),
+}
+COUPLE_FIELDS = {"inertia": ("moment of inertia", "nonnegative"), "omega0": ("angular velocity", "any"), "mass": ("mass", "positive"),
+                 "offset": ("length", "nonnegative"), **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS}}
+
+
+_SPEC_KEY = re.compile(r"\s+(?=[a-z][a-z0-9_-]*\s*=)")
+
+
+def _spec_fields(spec: str, source: str, known, example: str, *, shape_word: bool) -> tuple[str | None, dict[str, str]]:
+    """A spec's leading word (where it may have one) and its key=value pairs, keys in snake case."""
+    words = _SPEC_KEY.split(" " + spec.strip())
+    first, *pairs = [word for word in words if word.strip()] or [""]
+    shape = None
+    if "=" not in first:
+        if not shape_word or not first:
+            raise InputError(source, "expected key=value pairs", example=example, got=repr(spec))
+        shape = first.strip()
+    else:
+        pairs = [first, *pairs]
+    fields: dict[str, str] = {}
+    for pair in pairs:
+        key, _, text = pair.partition("=")
+        key = key.strip().replace("-", "_")
+        if key not in known:
+            raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", example=example, got=repr(key.replace("_", "-")))
+        if key in fields:
+            raise InputError(source, f"has {key.replace('_', '-')}= twice", example=example, got=repr(spec))
+        fields[key] = text.strip()
+    return shape, fields
+
+
+def _read_fields(fields: dict[str, str], table: dict, source: str, prefix: str, inputs: Inputs) -> dict[str, float]:
+    return {key: inputs.quantity(f"{source} {key.replace('_', '-')}=", text, table[key][0], sign=table[key][1], key=f"{prefix}_{key}")
+            for key, text in fields.items() if key in table}
+
+
+def _particles(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    from taucli.scenes.impulse import Particle
+
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    example = '{particle} "mass=30kg speed=4m/s radius=2m"'
+    particles = []
+    for number, spec in enumerate(specs, start=1):
+        source = f"{{particle}} {number}" if len(specs) > 1 else "{particle}"
+        _, fields = _spec_fields(_word(option, spec), source, PARTICLE_FIELDS, example, shape_word=False)
+        for needed in ("mass", "radius"):
+            if needed not in fields:
+                raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
+        values = _read_fields(fields, PARTICLE_FIELDS, source, f"particle{number}", inputs)
+        particles.append(Particle(source=source, **values))
+    return tuple(particles)
+
+
+def _couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    from taucli.scenes.impulse import Couple
+    from taucli.scenes.inertia import Part
+
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    example = '{couple} "inertia=3kg*m^2 omega0=0", or {couple} "disc mass=2kg radius=0.1m omega0=100rpm"'
+    couples = []
+    for number, spec in enumerate(specs, start=1):
+        source = f"{{couple}} {number}" if len(specs) > 1 else "{couple}"
+        shape, fields = _spec_fields(_word(option, spec), source, {*COUPLE_FIELDS, "axis"}, example, shape_word=True)
+        values = _read_fields(fields, COUPLE_FIELDS, source, f"couple{number}", inputs)
+        if (shape is None) == ("inertia" not in values):
+            raise InputError(source, "needs inertia= or a shape with its mass and dimensions (one of them)", example=example, got=repr(spec))
+        dims = {key: values[key] for key in PART_DIMENSIONS if key in values}
+        if shape is None and (dims or "mass" in values or "offset" in values or "axis" in fields):
+            raise InputError(source, "takes a shape's mass and dimensions only after a shape word; with inertia= they are not used", example=example, got=repr(spec))
+        part = None if shape is None else Part(shape, values.get("mass", 0.0), dims, fields.get("axis"), values.get("offset"), source)
+        if part is not None and "mass" not in values:
+            raise InputError(source, "needs mass= with a shape", example=example, got=repr(spec))
+        couples.append(Couple(source=source, inertia=values.get("inertia"), part=part, omega0=values.get("omega0")))
+    return tuple(couples)
+
+
+READERS[PARTICLE] = _particles
+READERS[COUPLE] = _couples
