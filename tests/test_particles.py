@@ -92,7 +92,7 @@ def reference(inertia, omega0, couples, particles):
     leaving_energy = mp(0)
     for p in particles:
         m, v, r = mp(p["mass"]), mp(p["speed"]), mp(p["radius"])
-        arm = r * mpmath.sin(mpmath.radians(p.get("angle", 90)))
+        arm = r * mpmath.sinpi(mp(p.get("angle", 90)) / 180)
         momentum0 += m * v * arm
         energy0 += m * v**2 / 2
         if "speed_after" in p:
@@ -104,7 +104,7 @@ def reference(inertia, omega0, couples, particles):
     rhs[0] = momentum0 - leaving
     for k, p in enumerate(rebounds, start=1):
         m, v, r, e = mp(p["mass"]), mp(p["speed"]), mp(p["radius"]), mp(p["e"])
-        arm = r * mpmath.sin(mpmath.radians(p.get("angle", 90)))
+        arm = r * mpmath.sinpi(mp(p.get("angle", 90)) / 180)
         matrix[0, k] = m * arm  # its L after, m v′ r⊥, in the balance
         matrix[k, 0] = -arm  # v′ − ω₁ r⊥ = −e (v − ω₀ r⊥)
         matrix[k, k] = 1
@@ -125,7 +125,7 @@ def spec(p):
 
 sizes = st.floats(1e-2, 1e2)
 signed = st.one_of(st.floats(1e-2, 1e2), st.floats(-1e2, -1e-2), st.just(0.0))
-sticking = st.fixed_dictionaries({"mass": sizes, "speed": signed, "radius": sizes}, optional={"angle": st.floats(1, 179)})
+sticking = st.fixed_dictionaries({"mass": sizes, "speed": signed, "radius": st.one_of(sizes, st.just(0.0))}, optional={"angle": st.one_of(st.sampled_from([0.0, 90.0, 180.0]), st.floats(1e-3, 180))})
 rebounding = st.fixed_dictionaries({"mass": sizes, "speed": signed, "radius": sizes, "e": st.one_of(st.just(0.0), st.floats(1e-3, 1))}, optional={"angle": st.floats(1, 179)})
 couples = st.lists(st.tuples(sizes, signed), max_size=2)
 
@@ -160,6 +160,14 @@ def test_locking_loses_its_closed_form_even_where_the_speeds_nearly_agree(i1, i2
     result = values(taucli.impulse(inertia=i1, omega0=w1, couple=f"inertia={i2!r} omega0={w2!r}"))
     exact = mp(i1) * mp(i2) / (mp(i1) + mp(i2)) * (mp(w1) - mp(w2)) ** 2 / 2
     assert result["KE_lost"] == pytest.approx(float(exact), rel=1e-12, abs=1e-300)
+
+
+def test_a_particle_that_meets_the_axis_gives_no_l_and_loses_all_its_energy():
+    result = values(taucli.impulse(inertia=2, omega0=3, particle="mass=1kg speed=4m/s radius=0m"))
+    assert result["omega1"] == 3.0
+    assert result["KE_lost"] == 8.0
+    head_on = values(taucli.impulse(inertia=2, omega0=0, particle="mass=1kg speed=4m/s radius=1m angle=0deg"))
+    assert head_on["omega1"] == 0.0 and head_on["KE_lost"] == 8.0
 
 
 def test_a_particle_passing_through_keeps_l():

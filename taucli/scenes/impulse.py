@@ -385,14 +385,16 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
             stick.append((name, p))
             tangential = p.speed * p.sine
             if p.radius == 0:
-                # A particle that meets the body on the axis has no angular momentum and adds no inertia there.
+                # A particle that meets the body on the axis has no angular momentum and adds no inertia there:
+                # the axle stops all of its motion.
                 joined.append((name, 0.0, 0.0))
+                radial_energy.append(0.5 * p.mass * p.speed**2)
             else:
                 joined.append((name, p.mass * p.radius**2, tangential / p.radius))
+                if p.angle is not None:
+                    radial_energy.append(0.5 * p.mass * (p.speed * _cos(p.angle)) ** 2)
             rho = p.radius if p.radius_after is None else p.radius_after
             extra_inertia.append(p.mass * (rho - p.radius) * (rho + p.radius))
-            if p.angle is not None:
-                radial_energy.append(0.5 * p.mass * (p.speed * _cos(p.angle)) ** 2)
     if bounce and (len(particles) > 1 or couples):
         raise InputError(bounce[0][1].source, "e= (a rebound) is solved for one particle meeting the body alone: impacts at once have no single "
                          "answer; give them one run each, in the order they happen", example='{particle} "mass=0.2kg speed=5m/s radius=1m e=0.5"')
