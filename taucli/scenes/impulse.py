@@ -400,7 +400,10 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
                          "answer; give them one run each, in the order they happen", example='{particle} "mass=0.2kg speed=5m/s radius=1m e=0.5"')
     i_before = math.fsum(i for _, i, _ in joined)
     momentum_joined = math.fsum(i * w for _, i, w in joined)
-    i_after = i_before + math.fsum(extra_inertia)
+    # I₁ summed from what turns after (not I before + ΔI, which cancels when a rider walks to the axis).
+    staying = [p for _, p in (*stick, *ride)]
+    i_after = math.fsum([inertia, *(i_c for _, i_c, _ in couple_rows),
+                         *(p.mass * (p.radius if p.radius_after is None else p.radius_after) ** 2 for p in staying)])
     if i_after <= 0 and (bounce or not leave):
         raise InputError("inertia", "must be more than zero here: nothing would be left to turn", example="{inertia} 2kg*m^2")
     momentum0 = momentum_joined + math.fsum(p.mass * p.speed * p.arm for _, p in (*leave, *bounce))
