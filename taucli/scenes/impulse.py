@@ -488,11 +488,19 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
                       "L₀ = L₁ solved for the one unknown"))
     for name, p in bounce:
         steps.append(Step(f"Speed of the {name} after", "v′ = ω₁r⊥ − e (v − ω₀r⊥)", f"{fmt(omega1)} × {fmt(p.arm)} − {fmt(p.e)} × ({fmt(p.speed)} − {fmt(omega0)} × {fmt(p.arm)})",
-                          quantity_text(after[name], "m/s"), "negative: it bounces back"))
+                          quantity_text(after[name], "m/s"),
+                          "the restitution law solved for v′: " + ("negative, it bounces back" if after[name] < 0 else "it follows the body's point, which now moves away at least as fast")))
     why_energy = ("kinetic energy is not conserved: while the two come to move together they slide on each other (or the particle deforms, "
                   "the bullet tears the wood), and that friction turns kinetic energy into heat; only a perfectly elastic rebound (e = 1) keeps it all")
     steps.append(Step("Kinetic energy before and after", "KE = ½Iω² + ½mv²", f"{quantity_text(energy0, 'J')} → {quantity_text(energy1, 'J')}",
                       f"lost {quantity_text(lost, 'J')}" + (f" ({fmt(100 * lost / energy0, 3)}%)" if energy0 > 0 else ""), why_energy))
+    if bounce:
+        name, p = bounce[0]
+        steps.append(Step("The energy lost in the rebound", "KE_lost = ½ μ (1 − e²)(v − ω₀r⊥)²,  μ = m I / (I + m r⊥²)",
+                          f"½ × {fmt(p.mass * inertia / (inertia + p.mass * p.arm**2))} × (1 − {fmt(p.e)}²) × ({fmt(p.speed)} − {fmt(omega0)} × {fmt(p.arm)})²",
+                          quantity_text(lost, "J"),
+                          "along the particle's line the body's point acts as a mass I/r⊥²: a collision of two masses, which keeps "
+                          "the fraction e² of the energy of their approach"))
     if not leave and not bounce:
         steps.append(Step("The energy lost, as the bodies' spread of speeds", "KE_lost = ½ Σ_{j<k} I_j I_k (ω_j − ω_k)² / ΣI + ½ I ω̄² ΔI/I₁ + ½m(v cos φ)²",
                           "", quantity_text(lost, "J"),
