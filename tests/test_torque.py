@@ -216,3 +216,22 @@ def test_command_line_and_json():
     assert [row["lever_arm"] for row in document["forces"]] == [1.0, 1.0]
     assert document["inputs"]["r1"] == {"value": [1.0, 0.0, 0.0], "unit": "m"}
     assert_usage_error(run_taucli("torque", "--r", "1,0,0 m", "--force", "0,1 N"), "--force", "three components")
+
+
+def test_forces_not_in_one_plane_reduce_to_a_wrench():
+    """F₁ = (0,0,5) N at (0,1,0) m and F₂ = (0,3,0) N at (2,0,0) m: τ = (5, 0, 6) N·m, F = (0, 3, 5) N,
+    τ·F ≠ 0. The central axis is where the torque is least (its part along F alone): the distance
+    to it is the least |p| over the points p about which τ − p × F is parallel to F."""
+    report = taucli.torque(r=["0,1,0 m", "2,0,0 m"], force=["0,0,5 N", "0,3,0 N"])
+    f = [mp(0), mp(3), mp(5)]
+    tau = [mp(5), mp(0), mp(6)]
+    # p ⟂ F on the central axis solves F × p = τ_⊥ with τ_⊥ = τ − (τ·F/F·F)F: p = (τ_⊥ × F)/|F|² rotated, |p| = |τ_⊥|/|F|.
+    tf = sum(a * b for a, b in zip(tau, f)) / sum(b * b for b in f)
+    perp = [a - tf * b for a, b in zip(tau, f)]
+    distance = mpmath.sqrt(sum(c * c for c in perp)) / mpmath.sqrt(sum(b * b for b in f))
+    assert report.results["lever_arm"].value == pytest.approx(float(distance), rel=1e-15)
+    assert any("wrench" in note for note in report.notes)
+
+
+def mp(x):
+    return mpmath.mpf(x)

@@ -246,6 +246,10 @@ def _net_arm(net: Vector, net_force, arms: list, planar_forces: list, several: b
         notes.append("lever_arm: the forces add to zero (a couple): the torque is the same about every point, and there is no single line of action")
         return None, " of the resultant"
     arm = size(cross(net_force, net)) / size(net_force) ** 2
+    along = math.fsum(f * t for f, t in zip(net_force, net)) / size(net_force)
+    if abs(along) > 1e-12 * size(net):
+        notes.append(f"lever_arm: the net torque has a part along the resultant force ({fmt(along)} N·m): no single force gives it "
+                     "(a wrench); lever_arm is the distance from the point to the line (the central axis) where the rest is the resultant's r × F")
     steps.append(Step("Lever arm of the resultant", "r⊥ = |F × τ| / |F|²,  F = Σ Fᵢ", f"F = {_vec(net_force)} N, τ = {_vec(net)} N·m",
                       quantity_text(arm, "m"), "the distance from the point to the line along which the sum of the forces gives the same torque"))
     return arm, " of the resultant"
