@@ -18,7 +18,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse bench completions --version --debug --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse torque bench completions --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in
@@ -153,14 +153,32 @@ _taucli() {
             --duration) _taucli_units s ms min h; return 0 ;;
             --inertia-final) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --torque-profile) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --particle) :; return 0 ;;
+            --couple) :; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
-            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        ;;
+    torque)
+        case "$prev" in
+            --r) :; return 0 ;;
+            --force) :; return 0 ;;
+            --lever) _taucli_units m cm mm km in ft; return 0 ;;
+            --angle) _taucli_units deg rad rev; return 0 ;;
+            --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --velocity) :; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
+            --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
+        esac
+        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

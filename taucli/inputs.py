@@ -16,6 +16,8 @@ from taucli import units
 from taucli.errors import InputError, did_you_mean
 from taucli.report import Value
 from taucli.table import CHOICE, COUNT, FILE, FLAG, PART, TEXT, Command, Option
+from taucli.table import VECTOR
+from taucli.table import COUPLE, PARTICLE
 
 
 @dataclass
@@ -167,3 +169,155 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs):
     dims = {key: read_field(key, "length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS if key in fields}
     offset = read_field("offset", "length", "nonnegative") if "offset" in fields else None
     return Part(shape, read_field("mass", "mass"), dims, fields.get("axis"), offset, source)
+
+
+# Vectors ("0.3,0.4,0 m") and quantities given more than once (--mass 2kg --mass 3kg).
+_NUMBER_THEN_UNIT = re.compile(r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+AXES = ("x", "y", "z")
+
+
+def _vectors(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each value of a VECTOR option: "x,y,z UNIT" as its three SI components (a tuple), or a lone
+    "20 N" as one signed SI number (a scene that takes a size alone says so; the others refuse it).
+    Python and batch may give a vector as three SI numbers: [0.3, 0.4, 0]."""
+    items = [given] if isinstance(given, str) or _is_triple(given) else list(given) if isinstance(given, (list, tuple)) else [given]
+    read = []
+    for number, item in enumerate(items, start=1):
+        name = f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "")
+        key = option.name + (str(number) if len(items) > 1 else "")
+        read.append(read_vector(item, name, option.of, inputs, key))
+    return tuple(read)
+
+
+def _is_triple(given) -> bool:
+    return isinstance(given, (list, tuple)) and len(given) == 3 and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in given)
+
+
+def read_vector(given, name: str, kind: str, inputs: Inputs, key: str):
+    """One vector "x,y,z UNIT" (one unit after the last component, or a unit on each) in SI."""
+    si = units.KINDS[kind].si_unit
+    example = f'{name.split()[0]} "0.3,0.4,0 {si or "1"}"'
+    if _is_triple(given):
+        components = [_text(x, name) for x in given]
+    else:
+        text = _text(given, name).strip()
+        if text[:1] + text[-1:] in ("()", "[]", "<>"):
+            text = text[1:-1]
+        components = [part.strip() for part in text.split(",")]
+    if len(components) == 1:
+        return inputs.quantity(name, components[0], kind, sign="any", key=key)
+    if len(components) != 3:
+        raise InputError(name, "expected three components x,y,z with a unit", example=example, got=repr(given))
+    split = [_NUMBER_THEN_UNIT.fullmatch(part) for part in components]
+    bare = [match is not None and not match[2] for match in split]
+    if bare[0] and bare[1] and not bare[2] and split[2] is not None:
+        components = [f"{part} {split[2][2]}" for part in components[:2]] + components[2:]
+    elif any(bare) and not all(bare):
+        raise InputError(name, "expected one unit after the last component, or a unit on each", example=example, got=repr(given))
+    vector = tuple(units.parse(part, f"{name} ({axis})", kind, sign="any") for part, axis in zip(components, AXES))
+    inputs.notes.extend(parsed.note for parsed in vector if parsed.note)
+    inputs.values[key] = Value([parsed.value for parsed in vector], si, "")
+    return tuple(parsed.value for parsed in vector)
+
+
+def _repeated(option: Option, given, inputs: Inputs, stdin):
+    """A quantity option: one value, or (repeatable) each value given, as a tuple."""
+    if not option.repeatable:
+        return _quantity(option, given, inputs, stdin)
+    items = list(given) if isinstance(given, (list, tuple)) else [given]
+    keys = [option.name + (str(number) if len(items) > 1 else "") for number in range(1, len(items) + 1)]
+    names = [f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "") for number in range(1, len(items) + 1)]
+    return tuple(inputs.quantity(name, item, option.kind, sign=option.sign, key=key) for name, item, key in zip(names, items, keys))
+
+
+READERS.update({kind: _repeated for kind in units.KINDS})
+READERS[VECTOR] = _vectors
+
+
+# --particle and --couple of impulse (#20): "key=value ..." specs like --part's.
+PARTICLE_FIELDS = {  # key: (kind, sign)
+    "mass": ("mass", "positive"),
+    "speed": ("velocity", "any"),
+    "radius": ("length", "nonnegative"),
+    "angle": ("angle", "nonnegative"),
+    "speed_after": ("velocity", "any"),
+    "radius_after": ("length", "nonnegative"),
+    "e": ("dimensionless", "nonnegative"),
+}
+COUPLE_FIELDS = {"inertia": ("moment of inertia", "nonnegative"), "omega0": ("angular velocity", "any"), "mass": ("mass", "positive"),
+                 "offset": ("length", "nonnegative"), **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS}}
+
+
+_SPEC_KEY = re.compile(r"\s+(?=[a-z][a-z0-9_-]*\s*=)")
+
+
+def _spec_fields(spec: str, source: str, known, example: str, *, shape_word: bool) -> tuple[str | None, dict[str, str]]:
+    """A spec's leading word (where it may have one) and its key=value pairs, keys in snake case."""
+    words = _SPEC_KEY.split(" " + spec.strip())
+    first, *pairs = [word for word in words if word.strip()] or [""]
+    shape = None
+    if "=" not in first:
+        if not shape_word or not first:
+            raise InputError(source, "expected key=value pairs", example=example, got=repr(spec))
+        shape = first.strip()
+    else:
+        pairs = [first, *pairs]
+    fields: dict[str, str] = {}
+    for pair in pairs:
+        key, _, text = pair.partition("=")
+        key = key.strip().replace("-", "_")
+        if key not in known:
+            raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", example=example, got=repr(key.replace("_", "-")))
+        if key in fields:
+            raise InputError(source, f"has {key.replace('_', '-')}= twice", example=example, got=repr(spec))
+        fields[key] = text.strip()
+    return shape, fields
+
+
+def _read_fields(fields: dict[str, str], table: dict, source: str, prefix: str, inputs: Inputs) -> dict[str, float]:
+    return {key: inputs.quantity(f"{source} {key.replace('_', '-')}=", text, table[key][0], sign=table[key][1], key=f"{prefix}_{key}")
+            for key, text in fields.items() if key in table}
+
+
+def _particles(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    from taucli.scenes.impulse import Particle
+
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    example = '{particle} "mass=30kg speed=4m/s radius=2m"'
+    particles = []
+    for number, spec in enumerate(specs, start=1):
+        source = f"{{particle}} {number}" if len(specs) > 1 else "{particle}"
+        _, fields = _spec_fields(_word(option, spec), source, PARTICLE_FIELDS, example, shape_word=False)
+        for needed in ("mass", "radius"):
+            if needed not in fields:
+                raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
+        values = _read_fields(fields, PARTICLE_FIELDS, source, f"particle{number}", inputs)
+        particles.append(Particle(source=source, **values))
+    return tuple(particles)
+
+
+def _couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    from taucli.scenes.impulse import Couple
+    from taucli.scenes.inertia import Part
+
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    example = '{couple} "inertia=3kg*m^2 omega0=0", or {couple} "disc mass=2kg radius=0.1m omega0=100rpm"'
+    couples = []
+    for number, spec in enumerate(specs, start=1):
+        source = f"{{couple}} {number}" if len(specs) > 1 else "{couple}"
+        shape, fields = _spec_fields(_word(option, spec), source, {*COUPLE_FIELDS, "axis"}, example, shape_word=True)
+        values = _read_fields(fields, COUPLE_FIELDS, source, f"couple{number}", inputs)
+        if (shape is None) == ("inertia" not in values):
+            raise InputError(source, "needs inertia= or a shape with its mass and dimensions (one of them)", example=example, got=repr(spec))
+        dims = {key: values[key] for key in PART_DIMENSIONS if key in values}
+        if shape is None and (dims or "mass" in values or "offset" in values or "axis" in fields):
+            raise InputError(source, "takes a shape's mass and dimensions only after a shape word; with inertia= they are not used", example=example, got=repr(spec))
+        part = None if shape is None else Part(shape, values.get("mass", 0.0), dims, fields.get("axis"), values.get("offset"), source)
+        if part is not None and "mass" not in values:
+            raise InputError(source, "needs mass= with a shape", example=example, got=repr(spec))
+        couples.append(Couple(source=source, inertia=values.get("inertia"), part=part, omega0=values.get("omega0")))
+    return tuple(couples)
+
+
+READERS[PARTICLE] = _particles
+READERS[COUPLE] = _couples

@@ -24,7 +24,12 @@ FILE = "file"  # a path (- for stdin where the option says so)
 PART = "part"  # "SHAPE key=value ...", repeatable
 TEXT = "text"  # free text, read by the command itself (--to NAME=UNIT, --get NAME)
 COUNT = "count"  # a whole number
+VECTOR = "vector"  # "x,y,z UNIT": three components of the quantity kind in ``of`` (or one size, where a scene takes that)
 NOT_QUANTITIES = frozenset({CHOICE, FLAG, FILE, PART, TEXT, COUNT})
+NOT_QUANTITIES = NOT_QUANTITIES | {VECTOR}  # read a component at a time by its own reader, never swept
+PARTICLE = "particle"  # "mass=… speed=… radius=… [angle=…] [speed-after=… | e=… | radius-after=…]", repeatable
+COUPLE = "couple"  # "[SHAPE] inertia=… | mass=… dims…, omega0=…": another body on the axis, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {
@@ -59,6 +64,7 @@ class Option:
     repeatable: bool = False
     positional: bool = False  # the command's argument (SHAPE) rather than an option
     metavar: str | None = None  # else the kind's
+    of: str | None = None  # VECTOR: the quantity kind of its components ("force")
 
     @property
     def flag(self) -> str:

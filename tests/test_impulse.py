@@ -243,3 +243,18 @@ def test_two_or_more_left_out_answer_what_the_rest_determine(args, known, unknow
         assert result[name] is None, name
     assert any("not fixed" in note for note in report.notes)
     report.steps[:]
+
+
+@settings(max_examples=100, deadline=None)
+@given(inertia=st.floats(1e-2, 1e2), omega0=finite, mass=st.floats(1e-2, 1e2), radius=st.floats(1e-2, 10), radius_after=st.one_of(st.just(0.0), st.floats(1e-3, 10)))
+def test_a_rider_moving_along_the_body_is_the_skater_changing_her_inertia(inertia, omega0, mass, radius, radius_after):
+    """--particle with no speed (riding) moving from r to ρ is --inertia-final with I + mr² -> I + mρ²
+    (#20): the same ω₁ and KE₁, and KE_lost = −work."""
+    import taucli
+
+    riding = taucli.impulse(inertia=inertia, omega0=omega0, particle=f"mass={mass!r}kg radius={radius!r}m radius-after={radius_after!r}m")
+    skater = taucli.impulse(inertia=inertia + mass * radius**2, inertia_final=inertia + mass * radius_after**2, omega0=omega0)
+    a, b = values(riding), values(skater)
+    assert a["omega1"] == pytest.approx(b["omega1"], rel=1e-12)
+    assert a["KE1"] == pytest.approx(b["KE1"], rel=1e-12)
+    assert a["KE_lost"] == pytest.approx(-b["work"], rel=1e-9, abs=1e-12 * b["KE0"])

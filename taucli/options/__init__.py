@@ -11,6 +11,8 @@ from taucli.table import Command
 SCENES: dict[str, Command] = {
     module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse)
 }
+from taucli.options import torque  # noqa: E402 (#20)
+SCENES[torque.COMMAND.name] = torque.COMMAND
 COMMANDS: dict[str, Command] = {**SCENES, "bench": tools.BENCH, "completions": tools.COMPLETIONS}
 OUTPUT_OPTIONS = ANSWER
 

@@ -2,7 +2,9 @@
 
 from taucli.names import QUADRATURE_NAMES
 from taucli.options.common import ANSWER, BODY_OPTIONS
-from taucli.table import CHOICE, FILE, Command, Option, Result
+from taucli.table import CHOICE, COUPLE, FILE, PARTICLE, Command, Option, Result
+
+MEETS = "Particles and bodies that meet it (L conserved)"
 
 COMMAND = Command(
     name="impulse",
@@ -16,6 +18,14 @@ COMMAND = Command(
         Option("duration", "time", "How long the torque acts."),
         Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
         Option("torque_profile", FILE, "CSV 't [ms], torque [N*m]' then rows; - for stdin.", metavar="FILE"),
+        Option("particle", PARTICLE,
+               'A particle that meets the body, e.g. "mass=30kg speed=4m/s radius=2m": speed signed (positive in the body\'s sense), '
+               "radius the distance of its line from the axis (or with angle=, to where it meets the body, angle= between velocity and radius); "
+               "it sticks, or leaves with speed-after= (negative: it rebounds), or rebounds with e= (restitution); "
+               "no speed=: it rides on the body, radius-after= where it moves to (repeatable).",
+               repeatable=True, metavar='"mass=… speed=… radius=…"', panel=MEETS),
+        Option("couple", COUPLE, 'Another body on the same axis that locks to it, e.g. "inertia=3kg*m^2 omega0=0" or "disc mass=2kg radius=0.1m omega0=100rpm" (repeatable).',
+               repeatable=True, metavar='"inertia=… omega0=…"', panel=MEETS),
         Option("method", CHOICE, "Quadrature for a profile: " + " | ".join(QUADRATURE_NAMES) + ".", choices=QUADRATURE_NAMES, default="auto", metavar="METHOD"),
     ),
     results=(
@@ -28,10 +38,12 @@ COMMAND = Command(
         Result("duration", "s", "time…"),
         Result("L0", "kg*m**2/s", "angular momentum before"),
         Result("L1", "kg*m**2/s", "angular momentum after…"),
-        Result("KE0", "J", "rotational kinetic energy before"),
-        Result("KE1", "J", "rotational kinetic energy after"),
+        Result("KE0", "J", "rotational kinetic energy before…"),
+        Result("KE1", "J", "rotational kinetic energy after…"),
         Result("work", "J", "work the body does on itself (KE1 − KE0)"),
         Result("peak_torque", "N*m", "largest torque…"),
+        Result("KE_lost", "J", "kinetic energy lost (KE0 − KE1)…"),
+        Result("KE_lost_fraction", "", "fraction of the kinetic energy lost"),
     ),
     output=ANSWER,
     headline="omega1",

@@ -1,0 +1,255 @@
+"""Torque and angular momentum as vectors about a point: τ = r × F, L = r × p = m (r × v).
+
+A force is given as a vector F acting at r (measured from the point), or in the plane as a size
+F at a lever of length r, at an angle θ from the lever to the force (counter-clockwise positive):
+τ_z = r F sin θ. A particle of mass m at r moving with velocity v has L = r × mv. Several forces
+give the net torque Σ rᵢ × Fᵢ; several particles the total angular momentum.
+
+Each component of a cross product is a difference of two products, a·b − c·d, which cancels
+when r is nearly along F; it is formed with the exact error of each product (Dekker's
+two-product), so that it keeps full precision where the two nearly cancel.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from taucli.errors import InputError
+from taucli.options.torque import COMMAND as TABLE
+from taucli.report import Report, Step, Table, fmt, quantity_text
+from taucli.table import Results
+
+Vector = tuple[float, float, float]
+_SPLIT = 134217729.0  # 2**27 + 1: Veltkamp's splitter for doubles
+_EXAMPLE_FORCE = '{r} "0.3,0.4,0 m" {force} "0,0,10 N"'
+
+
+def _two_product(a: float, b: float) -> tuple[float, float]:
+    """a·b as p + e exactly (Dekker): p the rounded product, e its rounding error."""
+    p = a * b
+    if not math.isfinite(p) or abs(a) > 1e150 or abs(b) > 1e150:
+        return p, 0.0
+    ca, cb = _SPLIT * a, _SPLIT * b
+    a_hi, b_hi = ca - (ca - a), cb - (cb - b)
+    a_lo, b_lo = a - a_hi, b - b_hi
+    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
+
+
+def difference_of_products(a: float, b: float, c: float, d: float) -> float:
+    """a·b − c·d to within a few ulp of its own size, even where the two products nearly cancel."""
+    p, ep = _two_product(a, b)
+    q, eq = _two_product(c, d)
+    return (p - q) + (ep - eq)
+
+
+def cross(u: Sequence[float], v: Sequence[float]) -> Vector:
+    """u × v, each component a difference of products kept accurate where it cancels."""
+    return (
+        difference_of_products(u[1], v[2], u[2], v[1]),
+        difference_of_products(u[2], v[0], u[0], v[2]),
+        difference_of_products(u[0], v[1], u[1], v[0]),
+    )
+
+
+def size(v: Sequence[float]) -> float:
+    """|v|, without overflow or underflow in the squares."""
+    return math.hypot(*v)
+
+
+def sin_exact(angle: float) -> float:
+    """sin θ, exactly 0 or ±1 at whole multiples of 90° (180deg read as π would give 1.2e-16)."""
+    quarter = angle / (math.pi / 2)
+    nearest = round(quarter)
+    if abs(quarter - nearest) <= 4e-16 * max(1.0, abs(quarter)):
+        return (0.0, 1.0, 0.0, -1.0)[nearest % 4]
+    return math.sin(angle)
+
+
+def sense(v: Vector) -> str:
+    """The sense of a rotation vector in words: counter-clockwise seen from the tip of the vector."""
+    if not any(v):
+        return "none (zero)"
+    if v[0] == 0 and v[1] == 0:
+        return ("counter-clockwise" if v[2] > 0 else "clockwise") + " seen from +z"
+    length = size(v)
+    along = ", ".join(fmt(c / length, 3) for c in v)
+    words = f"counter-clockwise about ({along})"
+    if v[2]:
+        words += f"; about z, {'counter-clockwise' if v[2] > 0 else 'clockwise'} seen from +z"
+    return words
+
+
+def _vec(v: Sequence[float]) -> str:
+    return "(" + ", ".join(fmt(c) for c in v) + ")"
+
+
+def _determinant_step(title: str, name: str, row1: Vector, row2: Vector, result: Vector, unit: str, why: str, mass: float | None = None) -> Step:
+    """r × B as the determinant |x̂ ŷ ẑ; r; B| expanded along its first row (times m for L)."""
+    a, b = row1, row2
+    letter = "v" if mass is not None else "F"
+    expanded = (f"x̂({fmt(a[1])}×{fmt(b[2])} − {fmt(a[2])}×{fmt(b[1])}) + ŷ({fmt(a[2])}×{fmt(b[0])} − {fmt(a[0])}×{fmt(b[2])}) "
+                f"+ ẑ({fmt(a[0])}×{fmt(b[1])} − {fmt(a[1])}×{fmt(b[0])})")
+    scale = "" if mass is None else f"{fmt(mass)} × "
+    return Step(
+        title,
+        f"{name} = {'m ' if mass is not None else ''}|x̂ ŷ ẑ; rₓ r_y r_z; {letter}ₓ {letter}_y {letter}_z|",
+        f"{scale}|x̂ ŷ ẑ; {' '.join(fmt(c) for c in a)}; {' '.join(fmt(c) for c in b)}| = {scale}[{expanded}]" if mass is not None
+        else f"|x̂ ŷ ẑ; {' '.join(fmt(c) for c in a)}; {' '.join(fmt(c) for c in b)}| = {expanded}",
+        f"{_vec(result)} {unit}",
+        why,
+    )
+
+
+def _size_step(title: str, symbol: str, v: Vector, unit: str) -> Step:
+    return Step(title, f"|{symbol}| = √({symbol}ₓ² + {symbol}_y² + {symbol}_z²)", "√(" + " + ".join(f"({fmt(c)})²" if c < 0 else f"{fmt(c)}²" for c in v) + ")",
+                quantity_text(size(v), unit), "the length of the vector")
+
+
+def _pairs(r: tuple, vector_forces: list, velocities: tuple) -> tuple[list, list]:
+    """The positions of the forces and of the particles, from the --r values in order."""
+    n, f, p = len(r), len(vector_forces), len(velocities)
+    if f and p and n == f == p:
+        return list(r), list(r)
+    if n == f + p:
+        return list(r[:f]), list(r[f:])
+    wanted = f"{f} for the forces given as vectors and {p} for the particles" if f and p else (f"{f} (one for each force given as a vector)" if f else f"{p} (one for each particle)")
+    raise InputError("r", f"is given {n} times; it takes {wanted}", example=_EXAMPLE_FORCE)
+
+
+def torque(
+    *,
+    r: tuple | None = None,
+    force: tuple | None = None,
+    lever: tuple | None = None,
+    angle: tuple | None = None,
+    mass: tuple | None = None,
+    velocity: tuple | None = None,
+) -> Report:
+    """``taucli torque``: τ = r × F for each force and their sum; L = r × mv for each particle and
+    their sum; or τ = r F sin θ in the plane."""
+    r, force, lever, angle, mass, velocity = (tuple(x or ()) for x in (r, force, lever, angle, mass, velocity))
+    if not force and not velocity:
+        if mass:
+            raise InputError("velocity", "is required with {mass}: a particle is {r}, {mass} and {velocity}", example='{r} "2,0,0 m" {mass} 3kg {velocity} "0,4,0 m/s"')
+        raise InputError("force", "or {velocity} is required: a torque needs a force, an angular momentum a particle", example=_EXAMPLE_FORCE)
+    for name, values in (("r", r), ("velocity", velocity)):
+        for value in values:
+            if not isinstance(value, tuple):
+                hint = "for a force in the plane, give its size with {lever} and {angle}" if name == "r" else None
+                raise InputError(name, "expected a vector x,y,z with a unit", example='{r} "0.3,0.4,0 m"' if name == "r" else '{velocity} "0,4,0 m/s"', got=fmt(value), hint=hint)
+    vector_forces = [f for f in force if isinstance(f, tuple)]
+    planar_forces = [f for f in force if not isinstance(f, tuple)]
+    if len(mass) != len(velocity):
+        raise InputError("mass", f"is given {len(mass)} times and {{velocity}} {len(velocity)}: each particle takes one of each", example='{r} "2,0,0 m" {mass} 3kg {velocity} "0,4,0 m/s"')
+    if planar_forces:
+        if len(lever) != len(planar_forces):
+            raise InputError("lever", f"is given {len(lever)} times for {len(planar_forces)} force(s) given as a size: one each", example="{force} 20N {lever} 0.5m {angle} 60deg")
+        if angle and len(angle) != len(planar_forces):
+            raise InputError("angle", f"is given {len(angle)} times for {len(planar_forces)} force(s) given as a size: one each, or none (90°)", example="{force} 20N {lever} 0.5m {angle} 60deg")
+    elif lever or angle:
+        raise InputError("lever" if lever else "angle", "goes with a force given as a size (a vector force takes {r})", example="{force} 20N {lever} 0.5m {angle} 60deg")
+    force_r, particle_r = _pairs(r, vector_forces, velocity)
+
+    notes: list[str] = []
+    steps: list[Step] = []
+    results = Results(TABLE)
+    tables: dict[str, Table] = {}
+    if force:
+        torques, arms, net_force = [], [], None
+        for number, (where, f) in enumerate(zip(force_r, vector_forces), start=1):
+            tau = cross(where, f)
+            torques.append(tau)
+            arm = size(tau) / size(f) if any(f) else None
+            arms.append(arm)
+            label = f" {number}" if len(force) > 1 else ""
+            steps.append(_determinant_step(f"Torque of force{label}: the determinant", "τ = r × F", tuple(where), tuple(f), tau, "N·m",
+                                           "the torque about the point is r × F, r from the point to where the force acts; "
+                                           "the rows of the determinant are the unit vectors, r and F"))
+            if arm is not None:
+                steps.append(Step(f"Lever arm{label}", "r⊥ = |r × F| / |F| = |r| sin φ", f"{fmt(size(tau))} N·m / {fmt(size(f))} N", quantity_text(arm, "m"),
+                                  "the lever arm is the distance from the point to the force's line of action (φ between r and F): "
+                                  "only the force's part perpendicular to r turns"))
+            net_force = tuple(math.fsum(c) for c in zip(net_force, f)) if net_force else tuple(f)
+        angles = angle or (math.pi / 2,) * len(planar_forces)
+        if planar_forces and not angle:
+            notes.append("no {angle}: each force in the plane taken perpendicular to its lever (θ = 90°)")
+        for number, (size_f, arm_length, theta) in enumerate(zip(planar_forces, lever, angles), start=len(vector_forces) + 1):
+            sine = sin_exact(theta)
+            tau_z = arm_length * size_f * sine
+            torques.append((0.0, 0.0, tau_z))
+            arms.append(arm_length * abs(sine) if size_f else None)
+            label = f" {number}" if len(force) > 1 else ""
+            steps.append(Step(f"Torque of force{label} in the plane", "τ = r F sin θ,  r⊥ = r |sin θ|",
+                              f"{fmt(arm_length)} m × {fmt(size_f)} N × sin {fmt(math.degrees(theta))}°", f"{quantity_text(tau_z, 'N*m')}, r⊥ = {quantity_text(arm_length * abs(sine), 'm')}",
+                              "only the force's part perpendicular to the lever turns; θ from the lever to the force, "
+                              "counter-clockwise positive, so a positive τ turns counter-clockwise seen from +z"))
+            if sine == 0 and size_f:
+                notes.append(f"force{label} acts along its lever (θ = {fmt(math.degrees(theta))}°): its line passes through the axis, no torque")
+        net = tuple(math.fsum(t[i] for t in torques) for i in range(3))
+        several = len(force) > 1
+        part = f" (net of {len(force)} forces)" if several else ""
+        for key, value in zip(("tau_x", "tau_y", "tau_z"), net):
+            results.put(key, value, part)
+        results.put("tau", size(net), part)
+        if vector_forces:
+            steps.append(_size_step("Size of the net torque" if several else "Size of the torque", "τ", net, "N*m"))
+        results.put("sense", sense(net))
+        results.put("lever_arm", *_net_arm(net, net_force, arms, planar_forces, several, notes, steps))
+        if several:
+            steps.append(Step("The net torque", "τ_net = Σ rᵢ × Fᵢ", " + ".join(_vec(t) for t in torques), f"{_vec(net)} N·m",
+                              "torques about the same point add as vectors"))
+            columns = (("force", None, "force"), ("tau_x", "N*m", "τₓ"), ("tau_y", "N*m", "τ_y"), ("tau_z", "N*m", "τ_z"),
+                       ("tau", "N*m", "|τ|"), ("lever_arm", "m", "r⊥"))
+            tables["forces"] = Table(columns, tuple((n, *t, size(t), arm) for n, (t, arm) in enumerate(zip(torques, arms), start=1)))
+    if velocity:
+        momenta = []
+        for number, (where, m, v) in enumerate(zip(particle_r, mass, velocity), start=1):
+            spin = cross(where, v)
+            momentum = tuple(m * c for c in spin)
+            momenta.append(momentum)
+            label = f" {number}" if len(velocity) > 1 else ""
+            steps.append(_determinant_step(f"Angular momentum of particle{label}: the determinant", "L = r × mv", tuple(where), tuple(v), momentum,
+                                           "kg·m²/s", "a particle's angular momentum about the point is r × p, p = mv: the rows are the unit vectors, "
+                                           "r and v, times m", mass=m))
+        total = tuple(math.fsum(p[i] for p in momenta) for i in range(3))
+        part = f" (total of {len(velocity)} particles)" if len(velocity) > 1 else ""
+        for key, value in zip(("L_x", "L_y", "L_z"), total):
+            results.put(key, value, part)
+        results.put("L", size(total), part)
+        steps.append(_size_step("Size of the total angular momentum" if len(velocity) > 1 else "Size of the angular momentum", "L", total, "kg*m**2/s"))
+        results.put("L_sense", sense(total))
+        if len(velocity) > 1:
+            steps.append(Step("The total angular momentum", "L = Σ rᵢ × mᵢvᵢ", " + ".join(_vec(p) for p in momenta), f"{_vec(total)} kg·m²/s",
+                              "angular momenta about the same point add as vectors"))
+            columns = (("particle", None, "particle"), ("L_x", "kg*m**2/s", "Lₓ"), ("L_y", "kg*m**2/s", "L_y"), ("L_z", "kg*m**2/s", "L_z"),
+                       ("L", "kg*m**2/s", "|L|"))
+            tables["particles"] = Table(columns, tuple((n, *p, size(p)) for n, p in enumerate(momenta, start=1)))
+    what = [w for w, given in (("τ = r × F", vector_forces), ("τ = r F sin θ in the plane", planar_forces), ("L = r × mv", velocity)) if given]
+    model = " and ".join(what) + (", about the point r is measured from" if r else "")
+    return Report("torque", model, "closed form", results, steps, notes, {}, tables)
+
+
+def _net_arm(net: Vector, net_force, arms: list, planar_forces: list, several: bool, notes: list[str], steps: list[Step]) -> tuple[float | None, str]:
+    """The lever arm of one force, or of the resultant of several: the distance from the point
+    to the line of action of their sum, |F × τ| / |F|² (the central axis, where τ has a part
+    along F)."""
+    if not several:
+        if arms[0] is None:
+            notes.append("lever_arm: the force is zero, so it has no line of action")
+        return arms[0], ""
+    if planar_forces:
+        notes.append("lever_arm: forces given as sizes in the plane have no direction to add, so the resultant's lever arm is not known; "
+                     "each force's is in the forces table")
+        return None, " of the resultant"
+    if not any(net_force):
+        notes.append("lever_arm: the forces add to zero (a couple): the torque is the same about every point, and there is no single line of action")
+        return None, " of the resultant"
+    arm = size(cross(net_force, net)) / size(net_force) ** 2
+    along = math.fsum(f * t for f, t in zip(net_force, net)) / size(net_force)
+    if abs(along) > 1e-12 * size(net):
+        notes.append(f"lever_arm: the net torque has a part along the resultant force ({fmt(along)} N·m): no single force gives it "
+                     "(a wrench); lever_arm is the distance from the point to the line (the central axis) where the rest is the resultant's r × F")
+    steps.append(Step("Lever arm of the resultant", "r⊥ = |F × τ| / |F|²,  F = Σ Fᵢ", f"F = {_vec(net_force)} N, τ = {_vec(net)} N·m",
+                      quantity_text(arm, "m"), "the distance from the point to the line along which the sum of the forces gives the same torque"))
+    return arm, " of the resultant"
