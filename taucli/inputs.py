@@ -7,6 +7,7 @@ library function, with the inputs echoed in SI for the report and any notes thei
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -187,6 +188,17 @@ def _vectors(option: Option, given, inputs: Inputs, stdin) -> tuple:
         key = option.name + (str(number) if len(items) > 1 else "")
         read.append(read_vector(item, name, option.of, inputs, key))
     return tuple(read)
+
+
+def _text(given, name: str) -> str:
+    """An SI number as the text a bare number is (a bare number means the SI unit)."""
+    if isinstance(given, str):
+        return given
+    if isinstance(given, (int, float)) and not isinstance(given, bool):
+        if isinstance(given, float) and not math.isfinite(given):
+            raise InputError(name, "expected a finite number", got=repr(given))
+        return repr(float(given)) if isinstance(given, float) else str(given)
+    raise InputError(name, "expected a number or a text with a unit", example='"4kg"', got=repr(given))
 
 
 def _is_triple(given) -> bool:

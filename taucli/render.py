@@ -257,7 +257,7 @@ def draw_table(console, headings: Sequence[str], rows: Sequence[Sequence[str]], 
         for index, (heading, fold) in enumerate(zip(shown_headings, folding)):
             style = "bold" if bold_first and index == 0 else ("dim" if fold else None)
             if fold:
-                table.add_column(heading, style=style, overflow="fold")
+                table.add_column(heading, style=style, overflow="fold", justify="right" if right[index] else "left")
             else:
                 table.add_column(heading, style=style, justify="right" if right[index] else "left", no_wrap=True, min_width=least[index])
         for row in rows:
@@ -301,7 +301,8 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
             if label:
                 console.print(Padding(Text(label, style="dim"), (0, 0, 0, 2)))
     else:
-        draw_table(console, ("result", "value", "unit", "what it is"), rows, folding=(False, False, False, True), right=(False, True, False, False), bold_first=True)
+        worded = any(isinstance(value.value, str) for value in report.results.values())  # words may fold, numbers not
+        draw_table(console, ("result", "value", "unit", "what it is"), rows, folding=(False, worded, False, True), right=(False, True, False, False), bold_first=True)
 
     for name, table in report.tables.items():
         headings = [f"{heading} ({pretty_unit(unit)})" if unit else heading for _, unit, heading in table.columns]
