@@ -5,11 +5,12 @@ no solver, no typer, no rich and no pint, so ``--help`` and completion can read 
 """
 
 from taucli.options import atwood, impulse, inertia, rolling, spin_down, tools
+from taucli.options import gyro
 from taucli.options.common import ANSWER
 from taucli.table import Command
 
 SCENES: dict[str, Command] = {
-    module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse)
+    module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse, gyro)
 }
 COMMANDS: dict[str, Command] = {**SCENES, "bench": tools.BENCH, "completions": tools.COMPLETIONS}
 OUTPUT_OPTIONS = ANSWER
