@@ -25,6 +25,7 @@ WORKING = {
     "atwood": ["--m1", "4kg", "--m2", "1kg", "--pulley-mass", "2kg", "--pulley-radius", "0.1m", "--distance", "1m"],
     "rolling": ["sphere", "--angle", "30deg", "--length", "2m", "--mass", "1kg", "--radius", "0.1m"],
     "impulse": ["--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "0.5s"],
+    "gyro": ["--shape", "disc", "--mass", "0.3kg", "--radius", "5cm", "--spin", "4000rpm", "--cm-distance", "5cm", "--tilt", "30deg"],
 }
 
 

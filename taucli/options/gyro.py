@@ -50,7 +50,7 @@ COMMAND = Command(
         Result("period_p", "s", "precession period…"),
         Result("omega_p_slow", "rad/s", "slow steady precession (exact)"),
         Result("omega_p_fast", "rad/s", "fast steady precession (exact)"),
-        Result("spin_min", "rad/s", "least spin for steady precession at this tilt"),
+        Result("spin_min", "rad/s", "least spin for a steady precession"),
     ),
     output=ANSWER,
     headline="omega_p",

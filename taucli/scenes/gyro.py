@@ -184,7 +184,7 @@ def gyro(
         if g is not None:
             notes.append("g plays no part: the torque is given")
         if sin_t == 0:
-            raise InputError("tilt", "must be between 0 and 180 deg with {torque}: along the vertical, L has no horizontal part to turn (Ω = τ/(L sin θ))", example="{tilt} 23.44deg")
+            raise InputError("tilt", "must be between 0 and 180 deg with {torque}: along the axis it precesses round, L has no part across it to turn (Ω = τ/(L sin θ))", example="{tilt} 23.44deg")
         rate = _finite(torque / (angular_momentum * sin_t))
         results.put("omega_p", rate, " τ/(L sin θ)")
         period = _period(rate, notes)
@@ -211,7 +211,7 @@ def gyro(
     if perp is None:
         notes.append(
             "omega_p only: the exact steady precession needs the moment of inertia about a perpendicular axis through the pivot "
-            "(--inertia-perp, or a ring, disc, tube, sphere, shell or cone as --shape)"
+            "({inertia_perp}, or a ring, disc, tube, sphere, shell or cone as {shape})"
         )
         period = _period(rate, notes)
         results.put("period_p", period, " 2π/Ω")
@@ -255,7 +255,7 @@ def gyro(
         _steps, moment, spin, angular_momentum, body_mass, gravity, cm_distance, theta, sin_t, cos_t, rate, perp, roots, minimum, period, body_steps, perp_steps
     )
     where = "above" if cos_t > 0 else "level with" if cos_t == 0 else "below"
-    model = f"heavy symmetric top in steady precession, centre of mass {where} the pivot: exact roots of I⊥Ω²cos θ − Iω_sΩ + mgr = 0 beside Ω = mgr/(Iω_s)"
+    model = f"heavy symmetric top in steady precession, centre of mass {where} the pivot: the exact rates beside Ω = mgr/(Iω_s)"
     return assumed.applied(Report("gyro", model, "closed form", results, steps, notes))
 
 
@@ -280,11 +280,11 @@ def _perp_from_shape(shape: str, mass: float, axis: str | None, dims: Mapping[st
     centre = _perpendicular_centre(shape, mass, given)
     if centre is None:
         if shape == "cone":
-            notes.append("a cone's I⊥ needs its --height")
+            notes.append("a cone's I⊥ needs its {height}")
         return None
     moment, equation, numbers = centre
     if shape in ("disc", "tube") and "length" not in given:
-        notes.append(f"the {found.title} taken as thin for I⊥ (¼MR² about a diameter); --length gives its thickness")
+        notes.append(f"the {found.title} taken as thin for I⊥ (¼MR² about a diameter); {{length}} gives its thickness")
     steps.append(
         Step(
             "Moment of inertia about a diameter through the centre of mass",
@@ -339,15 +339,16 @@ def _common_steps(moment, spin, angular_momentum, body_steps) -> list[Step]:
     return steps
 
 
-def _turning_steps(angular_momentum, theta, sin_t) -> list[Step]:
+def _turning_steps(angular_momentum, theta, sin_t, about: str = "the vertical") -> list[Step]:
     level = sin_t == 1.0
+    across = "horizontal and at right angles to L" if about == "the vertical" else f"at right angles to L and to {about}"
     return [
         Step(
             "The torque changes L's direction, not its size",
             "τ = dL/dt",
             "",
             "",
-            "the torque is horizontal and at right angles to L, so in dt it adds dL = τ dt across L: "
+            f"the torque is {across}, so in dt it adds dL = τ dt across L: "
             "L swings round without changing its size, and the axis follows it instead of falling",
         ),
         Step(
@@ -355,7 +356,7 @@ def _turning_steps(angular_momentum, theta, sin_t) -> list[Step]:
             "|dL| = L dφ" if level else "|dL| = L sin θ dφ",
             "" if level else f"{quantity_text(angular_momentum, 'kg*m**2/s')} × sin {_degrees(theta)} × dφ",
             "" if level else f"{quantity_text(angular_momentum * sin_t, 'kg*m**2/s')} × dφ",
-            "the horizontal part of L (all of it at 90°) turns through dφ about the vertical; the arc it sweeps is its length times dφ",
+            f"the part of L across {about} (all of it at 90°) turns through dφ about {about}; the arc it sweeps is its length times dφ",
         ),
     ]
 
@@ -371,7 +372,7 @@ def _torque_steps(moment, spin, angular_momentum, torque, theta, sin_t, rate, pe
             "the Sun's and Moon's pull on the Earth's equatorial bulge, or any torque across the spin axis, turning it about the axis it precesses round",
         )
     )
-    steps += _turning_steps(angular_momentum, theta, sin_t)
+    steps += _turning_steps(angular_momentum, theta, sin_t, "the axis it precesses round")
     steps.append(
         Step(
             "Precession rate",
@@ -382,7 +383,7 @@ def _torque_steps(moment, spin, angular_momentum, torque, theta, sin_t, rate, pe
         )
     )
     if period is not None:
-        steps.append(Step("Precession period", "T = 2π/Ω", f"2π / {quantity_text(rate, 'rad/s')}", _period_text(period), "one full turn of the axis about the vertical"))
+        steps.append(Step("Precession period", "T = 2π/Ω", f"2π / {quantity_text(rate, 'rad/s')}", _period_text(period), "one full turn of the spin axis round its cone"))
     return steps
 
 
@@ -425,12 +426,12 @@ def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate
     steps.append(
         Step(
             "The exact steady precession",
-            "I⊥Ω²cos θ − Iω_sΩ + mgr = 0",
-            f"{fmt(a)} Ω² − {fmt(angular_momentum)} Ω + {fmt(weight_torque)} = 0",
-            "",
+            "mgr = Ω(Iω_s − I⊥Ω cos θ)",
+            f"Ω({fmt(angular_momentum)} − {fmt(a)} Ω)",
+            quantity_text(weight_torque, "N*m"),
             "the precession turns the body too, adding I⊥Ω sin θ across the axis to L; the horizontal part of L is then "
-            "(Iω_s − I⊥Ω cos θ) sin θ, and turning it at Ω takes mgr sin θ = Ω(Iω_s − I⊥Ω cos θ) sin θ"
-            + ("; at 90° cos θ = 0 and the one root is mgr/(Iω_s) exactly" if cos_t == 0 else ""),
+            "(Iω_s − I⊥Ω cos θ) sin θ, and turning it at Ω takes τ = mgr sin θ: a quadratic, I⊥Ω²cos θ − Iω_sΩ + mgr = 0"
+            + ("; at 90° cos θ = 0 and its one root is mgr/(Iω_s) exactly" if cos_t == 0 else ""),
         )
     )
     if roots is None:
@@ -476,10 +477,11 @@ def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate
     steps.append(
         Step(
             "Why the approximation holds",
-            "I⊥Ω_slow cos θ / (Iω_s) ≪ 1  ⇒  Ω ≈ mgr/(Iω_s)",
+            "ε = I⊥Ω_slow cos θ / (Iω_s)",
             f"{fmt(a * slow)} / {fmt(angular_momentum)}",
             fmt(neglected, 3),
-            "mgr = Ω(Iω_s − I⊥Ω cos θ): dropping the second term is the approximation, and its relative error is this ratio",
+            "in mgr = Ω(Iω_s − I⊥Ω cos θ), where Iω_s ≫ I⊥Ω cos θ (ε ≪ 1) the second term drops out and Ω ≈ mgr/(Iω_s); "
+            "mgr/(Iω_s) = Ω_slow(1 − ε) exactly",
         )
     )
     if period is not None:
