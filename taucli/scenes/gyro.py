@@ -26,7 +26,7 @@ product above it overflows. No steady precession exists where ρ > 1, that is be
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 from taucli.errors import InputError
 from taucli.options.gyro import COMMAND as TABLE
@@ -98,26 +98,29 @@ def _finite(x: float | None) -> float | None:
 
 
 # I about a perpendicular axis through the centre of mass, for the shapes that spin about an
-# axis of symmetry (their central axis): name -> (the axis of the inertia table, or a formula).
-def _perpendicular_centre(shape: str, mass: float, dims: Mapping[str, float]) -> tuple[float, str, str] | None:
-    """(I⊥ about the centre of mass, its equation, its numbers), or None where the shape has none here."""
+# axis of symmetry (their central axis): the inertia table's diameter axis, or the cone's own.
+def _perpendicular_centre(shape: str, mass: float, dims: Mapping[str, float]) -> tuple[float, str, Callable[[], str]] | None:
+    """(I⊥ about the centre of mass, its equation, what writes its numbers), or None where the
+    shape has none here. The numbers are written only when the steps are read."""
     from taucli.scenes.inertia import SHAPES
 
-    m = quantity_text(mass, "kg")
+    def filled(template: str) -> Callable[[], str]:
+        def numbers() -> str:
+            lengths = {symbol: f"({quantity_text(dims.get(name, 0.0), 'm')})" for name, symbol in _SYMBOLS.items()}
+            return template.format(M=quantity_text(mass, "kg"), **lengths)
+
+        return numbers
+
     if shape in ("ring", "disc", "tube"):
         axis = SHAPES[shape].axis("diameter")
-        moment = axis.moment(mass, **dims)
-        numbers = axis.numbers.format(M=m, **{k: f"({quantity_text(dims.get(d, 0.0), 'm')})" for d, k in _SYMBOLS.items()})
-        return moment, axis.equation.replace("I =", "I⊥cm =", 1), numbers
+        return axis.moment(mass, **dims), axis.equation.replace("I =", "I⊥cm =", 1), filled(axis.numbers)
     if shape in ("sphere", "shell", "thick-shell"):
         axis = SHAPES[shape].axes[0]
-        moment = axis.moment(mass, **dims)
-        numbers = axis.numbers.format(M=m, **{k: f"({quantity_text(dims.get(d, 0.0), 'm')})" for d, k in _SYMBOLS.items()})
-        return moment, axis.equation.replace("I =", "I⊥cm =", 1) + " (every diameter alike)", numbers
+        return axis.moment(mass, **dims), axis.equation.replace("I =", "I⊥cm =", 1) + " (every diameter alike)", filled(axis.numbers)
     if shape == "cone" and "height" in dims:
         radius, height = dims["radius"], dims["height"]
         moment = mass * (3 * radius**2 / 20 + 3 * height**2 / 80)
-        return moment, "I⊥cm = M(3R²/20 + 3H²/80)", f"{m} × (3({quantity_text(radius, 'm')})²/20 + 3({quantity_text(height, 'm')})²/80)"
+        return moment, "I⊥cm = M(3R²/20 + 3H²/80)", filled("{M} × (3{R}²/20 + 3{H}²/80)")
     return None
 
 
@@ -202,7 +205,7 @@ def gyro(
     rate = _finite(weight_torque / angular_momentum)
     results.put("omega_p", rate, " mgr/(Iω_s)")
 
-    perp_steps: list[Step] = []
+    perp_steps: list[Callable[[], list[Step]]] = []
     perp = inertia_perp
     if perp is None and shape is not None and not part and offset is None:
         perp = _perp_from_shape(shape, mass, axis, dims, cm_distance, perp_steps, notes)
@@ -268,8 +271,9 @@ def _period(rate: float | None, notes: list[str]) -> float | None:
     return _finite(TWO_PI / abs(rate))
 
 
-def _perp_from_shape(shape: str, mass: float, axis: str | None, dims: Mapping[str, float | None], r: float, steps: list[Step], notes: list[str]) -> float | None:
-    """I⊥ about the pivot from the shape: I⊥cm about a diameter, plus mr² (parallel axes)."""
+def _perp_from_shape(shape: str, mass: float, axis: str | None, dims: Mapping[str, float | None], r: float, steps: list, notes: list[str]) -> float | None:
+    """I⊥ about the pivot from the shape: I⊥cm about a diameter, plus mr² (parallel axes);
+    ``steps`` gets what writes its steps, called when the steps are read."""
     from taucli.scenes.inertia import SHAPES
 
     found = SHAPES[shape]
@@ -285,27 +289,29 @@ def _perp_from_shape(shape: str, mass: float, axis: str | None, dims: Mapping[st
     moment, equation, numbers = centre
     if shape in ("disc", "tube") and "length" not in given:
         notes.append(f"the {found.title} taken as thin for I⊥ (¼MR² about a diameter); {{length}} gives its thickness")
-    steps.append(
-        Step(
-            "Moment of inertia about a diameter through the centre of mass",
-            equation,
-            numbers,
-            quantity_text(moment, "kg*m**2"),
-            "the precession turns the body about an axis across its spin axis; a thin disc's is ¼MR² (perpendicular axes: ½MR² = 2 × ¼MR²)"
-            if shape == "disc"
-            else "the precession turns the body about an axis across its spin axis",
-        )
-    )
     perp = moment + mass * r * r
-    steps.append(
-        Step(
-            "Shift to the pivot (parallel-axis theorem)",
-            "I⊥ = I⊥cm + Mr²",
-            f"{quantity_text(moment, 'kg*m**2')} + {quantity_text(mass, 'kg')} × ({quantity_text(r, 'm')})²",
-            quantity_text(perp, "kg*m**2"),
-            "the body turns about the pivot, r from its centre of mass",
-        )
-    )
+
+    def write() -> list[Step]:
+        return [
+            Step(
+                "Moment of inertia about a diameter through the centre of mass",
+                equation,
+                numbers(),
+                quantity_text(moment, "kg*m**2"),
+                "the precession turns the body about an axis across its spin axis; a thin disc's is ¼MR² (perpendicular axes: ½MR² = 2 × ¼MR²)"
+                if shape == "disc"
+                else "the precession turns the body about an axis across its spin axis",
+            ),
+            Step(
+                "Shift to the pivot (parallel-axis theorem)",
+                "I⊥ = I⊥cm + Mr²",
+                f"{quantity_text(moment, 'kg*m**2')} + {quantity_text(mass, 'kg')} × ({quantity_text(r, 'm')})²",
+                quantity_text(perp, "kg*m**2"),
+                "the body turns about the pivot, r from its centre of mass",
+            ),
+        ]
+
+    steps.append(write)
     return perp
 
 
@@ -421,7 +427,8 @@ def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate
         if period is not None:
             steps.append(Step("Precession period", "T = 2π/Ω", f"2π / {quantity_text(rate, 'rad/s')}", _period_text(period), "one full turn of the axis about the vertical"))
         return steps
-    steps += perp_steps
+    for write in perp_steps:
+        steps += write()
     a = perp * cos_t
     steps.append(
         Step(
