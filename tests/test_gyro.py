@@ -61,6 +61,13 @@ def test_openstax_gyroscope_precesses_once_in_two_seconds():
     assert report.results["omega_p"].value == pytest.approx(0.3 * 9.8 * 0.05 / (inertia * 20 * 2 * math.pi), rel=1e-14)
 
 
+def test_openstax_problem_75():
+    """University Physics (OpenStax) vol. 1, ch. 11, problem 75: a 0.5 kg disc of radius 10 cm
+    at 40 rev/s, its centre 15 cm from the pivot: ω_P = rMg/(Iω) = 1.17 rad/s (g = 9.8)."""
+    report = taucli.gyro(shape="disc", mass="0.5 kg", radius="10 cm", spin="40 rev/s", cm_distance="15 cm", g="9.8 m/s^2")
+    assert round(report.results["omega_p"].value, 2) == 1.17
+
+
 def test_the_4000_rpm_gyroscope_approximate_and_exact_rates_side_by_side():
     """The same disc at 4000 rpm: horizontal, the one exact root is the approximation; tilted
     30° above the horizontal plane's normal, the exact slow rate is 0.49% above it."""
@@ -246,6 +253,7 @@ def test_a_vertical_top_gives_the_sleeping_top_limit():
     report = taucli.gyro(inertia=0.01, spin=10, mass=2, cm_distance=0.2, inertia_perp=0.2, tilt=0)
     assert report.results["spin_min"].value == pytest.approx(math.sqrt(4 * 0.2 * 2 * G0 * 0.2) / 0.01, rel=1e-15)
     assert report.results["omega_p_slow"].value is None
+    assert any("sleeping top's stability limit" in note for note in report.notes)
 
 
 def test_without_a_perpendicular_moment_only_the_approximation():

@@ -222,6 +222,11 @@ def gyro(
         model = "gyroscopic approximation Ω = mgr/(Iω_s) (no I⊥: exact rates not formed)"
         return assumed.applied(Report("gyro", model, "closed form", results, steps, notes))
 
+    if sin_t == 0:
+        notes.append(
+            "the axis is vertical: the weight has no lever arm and the axis stays put; the rates given are the limit of a "
+            "steady precession round a narrow cone" + (", and spin_min is the sleeping top's stability limit" if cos_t > 0 else "")
+        )
     a = perp * cos_t
     roots = precession_roots(a, angular_momentum, weight_torque)
     slow = fast = minimum = None
