@@ -18,7 +18,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse torque bench completions --version --debug --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse torque gyro bench completions --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in
@@ -179,6 +179,35 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        ;;
+    gyro)
+        case "$prev" in
+            --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
+            --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --length) _taucli_units m cm mm km in ft; return 0 ;;
+            --width) _taucli_units m cm mm km in ft; return 0 ;;
+            --height) _taucli_units m cm mm km in ft; return 0 ;;
+            --depth) _taucli_units m cm mm km in ft; return 0 ;;
+            --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
+            --offset) _taucli_units m cm mm km in ft; return 0 ;;
+            --part) :; return 0 ;;
+            --spin) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --cm-distance) _taucli_units m cm mm km in ft; return 0 ;;
+            --torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --tilt) _taucli_units deg rad rev; return 0 ;;
+            --inertia-perp) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
+            --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
+        esac
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -17,8 +17,9 @@ __version__ = "0.1.0"
 from taucli.errors import InputError  # noqa: E402
 from taucli.report import Report  # noqa: E402
 
-__all__ = ["InputError", "Report", "atwood", "impulse", "inertia", "rolling", "spin_down"]
-__all__ += ["torque"]  # (#20)
+from taucli.options import SCENES  # noqa: E402 (plain data: no solver, typer, rich or pint)
+
+__all__ = ["InputError", "Report", *(command.function_name for command in SCENES.values())]
 
 
 def __getattr__(name: str):

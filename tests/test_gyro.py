@@ -1,0 +1,346 @@
+"""taucli gyro: precession of a spinning top or gyroscope.
+
+References are written from the physics, not from the solver's formulas: the steady precession
+is where the weight's torque turns the horizontal part of the whole angular momentum at Ω,
+
+    mgr sin θ = Ω · (Iω_s − I⊥Ω cos θ) sin θ,
+
+solved by mpmath's root finder at 50 digits from the two physical guesses (the gyroscopic rate,
+and the rate at which I⊥Ω cos θ takes up all of Iω_s); the textbook numbers are the books'.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+
+import taucli
+from conftest import run_taucli
+from taucli.errors import InputError
+from taucli.scenes import gyro as scene
+
+G0 = 9.80665
+ULP = 2.0**-52
+
+
+def balance_roots(a: float, angular_momentum: float, weight_torque: float) -> tuple[mpmath.mpf, mpmath.mpf | None]:
+    """The steady rates Ω where mgr = Ω(L − I⊥cosθ·Ω) (``a`` = I⊥ cos θ), to 50 digits: the
+    schoolbook roots (L ∓ √(L² − 4ac))/2a, at enough digits that the cancellation in the slow one
+    (log10(1/ρ) digits, ρ = 4ac/L²) still leaves 60, each checked against the balance of the
+    torque and the rate at which L turns."""
+    exact_a, exact_l, exact_c = mpmath.mpf(a), mpmath.mpf(angular_momentum), mpmath.mpf(weight_torque)
+    if a == 0:
+        return exact_c / exact_l, None
+    rho = abs(4 * exact_a * exact_c / exact_l**2)
+    with mpmath.workdps(70 + max(0, int(-mpmath.log10(rho)))):
+        root = mpmath.sqrt(exact_l**2 - 4 * exact_a * exact_c)
+        slow, fast = (exact_l - root) / (2 * exact_a), (exact_l + root) / (2 * exact_a)
+        for omega in (slow, fast):
+            assert abs(omega * (exact_l - exact_a * omega) - exact_c) <= mpmath.mpf(10) ** -60 * max(exact_c, abs(exact_l * omega))
+        assert abs(slow) <= abs(fast)
+        return +slow, +fast
+
+
+def relative(x: float, reference) -> float:
+    return float(abs((mpmath.mpf(x) - reference) / reference))
+
+
+# --- the textbook problems -----------------------------------------------------------------
+
+
+def test_openstax_gyroscope_precesses_once_in_two_seconds():
+    """University Physics (OpenStax) vol. 1, Example 11.10: a 0.3 kg disc of radius 5.0 cm at
+    20 rev/s, its centre 5.0 cm from the pivot: the precessional period is 2.0 s (g = 9.8)."""
+    report = taucli.gyro(shape="disc", mass="0.3 kg", radius="5 cm", spin="20 rev/s", cm_distance="5 cm", g="9.8 m/s^2")
+    assert report.results["period_p"].value == pytest.approx(2.0, abs=0.02)
+    inertia = 0.5 * 0.3 * 0.05**2
+    assert report.results["omega_p"].value == pytest.approx(0.3 * 9.8 * 0.05 / (inertia * 20 * 2 * math.pi), rel=1e-14)
+
+
+def test_openstax_problem_75():
+    """University Physics (OpenStax) vol. 1, ch. 11, problem 75: a 0.5 kg disc of radius 10 cm
+    at 40 rev/s, its centre 15 cm from the pivot: ω_P = rMg/(Iω) = 1.17 rad/s (g = 9.8)."""
+    report = taucli.gyro(shape="disc", mass="0.5 kg", radius="10 cm", spin="40 rev/s", cm_distance="15 cm", g="9.8 m/s^2")
+    assert round(report.results["omega_p"].value, 2) == 1.17
+
+
+def test_the_4000_rpm_gyroscope_approximate_and_exact_rates_side_by_side():
+    """The same disc at 4000 rpm: horizontal, the one exact root is the approximation; tilted
+    30° above the horizontal plane's normal, the exact slow rate is 0.49% above it."""
+    inertia = 0.5 * 0.3 * 0.05**2
+    spin = 4000 * 2 * math.pi / 60
+    weight_torque = 0.3 * G0 * 0.05
+    level = taucli.gyro(shape="disc", mass="300 g", radius="5 cm", spin="4000 rpm", cm_distance="5 cm").results
+    assert level["L"].value == pytest.approx(inertia * spin, rel=1e-15)
+    assert level["omega_p"].value == pytest.approx(weight_torque / (inertia * spin), rel=1e-15)
+    assert level["omega_p_slow"].value == level["omega_p"].value
+    assert level["omega_p_fast"].value is None
+    assert "spin_min" not in level
+    tilted = taucli.gyro(shape="disc", mass="300 g", radius="5 cm", spin="4000 rpm", cm_distance="5 cm", tilt="30 deg")
+    perp = 0.3 * 0.05**2 / 4 + 0.3 * 0.05**2
+    slow, fast = balance_roots(perp * math.cos(math.radians(30)), inertia * spin, weight_torque)
+    assert relative(tilted.results["omega_p_slow"].value, slow) < 1e-14
+    assert relative(tilted.results["omega_p_fast"].value, fast) < 1e-14
+    assert tilted.results["omega_p"].value == level["omega_p"].value  # sin θ cancels
+    assert any("0.486% below the exact slow rate" in note for note in tilted.notes)
+    assert tilted.results["period_p"].value == pytest.approx(2 * math.pi / float(slow), rel=1e-14)
+
+
+def test_a_top_spun_too_slowly_has_no_steady_precession():
+    """A 100 g disc top of radius 3 cm, its centre 4 cm up, leaning 20°: ω_min = √(4 I⊥ mgr cos θ)/I
+    is 115.3 rad/s; at 10 rev/s it cannot precess steadily, at 20 rev/s it can."""
+    inertia = 0.5 * 0.1 * 0.03**2
+    perp = 0.1 * 0.03**2 / 4 + 0.1 * 0.04**2
+    weight_torque = 0.1 * G0 * 0.04
+    with mpmath.workdps(50):
+        least = mpmath.sqrt(4 * mpmath.mpf(perp) * mpmath.mpf(weight_torque) * mpmath.cos(mpmath.radians(20))) / mpmath.mpf(inertia)
+    slow = taucli.gyro(shape="disc", mass="100 g", radius="3 cm", cm_distance="4 cm", spin="10 rev/s", tilt="20 deg")
+    assert slow.results["omega_p_slow"].value is None and slow.results["omega_p_fast"].value is None
+    assert slow.results["period_p"].value is None
+    assert relative(slow.results["spin_min"].value, least) < 1e-14
+    assert any("no steady precession" in note for note in slow.notes)
+    fast = taucli.gyro(shape="disc", mass="100 g", radius="3 cm", cm_distance="4 cm", spin="20 rev/s", tilt="20 deg")
+    assert fast.results["omega_p_slow"].value > 0 and fast.results["omega_p_fast"].value > fast.results["omega_p_slow"].value
+
+
+def test_the_earths_precession_from_the_torque_on_it():
+    """College Physics (OpenStax) ch. 10, problem 48: the average torque 1.38e22 N·m. With the
+    Earth's I = 8.0e37 kg·m², ω = 7.29e-5 rad/s and tilt 23.44°: Ω = τ/(L sin θ)."""
+    report = taucli.gyro(inertia="8.0e37 kg*m^2", spin="7.29e-5 rad/s", torque="1.38e22 N*m", tilt="23.44 deg")
+    with mpmath.workdps(50):
+        rate = mpmath.mpf("1.38e22") / (mpmath.mpf("8.0e37") * mpmath.mpf("7.29e-5") * mpmath.sin(mpmath.radians(mpmath.mpf("23.44"))))
+    assert relative(report.results["omega_p"].value, rate) < 1e-14
+    assert relative(report.results["period_p"].value, 2 * mpmath.pi / rate) < 1e-14
+    assert set(report.results) == {"L", "omega_p", "period_p"}
+    # The steady torque that turns L sin θ once in 25,772 years gives that period back.
+    year = 365.25 * 86400
+    steady = 2 * math.pi / (25772 * year) * 8.0e37 * 7.29e-5 * math.sin(math.radians(23.44))
+    back = taucli.gyro(inertia=8.0e37, spin=7.29e-5, torque=steady, tilt="23.44 deg")
+    assert back.results["period_p"].value / year == pytest.approx(25772, rel=1e-12)
+
+
+# --- the roots: accuracy against 50 digits --------------------------------------------------
+
+
+@pytest.mark.parametrize("share", [1e-1, 1e-4, 1e-8, 1e-12, 1e-16, 1e-24])
+def test_the_slow_root_keeps_full_precision_when_the_spin_dominates(share):
+    """Where Iω_s is 1/share times I⊥Ω cos θ (1e8 and beyond), the slow root is within a few ulp
+    of the 50-digit root, and so is the fast one."""
+    inertia, perp, weight_torque = 3.75e-4, 9.375e-4, 0.3 * G0 * 0.05
+    cos_t = math.cos(math.radians(30))
+    # I⊥Ω cos θ/(Iω_s) ≈ I⊥ cos θ mgr/(Iω_s)² = share: the spin that makes it so.
+    spin = math.sqrt(perp * cos_t * weight_torque / share) / inertia
+    angular_momentum = inertia * spin
+    slow, fast = scene.precession_roots(perp * cos_t, angular_momentum, weight_torque)
+    reference_slow, reference_fast = balance_roots(perp * cos_t, angular_momentum, weight_torque)
+    assert relative(slow, reference_slow) <= 4 * ULP
+    assert relative(fast, reference_fast) <= 4 * ULP
+    assert float(perp * cos_t * reference_slow / angular_momentum) == pytest.approx(share, rel=1.5 * share)
+    naive = (angular_momentum - math.sqrt(angular_momentum**2 - 4 * perp * cos_t * weight_torque)) / (2 * perp * cos_t)
+    if share <= 1e-8:  # the textbook form would have lost most or all of its digits here
+        assert relative(naive, reference_slow) > 1e-9
+
+
+def test_the_gyroscope_at_1e5_rpm_end_to_end():
+    """The 0.3 kg disc at 10⁵ rpm, tilted 30°, against the balance at 50 digits from the inputs
+    themselves (I, I⊥ and cos 30° exact): the slow root within a few ulp (here I·ω_s is 1.3e5
+    times I⊥Ω cos θ)."""
+    report = taucli.gyro(shape="disc", mass="0.3 kg", radius="5 cm", spin="1e5 rpm", cm_distance="5 cm", tilt="30 deg")
+    with mpmath.workdps(60):
+        m, radius, r = mpmath.mpf("0.3"), mpmath.mpf("0.05"), mpmath.mpf("0.05")
+        angular_momentum = m * radius**2 / 2 * mpmath.mpf(10) ** 5 * 2 * mpmath.pi / 60
+        a = (m * radius**2 / 4 + m * r**2) * mpmath.cos(mpmath.pi / 6)
+        c = m * mpmath.mpf(G0) * r
+        slow = 2 * c / (angular_momentum + mpmath.sqrt(angular_momentum**2 - 4 * a * c))
+        assert abs(slow * (angular_momentum - a * slow) - c) < mpmath.mpf(10) ** -55
+    assert relative(report.results["omega_p_slow"].value, slow) <= 4 * ULP
+    assert float(a * slow / angular_momentum) == pytest.approx(7.74e-6, rel=1e-3)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    exponent_l=st.floats(-30, 30),
+    exponent_c=st.floats(-30, 30),
+    rho=st.one_of(st.floats(-1e6, 0.9), st.floats(1e-30, 1e-3)),
+)
+def test_both_roots_are_within_a_few_ulp_of_50_digits(exponent_l, exponent_c, rho):
+    """Over magnitudes from 1e-30 to 1e30 and ρ = 4ac/L² from −1e6 (far below the pivot) to 0.9."""
+    angular_momentum, weight_torque = 10.0**exponent_l, 10.0**exponent_c
+    a = rho * angular_momentum**2 / (4 * weight_torque)
+    assume(a != 0 and math.isfinite(a))
+    slow, fast = scene.precession_roots(a, angular_momentum, weight_torque)
+    reference_slow, reference_fast = balance_roots(a, angular_momentum, weight_torque)
+    assert relative(slow, reference_slow) <= 4 * ULP
+    if fast is None:  # beyond the largest double: null, never inf
+        assert abs(reference_fast) > 1.7e308
+        return
+    assert relative(fast, reference_fast) <= 4 * ULP
+    assert abs(slow) <= abs(fast)
+    if a < 0:  # below the pivot: opposite signs
+        assert slow > 0 > fast
+
+
+@settings(max_examples=200, deadline=None)
+@given(spin=st.floats(1.0, 1e4), factor=st.floats(1.5, 1e3))
+def test_the_exact_slow_root_tends_to_the_approximation_as_the_spin_grows(spin, factor):
+    """Spinning faster brings the slow root closer to mgr/(Iω_s), as 1/ω_s² (the relative gap
+    is I⊥Ω cos θ/(Iω_s), and Ω itself falls as 1/ω_s)."""
+    inertia, perp, weight_torque, cos_t = 3.75e-4, 9.375e-4, 0.3 * G0 * 0.05, math.cos(math.radians(40))
+    least = scene.least_spin(inertia, perp * cos_t, weight_torque)
+    assume(spin > 1.01 * least)
+
+    def gap(omega):
+        slow, _ = scene.precession_roots(perp * cos_t, inertia * omega, weight_torque)
+        return abs(slow / (weight_torque / (inertia * omega)) - 1)
+
+    assert gap(spin * factor) < gap(spin)
+    if spin > 10 * least:
+        assert gap(spin * factor) == pytest.approx(gap(spin) / factor**2, rel=0.05)
+
+
+def test_the_approximations_error_is_the_neglected_share_and_noted_above_1e_3():
+    for spin, noted in (("60 rad/s", True), ("4000 rpm", True), ("40000 rpm", False)):
+        report = taucli.gyro(shape="disc", mass=0.3, radius=0.05, spin=spin, cm_distance=0.05, tilt="30 deg")
+        gap = report.results["omega_p"].value / report.results["omega_p_slow"].value - 1
+        error = scene.approximation_error(9.375e-4 * math.cos(math.radians(30)), report.results["L"].value, 0.3 * G0 * 0.05)
+        assert error == pytest.approx(gap, rel=1e-9, abs=1e-15)
+        assert any("below the exact slow rate" in note for note in report.notes) == noted
+
+
+# --- regimes and their boundaries -----------------------------------------------------------
+
+
+def test_below_the_pivot_the_roots_have_opposite_signs_and_the_slow_one_is_smaller():
+    report = taucli.gyro(inertia=0.01, spin="50 rad/s", mass=2, cm_distance=0.2, inertia_perp=0.2, tilt="120 deg")
+    slow, fast = report.results["omega_p_slow"].value, report.results["omega_p_fast"].value
+    reference_slow, reference_fast = balance_roots(0.2 * math.cos(math.radians(120)), 0.5, 2 * G0 * 0.2)
+    assert relative(slow, reference_slow) < 1e-14 and relative(fast, reference_fast) < 1e-14
+    assert slow > 0 > fast and abs(slow) < abs(fast)
+    assert "spin_min" not in report.results  # every spin precesses below the pivot
+    assert any("below the pivot" in note for note in report.notes)
+
+
+def test_the_roots_meet_at_the_least_spin_and_are_continuous_through_90_degrees():
+    inertia, perp, weight_torque = 0.01, 0.2, 2 * G0 * 0.2
+    cos_t = math.cos(math.radians(30))
+    least = scene.least_spin(inertia, perp * cos_t, weight_torque)
+    meet = inertia * least / (2 * perp * cos_t)  # the double root L/(2a)
+    slow, fast = scene.precession_roots(perp * cos_t, inertia * least * (1 + 1e-12), weight_torque)
+    assert slow == pytest.approx(meet, rel=1e-5) and fast == pytest.approx(meet, rel=1e-5)
+    assert scene.precession_roots(perp * cos_t, inertia * least * (1 - 1e-9), weight_torque) is None
+    # Through 90°: the slow root passes smoothly through the approximation.
+    at_90 = taucli.gyro(inertia=inertia, spin=least, mass=2, cm_distance=0.2, inertia_perp=perp).results
+    for degrees in (89.999999, 90.000001):
+        near = taucli.gyro(inertia=inertia, spin=least, mass=2, cm_distance=0.2, inertia_perp=perp, tilt=f"{degrees} deg").results
+        assert near["omega_p_slow"].value == pytest.approx(at_90["omega_p_slow"].value, rel=1e-6)
+        assert abs(near["omega_p_fast"].value) > 1e5  # the fast root goes off to infinity, and is gone at 90°
+    assert at_90["omega_p_fast"].value is None
+
+
+def test_ninety_degrees_read_in_any_unit_has_one_root_exactly():
+    for tilt in ("90 deg", "0.25 rev", f"{math.pi / 2!r} rad", "100 grad"):
+        report = taucli.gyro(inertia=0.01, spin=50, mass=2, cm_distance=0.2, inertia_perp=0.2, tilt=tilt)
+        assert report.results["omega_p_fast"].value is None
+        assert report.results["omega_p_slow"].value == report.results["omega_p"].value
+
+
+def test_a_vertical_top_gives_the_sleeping_top_limit():
+    """At θ = 0 the least spin is the sleeping top's stability limit, ω² > 4 I⊥ mgr / I²."""
+    report = taucli.gyro(inertia=0.01, spin=10, mass=2, cm_distance=0.2, inertia_perp=0.2, tilt="0 deg")
+    assert report.results["spin_min"].value == pytest.approx(math.sqrt(4 * 0.2 * 2 * G0 * 0.2) / 0.01, rel=1e-15)
+    assert report.results["omega_p_slow"].value is None
+    assert any("sleeping top's stability limit" in note for note in report.notes)
+
+
+def test_without_a_perpendicular_moment_only_the_approximation():
+    report = taucli.gyro(inertia="3.75e-4 kg*m^2", spin="4000 rpm", mass="0.3 kg", cm_distance="5 cm")
+    assert set(report.results) == {"L", "omega_p", "period_p"}
+    assert any("omega_p only" in note for note in report.notes)
+    assert report.results["period_p"].value == pytest.approx(2 * math.pi / report.results["omega_p"].value, rel=1e-15)
+    rod = taucli.gyro(shape="rod", mass=1, length=0.3, spin=100, cm_distance=0.1)  # no symmetric I⊥ known
+    assert "omega_p_slow" not in rod.results
+
+
+def test_a_centre_of_mass_at_the_pivot_does_not_precess():
+    report = taucli.gyro(inertia=0.01, spin=50, mass=2, cm_distance=0, inertia_perp=0.02, tilt="60 deg")
+    assert report.results["omega_p"].value == 0 and report.results["omega_p_slow"].value == 0
+    assert report.results["period_p"].value is None
+    assert any("no torque" in note for note in report.notes)
+
+
+def test_perpendicular_moments_from_shapes():
+    """I⊥ = I about a diameter (thin disc ¼MR², a thick one + ML²/12, ring ½MR², sphere ⅖MR²,
+    cone (3/20)MR² + (3/80)MH²) plus Mr², read back from the equation the exact roots solve."""
+    cases = {
+        ("disc", ()): 0.25 * 0.04,
+        ("disc", (("length", 0.1),)): 0.25 * 0.04 + 0.01 / 12,
+        ("ring", ()): 0.5 * 0.04,
+        ("sphere", ()): 0.4 * 0.04,
+        ("shell", ()): 2 / 3 * 0.04,
+        ("cone", (("height", 0.3),)): 3 / 20 * 0.04 + 3 / 80 * 0.09,
+    }
+    r = 0.15
+    for (shape, extra), centre in cases.items():
+        report = taucli.gyro(shape=shape, mass=1, radius=0.2, spin=300, cm_distance=r, tilt="45 deg", **dict(extra))
+        results = report.results
+        slow, fast, big_l = results["omega_p_slow"].value, results["omega_p_fast"].value, results["L"].value
+        perp_cos = big_l / (slow + fast)  # sum of the roots = L/(I⊥ cos θ)
+        assert perp_cos / math.cos(math.radians(45)) == pytest.approx(centre + r * r, rel=1e-12), shape
+
+
+def test_a_value_in_other_units_gives_the_same_answer():
+    si = taucli.gyro(shape="disc", mass=0.3, radius=0.05, spin=4000 * 2 * math.pi / 60, cm_distance=0.05, tilt=f"{math.radians(30)!r} rad").results
+    other = taucli.gyro(shape="disc", mass="300 g", radius="50 mm", spin="4000 rpm", cm_distance="5 cm", tilt="30 deg").results
+    for key, value in si.items():
+        assert other[key].value == pytest.approx(value.value, rel=1e-14), key
+
+
+# --- refusals ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("given", "option", "fragment"),
+    [
+        ({"inertia": 0.01, "mass": 1, "cm_distance": 0.1}, "spin", "is required"),
+        ({"inertia": 0.01, "spin": 10, "mass": 1}, "cm_distance", "is required"),
+        ({"inertia": 0.01, "spin": 10, "cm_distance": 0.1}, "mass", "is required"),
+        ({"inertia": 0.01, "spin": 10, "torque": 1, "cm_distance": 0.1}, "cm_distance", "conflicts with torque"),
+        ({"inertia": 0.01, "spin": 10, "torque": 1, "inertia_perp": 0.1}, "inertia_perp", "conflicts with torque"),
+        ({"inertia": 0.01, "spin": 10, "torque": 1, "mass": 2}, "mass", "goes with cm_distance"),
+        ({"inertia": 0.01, "spin": 10, "torque": 1, "tilt": 0}, "tilt", "must be between 0 and 180 deg"),
+        ({"inertia": 0.01, "spin": 10, "mass": 1, "cm_distance": 0.1, "tilt": "200 deg"}, "tilt", "expected an angle from 0 to 180"),
+        ({"inertia": 0.01, "spin": 10, "mass": 1, "cm_distance": 0.1, "inertia_perp": 0.001}, "inertia_perp", "is less than I/2 + mr²"),
+        ({"spin": 10, "mass": 1, "cm_distance": 0.1}, "inertia", "or shape is required"),
+    ],
+)
+def test_what_cannot_be_used_is_refused_naming_the_parameter(given, option, fragment):
+    with pytest.raises(InputError) as caught:
+        taucli.gyro(**given)
+    assert caught.value.option == option
+    assert fragment in str(caught.value)
+
+
+def test_the_command_line_answers_in_strict_json_with_steps():
+    done = run_taucli("gyro", "--shape", "disc", "--mass", "0.3kg", "--radius", "5cm", "--spin", "4000rpm", "--cm-distance", "5cm", "--tilt", "30deg", "--json")
+    assert done.code == 0, done.err
+    document = done.json()
+    assert document["scene"] == "gyro" and document["method"] == "closed form"
+    titles = [step["title"] for step in document["steps"]]
+    assert "The torque changes L's direction, not its size" in titles and "Why the approximation holds" in titles
+    for extreme in (
+        ("--shape", "disc", "--mass", "1e30", "--radius", "1e14", "--spin", "1e-40", "--cm-distance", "1e40", "--g", "1e40", "--tilt", "1deg"),
+        ("--shape", "disc", "--mass", "1e30", "--radius", "1e14", "--spin", "1e40", "--cm-distance", "1e-40", "--tilt", "1e-30deg"),
+        ("--shape", "disc", "--mass", "1e-30", "--radius", "1e-14", "--spin", "1e-40", "--cm-distance", "1e40", "--tilt", "179.99999deg"),
+        ("--inertia", "1e-40", "--spin", "1e-40", "--mass", "1e-40", "--cm-distance", "1e-40", "--inertia-perp", "1e40", "--tilt", "89.9999999deg"),
+        ("--inertia", "1e40", "--spin", "1e40", "--torque", "1e-40", "--tilt", "1e-30deg"),
+    ):
+        done = run_taucli("gyro", *extreme, "--json")
+        assert done.code == 0, (extreme, done.err)
+        done.json()  # strict: no NaN or Infinity
+    refused = run_taucli("gyro", "--inertia", "0.01", "--spin", "10", "--torque", "1N*m", "--cm-distance", "5cm")
+    assert refused.code == 2
+    assert refused.err.strip() == "taucli: error: --cm-distance conflicts with --torque: with the torque given, only the gyroscopic rate Ω = τ/(L sin θ) is formed"
