@@ -291,3 +291,11 @@ def test_impossible_pulls_are_input_errors(arguments, fragment):
     with pytest.raises(InputError) as caught:
         rolling(**arguments)
     assert fragment in str(caught.value)
+
+
+@pytest.mark.parametrize("angle", [math.pi / 2, -math.pi / 2])
+def test_a_pull_straight_up_or_down_moves_nothing_along(angle):
+    """φ = ±90°: no component along the surface and (at the centre) no torque: a = 0 exactly,
+    not the 6e-17 of math.cos(π/2)."""
+    result = values(solve_pull(Roller(0.5, "disc", 2.0, 0.1), 0.0, G, Pull(10.0, angle), mu_s=0.1))
+    assert result["a"] == 0.0 and result["friction"] == 0.0 and result["alpha"] == 0.0

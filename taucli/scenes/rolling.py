@@ -359,7 +359,13 @@ class Pull:
     def lever(self) -> float:
         """The lever arm about the centre, signed: positive where the pull turns the body forward
         (in the sense that rolls it along the pull)."""
-        return self.side * self.axle if self.axle is not None else self.height * math.cos(self.angle)
+        return self.side * self.axle if self.axle is not None else self.height * self.cos_sin()[0]
+
+    def cos_sin(self) -> tuple[float, float]:
+        """cos φ and sin φ, exact at ±90° (straight up or down), where math.cos(π/2) is 6e-17."""
+        if abs(self.angle) == RIGHT_ANGLE:
+            return 0.0, math.copysign(1.0, self.angle)
+        return math.cos(self.angle), math.sin(self.angle)
 
 
 def solve_pull(
@@ -402,12 +408,13 @@ def solve_pull(
     flat = slope == 0
     sigma = 1.0 if flat else -1.0
     sin_a, cos_a = (1.0, 0.0) if slope == RIGHT_ANGLE else (math.sin(slope), math.cos(slope))
-    along = sigma * pull.force * math.cos(pull.angle)  # the pull's component along +x
-    normal = mass * g * cos_a - pull.force * math.sin(pull.angle)
-    scale = mass * g * cos_a + abs(pull.force * math.sin(pull.angle))
+    cos_p, sin_p = pull.cos_sin()
+    along = sigma * pull.force * cos_p  # the pull's component along +x
+    normal = mass * g * cos_a - pull.force * sin_p
+    scale = mass * g * cos_a + abs(pull.force * sin_p)
     if normal < -16 * EPSILON * scale:
         raise InputError("pull", "lifts the body off the surface: its part away from the surface, F sin φ, exceeds m g cos θ",
-                         got=f"{quantity_text(pull.force * math.sin(pull.angle), 'N')} > {quantity_text(mass * g * cos_a, 'N')}")
+                         got=f"{quantity_text(pull.force * sin_p, 'N')} > {quantity_text(mass * g * cos_a, 'N')}")
     normal = max(normal, 0.0)
     turning = 0.0 if lever == 0 else sigma * pull.force * lever / radius  # σFℓ/R: the pull's torque over R
     drive = along + mass * g * sin_a
@@ -550,8 +557,9 @@ def _pull_steps(roller, slope, g, pull, sigma, normal, needed, rolling_a, mu_min
         Step("Translation of the centre" + (" (along the pull)" if flat else " (down the slope)"), f"m a = {along} − f", "", "",
              "the pull's component along the surface" + ("" if flat else " (up the slope) and gravity's (down it)")
              + "; friction f at the contact, positive against a"),
-        Step("Rotation about the centre (in the rolling sense of a)", f"I α = f R {torque},  {lever}",
-             "", f"ℓ = {quantity_text(pull.lever(), 'm')}, k² = {fmt(k2)}", "friction acts at the contact, R from the centre; the pull's line of action passes ℓ from it"),
+        Step("Rotation about the centre (in the rolling sense of a)", f"I α = f R {torque},  {lever}", "", "",
+             f"friction acts at the contact, R from the centre; the pull's line of action passes ℓ from it: here ℓ = {quantity_text(pull.lever(), 'm')}, "
+             f"and I = k² m R² with k² = {fmt(k2)}"),
         Step("Normal force", "N = m g cos θ − F sin φ", f"{fmt(mass)} × {fmt(g)} × cos {fmt(math.degrees(slope))}° − {fmt(pull.force)} × sin {fmt(math.degrees(pull.angle))}°",
              quantity_text(normal, "N"), "a pull above the surface lifts part of the weight off it"),
         Step("Rolling (a = R α): solve the three equations", f"a = ({along} {torque}/R) / (m (1 + k²)),  f = k² m a {'−' if flat else '+'} Fℓ/R", "",
