@@ -16,7 +16,7 @@ complete -c taucli -n __fish_use_subcommand -l help -d 'Show this message and ex
 complete -c taucli -n __fish_use_subcommand -a inertia -d 'Moment of inertia of a standard shape: shifted (--offset), or a body of several parts.'
 complete -c taucli -n __fish_use_subcommand -a spin-down -d 'A wheel on a fixed axle, slowing or spun up: I dω/dt = τ_drive − τ_f − bω − kω².'
 complete -c taucli -n __fish_use_subcommand -a atwood -d 'Two masses on a string over a pulley with mass: acceleration and tensions.'
-complete -c taucli -n __fish_use_subcommand -a rolling -d 'A round body on an incline: does it roll or slip, and how fast; or a skidding ball on the flat.'
+complete -c taucli -n __fish_use_subcommand -a rolling -d 'A round body on an incline: does it roll or slip, and how fast; a skidding ball; a pulled body, a spool, a yo-yo.'
 complete -c taucli -n __fish_use_subcommand -a impulse -d 'Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.'
 complete -c taucli -n __fish_use_subcommand -a bench -d 'Speed against accuracy: time per solve and error of every method, charted (log-log).'
 complete -c taucli -n __fish_use_subcommand -a completions -d 'Print the completion script for SHELL: commands, options, shapes, methods, and units after a number.'

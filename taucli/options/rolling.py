@@ -8,7 +8,7 @@ PULL = "Pull, spool and yo-yo"
 
 COMMAND = Command(
     name="rolling",
-    summary="A round body on an incline: does it roll or slip, and how fast; or a skidding ball on the flat.",
+    summary="A round body on an incline: does it roll or slip, and how fast; a skidding ball; a pulled body, a spool, a yo-yo.",
     example="taucli rolling sphere --angle 30deg --length 2m",
     options=(
         Option("shape", CHOICE, f"{', '.join(ROLLING_BODIES)} (or give --k2 or --inertia).", choices=ROLLING_BODIES, positional=True, metavar="SHAPE"),

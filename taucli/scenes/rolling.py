@@ -1,4 +1,6 @@
-"""A round body on an incline: rolling or slipping; and a skidding ball on the flat until it rolls.
+"""A round body on an incline: rolling or slipping; a skidding ball on the flat until it rolls;
+a body pulled on the flat or a slope, a spool pulled by its string, a yo-yo (solve_pull,
+solve_yoyo, and solve_rolling_flat for a body rolling at v0).
 
 The article's three equations, with I = k² m R² (k2 = I/(mR²), the shape's only number):
 
@@ -716,6 +718,9 @@ def rolling(
         if axle_radius is not None and pull_height is not None and pull_height == 0:
             raise InputError("pull_height", "cannot be 0 with {axle_radius}: the string leaves the axle from below (negative) or the top (positive)")
         side = 1 if pull_height is not None and pull_height > 0 else -1
+        if axle_radius is not None and pull_height is not None and abs(pull_height) != axle_radius:
+            assumed.notes.append("with {axle_radius}, {pull_height} says only which side the string leaves the axle from "
+                                 f"({'the top' if side > 0 else 'below'}): a string tangent to the axle has the lever arm r at any angle")
         pulled = Pull(pull, pull_angle or 0.0, pull_height or 0.0, axle_radius, side)
         report = solve_pull(body, angle or 0.0, gravity, pulled, mu_s=mu_s, mu_k=mu_k, length=length)
         return assumed.applied(report)
