@@ -299,3 +299,22 @@ def test_a_pull_straight_up_or_down_moves_nothing_along(angle):
     not the 6e-17 of math.cos(π/2)."""
     result = values(solve_pull(Roller(0.5, "disc", 2.0, 0.1), 0.0, G, Pull(10.0, angle), mu_s=0.1))
     assert result["a"] == 0.0 and result["friction"] == 0.0 and result["alpha"] == 0.0
+
+
+@pytest.mark.parametrize("slope", [math.radians(10), math.radians(35)])
+@pytest.mark.parametrize("where", [dict(height=0.08), dict(height=-0.05), dict(axle=0.04), dict(axle=0.04, side=1)])
+@pytest.mark.parametrize("force", [5.0, 40.0])
+def test_the_roll_slip_boundary_is_continuous_on_a_slope(slope, where, force):
+    """Pulled up a slope (a pull that wins, and one that loses to gravity): just above μ_min it
+    rolls, just below it slips, and a, α, friction agree to the size of the step in μ."""
+    pull = Pull(force, math.radians(15), where.get("height", 0.0), where.get("axle"), where.get("side", -1))
+    body = Roller(0.5, "disc", 2.0, 0.1)
+    mu_min = values(solve_pull(body, slope, G, pull))["mu_min"]
+    above = values(solve_pull(body, slope, G, pull, mu_s=mu_min * (1 + 1e-12), mu_k=mu_min))
+    below = values(solve_pull(body, slope, G, pull, mu_s=mu_min * (1 - 1e-12), mu_k=mu_min * (1 - 1e-12)))
+    assert above["rolls"] is True and below["rolls"] is False
+    for name in ("a", "alpha", "friction"):
+        assert below[name] == pytest.approx(above[name], rel=1e-9, abs=1e-12)
+    ref = pull_reference(0.5, 2.0, 0.1, slope, G, force, math.radians(15), mu_s=mu_min * (1 + 1e-12), mu_k=mu_min,
+                         **{k: v for k, v in where.items()})
+    assert above["a"] == pytest.approx(float(ref["a"]), rel=1e-12, abs=1e-14)
