@@ -470,7 +470,7 @@ def solve_rim(
     giving a = g (m1 − E m2)/(m1 + E m2), T2 = 2 m1 m2 g/(m1 + E m2), E = e^{μβ} (and the
     mirror image when m2 goes down). At μ = ln(T1/T2)/β the two answers meet.
     """
-    grip = solve(m1, m2, pulley, g, v0=v0, distance=distance, time=time)
+    grip = solve(m1, m2, pulley, g, v0=v0, distance=distance, time=time)  # its checks first
     tension1, tension2 = grip.results["T1"].value, grip.results["T2"].value
     high, low = max(tension1, tension2), min(tension1, tension2)
     # the least μ that grips: ln(T_high/T_low)/β, with T_high − T_low = (I/R²)|a| from the pulley's
@@ -478,6 +478,8 @@ def solve_rim(
     need = math.log1p(pulley.effective_mass() * abs(grip.results["a"].value) / low) / wrap
     results = Results(TABLE)
     notes = [note for note in grip.notes if not note.startswith("the string taken not to slip")]
+    if not pulley.effective_mass():
+        notes.append("{rim_mu}: a massless pulley needs no torque, so the tensions are equal and the string always grips")
     if rim_mu >= need:
         for key, value in grip.results.items():
             results[key] = value
@@ -485,7 +487,7 @@ def solve_rim(
         results.put("grips", True)
         results.put("rim_mu_min", need)
         notes.append(
-            f"the string grips the rim: T_high/T_low = {fmt(high / low, 6)} ≤ e^(μβ) = {fmt(math.exp(rim_mu * wrap), 6)} "
+            f"the string grips the rim: T_high/T_low = {fmt(high / low, 6)} ≤ e^(μβ) = {_exp_text(rim_mu * wrap)} "
             f"(it would slide below μ = {fmt(need)})"
         )
         steps = [*grip.steps, _capstan_step(high, low, rim_mu, wrap, need, True)]
@@ -534,12 +536,17 @@ def solve_rim(
     return Report("atwood", model, "closed form", results, steps, notes, trajectory=deferred(_trajectory, motion, distance, time, results))
 
 
+def _exp_text(x: float) -> str:
+    """e^x as a number, or as e^x where it is beyond a float (a long wrap of a rough rim)."""
+    return fmt(math.exp(x), 6) if x < 700 else f"e^{fmt(x)}"
+
+
 def _capstan_step(high, low, mu, wrap, need, grips) -> Step:
     return Step(
         "Does the string grip? The capstan limit",
         "T_high / T_low ≤ e^(μβ)",
         f"{fmt(high, 6)} / {fmt(low, 6)} against e^({fmt(mu)} × {fmt(wrap)})",
-        f"{fmt(high / low, 6)} {'≤' if grips else '>'} {fmt(math.exp(mu * wrap), 6)}",
+        f"{fmt(high / low, 6)} {'≤' if grips else '>'} {_exp_text(mu * wrap)}",
         "friction over a wrap of β can change the tension by at most a factor e^(μβ); "
         + (f"so it grips (least μ = {fmt(need)})" if grips else f"so it slides (gripping needs μ ≥ {fmt(need)})"),
     )
@@ -594,8 +601,6 @@ def atwood(
                 raise InputError(name, "does not apply with {rim_mu} here: a string that may slide is solved for two hanging masses on a pulley free on its axle")
         if not m1 or not m2:
             raise InputError("m1" if not m1 else "m2", "must be more than 0 with {rim_mu}: a string with nothing on one end slides off (a string wound on the pulley is fixed to it)")
-        if not pulley.effective_mass():
-            assumed.notes.append("--rim-mu: a massless pulley needs no torque, so the tensions are equal and the string always grips")
         gravity = assumed.gravity(g)
         return assumed.applied(solve_rim(m1, m2, pulley, gravity, rim_mu, math.pi if wrap is None else wrap, v0=v0 or 0.0, distance=distance, time=time))
     slope = Slope(HANGING if incline is None else incline, mu_k, mu_s)
