@@ -553,7 +553,10 @@ def _pull_steps(roller, slope, g, pull, sigma, normal, needed, rolling_a, mu_min
     k2, mass = roller.k2, roller.mass
     flat = slope == 0
     along = "F cos φ" if flat else "m g sin θ − F cos φ"
-    lever = "ℓ = ±r (the string leaves the axle tangentially)" if pull.axle is not None else "ℓ = h cos φ"
+    if pull.axle is None:
+        lever = "ℓ = h cos φ"
+    else:
+        lever = "ℓ = −r (the string leaves the axle from below)" if pull.side < 0 else "ℓ = +r (the string leaves the axle from the top)"
     torque = "+ F ℓ" if flat else "− F ℓ"
     steps = [
         Step("Translation of the centre" + (" (along the pull)" if flat else " (down the slope)"), f"m a = {along} − f", "", "",
