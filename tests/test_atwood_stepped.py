@@ -195,3 +195,16 @@ def test_found_by_fuzzing_a_rough_rim_and_an_inertia_without_a_radius():
     with pytest.raises(InputError) as caught:
         atwood(m1=1e-9, m2=1e-9, pulley_inertia=0.0, rim_mu=0.0)
     assert "pulley_radius is required" in str(caught.value)
+
+
+@settings(max_examples=300, deadline=None)
+@given(m2=masses, r2=st.floats(0.01, 1), r1=st.floats(0.01, 1), gap=st.integers(1, 60), inertia=st.one_of(st.just(0.0), st.floats(1e-4, 1)))
+def test_a_stepped_pulley_near_balance_keeps_full_precision(m2, r2, r1, gap, inertia):
+    """m1 r1 = m2 r2 (1 + 2^-gap): α within 4 ulp of the 50-digit (m1 g r1 − m2 g r2)/(I + m1 r1² + m2 r2²).
+    Written as m1·r1 − m2·r2 in floats the two rounded products lose up to `gap` bits."""
+    m1 = m2 * r2 * (1 + 2.0**-gap) / r1
+    alpha = values(solve_stepped(m1, m2, Pulley(0.0, None, None, inertia), G, r1, r2))["alpha"]
+    with mpmath.workdps(50):
+        m1_, m2_, r1_, r2_ = (mpmath.mpf(x) for x in (m1, m2, r1, r2))
+        exact = G * (m1_ * r1_ - m2_ * r2_) / (inertia + m1_ * r1_**2 + m2_ * r2_**2)
+    assert abs(mpmath.mpf(alpha) - exact) <= 4 * abs(exact) * mpmath.mpf(2) ** -52

@@ -406,7 +406,7 @@ def solve_stepped(
     ratio = r2 / r1
     own = inertia / (r1 * r1)  # I/r1²: the pulley's mass as seen by m1
     moving = m1 + m2 * ratio * ratio + own
-    drive = g * (m1 * r1 - m2 * r2) / r1
+    drive = g * _product_difference(m1, r1, m2, r2) / r1
     axle = pulley.axle_friction / r1
     loads = Loads(drive=drive, friction=axle, static=axle)
     motion = evolve(moving, loads, v0, Evolver(Method("exact")))
@@ -434,6 +434,29 @@ def solve_stepped(
     if pulley.axle_friction:
         model += "; axle friction holds it" if motion.held_from_start else "; axle friction overcome"
     return Report("atwood", model, "closed form", results, steps, notes, trajectory=deferred(_trajectory, motion, distance, time, results))
+
+
+def _product_difference(a: float, b: float, c: float, d: float) -> float:
+    """a·b − c·d to within an ulp or so, also where the two products nearly cancel (a stepped
+    pulley near balance, m1 r1 ≈ m2 r2): each product's rounding error is found exactly (Dekker's
+    two-product, by Veltkamp's split) and added back after the difference."""
+    first, second = a * b, c * d
+    if not (math.isfinite(first) and math.isfinite(second)) or max(abs(a), abs(b), abs(c), abs(d)) > 1e150:
+        return first - second  # the split would overflow; nothing near cancellation is that large here
+    return (first - second) + (_product_error(a, b, first) - _product_error(c, d, second))
+
+
+def _product_error(a: float, b: float, product: float) -> float:
+    """The exact a·b − fl(a·b)."""
+    a_high, a_low = _split(a)
+    b_high, b_low = _split(b)
+    return ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low
+
+
+def _split(x: float) -> tuple[float, float]:
+    c = 134217729.0 * x  # 2^27 + 1
+    high = c - (c - x)
+    return high, x - high
 
 
 def _stepped_steps(m1, m2, inertia, g, r1, r2, axle, a, results, held) -> list[Step]:
