@@ -513,7 +513,7 @@ def solve_rim(
             f"the string grips the rim: T_high/T_low = {fmt(high / low, 6)} ≤ e^(μβ) = {_exp_text(rim_mu * wrap)} "
             f"(it would slide below μ = {fmt(need)})"
         )
-        steps = [*grip.steps, _capstan_step(high, low, rim_mu, wrap, need, True)]
+        steps = DeferredSteps(lambda: [*grip.steps, _capstan_step(high, low, rim_mu, wrap, need, True)])
         model = grip.model.replace("string does not slip", "string grips the rim")
         return Report("atwood", model, "closed form", results, steps, notes, trajectory=grip.trajectory)
     ratio = math.exp(rim_mu * wrap)
@@ -544,7 +544,7 @@ def solve_rim(
         notes.append("alpha: give --pulley-radius for the pulley's angular acceleration (a_rim does not need it)")
     motion = evolve(1.0, Loads(drive=a), v0, Evolver(Method("exact")))  # no friction that depends on the masses' speed: uniform a
     _motion_results(results, motion, distance, time, notes)
-    steps = [
+    steps = DeferredSteps(lambda: [
         Step("For m₁ and m₂", "m₁g − T₁ = m₁a,  T₂ − m₂g = m₂a", "", "", "each mass's weight and its string's tension"),
         _capstan_step(high, low, rim_mu, wrap, need, False),
         Step("The string slides: the tensions take the capstan ratio", "T₁ = e^(μβ) T₂" if sense > 0 else "T₂ = e^(μβ) T₁",
@@ -554,7 +554,7 @@ def solve_rim(
         Step("The pulley, turned by the friction alone", "I α = (T₁ − T₂) R,  a_rim = α R = (T₁ − T₂)/(I/R²)",
              f"({fmt(tension1)} − {fmt(tension2)} N) / {fmt(pulley.effective_mass())} kg", quantity_text(rim_a, "m/s**2"),
              "the rim lags the string: the string slides over it"),
-    ]
+    ])  # written when read
     model = ("massive pulley (" + _pulley_words(pulley) + "), the string slides over the rim (capstan friction)")
     return Report("atwood", model, "closed form", results, steps, notes, trajectory=deferred(_trajectory, motion, distance, time, results))
 

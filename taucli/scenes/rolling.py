@@ -627,6 +627,13 @@ def solve_yoyo(roller: Roller, g: float, *, axle: float | None = None, height: f
             results.put("KE_trans", 0.5 * mass * speed * speed, part)
             results.put("KE_rot", 0.5 * ratio * mass * speed * speed, part)
             results.put("KE", 0.5 * (1 + ratio) * mass * speed * speed, part)
+    steps = DeferredSteps(_yoyo_steps, ratio, a, tension, results if height is not None else None)
+    model = f"yo-yo: {roller.description} (k² = I/mR² = {fmt(k2)}) falling as its string unwinds" + ("" if axle is None else f" from an axle of radius {fmt(axle)} m")
+    trajectory = deferred(_yoyo_trajectory, a, v0, results)
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
+
+
+def _yoyo_steps(ratio, a, tension, results) -> list[Step]:
     steps = [
         Step("For the yo-yo's centre (down positive)", "m a = m g − T", "", "", "gravity down, the string's tension up"),
         Step("Rotation about the centre", "I α = T r", "", "", "the string leaves the axle at r from the centre"),
@@ -635,12 +642,10 @@ def solve_yoyo(roller: Roller, g: float, *, axle: float | None = None, height: f
              quantity_text(a, "m/s**2") + ("" if tension is None else f", T = {quantity_text(tension, 'N')}"),
              "T r = I a / r from the rotation; put into the translation equation"),
     ]
-    if height is not None:
+    if results is not None:
         steps.append(Step("After the drop", "v = √(v₀² + 2 a h),  ω = v / r", "", quantity_text(results["v"].value, "m/s"),
                           "constant a; energy: m g h = ½ m v² (1 + I/(m r²)) − ½ m v₀² (1 + I/(m r²))"))
-    model = f"yo-yo: {roller.description} (k² = I/mR² = {fmt(k2)}) falling as its string unwinds" + ("" if axle is None else f" from an axle of radius {fmt(axle)} m")
-    trajectory = deferred(_yoyo_trajectory, a, v0, results)
-    return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
+    return steps
 
 
 def _yoyo_trajectory(a: float, v0: float, results) -> Trajectory:
