@@ -318,3 +318,21 @@ def test_the_roll_slip_boundary_is_continuous_on_a_slope(slope, where, force):
     ref = pull_reference(0.5, 2.0, 0.1, slope, G, force, math.radians(15), mu_s=mu_min * (1 + 1e-12), mu_k=mu_min,
                          **{k: v for k, v in where.items()})
     assert above["a"] == pytest.approx(float(ref["a"]), rel=1e-12, abs=1e-14)
+
+
+def test_halliday_yoyo_needs_no_outer_radius():
+    """A yo-yo of I = 950 g·cm², m = 120 g, axle r = 3.2 mm, string 120 cm (g = 9.8): the book's
+    a = 12.5 cm/s², T = 1.16 N, and at the end of the string v = 55 cm/s, ω ≈ 1.7e2 rad/s,
+    KE_trans ≈ 1.8e-2 J, KE_rot ≈ 1.4 J. Only I/(m r²) enters, so --radius is not asked for."""
+    report = rolling(yoyo=True, inertia=950e-7, mass=0.12, axle_radius=3.2e-3, height=1.2, g=9.8)
+    result = values(report)
+    with mpmath.workdps(40):
+        I, m, r, h, g = (mpmath.mpf(x) for x in ("950e-7", "0.12", "3.2e-3", "1.2", "9.8"))
+        a, alpha, tension = mpmath.lu_solve(mpmath.matrix([[m, 0, 1], [0, I, -r], [1, -r, 0]]), mpmath.matrix([m * g, 0, 0]))
+        v = mpmath.sqrt(2 * a * h)
+    assert result["a"] == pytest.approx(float(a), rel=1e-14) and round(result["a"] * 100, 1) == 12.5
+    assert result["T"] == pytest.approx(float(tension), rel=1e-14) and round(result["T"], 2) == 1.16
+    assert result["v"] == pytest.approx(float(v), rel=1e-14) and round(result["v"], 2) == 0.55
+    assert result["omega"] == pytest.approx(float(v / r), rel=1e-14)
+    assert result["KE_rot"] == pytest.approx(float(I * (v / r) ** 2 / 2), rel=1e-13)
+    assert result["KE"] == pytest.approx(float(m * g * h), rel=1e-13)

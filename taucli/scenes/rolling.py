@@ -589,23 +589,29 @@ def _pull_steps(roller, slope, g, pull, sigma, normal, needed, rolling_a, mu_min
     return steps
 
 
-def solve_yoyo(roller: Roller, g: float, *, axle: float | None = None, height: float | None = None, v0: float = 0.0) -> Report:
+def solve_yoyo(
+    roller: Roller, g: float, *, axle: float | None = None, height: float | None = None, v0: float = 0.0, about_axle: float | None = None
+) -> Report:
     """A yo-yo: the string, fixed above, unwinds from the axle of radius r (default R):
 
         m a = m g − T,   I α = T r,   a = r α   ⇒   a = g / (1 + I/(m r²)),  T = m g · q/(1 + q)
 
-    with q = I/(m r²) = k² (R/r)²: with r = R neither mass nor radius enters a.
+    with q = I/(m r²) = k² (R/r)²: with r = R neither mass nor radius enters a. ``about_axle``: the
+    body's k2 is already I/(m r²) for a string wound at that r (I given, the outer radius unknown).
     """
     k2, mass, radius = roller.k2, roller.mass, roller.radius
     notes: list[str] = []
-    if axle is not None and radius is None:
+    if about_axle is not None:
+        ratio, r = k2, about_axle
+    elif axle is not None and radius is None:
         raise InputError("radius", "is required with {axle_radius} (I/(m r²) = k² R²/r²)", example="{radius} 0.03m")
-    if axle is not None and axle > radius:
+    elif axle is not None and axle > radius:
         raise InputError("axle_radius", "must lie within the body's radius", example="{axle_radius} 0.005m", got=f"{fmt(axle)} m > R = {fmt(radius)} m")
-    if axle is None:
-        notes.append("no --axle-radius: the string is wound at the body's own radius (r = R)")
-    ratio = k2 if axle is None else k2 * (radius / axle) ** 2  # q = I/(m r²)
-    r = axle if axle is not None else radius
+    if about_axle is None:
+        if axle is None:
+            notes.append("no --axle-radius: the string is wound at the body's own radius (r = R)")
+        ratio = k2 if axle is None else k2 * (radius / axle) ** 2  # q = I/(m r²)
+        r = axle if axle is not None else radius
     a = g / (1 + ratio)
     tension = None if mass is None else mass * g * ratio / (1 + ratio)
     results = Results(TABLE)
@@ -629,6 +635,8 @@ def solve_yoyo(roller: Roller, g: float, *, axle: float | None = None, height: f
             results.put("KE", 0.5 * (1 + ratio) * mass * speed * speed, part)
     steps = DeferredSteps(_yoyo_steps, ratio, a, tension, results if height is not None else None)
     model = f"yo-yo: {roller.description} (k² = I/mR² = {fmt(k2)}) falling as its string unwinds" + ("" if axle is None else f" from an axle of radius {fmt(axle)} m")
+    if about_axle is not None:
+        model = f"yo-yo: body (I/(m r²) = {fmt(ratio)}) falling as its string unwinds from an axle of radius {fmt(about_axle)} m"
     trajectory = deferred(_yoyo_trajectory, a, v0, results)
     return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
 
@@ -704,6 +712,16 @@ def rolling(
     """``taucli rolling``: down (or up) an incline, or a ball skidding on the flat (--v0 or
     --omega0 with no slope, length or height) until it rolls; a body pulled (--pull), a spool
     (--axle-radius), a yo-yo (--yoyo)."""
+    if yoyo and inertia is not None and radius is None and axle_radius is not None and mass is not None and shape is None and k2 is None:
+        # a yo-yo needs only I/(m r²): its outer radius plays no part (Halliday's 950 g·cm², 120 g, r = 3.2 mm)
+        assumed = Assumed()
+        body = Roller(inertia / (mass * axle_radius**2), "body", mass, None)
+        for name, value in (("angle", angle), ("pull", pull), ("pull_height", pull_height), ("pull_angle", pull_angle), ("mu_s", mu_s),
+                            ("mu_k", mu_k), ("length", length), ("omega0", omega0)):
+            if value is not None:
+                raise InputError(name, "does not apply with {yoyo} (a yo-yo falls on its string: {height} for the drop, {v0} to throw it down)")
+        report = solve_yoyo(body, assumed.gravity(g), height=height, v0=v0 or 0.0, about_axle=axle_radius)
+        return assumed.applied(report)
     body = roller(shape, k2, inertia, mass, radius)
     assumed = Assumed()
     if not yoyo and pull is None and angle in (None, 0.0) and v0 is not None and omega0 is None and mu_k is None and length is None and height is None:
