@@ -28,6 +28,7 @@ from taucli.table import Results
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 RIGHT_ANGLE = math.pi / 2
+EPSILON = 2.0**-52
 
 
 @dataclass(frozen=True)
@@ -481,8 +482,6 @@ def solve_pull(
     trajectory = None if a is None else deferred(_pull_trajectory, a, length)
     return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
 
-
-EPSILON = 2.0**-52
 
 
 def _critical_angle(pull: Pull, sigma: float, weight_along: float, radius: float, notes: list[str]) -> float | None:
