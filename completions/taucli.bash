@@ -92,6 +92,10 @@ _taucli() {
             --pulley-shape) COMPREPLY=($(compgen -W "disc ring" -- "$cur")); return 0 ;;
             --pulley-inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --axle-friction) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --radius1) _taucli_units m cm mm km in ft; return 0 ;;
+            --radius2) _taucli_units m cm mm km in ft; return 0 ;;
+            --rim-mu) :; return 0 ;;
+            --wrap) _taucli_units deg rad rev; return 0 ;;
             --incline) _taucli_units deg rad rev; return 0 ;;
             --mu-k) :; return 0 ;;
             --mu-s) :; return 0 ;;
@@ -99,13 +103,13 @@ _taucli() {
             --v0) _taucli_units 'm/s' 'km/h' 'ft/s' mph; return 0 ;;
             --distance) _taucli_units m cm mm km in ft; return 0 ;;
             --time) _taucli_units s ms min h; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a_massless t v distance" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a_massless t v distance" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -120,18 +124,22 @@ _taucli() {
             --height) _taucli_units m cm mm km in ft; return 0 ;;
             --v0) _taucli_units 'm/s' 'km/h' 'ft/s' mph; return 0 ;;
             --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --pull) _taucli_units N kN lbf; return 0 ;;
+            --pull-height) _taucli_units m cm mm km in ft; return 0 ;;
+            --pull-angle) _taucli_units deg rad rev; return 0 ;;
+            --axle-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls v t KE_trans KE_rot d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T v omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls v t KE_trans KE_rot d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T v omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost" -- "$cur")); return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in

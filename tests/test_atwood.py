@@ -233,7 +233,10 @@ def test_at_rest_each_tension_is_given_where_statics_fixes_it_and_bounded_where_
     assume(result["a"] == 0)
     tension_high, low, high = statics_reference(m1, m2, angle, mu_s, axle, radius, g)
     assert result["T1"] == pytest.approx(float(tension_high), rel=1e-14)
-    scale = float(tension_high + high + axle / radius)
+    # the forces in play, as the solver weighs them: the weights along the surface, friction's
+    # limit and the axle's (#21: m1 = 0 on a table with axle 1e-40 N·m took T2 = 0 as fixed, right
+    # to rounding of the 9.8 N of grip; the test's scale had left the grip out)
+    scale = float(tension_high + high + axle / radius + m2 * g * sin_a + mu_s * m2 * g * cos_a)
     if high - low <= 16 * 2.0**-52 * scale:  # the frictions' intervals meet in one point (to rounding)
         assert result["T2"] == pytest.approx(float(low), rel=1e-12, abs=1e-12 * scale)
     elif high - low > 1e-12 * scale:

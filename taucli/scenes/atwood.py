@@ -355,6 +355,226 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
     return steps
 
 
+def _motion_results(results: Results, motion, distance: float | None, time: float | None, notes: list[str]) -> None:
+    """t and v after --distance, v and the displacement at --time: m1's, as solve gives them."""
+    if distance is not None:
+        reached = _travel(motion, distance)
+        if reached is None:
+            notes.append(f"the masses never travel {quantity_text(distance, 'm')}")
+        results.put("t", reached, f" {fmt(distance)} m")
+        results.put("v", None if reached is None else motion.state_at(reached)[0], f" after {fmt(distance)} m")
+    if time is not None:
+        speed, displacement = motion.state_at(time)
+        if "v" not in results:
+            results.put("v", speed, f" at t = {fmt(time)} s")
+        results.put("distance", displacement, f" at t = {fmt(time)} s")
+        if distance is not None:
+            notes.append("v is given at the distance; distance at the time")
+
+
+def solve_stepped(
+    m1: float, m2: float, pulley: Pulley, g: float, r1: float, r2: float, *, v0: float = 0.0, distance: float | None = None, time: float | None = None
+) -> Report:
+    """A stepped pulley: m1's string wound at r1, m2's at r2 on the other side; one pulley of
+    inertia I, its rotation α the one unknown (m1 down and the pulley turning positive):
+
+        m1:      m1 g − T1 = m1 a1,     a1 = α r1
+        m2:      T2 − m2 g = m2 a2,     a2 = α r2   (m2 up positive)
+        pulley:  T1 r1 − T2 r2 − τ_a·sgn ω = I α
+
+    so α = (m1 g r1 − m2 g r2 − τ_a)/(I + m1 r1² + m2 r2²). In m1's coordinate (÷ r1): the
+    machine of ``solve`` with m2 → m2 ρ², ρ = r2/r1, a drive g(m1 − m2 ρ), axle friction τ_a/r1.
+    """
+    if m1 + m2 == 0 and pulley.mass == 0 and pulley.inertia is None:
+        raise InputError("m1", "and {m2} cannot both be zero (with a massless pulley nothing is there to move)", example="{m1} 4kg {m2} 1kg")
+    if pulley.inertia is not None and (pulley.mass or pulley.shape):
+        raise InputError("pulley_inertia", "conflicts with {pulley_mass} and {pulley_shape}: give one description of the pulley")
+    if pulley.shape is not None and pulley.shape not in Pulley.SHAPE_FACTORS:
+        raise InputError("pulley_shape", "expected disc or ring", example="{pulley_shape} ring", got=repr(pulley.shape))
+    notes: list[str] = []
+    if pulley.inertia is not None:
+        inertia = pulley.inertia
+    else:
+        rim = pulley.radius if pulley.radius is not None else max(r1, r2)
+        if pulley.mass and pulley.shape is None:
+            notes.append("pulley taken as a uniform solid disc (I = ½MR²); --pulley-shape ring for a thin ring")
+        if pulley.mass and pulley.radius is None:
+            notes.append(f"no --pulley-radius: the pulley's mass taken out to the larger step, R = {fmt(rim)} m; --pulley-radius or --pulley-inertia to change it")
+        inertia = Pulley.SHAPE_FACTORS[pulley.shape or "disc"] * pulley.mass * rim * rim
+    if inertia:
+        notes.append("the strings taken not to slip on their steps (a1 = α r1, a2 = α r2)")
+    ratio = r2 / r1
+    own = inertia / (r1 * r1)  # I/r1²: the pulley's mass as seen by m1
+    moving = m1 + m2 * ratio * ratio + own
+    drive = g * _product_difference(m1, r1, m2, r2) / r1
+    axle = pulley.axle_friction / r1
+    loads = Loads(drive=drive, friction=axle, static=axle)
+    motion = evolve(moving, loads, v0, Evolver(Method("exact")))
+    a, direction = motion.initial_rate, motion.direction
+    if motion.held_from_start:
+        tension1, tension2 = m1 * g, m2 * g
+        notes.append(
+            "nothing moves: " + ("the torques balance, m1 g r1 = m2 g r2" if drive == 0 else "axle friction holds it")
+            + f" (net torque {quantity_text(abs(drive) * r1, 'N*m')} against at most {quantity_text(pulley.axle_friction, 'N*m')} of friction)"
+        )
+    else:  # g − a1 and g + a2 from a's formula, as sums of positive terms
+        tension1 = m1 * (g * (m2 * ratio * (ratio + 1) + own) + direction * axle) / moving
+        tension2 = m2 * (g * (m1 * (1 + ratio) + own) - ratio * direction * axle) / moving
+    massless = None if m1 + m2 == 0 else evolve(m1 + m2 * ratio * ratio, loads, v0, Evolver(Method("exact"))).initial_rate
+    results = Results(TABLE)
+    results.put("a", a)
+    results.put("a2", ratio * a)
+    results.put("T1", tension1)
+    results.put("T2", tension2)
+    results.put("alpha", a / r1)
+    results.put("a_massless", massless)
+    _motion_results(results, motion, distance, time, notes)
+    steps = DeferredSteps(_stepped_steps, m1, m2, inertia, g, r1, r2, pulley.axle_friction, a, dict(results), motion.held_from_start)
+    model = f"stepped pulley (r1 = {fmt(r1)} m, r2 = {fmt(r2)} m), " + ("massless" if not inertia else f"I = {fmt(inertia)} kg·m²") + ", strings do not slip"
+    if pulley.axle_friction:
+        model += "; axle friction holds it" if motion.held_from_start else "; axle friction overcome"
+    return Report("atwood", model, "closed form", results, steps, notes, trajectory=deferred(_trajectory, motion, distance, time, results))
+
+
+def _product_difference(a: float, b: float, c: float, d: float) -> float:
+    """a·b − c·d to within an ulp or so, also where the two products nearly cancel (a stepped
+    pulley near balance, m1 r1 ≈ m2 r2): each product's rounding error is found exactly (Dekker's
+    two-product, by Veltkamp's split) and added back after the difference."""
+    first, second = a * b, c * d
+    if not (math.isfinite(first) and math.isfinite(second)) or max(abs(a), abs(b), abs(c), abs(d)) > 1e150:
+        return first - second  # the split would overflow; nothing near cancellation is that large here
+    return (first - second) + (_product_error(a, b, first) - _product_error(c, d, second))
+
+
+def _product_error(a: float, b: float, product: float) -> float:
+    """The exact a·b − fl(a·b)."""
+    a_high, a_low = _split(a)
+    b_high, b_low = _split(b)
+    return ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low
+
+
+def _split(x: float) -> tuple[float, float]:
+    c = 134217729.0 * x  # 2^27 + 1
+    high = c - (c - x)
+    return high, x - high
+
+
+def _stepped_steps(m1, m2, inertia, g, r1, r2, axle, a, results, held) -> list[Step]:
+    axle_term = " − τ_a" if axle else ""
+    steps = [
+        Step("For m₁ (moving down), wound at r₁", "m₁g − T₁ = m₁a₁,  a₁ = α r₁", "", "", "weight minus tension; its string unwinds from the step of radius r₁"),
+        Step("For m₂ (moving up), wound at r₂ on the other side", "T₂ − m₂g = m₂a₂,  a₂ = α r₂", "", "", "tension minus weight; its string winds onto the step of radius r₂"),
+        Step("For the pulley", f"T₁r₁ − T₂r₂{axle_term} = I α", "", "", "each string's torque is its tension times its own radius"),
+        Step(
+            "Put the tensions from the masses into the pulley's equation",
+            f"α = (m₁g r₁ − m₂g r₂{axle_term}) / (I + m₁r₁² + m₂r₂²)",
+            f"({fmt(m1 * g * r1)} − {fmt(m2 * g * r2)}{' − ' + fmt(axle) if axle else ''} N·m) / ({fmt(inertia)} + {fmt(m1 * r1 * r1)} + {fmt(m2 * r2 * r2)} kg·m²)",
+            quantity_text(results["alpha"].value, "rad/s**2") + ("  (held: a = 0)" if held else ""),
+            "each mass adds m r² at its own radius to the pulley's I; the larger torque wins",
+        ),
+        Step("Each mass's acceleration", "a₁ = α r₁,  a₂ = α r₂", "", f"{quantity_text(a, 'm/s**2')}, {quantity_text(results['a2'].value, 'm/s**2')}",
+             "the two strings move at the speeds of their steps' rims"),
+        Step("Tensions", "T₁ = m₁(g − a₁),  T₂ = m₂(g + a₂)", "", f"{quantity_text(results['T1'].value, 'N')}, {quantity_text(results['T2'].value, 'N')}",
+             "from each mass's equation"),
+    ]
+    return steps
+
+
+def solve_rim(
+    m1: float, m2: float, pulley: Pulley, g: float, rim_mu: float, wrap: float, *, v0: float = 0.0, distance: float | None = None, time: float | None = None
+) -> Report:
+    """A string that may slide over the rim. The capstan limit T_high/T_low ≤ e^{μβ} decides:
+    within it the string grips (``solve``'s answer); past it the string slides, the tensions are
+    in the capstan ratio, and the pulley is turned by the friction alone (m1 moving down):
+
+        m1:      m1 g − T1 = m1 a,     m2:  T2 − m2 g = m2 a,     T1 = e^{μβ} T2
+        pulley:  (T1 − T2) R = I α     (the rim's own acceleration a_rim = α R < a)
+
+    giving a = g (m1 − E m2)/(m1 + E m2), T2 = 2 m1 m2 g/(m1 + E m2), E = e^{μβ} (and the
+    mirror image when m2 goes down). At μ = ln(T1/T2)/β the two answers meet.
+    """
+    grip = solve(m1, m2, pulley, g, v0=v0, distance=distance, time=time)  # its checks first
+    tension1, tension2 = grip.results["T1"].value, grip.results["T2"].value
+    high, low = max(tension1, tension2), min(tension1, tension2)
+    # the least μ that grips: ln(T_high/T_low)/β, with T_high − T_low = (I/R²)|a| from the pulley's
+    # equation rather than the difference of two near-equal tensions (near-equal masses)
+    need = math.log1p(pulley.effective_mass() * abs(grip.results["a"].value) / low) / wrap
+    results = Results(TABLE)
+    notes = [note for note in grip.notes if not note.startswith("the string taken not to slip")]
+    if not pulley.effective_mass():
+        notes.append("{rim_mu}: a massless pulley needs no torque, so the tensions are equal and the string always grips")
+    if rim_mu >= need:
+        for key, value in grip.results.items():
+            results[key] = value
+        results.put("a_rim", grip.results["a"].value)
+        results.put("grips", True)
+        results.put("rim_mu_min", need)
+        notes.append(
+            f"the string grips the rim: T_high/T_low = {fmt(high / low, 6)} ≤ e^(μβ) = {_exp_text(rim_mu * wrap)} "
+            f"(it would slide below μ = {fmt(need)})"
+        )
+        steps = DeferredSteps(lambda: [*grip.steps, _capstan_step(high, low, rim_mu, wrap, need, True)])
+        model = grip.model.replace("string does not slip", "string grips the rim")
+        return Report("atwood", model, "closed form", results, steps, notes, trajectory=grip.trajectory)
+    ratio = math.exp(rim_mu * wrap)
+    growth = math.expm1(rim_mu * wrap)  # E − 1, kept accurate for small μβ
+    if tension1 > tension2:  # m1 goes down; the tension grows along the rim towards m1
+        low_side = 2 * m1 * m2 * g / (m1 + ratio * m2)
+        a = g * (m1 - ratio * m2) / (m1 + ratio * m2)
+        tension1, tension2, sense = ratio * low_side, low_side, 1.0
+    else:
+        low_side = 2 * m1 * m2 * g / (ratio * m1 + m2)
+        a = g * (ratio * m1 - m2) / (ratio * m1 + m2)
+        tension1, tension2, sense = low_side, ratio * low_side, -1.0
+    rim_a = sense * growth * low_side / pulley.effective_mass()  # (T1 − T2) R / I × R
+    results.put("a", a)
+    results.put("T1", tension1)
+    results.put("T2", tension2)
+    results.put("alpha", None if pulley.radius is None else rim_a / pulley.radius)
+    results.put("a_massless", grip.results["a_massless"].value)
+    results.put("a_rim", rim_a)
+    results.put("grips", False)
+    results.put("rim_mu_min", need)
+    notes.append(
+        f"the string slides over the rim: gripping would need T_high/T_low = {fmt(high / low, 6)}, more than e^(μβ) = {fmt(ratio, 6)} "
+        f"(μ ≥ {fmt(need)}); the tensions take the capstan ratio, and the pulley is turned by the sliding friction alone: "
+        "a is the masses', a_rim the rim's. One coefficient, {rim_mu}, for gripping and sliding"
+    )
+    if pulley.radius is None:
+        notes.append("alpha: give --pulley-radius for the pulley's angular acceleration (a_rim does not need it)")
+    motion = evolve(1.0, Loads(drive=a), v0, Evolver(Method("exact")))  # no friction that depends on the masses' speed: uniform a
+    _motion_results(results, motion, distance, time, notes)
+    steps = DeferredSteps(lambda: [
+        Step("For m₁ and m₂", "m₁g − T₁ = m₁a,  T₂ − m₂g = m₂a", "", "", "each mass's weight and its string's tension"),
+        _capstan_step(high, low, rim_mu, wrap, need, False),
+        Step("The string slides: the tensions take the capstan ratio", "T₁ = e^(μβ) T₂" if sense > 0 else "T₂ = e^(μβ) T₁",
+             f"e^({fmt(rim_mu)} × {fmt(wrap)}) = {fmt(ratio)}", "", "sliding friction along the wrap makes the tension grow by e^(μβ) towards the side the string moves to"),
+        Step("Solve for the masses", "a = g (m₁ − E m₂)/(m₁ + E m₂)" if sense > 0 else "a = g (E m₁ − m₂)/(E m₁ + m₂)", f"E = {fmt(ratio)}",
+             quantity_text(a, "m/s**2"), "the tensions from the masses' equations, put into the capstan ratio"),
+        Step("The pulley, turned by the friction alone", "I α = (T₁ − T₂) R,  a_rim = α R = (T₁ − T₂)/(I/R²)",
+             f"({fmt(tension1)} − {fmt(tension2)} N) / {fmt(pulley.effective_mass())} kg", quantity_text(rim_a, "m/s**2"),
+             "the rim lags the string: the string slides over it"),
+    ])  # written when read
+    model = ("massive pulley (" + _pulley_words(pulley) + "), the string slides over the rim (capstan friction)")
+    return Report("atwood", model, "closed form", results, steps, notes, trajectory=deferred(_trajectory, motion, distance, time, results))
+
+
+def _exp_text(x: float) -> str:
+    """e^x as a number, or as e^x where it is beyond a float (a long wrap of a rough rim)."""
+    return fmt(math.exp(x), 6) if x < 700 else f"e^{fmt(x)}"
+
+
+def _capstan_step(high, low, mu, wrap, need, grips) -> Step:
+    return Step(
+        "Does the string grip? The capstan limit",
+        "T_high / T_low ≤ e^(μβ)",
+        f"{fmt(high, 6)} / {fmt(low, 6)} against e^({fmt(mu)} × {fmt(wrap)})",
+        f"{fmt(high / low, 6)} {'≤' if grips else '>'} {_exp_text(mu * wrap)}",
+        "friction over a wrap of β can change the tension by at most a factor e^(μβ); "
+        + (f"so it grips (least μ = {fmt(need)})" if grips else f"so it slides (gripping needs μ ≥ {fmt(need)})"),
+    )
+
+
 def atwood(
     *,
     m1: float | None = None,
@@ -371,15 +591,41 @@ def atwood(
     v0: float | None = None,
     distance: float | None = None,
     time: float | None = None,
+    radius1: float | None = None,
+    radius2: float | None = None,
+    rim_mu: float | None = None,
+    wrap: float | None = None,
 ) -> Report:
     """``taucli atwood``: m2 hangs unless --incline puts it on a slope; the pulley is massless
-    unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia."""
+    unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia; a
+    stepped pulley with --radius1/--radius2; a string that may slide with --rim-mu."""
     if m1 is None:
         raise InputError("m1", "is required", example="{m1} 4kg")
     assumed = Assumed()
     if m2 is None:
         assumed.notes.append("no --m2: a single mass on a string wound on the pulley")
     pulley = Pulley(pulley_mass or 0.0, pulley_radius, pulley_shape, pulley_inertia, axle_friction or 0.0)
+    if wrap is not None and rim_mu is None:
+        raise InputError("wrap", "needs {rim_mu} (the wrap matters only where the string may slide)", example="{rim_mu} 0.3 {wrap} 180deg")
+    if radius1 is not None or radius2 is not None:
+        r1 = radius1 if radius1 is not None else pulley_radius
+        r2 = radius2 if radius2 is not None else pulley_radius
+        if r1 is None or r2 is None:
+            missing = "radius1" if r1 is None else "radius2"
+            raise InputError(missing, "is required with {" + ("radius2" if missing == "radius1" else "radius1") + "} (or {pulley_radius} for it)", example=f"{{{missing}}} 0.1m")
+        for name, value in (("incline", incline), ("rim_mu", rim_mu), ("mu_k", mu_k), ("mu_s", mu_s)):
+            if value is not None:
+                raise InputError(name, "does not apply with a stepped pulley ({radius1}, {radius2}): both masses hang, their strings fixed to their steps")
+        gravity = assumed.gravity(g)
+        return assumed.applied(solve_stepped(m1, m2 or 0.0, pulley, gravity, r1, r2, v0=v0 or 0.0, distance=distance, time=time))
+    if rim_mu is not None:
+        for name, value in (("incline", incline), ("axle_friction", axle_friction), ("mu_k", mu_k), ("mu_s", mu_s)):
+            if value is not None:
+                raise InputError(name, "does not apply with {rim_mu} here: a string that may slide is solved for two hanging masses on a pulley free on its axle")
+        if not m1 or not m2:
+            raise InputError("m1" if not m1 else "m2", "must be more than 0 with {rim_mu}: a string with nothing on one end slides off (a string wound on the pulley is fixed to it)")
+        gravity = assumed.gravity(g)
+        return assumed.applied(solve_rim(m1, m2, pulley, gravity, rim_mu, math.pi if wrap is None else wrap, v0=v0 or 0.0, distance=distance, time=time))
     # friction.py's rule: neither coefficient given, a smooth surface (μk = 0); only μs, μk unknown
     slope = Slope(HANGING if incline is None else incline, 0.0 if mu_k is None and mu_s is None else mu_k, mu_s)
     gravity = assumed.gravity(g)

@@ -1,4 +1,6 @@
-"""A round body on an incline: rolling or slipping; and a skidding ball on the flat until it rolls.
+"""A round body on an incline: rolling or slipping; a skidding ball on the flat until it rolls;
+a body pulled on the flat or a slope, a spool pulled by its string, a yo-yo (solve_pull,
+solve_yoyo, and solve_rolling_flat for a body rolling at v0).
 
 The article's three equations, with I = k² m R² (k2 = I/(mR²), the shape's only number):
 
@@ -26,6 +28,7 @@ from taucli.table import Results
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 RIGHT_ANGLE = math.pi / 2
+EPSILON = 2.0**-52
 
 
 @dataclass(frozen=True)
@@ -128,9 +131,9 @@ def solve_incline(
             notes.append("alpha: no torque acts on a body with no rotational inertia (k² = 0), so its spin is not fixed")
 
     results = Results(TABLE)
-    results.put("a", a)
+    results.put("a", a, ", down the slope")
     results.put("alpha", angular)
-    results.put("friction", None if mass is None or friction_per_mass is None else mass * friction_per_mass)
+    results.put("friction", None if mass is None or friction_per_mass is None else mass * friction_per_mass, ", up the slope")
     results.put("mu_min", mu_min)
     results.put("rolls", rolls)
     if a is not None and radius is None:
@@ -141,24 +144,24 @@ def solve_incline(
     run = length if length is not None else (None if height is None else height / sin_a)
     if run is not None:
         if a is None:
-            results.put("v", None)
-            results.put("t", None)
+            results.put("v", None, " at the bottom")
+            results.put("t", None, " to the bottom")
         elif a <= 0:
             if angle == 0:
                 notes.append("on the flat nothing pulls it along: from rest it stays where it is")
             else:
                 notes.append("kinetic friction exceeds gravity's pull along the slope: it does not slide down")
-            results.put("v", None)
-            results.put("t", None)
+            results.put("v", None, " at the bottom")
+            results.put("t", None, " to the bottom")
         else:
             speed = math.sqrt(2 * a * run)
             duration = 2 * run / speed
-            results.put("v", speed, ", from rest")
-            results.put("t", duration)
+            results.put("v", speed, " at the bottom, from rest")
+            results.put("t", duration, " to the bottom")
             spin_speed = speed if rolls else (friction_per_mass / k2 * duration if friction_per_mass else 0.0)  # R ω at the bottom
             if mass is not None:
-                results.put("KE_trans", 0.5 * mass * speed**2)
-                results.put("KE_rot", 0.5 * k2 * mass * spin_speed**2)
+                results.put("KE_trans", 0.5 * mass * speed**2, " at the bottom")
+                results.put("KE_rot", 0.5 * k2 * mass * spin_speed**2, " at the bottom")
     if v0 > 0:
         deceleration = a
         if deceleration is None:
@@ -341,6 +344,349 @@ def _skid_trajectory(v0: float, v_roll: float, t_roll: float) -> Trajectory:
     return Trajectory(curves, 1.5 * t_roll, state, marks=((t_roll, "rolls without slipping"),))
 
 
+@dataclass(frozen=True)
+class Pull:
+    """A steady pull F at ``angle`` above the surface (on a slope: from it, pulling up it).
+
+    It acts at a point ``height`` above the centre (lever arm h cos φ about the centre), or, for
+    a spool, through a string wound at ``axle`` that leaves the axle tangentially from below
+    (``side`` −1) or from the top (+1): its lever arm is r at any angle.
+    """
+
+    force: float
+    angle: float = 0.0
+    height: float = 0.0
+    axle: float | None = None
+    side: int = -1
+
+    def lever(self) -> float:
+        """The lever arm about the centre, signed: positive where the pull turns the body forward
+        (in the sense that rolls it along the pull)."""
+        return self.side * self.axle if self.axle is not None else self.height * self.cos_sin()[0]
+
+    def cos_sin(self) -> tuple[float, float]:
+        """cos φ and sin φ, exact at ±90° (straight up or down), where math.cos(π/2) is 6e-17."""
+        if abs(self.angle) == RIGHT_ANGLE:
+            return 0.0, math.copysign(1.0, self.angle)
+        return math.cos(self.angle), math.sin(self.angle)
+
+
+def solve_pull(
+    roller: Roller,
+    slope: float,
+    g: float,
+    pull: Pull,
+    *,
+    mu_s: float | None = None,
+    mu_k: float | None = None,
+    length: float | None = None,
+) -> Report:
+    """A body pulled on the flat or a slope, from rest (or rolling), x along a's positive sense
+    (along the pull on the flat, down the slope on a slope), σ = +1 (flat) or −1 (slope):
+
+        m a = σ F cos φ + m g sin θ − f          (f: friction, positive against +x)
+        I α = f R + σ F ℓ                         (α positive in the rolling sense of +x)
+        N   = m g cos θ − F sin φ
+
+    Rolling (a = R α): a = (σF cos φ + m g sin θ + σFℓ/R) / (m(1 + k²)) and
+    f = (k²(σF cos φ + m g sin θ) − σFℓ/R)/(1 + k²), which needs |f| ≤ μs N. Otherwise the
+    contact slides the way the needed friction opposes: f = sgn(f) μk N.
+    """
+    k2, mass, radius = roller.k2, roller.mass, roller.radius
+    if mass is None:
+        raise InputError("mass", "is required with {pull} (a force gives an acceleration only with a mass)", example="{mass} 2kg")
+    if not 0 <= slope <= RIGHT_ANGLE:
+        raise InputError("angle", "expected an angle from 0 to 90 deg", example="{angle} 30deg", got=f"{fmt(math.degrees(slope))} deg")
+    if not -RIGHT_ANGLE <= pull.angle <= RIGHT_ANGLE:
+        raise InputError("pull_angle", "expected an angle from −90 to 90 deg (above the surface positive)", example="{pull_angle} 30deg",
+                         got=f"{fmt(math.degrees(pull.angle))} deg")
+    _check_friction(mu_s, mu_k)
+    lever = pull.lever()
+    if lever != 0 and radius is None:
+        raise InputError("radius", "is required with {pull_height} or {axle_radius} (the pull's torque acts through ℓ/R)", example="{radius} 0.1m")
+    if radius is not None and (abs(pull.height) > radius or (pull.axle is not None and pull.axle > radius)):
+        name = "axle_radius" if pull.axle is not None else "pull_height"
+        raise InputError(name, "must lie within the body's radius", example=f"{{{name}}} 0.05m", got=f"{fmt(pull.axle or abs(pull.height))} m > R = {fmt(radius)} m")
+    notes: list[str] = []
+    flat = slope == 0
+    sigma = 1.0 if flat else -1.0
+    sin_a, cos_a = (1.0, 0.0) if slope == RIGHT_ANGLE else (math.sin(slope), math.cos(slope))
+    cos_p, sin_p = pull.cos_sin()
+    along = sigma * pull.force * cos_p  # the pull's component along +x
+    normal = mass * g * cos_a - pull.force * sin_p
+    scale = mass * g * cos_a + abs(pull.force * sin_p)
+    if normal < -16 * EPSILON * scale:
+        raise InputError("pull", "lifts the body off the surface: its part away from the surface, F sin φ, exceeds m g cos θ",
+                         got=f"{quantity_text(pull.force * sin_p, 'N')} > {quantity_text(mass * g * cos_a, 'N')}")
+    normal = max(normal, 0.0)
+    turning = 0.0 if lever == 0 else sigma * pull.force * lever / radius  # σFℓ/R: the pull's torque over R
+    drive = along + mass * g * sin_a
+    needed = (k2 * drive - turning) / (1 + k2)  # the friction rolling needs
+    rolling_a = (drive + turning) / (mass * (1 + k2))
+    mu_min = (abs(needed) / normal if normal > 0 else (0.0 if needed == 0 else None))
+    static = static_coefficient(mu_s, mu_k, notes)
+    if normal == 0 and needed != 0:
+        rolls = False
+        notes.append("the pull just balances the body's weight across the surface: no normal force, no friction, so it cannot roll")
+    elif static is None:
+        rolls = True
+        notes.append(f"no --mu-s: assumed to roll without slipping, which needs μs ≥ μ_min = {fmt(mu_min)}")
+    else:
+        rolls = abs(needed) <= static * normal
+    a: float | None
+    friction: float | None
+    angular: float | None = None
+    if rolls:
+        a, friction = rolling_a, needed
+        angular = None if radius is None else a / radius
+    elif normal == 0 or mu_k is not None:
+        friction = math.copysign((mu_k or 0.0) * normal, needed)
+        a = (drive - friction) / mass
+        torque_over_radius = friction + turning  # I α / R
+        if radius is not None:
+            if k2 > 0:
+                angular = torque_over_radius / (k2 * mass * radius)
+            elif torque_over_radius == 0:
+                angular = 0.0
+            else:
+                notes.append("alpha: a torque on a body with no rotational inertia (k² = 0) has no finite answer")
+    else:
+        a = friction = None
+    if radius is None and a is not None:
+        notes.append("alpha: give --radius (a does not need it)")
+
+    direction = ", along the pull" if flat else ", down the slope"
+    results = Results(TABLE)
+    results.put("a", a, direction)
+    results.put("alpha", angular, ", in the rolling sense of a")
+    results.put("friction", friction, ", backward (negative: forward)" if flat else ", up the slope (negative: down it)")
+    results.put("mu_min", mu_min)
+    results.put("rolls", rolls)
+    if pull.axle is not None:
+        results.put("critical_angle", _critical_angle(pull, sigma, mass * g * sin_a, radius, notes))
+    if a is None:
+        needs_kinetic("a, alpha, friction", notes)
+    elif a == 0:
+        notes.append("a = 0: the pull, gravity and friction balance, and it stays put"
+                     + (f"; friction points {_friction_way(friction, flat)}" if friction else ""))
+    else:
+        notes.append(_which_way(a, flat, rolls, friction))
+    if length is not None:
+        _after_distance(results, length, a, angular, k2, mass, radius, rolls, notes)
+    steps = DeferredSteps(_pull_steps, roller, slope, g, pull, sigma, normal, needed, rolling_a, mu_min, static, rolls, a, friction, dict(results))
+    where = "on the flat" if flat else f"on a {fmt(math.degrees(slope))}° slope"
+    what = f"as a spool, pulled by its string wound at r = {fmt(pull.axle)} m," if pull.axle is not None else "pulled"
+    model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) {what} {where}, " + (
+        "rolling without slipping" if rolls else "slipping (kinetic friction)" if a is not None else "slipping (μk not given)"
+    )
+    trajectory = None if a is None else deferred(_pull_trajectory, a, length)
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
+
+
+
+def _critical_angle(pull: Pull, sigma: float, weight_along: float, radius: float, notes: list[str]) -> float | None:
+    """The pull angle at which a rolling spool stays put: σF cos φ + m g sin θ + σF ℓ/R = 0 with
+    ℓ = ±r, so cos φc = −ℓ/R − σ m g sin θ/F: from below, r/R on the flat and r/R + m g sin θ/F
+    on a slope (σ = −1)."""
+    cosine = -(pull.side * pull.axle / radius) - sigma * weight_along / pull.force
+    if 0 <= cosine <= 1:
+        return math.acos(cosine)
+    sense = "forward, along the pull" if sigma > 0 else "up the slope"
+    if cosine < 0:
+        notes.append(f"critical_angle: none: at every pull angle it rolls {sense} (the string's torque and the pull agree)")
+    else:
+        notes.append("critical_angle: none: at no pull angle can the string hold it" + ("" if sigma > 0 else " against the slope"))
+    return None
+
+
+def _which_way(a: float, flat: bool, rolls: bool, friction: float | None) -> str:
+    if flat:
+        way = "forward, the way it is pulled" if a > 0 else "backward, against the pull"
+    else:
+        way = "down the slope" if a > 0 else "up the slope"
+    verb = "rolls" if rolls else "slides"
+    if friction is None or friction == 0:
+        return f"it {verb} {way}" + ("" if friction is None else "; no friction acts")
+    helps = (friction > 0) != (a > 0)  # friction along the acceleration
+    return f"it {verb} {way}; friction points {_friction_way(friction, flat)}" + (", the way it accelerates: it helps" if helps else "")
+
+
+def _friction_way(friction: float, flat: bool) -> str:
+    if flat:
+        return "backward (against the pull)" if friction > 0 else "forward (along the pull)"
+    return "up the slope" if friction > 0 else "down the slope"
+
+
+def _after_distance(results: Results, distance: float, a, angular, k2, mass, radius, rolls, notes) -> None:
+    """From rest, the state once the centre has moved ``distance`` (whichever way a points)."""
+    part = f" after {fmt(distance)} m"
+    if a is None or a == 0:
+        results.put("v", None, part)
+        results.put("t", None, f" to move {fmt(distance)} m")
+        if a == 0:
+            notes.append(f"v, t: null: it stays put, so it never moves {fmt(distance)} m")
+        return
+    duration = math.sqrt(2 * distance / abs(a))
+    speed = a * duration
+    results.put("v", speed, part + ", from rest")
+    results.put("t", duration, f" to move {fmt(distance)} m")
+    spin = None if angular is None else angular * duration
+    if radius is not None:
+        results.put("omega", spin, part)
+    trans = 0.5 * mass * speed * speed
+    rot = None if spin is None or radius is None else 0.5 * k2 * mass * (radius * spin) ** 2
+    results.put("KE_trans", trans, part)
+    results.put("KE_rot", rot, part)
+    results.put("KE", None if rot is None else trans + rot, part)
+
+
+def _pull_trajectory(a: float, length: float | None) -> Trajectory:
+    curves = (("x", "m", "distance of the centre along a"), ("v", "m/s", "velocity of the centre"))
+    if length is None or a == 0:
+        return Trajectory(curves, 1.0, lambda t: (a * t * t / 2, a * t), note="plotted for 1 s; --length to change")
+    end = math.sqrt(2 * length / abs(a))
+    return Trajectory(curves, end, lambda t: (a * t * t / 2, a * t), marks=((end, f"has moved {fmt(length)} m"),))
+
+
+def _pull_steps(roller, slope, g, pull, sigma, normal, needed, rolling_a, mu_min, static, rolls, a, friction, results) -> list[Step]:
+    k2, mass = roller.k2, roller.mass
+    flat = slope == 0
+    along = "F cos φ" if flat else "m g sin θ − F cos φ"
+    if pull.axle is None:
+        lever = "ℓ = h cos φ"
+    else:
+        lever = "ℓ = −r (the string leaves the axle from below)" if pull.side < 0 else "ℓ = +r (the string leaves the axle from the top)"
+    torque = "+ F ℓ" if flat else "− F ℓ"
+    steps = [
+        Step("Translation of the centre" + (" (along the pull)" if flat else " (down the slope)"), f"m a = {along} − f", "", "",
+             "the pull's component along the surface" + ("" if flat else " (up the slope) and gravity's (down it)")
+             + "; friction f at the contact, positive against a"),
+        Step("Rotation about the centre (in the rolling sense of a)", f"I α = f R {torque},  {lever}", "", "",
+             f"friction acts at the contact, R from the centre; the pull's line of action passes ℓ from it: here ℓ = {quantity_text(pull.lever(), 'm')}, "
+             f"and I = k² m R² with k² = {fmt(k2)}"),
+        Step("Normal force", "N = m g cos θ − F sin φ", f"{fmt(mass)} × {fmt(g)} × cos {fmt(math.degrees(slope))}° − {fmt(pull.force)} × sin {fmt(math.degrees(pull.angle))}°",
+             quantity_text(normal, "N"), "a pull above the surface lifts part of the weight off it"),
+        Step("Rolling (a = R α): solve the three equations", f"a = ({along} {torque}/R) / (m (1 + k²)),  f = k² m a {'−' if flat else '+'} Fℓ/R", "",
+             f"{quantity_text(rolling_a, 'm/s**2')};  f = {quantity_text(needed, 'N')}",
+             "f from the rotation equation with α = a/R, put into the translation equation; f < 0 means friction must point along a"),
+    ]
+    if mu_min is not None:
+        steps.append(Step("The least μs that rolls it", "μ_min = |f| / N", f"{fmt(abs(needed))} / {fmt(normal)}", fmt(mu_min),
+                          "static friction can give at most μs N" + ("" if static is None else f"; here μs = {fmt(static)} {'≥' if rolls else '<'} μ_min, so it {'rolls' if rolls else 'slips'}")))
+    if not rolls:
+        steps.append(Step("Slipping: kinetic friction, the way the needed friction points", "f = ±μₖ N,  a = (… − f)/m,  α = (f R ± F ℓ)/I", "",
+                          "needs μₖ (--mu-k)" if a is None else f"{quantity_text(a, 'm/s**2')};  f = {quantity_text(friction, 'N')}",
+                          "the contact slides the way friction would have had to stop it, so kinetic friction opposes that"))
+    if "critical_angle" in results and results["critical_angle"].value is not None:
+        steps.append(Step("The spool's critical angle (a = 0)", "cos φc = r/R" if flat else "cos φc = r/R + m g sin θ / F",
+                          f"{fmt(pull.axle)} / {fmt(roller.radius)}" if flat else "", f"{fmt(math.degrees(results['critical_angle'].value))}°",
+                          "the pull's line of action passes through the contact point: it has no torque about it, so nothing turns the spool"
+                          if flat else "the pull's torque about the contact point balances gravity's"))
+    if "v" in results and results["v"].value is not None:
+        steps.append(Step("After the distance (uniform acceleration from rest)", "t = √(2d/|a|),  v = a t,  ω = α t", "",
+                          f"{quantity_text(results['v'].value, 'm/s')}, {quantity_text(results['t'].value, 's')}", "a and α are constant"))
+    return steps
+
+
+def solve_yoyo(
+    roller: Roller, g: float, *, axle: float | None = None, height: float | None = None, v0: float = 0.0, about_axle: float | None = None
+) -> Report:
+    """A yo-yo: the string, fixed above, unwinds from the axle of radius r (default R):
+
+        m a = m g − T,   I α = T r,   a = r α   ⇒   a = g / (1 + I/(m r²)),  T = m g · q/(1 + q)
+
+    with q = I/(m r²) = k² (R/r)²: with r = R neither mass nor radius enters a. ``about_axle``: the
+    body's k2 is already I/(m r²) for a string wound at that r (I given, the outer radius unknown).
+    """
+    k2, mass, radius = roller.k2, roller.mass, roller.radius
+    notes: list[str] = []
+    if about_axle is not None:
+        ratio, r = k2, about_axle
+    elif axle is not None and radius is None:
+        raise InputError("radius", "is required with {axle_radius} (I/(m r²) = k² R²/r²)", example="{radius} 0.03m")
+    elif axle is not None and axle > radius:
+        raise InputError("axle_radius", "must lie within the body's radius", example="{axle_radius} 0.005m", got=f"{fmt(axle)} m > R = {fmt(radius)} m")
+    if about_axle is None:
+        if axle is None:
+            notes.append("no --axle-radius: the string is wound at the body's own radius (r = R)")
+        ratio = k2 if axle is None else k2 * (radius / axle) ** 2  # q = I/(m r²)
+        r = axle if axle is not None else radius
+    a = g / (1 + ratio)
+    tension = None if mass is None else mass * g * ratio / (1 + ratio)
+    results = Results(TABLE)
+    results.put("a", a, ", downward")
+    results.put("alpha", None if r is None else a / r)
+    results.put("T", tension)
+    if mass is None:
+        notes.append("T: give --mass (a does not need it)")
+    if r is None:
+        notes.append("alpha: give --radius (a does not need it)")
+    if height is not None:
+        part = f" after a drop of {fmt(height)} m"
+        speed = math.sqrt(v0 * v0 + 2 * a * height)
+        duration = 2 * height / (v0 + speed) if v0 >= 0 else (speed - v0) / a  # sums of positive terms
+        results.put("v", speed, part + ("" if v0 else ", from rest"))
+        results.put("omega", None if r is None else speed / r, part)
+        results.put("t", duration, f" to drop {fmt(height)} m")
+        if mass is not None:
+            results.put("KE_trans", 0.5 * mass * speed * speed, part)
+            results.put("KE_rot", 0.5 * ratio * mass * speed * speed, part)
+            results.put("KE", 0.5 * (1 + ratio) * mass * speed * speed, part)
+    steps = DeferredSteps(_yoyo_steps, ratio, a, tension, results if height is not None else None)
+    model = f"yo-yo: {roller.description} (k² = I/mR² = {fmt(k2)}) falling as its string unwinds" + ("" if axle is None else f" from an axle of radius {fmt(axle)} m")
+    if about_axle is not None:
+        model = f"yo-yo: body (I/(m r²) = {fmt(ratio)}) falling as its string unwinds from an axle of radius {fmt(about_axle)} m"
+    trajectory = deferred(_yoyo_trajectory, a, v0, results)
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
+
+
+def _yoyo_steps(ratio, a, tension, results) -> list[Step]:
+    steps = [
+        Step("For the yo-yo's centre (down positive)", "m a = m g − T", "", "", "gravity down, the string's tension up"),
+        Step("Rotation about the centre", "I α = T r", "", "", "the string leaves the axle at r from the centre"),
+        Step("The string unwinds without slipping", "a = r α", "", "", "the point where the string leaves is momentarily at rest"),
+        Step("Solve", "a = g / (1 + I/(m r²)),  T = m g (I/(m r²)) / (1 + I/(m r²))", f"I/(m r²) = {fmt(ratio)}",
+             quantity_text(a, "m/s**2") + ("" if tension is None else f", T = {quantity_text(tension, 'N')}"),
+             "T r = I a / r from the rotation; put into the translation equation"),
+    ]
+    if results is not None:
+        steps.append(Step("After the drop", "v = √(v₀² + 2 a h),  ω = v / r", "", quantity_text(results["v"].value, "m/s"),
+                          "constant a; energy: m g h = ½ m v² (1 + I/(m r²)) − ½ m v₀² (1 + I/(m r²))"))
+    return steps
+
+
+def _yoyo_trajectory(a: float, v0: float, results) -> Trajectory:
+    curves = (("x", "m", "drop, downward"), ("v", "m/s", "velocity, downward"))
+    end = results["t"].value if "t" in results else None
+    if end is None:
+        return Trajectory(curves, 1.0, lambda t: (v0 * t + a * t * t / 2, v0 + a * t), note="plotted for 1 s; --height to change")
+    return Trajectory(curves, end, lambda t: (v0 * t + a * t * t / 2, v0 + a * t), marks=((end, "end of the drop"),))
+
+
+def solve_rolling_flat(roller: Roller, v0: float) -> Report:
+    """A body rolling without slipping on the flat at v0: KE = ½ m v² (1 + k²), nothing changes."""
+    k2, mass, radius = roller.k2, roller.mass, roller.radius
+    if mass is None:
+        raise InputError("mass", "is required: on the flat, {v0} alone is a body rolling at v0, and its kinetic energy needs the mass "
+                         "(a ball skidding from no spin: give {mu_k})", example="{mass} 2kg")
+    results = Results(TABLE)
+    results.put("omega", None if radius is None else v0 / radius, ", rolling")
+    trans = 0.5 * mass * v0 * v0
+    results.put("KE_trans", trans, ", rolling")
+    results.put("KE_rot", k2 * trans, ", rolling")
+    results.put("KE", (1 + k2) * trans, ", rolling")
+    notes = ["on the flat, {v0} alone: rolling without slipping (ω = v/R); with {mu_k} it skids from no spin ({omega0} for a spin)"]
+    if radius is None:
+        notes.append("omega: give --radius (the energies do not need it)")
+    steps = [
+        Step("Rolling without slipping", "ω = v / R", "", "" if radius is None else quantity_text(v0 / radius, "rad/s"), "the contact point is at rest"),
+        Step("Kinetic energy", "KE = ½ m v² + ½ I ω² = ½ m v² (1 + k²)", f"½ × {fmt(mass)} × {fmt(v0)}² × (1 + {fmt(k2)})", quantity_text((1 + k2) * trans, "J"),
+             f"I ω² = k² m R² (v/R)² = k² m v²: a share k²/(1 + k²) = {fmt(100 * k2 / (1 + k2), 3)}% is rotation"),
+    ]
+    model = f"{roller.description} (k² = {fmt(k2)}) rolling without slipping on the flat"
+    return Report("rolling", model, "closed form", results, steps, notes)
+
+
 def rolling(
     *,
     shape: str | None = None,
@@ -355,13 +701,54 @@ def rolling(
     height: float | None = None,
     v0: float | None = None,
     omega0: float | None = None,
+    pull: float | None = None,
+    pull_height: float | None = None,
+    pull_angle: float | None = None,
+    axle_radius: float | None = None,
+    yoyo: bool | None = None,
     g: float | None = None,
 ) -> Report:
     """``taucli rolling``: down (or up) an incline, or a ball skidding on the flat (--v0 or
-    --omega0 with no slope, length or height) until it rolls."""
+    --omega0 with no slope, length or height) until it rolls; a body pulled (--pull), a spool
+    (--axle-radius), a yo-yo (--yoyo)."""
+    if yoyo and inertia is not None and radius is None and axle_radius is not None and mass is not None and shape is None and k2 is None:
+        # a yo-yo needs only I/(m r²): its outer radius plays no part (Halliday's 950 g·cm², 120 g, r = 3.2 mm)
+        assumed = Assumed()
+        body = Roller(inertia / (mass * axle_radius**2), "body", mass, None)
+        for name, value in (("angle", angle), ("pull", pull), ("pull_height", pull_height), ("pull_angle", pull_angle), ("mu_s", mu_s),
+                            ("mu_k", mu_k), ("length", length), ("omega0", omega0)):
+            if value is not None:
+                raise InputError(name, "does not apply with {yoyo} (a yo-yo falls on its string: {height} for the drop, {v0} to throw it down)")
+        report = solve_yoyo(body, assumed.gravity(g), height=height, v0=v0 or 0.0, about_axle=axle_radius)
+        return assumed.applied(report)
     body = roller(shape, k2, inertia, mass, radius)
     assumed = Assumed()
+    if not yoyo and pull is None and angle in (None, 0.0) and v0 is not None and omega0 is None and mu_k is None and length is None and height is None:
+        return solve_rolling_flat(body, v0)  # rolling on the flat: gravity plays no part
     gravity = assumed.gravity(g)
+    if yoyo:
+        for name, value in (("angle", angle), ("pull", pull), ("pull_height", pull_height), ("pull_angle", pull_angle), ("mu_s", mu_s),
+                            ("mu_k", mu_k), ("length", length), ("omega0", omega0)):
+            if value is not None:
+                raise InputError(name, "does not apply with {yoyo} (a yo-yo falls on its string: {height} for the drop, {v0} to throw it down)")
+        return assumed.applied(solve_yoyo(body, gravity, axle=axle_radius, height=height, v0=v0 or 0.0))
+    if pull is None:
+        for name, value in (("pull_height", pull_height), ("pull_angle", pull_angle), ("axle_radius", axle_radius)):
+            if value is not None:
+                raise InputError(name, "needs {pull} (the force on the body" + (", or {yoyo}" if name == "axle_radius" else "") + ")", example="{pull} 10N")
+    else:
+        for name, value in (("v0", v0), ("omega0", omega0), ("height", height)):
+            if value is not None:
+                raise InputError(name, "does not apply with {pull}: the pulled body starts from rest ({length} for the distance it moves)")
+        if axle_radius is not None and pull_height is not None and pull_height == 0:
+            raise InputError("pull_height", "cannot be 0 with {axle_radius}: the string leaves the axle from below (negative) or the top (positive)")
+        side = 1 if pull_height is not None and pull_height > 0 else -1
+        if axle_radius is not None and pull_height is not None and abs(pull_height) != axle_radius:
+            assumed.notes.append("with {axle_radius}, {pull_height} says only which side the string leaves the axle from "
+                                 f"({'the top' if side > 0 else 'below'}): a string tangent to the axle has the lever arm r at any angle")
+        pulled = Pull(pull, pull_angle or 0.0, pull_height or 0.0, axle_radius, side)
+        report = solve_pull(body, angle or 0.0, gravity, pulled, mu_s=mu_s, mu_k=mu_k, length=length)
+        return assumed.applied(report)
     on_the_flat = (angle is None or angle == 0) and (v0 is not None or omega0 is not None) and length is None and height is None
     if on_the_flat:
         report = solve_flat(body, gravity, mu_k=mu_k, v0=v0 or 0.0, omega0=omega0 or 0.0, mu_s=mu_s)
