@@ -89,13 +89,17 @@ _DECIMAL_COMMA = re.compile(r"\s*[-+]?\d+,\d+(?:[eE][-+]?\d+)?\s*[^\d\s.,][^,]*|
 _THOUSANDS = re.compile(r"\s*[-+]?\d{1,3}(?:,\d{3})+(?:\.\d*)?\s*[^,]*")
 
 
-def _list(name: str, text: str) -> Swept:
+def _list(name: str, text: str, kind: str) -> Swept:
     option = "{" + name + "}"
     if _DECIMAL_COMMA.fullmatch(text) or _THOUSANDS.fullmatch(text):
+        from taucli.units import KINDS
+
+        unit = KINDS[kind].example.strip("'").partition(" ")[2]  # "4 kg" -> "kg": the option's own kind
+        quoted = (lambda words: f"'{words}'") if any(ch in unit for ch in "*^()") else (lambda words: words)
         raise InputError(
             option,
             "is ambiguous: a comma could be a decimal comma, a thousands separator or a list",
-            example=f"{option} 4.5kg for a number, {option} 4kg,5kg for a list",
+            example=f"{option} {quoted('1.5' + unit)} for a number, {option} {quoted(f'1{unit},5{unit}')} for a list",
             got=repr(text),
         )
     texts, numbers, unit = _shared(option, text.split(","), text)
@@ -109,6 +113,11 @@ def marked(command: Command, given: Mapping[str, object]) -> tuple[list[str], li
         option = command.option(name)
         if option is None or not option.sweepable or not isinstance(value, str):
             continue
+        if ".." in value and "," in value:
+            raise InputError(
+                "{" + name + "}", "is a range and a list at once: give a range FROM..TO or a list A,B, and at most one of each per run",
+                example="{" + name + "} 1..2kg", got=repr(value),
+            )
         if ".." in value:
             ranges.append(name)
         elif "," in value:
@@ -129,7 +138,7 @@ def find(command: Command, given: Mapping[str, object], points: int | None) -> t
     if points is not None and not ranges:
         raise InputError("points", "applies to a range (FROM..TO)", example="--inertia 0.5..4kg*m^2 {points} 20")
     swept_range = _range(ranges[0], str(given[ranges[0]]), count) if ranges else None
-    swept_list = _list(lists[0], str(given[lists[0]])) if lists else None
+    swept_list = _list(lists[0], str(given[lists[0]]), command.option(lists[0]).kind) if lists else None
     total = (len(swept_range.texts) if swept_range else 1) * (len(swept_list.texts) if swept_list else 1)
     if total > MAX_POINTS:  # a range times a list of as many values would otherwise run for hours
         option = (swept_list or swept_range).option

@@ -280,3 +280,18 @@ def test_a_run_without_plot_does_no_work_for_one():
     assert result.code == 0, result.err
     assert float(result.out) == pytest.approx(10.0, rel=1e-12)  # ω∞ = τ/b
     assert_usage_error(run_taucli(*args, "--plot", "--json"), "--dt", "more than 125,000 rk4 steps in all")
+
+
+def test_a_value_that_is_a_range_and_a_list_at_once_is_refused():
+    """#16: --m1 1..2,3 dropped ..2, ran a sweep of 1.0 and 3 and exited 1."""
+    from conftest import assert_usage_error
+
+    assert_usage_error(run_taucli("atwood", "--m1", "1..2,3", "--m2", "1kg"), "--m1 is a range and a list at once")
+
+
+def test_an_ambiguous_comma_is_answered_in_the_options_own_kind():
+    """#15 item 7: --v0 1,5 suggested '4.5kg' for a speed."""
+    from conftest import assert_usage_error
+
+    assert_usage_error(run_taucli("rolling", "sphere", "--angle", "30deg", "--v0", "1,5"), "--v0 1.5m/s for a number", "--v0 1m/s,5m/s for a list")
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--torque", "1,5"), "--torque '1.5N*m' for a number")
