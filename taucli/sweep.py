@@ -94,12 +94,17 @@ def _list(name: str, text: str, kind: str) -> Swept:
     if _DECIMAL_COMMA.fullmatch(text) or _THOUSANDS.fullmatch(text):
         from taucli.units import KINDS
 
-        unit = KINDS[kind].example.strip("'").partition(" ")[2]  # "4 kg" -> "kg": the option's own kind
+        first, second, *_ = text.split(",")
+        number, unit = _NUMBER_THEN_UNIT.fullmatch(f"{first.strip()}.{second.strip()}").group("number", "unit")
+        unit = unit or KINDS[kind].example.strip("'").partition(" ")[2]  # the unit typed, else the option's kind's
+        if _THOUSANDS.fullmatch(text):  # 1,000 kg: a thousands separator is the likelier reading
+            number = text.replace(",", "").strip().removesuffix(unit).strip()
+        whole, part = first.strip(), _NUMBER_THEN_UNIT.fullmatch(second.strip()).group("number")
         quoted = (lambda words: f"'{words}'") if any(ch in unit for ch in "*^()") else (lambda words: words)
         raise InputError(
             option,
             "is ambiguous: a comma could be a decimal comma, a thousands separator or a list",
-            example=f"{option} {quoted('1.5' + unit)} for a number, {option} {quoted(f'1{unit},5{unit}')} for a list",
+            example=f"{option} {quoted(number + unit)} for a number, {option} {quoted(f'{whole}{unit},{part}{unit}')} for a list",
             got=repr(text),
         )
     texts, numbers, unit = _shared(option, text.split(","), text)
