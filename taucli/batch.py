@@ -9,7 +9,8 @@ an error object in its place, naming the key, and the run goes on:
 
     {"taucli": "0.1.0", "line": 3, "error": {"option": "m1", "message": "m1: expected a mass ..."}}
 
-Lines are read, solved and written one at a time; memory stays flat however long the input, and
+Blank lines are skipped (every other line gives one line out). Lines are read, solved and
+written one at a time; memory stays flat however long the input, and
 a run that is killed leaves only whole lines (written in blocks of whole lines, each no larger
 than a pipe takes at once). Output is flushed whenever no further input is waiting, so a person
 typing lines sees each answer at once, and a file or pipe of many lines is written in blocks. The exit status is 0 when every line gave a
@@ -48,10 +49,13 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
     out = env.stdout
     failures = {ExitStatus.USAGE: 0, ExitStatus.INTERNAL: 0}
     first_failure = None
-    number = 0
+    number = solved = 0
     pending: list[str] = []
     size = 0
     for number, line in enumerate(lines, start=1):
+        if not line.strip():  # a blank line (a file's last newline, a spacer a person typed): nothing to solve
+            continue
+        solved += 1
         try:
             given, answer = _line(line, keys, command)
             report = pipeline.solve(command, {**fixed, **given}, spell=command.flag)
@@ -81,7 +85,7 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
     failed = sum(failures.values())
     if not failed:
         return int(ExitStatus.OK)
-    print(f"taucli: error: {failed} of {number} lines failed (the first: line {first_failure})", file=env.stderr)
+    print(f"taucli: error: {failed} of {solved} lines failed (the first: line {first_failure})", file=env.stderr)
     return int(ExitStatus.INTERNAL if failures[ExitStatus.INTERNAL] else ExitStatus.USAGE)
 
 
@@ -135,8 +139,6 @@ def _keys(command: Command) -> dict[str, str]:
 def _line(line: str, keys: dict[str, str], command: Command) -> tuple[dict, dict]:
     """The options of one line, and what it says of how to answer (to, no_steps)."""
     text = line.strip()
-    if not text:
-        raise InputError("", "expected a JSON object of options", example=_EXAMPLE_LINE, got="an empty line")
     try:
         given = _STRICT.decode(text)
     except ValueError as err:

@@ -189,6 +189,17 @@ def _whole_number(command: Command, text: Optional[str]) -> Optional[int]:
         raise InputError("points", "expected a whole number", example="{points} 50", got=repr(text)) from None
 
 
+def _no_such_option(command: Command, unknown: str) -> str:
+    """'--slip is not an option of atwood', and the closest of the command's own options where one
+    is close (names compared without their dashes, which every flag shares)."""
+    import difflib
+
+    message = f"{unknown} is not an option of {command.name}"
+    names = {option.flag[2:]: option.flag for option in (*command.options, *command.output) if not option.positional}
+    close = difflib.get_close_matches(unknown.lstrip("-"), list(names), n=1, cutoff=0.6)
+    return f"{message}; did you mean {names[close[0]]!r}?" if close else message
+
+
 def _is_usage_error(err: Exception) -> bool:
     """Typer's (vendored or plain click) usage errors: they carry an exit code and a message."""
     return isinstance(getattr(err, "exit_code", None), int) and hasattr(err, "format_message")
@@ -249,6 +260,9 @@ def main(argv: list[str] | None = None, env: Environment | None = None) -> int:
         if _is_usage_error(err):
             ctx = getattr(err, "ctx", None)
             where = f" (see '{ctx.command_path} --help')" if ctx is not None else " (see 'taucli --help')"
+            unknown = getattr(err, "option_name", None)
+            if unknown is not None and command is not None and type(err).__name__ == "NoSuchOption":
+                return _fail(env, ExitStatus.USAGE, _no_such_option(command, unknown) + where)
             return _fail(env, ExitStatus.USAGE, err.format_message() + where)
         if _debugging(args):
             import traceback

@@ -50,7 +50,7 @@ def test_bad_lines_give_error_objects_in_place_and_the_run_goes_on(taucli):
         [
             '{"m1": "4kg", "m2": "1kg"}',
             '{"m1": "4kg", "m2": "5m"}',  # wrong dimension
-            "",  # empty
+            "",  # blank: skipped, no line out
             '{"m1": "4kg"',  # not JSON
             '{"m1": "4kg", "pully_mass": 1}',  # unknown option
             '{"m1": NaN}',  # not strict JSON
@@ -62,17 +62,17 @@ def test_bad_lines_give_error_objects_in_place_and_the_run_goes_on(taucli):
     )
     done = taucli("atwood", "--batch", "--no-steps", stdin=stdin + "\n")
     assert done.code == 2
-    assert done.err.strip() == "taucli: error: 8 of 10 lines failed (the first: line 2)"
+    assert done.err.strip() == "taucli: error: 7 of 9 lines failed (the first: line 2)"
     out = _lines(done.out)
-    assert len(out) == 10
-    assert [entry.get("line") for entry in out] == [None, 2, 3, 4, 5, 6, 7, 8, 9, None]
+    assert len(out) == 9  # one out for each line in but the blank ones (#16 item 18)
+    assert [entry.get("line") for entry in out] == [None, 2, 4, 5, 6, 7, 8, 9, None]
     assert out[0]["results"]["a"]["value"] == pytest.approx(3 * 9.80665 / 5, rel=1e-15)
-    assert out[9]["results"]["a"]["value"] == pytest.approx(9.80665 / 3, rel=1e-15)
+    assert out[8]["results"]["a"]["value"] == pytest.approx(9.80665 / 3, rel=1e-15)
     # A batch line names its options by their keys, and so does its error.
     assert out[1]["error"] == {"option": "m2", "message": "m2: expected a mass (e.g. 4 kg), got '5m', which is a length"}
-    assert out[4]["error"]["option"] == "pully_mass" and "pulley_mass" in out[4]["error"]["message"]
-    assert out[6]["error"]["option"] == "m1"
-    for entry in out[1:9]:
+    assert out[3]["error"]["option"] == "pully_mass" and "pulley_mass" in out[3]["error"]["message"]
+    assert out[5]["error"]["option"] == "m1"
+    for entry in out[1:8]:
         assert entry["taucli"] and entry["error"]["message"]
 
 

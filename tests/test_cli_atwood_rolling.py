@@ -111,3 +111,12 @@ def test_an_incline_with_no_coefficient_given_is_smooth(taucli):
     rough = taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--incline", "30deg", "--mu-s", "0.3", "--json").json()
     assert rough["results"]["a"]["value"] is None
     assert any("--mu-k" in note for note in rough["notes"])
+
+
+def test_an_unknown_option_is_answered_from_the_commands_own_options(taucli):
+    """#16 item 18: --slip was answered 'Possible options: --help, --jsonl'."""
+    slip = taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--slip", "1")
+    assert_usage_error(slip, "--slip is not an option of atwood")
+    assert "--jsonl" not in slip.err
+    assert_usage_error(taucli("atwood", "--m1", "4kg", "--pulley-mas", "1kg"), "did you mean '--pulley-mass'?")
+    assert_usage_error(taucli("rolling", "sphere", "--angel", "30deg"), "did you mean '--angle'?")
