@@ -4,7 +4,6 @@ string that slides; their usage errors are one line naming the flag."""
 from __future__ import annotations
 
 import json
-import math
 
 import pytest
 
