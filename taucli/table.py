@@ -42,6 +42,8 @@ METAVARS = {
     "viscous coefficient": "B",
     "drag coefficient": "K",
     "dimensionless": "NUMBER",
+    "power": "POWER",
+    "energy": "ENERGY",
 }
 
 

@@ -49,6 +49,8 @@ KINDS: dict[str, Kind] = {
         Kind("viscous coefficient", "N*m*s", "0.01 N*m*s", ("N*m*s", "N*m/(rad/s)")),
         Kind("drag coefficient", "N*m*s**2", "0.001 N*m*s^2", ("N*m*s^2",)),
         Kind("dimensionless", "", "0.5", ()),
+        Kind("power", "W", "1 kW", ("W", "kW", "MW", "hp")),
+        Kind("energy", "J", "1 MJ", ("J", "kJ", "MJ", "kW*h", "Wh")),
     )
 }
 

@@ -376,6 +376,13 @@ def spin_down(
     drag_exponent: float | None = None,
     time: float | None = None,
     until_omega: float | None = None,
+    until_angle: float | None = None,
+    until_arc: float | None = None,
+    alpha: float | None = None,
+    in_time: float | None = None,
+    power: float | None = None,
+    ke0: float | None = None,
+    rim_speed: float | None = None,
     method: str = "auto",
     dt: float | None = None,
     rtol: float | None = None,
@@ -384,11 +391,46 @@ def spin_down(
     """``taucli spin-down``: the body (--inertia or --shape ...), its torques, and what to report.
 
     The drive is --torque, or the push --force at --lever (at --push-angle, default 90°) that
-    makes it; the losses left out are zero; the wheel starts at ω₀ = 0 unless --omega0 says.
+    makes it, or a motor of constant --power; the losses left out are zero; the wheel starts at
+    ω₀ = 0 unless --omega0 (or --rim-speed, or --ke0) says. --alpha, or no body at all, is
+    rotation at constant α: any three of ω₀, ω₁, α, t, θ give the rest.
     """
     from taucli.scenes.inertia import body
 
-    moment, body_steps = body(**body_options)
+    has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
+    rim = None
+    if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
+        if rim_speed is None and until_arc is None:
+            raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed} or {until_arc}")
+        rim = body_options.pop("radius")
+    moment, body_steps = body(**body_options) if has_body else (None, ())
+    results = Results(TABLE)
+    front_steps: list[Step] = []
+    notes: list[str] = []
+    if rim_speed is not None or until_arc is not None:
+        rim = rim if rim is not None else _rim_radius(body_options, "rim_speed" if rim_speed is not None else "until_arc")
+    given = [name for name, value in (("omega0", omega0), ("rim_speed", rim_speed), ("ke0", ke0)) if value is not None]
+    if len(given) > 1:
+        raise InputError(given[1], f"conflicts with {{{given[0]}}}: give the initial speed one way")
+    if rim_speed is not None:
+        omega0 = rim_speed / rim
+        front_steps.append(Step("Angular velocity from the rim speed", "ω₀ = v/R", f"{quantity_text(rim_speed, 'm/s')} / {quantity_text(rim, 'm')}",
+                                quantity_text(omega0, "rad/s"), "a point at radius R moves at v = ωR"))
+        notes.append(f"ω₀ = v/R = {quantity_text(omega0, 'rad/s')}: the rim speed {quantity_text(rim_speed, 'm/s')} at R = {quantity_text(rim, 'm')}")
+        results.put("omega0", omega0, " (from the rim speed)")
+    if ke0 is not None:
+        if moment is None:
+            raise InputError("ke0", "needs a body ({inertia} or {shape}): ω₀ = √(2E/I)")
+        omega0 = math.sqrt(2 * ke0 / moment)
+        front_steps.append(Step("Angular velocity from the stored energy", "KE = ½Iω²  ⇒  ω₀ = √(2KE/I)",
+                                f"√(2 × {quantity_text(ke0, 'J')} / {quantity_text(moment, 'kg*m**2')})", quantity_text(omega0, "rad/s"),
+                                "all the energy of a wheel on a fixed axle is its rotational kinetic energy"))
+        results.put("omega0", omega0, " (from KE0)")
+    if until_arc is not None:
+        if until_angle is not None:
+            raise InputError("until_arc", "conflicts with {until_angle}: give the target one way")
+        until_angle = until_arc / rim
+        notes.append(f"θ = s/R = {quantity_text(until_angle, 'rad')}: the arc {quantity_text(until_arc, 'm')} at R = {quantity_text(rim, 'm')}")
     push = None
     if force is not None or lever is not None or push_angle is not None:
         if torque is not None:
@@ -402,6 +444,290 @@ def spin_down(
     else:
         drive = torque or 0.0
     torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent)
-    return solve(
+    if push is not None:
+        front_steps.append(_push_step(push))
+    if alpha is not None or not has_body:
+        if power is not None:
+            raise InputError("power", "conflicts with {alpha}: a constant power gives a changing α" if alpha is not None else "needs a body ({inertia} or {shape})")
+        if in_time is not None:
+            if time is not None:
+                raise InputError("in_time", "conflicts with {time}: without a body they say the same")
+            time = in_time
+        return _with_front(_uniform_report(moment, body_steps, torques, omega0, alpha, time=time, until_omega=until_omega,
+                                           until_angle=until_angle, front=(front_steps, notes, results)), results)
+    if in_time is not None:
+        if torque is not None or push is not None or power is not None:
+            raise InputError("in_time", "asks for the drive torque that meets the target, so it conflicts with a drive ({torque}, {force}, {power})")
+        if (until_omega is None) == (until_angle is None):
+            raise InputError("in_time", "needs one target: {until_omega} or {until_angle}", example="{until_omega} 1000rpm {in_time} 3s")
+        if time is not None:
+            raise InputError("time", "conflicts with {in_time}: ask for the target's time one way")
+        if not torques.viscous and not torques.drag:
+            return _with_front(_uniform_report(moment, body_steps, torques, omega0, None, time=in_time, until_omega=until_omega,
+                                               until_angle=until_angle, front=(front_steps, notes, results)), results)
+        torques = _drive_for_target(moment, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
+        time, until_omega, until_angle = in_time, None, None
+        notes.append(f"the constant drive torque that meets the target in t = {fmt(in_time)} s, found by bisection on the motion: "
+                     f"τ = {quantity_text(torques.drive, 'N*m')}")
+        results.put("torque", torques.drive, " that meets the target")
+    report = solve(
         moment, torques, omega0 or 0.0, time=time, until_omega=until_omega, method=method, dt=dt, rtol=rtol, push=push, inertia_steps=body_steps
     )
+    if "torque" in results:
+        results.put("torque_net", report.results["alpha0"].value * moment, " at the start")
+    return _with_front(report, results, notes, front_steps)
+
+
+def _drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, until_angle, method, dt, rtol) -> Torques:
+    """The constant drive with which the wheel is at ω₁ (or has turned θ) at t: ω(t) and θ(t) grow
+    with the drive, so bisection brackets it; to the last bit of a double."""
+    closed_form = torques.drag == 0 or torques.drag_exponent == 2
+    evolver_method = _choose_method(method, closed_form, dt, rtol)
+
+    def miss(drive: float) -> float:
+        trial = Torques(drive, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)
+        omega, theta = evolve(inertia, trial, omega0, Evolver(evolver_method)).state_at(in_time)
+        return omega - until_omega if until_omega is not None else theta - until_angle
+
+    target = until_omega if until_omega is not None else until_angle
+    scale = max(abs(target) / in_time, abs(omega0), 1.0)
+    size = inertia * scale / in_time + torques.friction + torques.viscous * scale + torques.drag * scale**torques.drag_exponent
+    low, high = -size, size
+    for _ in range(200):
+        if miss(high) >= 0:
+            break
+        low, high = high, 2 * high
+    for _ in range(200):
+        if miss(low) <= 0:
+            break
+        low, high = 2 * low, low
+    for _ in range(200):
+        mid = (low + high) / 2
+        if mid in (low, high):
+            break
+        low, high = (mid, high) if miss(mid) < 0 else (low, mid)
+    return Torques((low + high) / 2, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)
+
+
+def _rim_radius(body_options: dict, option: str) -> float:
+    """The radius of the body's rim: its radius, or its outer radius."""
+    for name in ("radius", "outer_radius"):
+        if body_options.get(name) is not None:
+            return body_options[name]
+    raise InputError(option, "needs a radius: the body's ({shape} with {radius}), or {radius} beside {inertia}")
+
+
+def _with_front(report: Report, front: Results, notes: Sequence[str] = (), steps: Sequence[Step] = ()) -> Report:
+    """The report with what was worked out before the motion (ω₀ from a rim speed or KE0) first."""
+    if not front and not notes and not steps:
+        return report
+    results = Results(TABLE)
+    results.update(front)
+    results.update(report.results)
+    merged_steps = list(report.steps)
+    if steps:
+        body_count = next((i for i, step in enumerate(merged_steps) if step.title.startswith(("Torque of the push", "Net torque"))), 0)
+        merged_steps[body_count:body_count] = [s for s in steps if s.title != "Torque of the push"]
+    return Report(report.scene, report.model, report.method, results, merged_steps, [*notes, *report.notes], report.inputs, report.tables, report.trajectory)
+
+
+# ---------------------------------------------------------------------------------------------
+# Constant angular acceleration (--alpha, or no body): kinematics, and with a body the torque.
+
+
+def _uniform_report(
+    inertia: float | None,
+    inertia_steps: Sequence[Step],
+    torques: Torques,
+    omega0: float | None,
+    alpha: float | None,
+    *,
+    time: float | None,
+    until_omega: float | None,
+    until_angle: float | None,
+    front: tuple[list[Step], list[str], Results],
+) -> Report:
+    """Rotation at constant α: from --alpha, or from the targets (any three of ω₀, ω₁, α, t, θ)."""
+    from taucli.scenes.uniform import Uniform, solve_unknowns
+
+    front_steps, notes, results = front
+    given_alpha = alpha is not None
+    if torques.drive:
+        raise InputError("torque", "conflicts with {alpha}: the drive is what a constant α asks for (reported as torque)" if given_alpha else "needs a body ({inertia} or {shape})")
+    losses = [name for name, value in (("friction", torques.friction), ("viscous", torques.viscous), ("drag", torques.drag)) if value]
+    if inertia is None and not given_alpha and until_omega is None and until_angle is None and losses:
+        alpha, given_alpha = 0.0, True  # losses and no body: a wheel held at a constant speed
+        notes.append("no body and no α: the wheel is held at a constant speed, and torque is the drive that balances the losses")
+    if inertia is None and losses and not (given_alpha and alpha == 0):
+        raise InputError(losses[0], "needs a body ({inertia} or {shape}), or {alpha} 0 for a wheel held at a constant speed")
+    w0_given = omega0
+    w0, alpha, solved_notes = solve_unknowns(omega0, alpha, time, until_omega, until_angle)
+    notes.extend(solved_notes)
+    if alpha != 0 and (torques.viscous or torques.drag):
+        raise InputError("viscous" if torques.viscous else "drag", "makes α change with ω, so it cannot be constant: leave out {alpha}, or give it as 0")
+    motion = Uniform(w0, alpha)
+    targets = sum(x is not None for x in (time, until_omega, until_angle))
+    pair = not given_alpha or (w0_given is None and targets >= 2)  # the targets fixed α or ω₀
+    steps = list(inertia_steps) + front_steps
+    steps.extend(_uniform_alpha_steps(w0, alpha, time, until_omega, until_angle, given_alpha, w0_given))
+    if w0_given is None and pair and given_alpha:
+        results.put("omega0", w0, " (from the targets)")
+    if inertia is not None:
+        results.put("I", inertia)
+    results.put("alpha", alpha)
+
+    stop = motion.stop()
+    if stop is not None:
+        results.put("t_stop", stop[0])
+        results.put("theta_stop", stop[1])
+        results.put("revs_stop", stop[1] / TWO_PI)
+        notes.append(
+            f"a constant α carries the wheel on through ω = 0: it stops at t = {fmt(stop[0])} s, "
+            f"after {fmt(abs(stop[1]) / TWO_PI)} rev, and turns back (t_stop, theta_stop give the first stop)"
+        )
+
+    end: float | None = None  # the time the energy, power and work are given at
+    if pair:
+        if time is not None:
+            end = time
+        elif until_omega is not None and until_angle is not None:
+            end = 2 * until_angle / (w0 + until_omega)
+        elif until_omega is not None:
+            end = motion.time_to_omega(until_omega)
+        else:
+            end = _first_time_at_angle(motion, until_angle, notes)
+        if end is None:
+            raise InputError("until_omega", "is never reached at this α", got=f"α = {alpha:g} rad/s²")
+        label = f" at t = {fmt(end)} s"
+        results.put("omega", motion.omega(end), label)
+        results.put("theta", motion.theta(end), f" by t = {fmt(end)} s")
+        results.put("revs", motion.theta(end) / TWO_PI, f" by t = {fmt(end)} s")
+        if time is None:
+            results.put("t_until", end, " the target")
+    else:
+        if until_omega is not None and until_angle is not None:
+            raise InputError("until_angle", "conflicts with {until_omega}: ask for one target at a time")
+        if time is not None:
+            end = time
+            results.put("omega", motion.omega(time), f" at t = {fmt(time)} s")
+            results.put("theta", motion.theta(time), f" by t = {fmt(time)} s")
+            results.put("revs", motion.theta(time) / TWO_PI, f" by t = {fmt(time)} s")
+        if until_omega is not None:
+            t = motion.time_to_omega(until_omega)
+            if t is None:
+                notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')} at this α")
+            elif stop is not None and t > stop[0]:
+                notes.append(f"ω = {quantity_text(until_omega, 'rad/s')} is reached only after the wheel has stopped and turned back")
+            results.put("t_until", t, f" ω = {fmt(until_omega)} rad/s")
+            results.put("theta_until", None if t is None else motion.theta(t), f" ω = {fmt(until_omega)} rad/s")
+        if until_angle is not None:
+            t = _first_time_at_angle(motion, until_angle, notes)
+            part = f" θ = {fmt(until_angle)} rad"
+            results.put("t_until", t, part)
+            if time is None:
+                results.put("omega", None if t is None else motion.omega(t), f" at θ = {fmt(until_angle)} rad")
+                end = t
+    if inertia is not None or losses:
+        _uniform_torque(inertia, torques, motion, end, results, steps, notes)
+    model = "uniform angular acceleration (constant α)" + ("" if given_alpha else ", from the targets")
+    return Report("spin-down", model, "closed form", results, steps, notes)
+
+
+def _first_time_at_angle(motion, theta: float, notes: list[str]) -> float | None:
+    """The first time the wheel is at θ, with notes on the second root and on turning back."""
+    times = motion.times_at_angle(theta)
+    stop = motion.stop()
+    where = f"θ = {fmt(theta)} rad ({fmt(theta / TWO_PI)} rev)"
+    if not times:
+        turn = f"it stops after {fmt(abs(stop[1]) / TWO_PI)} rev and turns back" if stop else "it turns the other way"
+        notes.append(f"the wheel never reaches {where}: {turn}")
+        return None
+    if stop is not None and times[0] > stop[0]:
+        notes.append(f"the wheel turns back first (it stops at t = {fmt(stop[0])} s, {fmt(stop[1])} rad) and reaches {where} on the way back")
+    elif len(times) == 2:
+        notes.append(f"the other root, t = {fmt(times[1])} s, is when the wheel, turned back, passes {where} again")
+    return times[0]
+
+
+def _uniform_alpha_steps(w0, alpha, time, w1, theta, given_alpha, w0_given) -> list[Step]:
+    steps: list[Step] = []
+    if given_alpha:
+        return steps
+    if time is not None and w1 is not None:
+        steps.append(Step("Angular acceleration from the change of speed", "α = (ω₁ − ω₀)/t", f"({fmt(w1)} − {fmt(w0)}) / {fmt(time)}",
+                          quantity_text(alpha, "rad/s**2"), "constant α: ω changes by the same amount every second"))
+        steps.append(Step("Angle turned", "θ = ½(ω₀ + ω₁)t", f"½ × ({fmt(w0)} + {fmt(w1)}) × {fmt(time)}",
+                          quantity_text((w0 + w1) * time / 2, "rad") + f" = {fmt((w0 + w1) * time / 2 / TWO_PI)} rev",
+                          "at constant α the mean speed is the average of the first and the last"))
+    elif time is not None and theta is not None:
+        steps.append(Step("Angular acceleration from the angle and the time", "θ = ω₀t + ½αt²  ⇒  α = 2(θ − ω₀t)/t²",
+                          f"2 × ({fmt(theta)} − {fmt(w0)} × {fmt(time)}) / {fmt(time)}²", quantity_text(alpha, "rad/s**2"),
+                          "the rotational analogue of s = ut + ½at², solved for the acceleration"))
+    elif w1 is not None and theta is not None:
+        steps.append(Step("Angular acceleration from the speeds and the angle", "ω₁² = ω₀² + 2αθ  ⇒  α = (ω₁² − ω₀²)/(2θ)",
+                          f"({fmt(w1)}² − {fmt(w0)}²) / (2 × {fmt(theta)})", quantity_text(alpha, "rad/s**2"),
+                          "the rotational analogue of v² = u² + 2as"))
+        steps.append(Step("Time taken", "t = 2θ/(ω₀ + ω₁)", f"2 × {fmt(theta)} / ({fmt(w0)} + {fmt(w1)})",
+                          quantity_text(2 * theta / (w0 + w1), "s"), "the angle is the mean speed times the time"))
+    return steps
+
+
+def _uniform_torque(inertia, torques: Torques, motion, end: float | None, results: Results, steps: list[Step], notes: list[str]) -> None:
+    """The torque that keeps α constant against the losses, and the energy, work and power."""
+    alpha, w0 = motion.alpha, motion.omega0
+    sense = 1.0 if w0 > 0 else -1.0 if w0 < 0 else math.copysign(1.0, alpha) if alpha else 0.0
+    n = torques.drag_exponent
+    f = torques.friction if sense else 0.0
+
+    def losses(omega: float, s: float) -> float:  # the torque of the losses against +ω, moving in sense s
+        return s * f + torques.viscous * omega + s * torques.drag * abs(omega) ** n
+
+    net = 0.0 if inertia is None else inertia * alpha
+    drive = net + losses(w0, sense)
+    if inertia is not None:
+        results.put("torque_net", net, "")
+        steps.append(Step("Net torque (Newton's second law for rotation)", "τ_net = Iα",
+                          f"{quantity_text(inertia, 'kg*m**2')} × {quantity_text(alpha, 'rad/s**2')}", quantity_text(net, "N*m"),
+                          "the net torque a constant α takes"))
+    held = alpha == 0
+    results.put("torque", drive, " that holds ω steady" if held else " that gives this α")
+    if f or torques.viscous or torques.drag:
+        steps.append(Step("Drive torque", "τ = τ_net + τ_f + bω + kωⁿ" if held else "τ = τ_net + τ_f",
+                          f"{quantity_text(net, 'N*m')} + {quantity_text(drive - net, 'N*m')}", quantity_text(drive, "N*m"),
+                          "the drive must also overcome the losses, which oppose the motion"))
+    stop = motion.stop()
+    at = end if end is not None else 0.0
+    omega_at = motion.omega(at)
+    after = stop is not None and at > stop[0]
+    drive_at = net + losses(omega_at, -sense) if after else drive
+    if after and f:
+        notes.append(f"past the stop friction turns round: holding α takes τ = {quantity_text(drive_at, 'N*m')} from t = {fmt(stop[0])} s on")
+    when = f" at t = {fmt(at)} s" if end is not None else " at the start"
+    results.put("power", drive_at * omega_at, when)
+    if f:
+        results.put("power_friction", f * abs(omega_at), when)
+    if torques.viscous:
+        results.put("power_viscous", torques.viscous * omega_at * omega_at, when)
+    if torques.drag:
+        results.put("power_drag", torques.drag * abs(omega_at) ** (n + 1), when)
+    if inertia is not None:
+        results.put("KE0", inertia * w0 * w0 / 2)
+    if end is None:
+        return
+    by = f" by t = {fmt(end)} s"
+    if inertia is not None:
+        results.put("KE", inertia * omega_at * omega_at / 2, f" at t = {fmt(end)} s")
+    theta = motion.theta(end)
+    if after:
+        work = drive * stop[1] + drive_at * (theta - stop[1])
+    else:
+        work = drive * theta
+    results.put("work_drive", work, by)
+    if end > 0:
+        results.put("power_mean", work / end, by)
+    if f:
+        results.put("work_friction", f * motion.path(end), by)
+    if torques.viscous:
+        results.put("work_viscous", torques.viscous * w0 * w0 * end, by)
+    if torques.drag:
+        results.put("work_drag", torques.drag * abs(w0) ** (n + 1) * end, by)
