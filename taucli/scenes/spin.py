@@ -106,6 +106,7 @@ def solve(
     *,
     time: float | None = None,
     until_omega: float | None = None,
+    until_angle: float | None = None,
     method: str = "auto",
     dt: float | None = None,
     rtol: float | None = None,
@@ -122,6 +123,8 @@ def solve(
         raise InputError("drag_exponent", "expected a number from 1 to 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
     if torques.drag and torques.drag_exponent == 1:
         torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0, torques.static)
+    if until_angle is not None and (time is not None or until_omega is not None):
+        raise InputError("until_angle", "conflicts with {time} and {until_omega}: ask for one target at a time (a run each)")
     closed_form = torques.drag == 0 or torques.drag_exponent == 2
     chosen = _choose_method(method, closed_form, dt, rtol)
     evolver = Evolver(chosen)
@@ -142,7 +145,7 @@ def solve(
         )
     elif stop is None and not first.stops:  # (a stop that a stepper blew up before finding is said below)
         notes.append(_never_stops_note(torques, first))
-    answers = _answers(motion, time, until_omega)
+    answers = _answers(motion, time, until_omega, until_angle)
     results.put("t_stop", answers["t_stop"])
     results.put("theta_stop", answers["theta_stop"])
     results.put("revs_stop", None if answers["theta_stop"] is None else answers["theta_stop"] / TWO_PI)
@@ -162,6 +165,14 @@ def solve(
             notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
         results.put("t_until", answers["t_until"], f" ω = {fmt(until_omega)} rad/s")
         results.put("theta_until", answers["theta_until"], f" ω = {fmt(until_omega)} rad/s")
+    if until_angle is not None:
+        where = f"θ = {fmt(until_angle)} rad ({fmt(until_angle / TWO_PI)} rev)"
+        if answers["t_until"] is None and not evolver.unstable:
+            turned = answers["theta_stop"]
+            notes.append(f"the wheel stops first, after {fmt(turned)} rad ({fmt(turned / TWO_PI)} rev), and never reaches {where}"
+                         if turned is not None and second is None else f"the wheel never reaches {where}")
+        results.put("t_until", answers["t_until"], f" θ = {fmt(until_angle)} rad")
+        results.put("omega", answers["omega"], f" at θ = {fmt(until_angle)} rad")
 
     tables, described = {}, chosen.describe(evolver.steps)
     if evolver.unstable:
@@ -170,7 +181,7 @@ def solve(
             if name not in ("I", "alpha0"):
                 results[name] = Value(None, results[name].unit, results[name].label)
     elif chosen.name in ("euler", "rk4") and estimate_error:
-        estimate = _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, chosen, results, notes)
+        estimate = _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, until_angle, chosen, results, notes)
         if estimate is not None:
             tables["error_estimate"], worst = estimate
             described += f"; estimated error at most {fmt(worst, 2)} relative" if worst is not None else ""
@@ -190,7 +201,7 @@ def solve(
     return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
 
 
-def _answers(motion, time: float | None, until_omega: float | None) -> dict[str, float | None]:
+def _answers(motion, time: float | None, until_omega: float | None, until_angle: float | None = None) -> dict[str, float | None]:
     """What a method's motion answers (the results a step size changes), by name."""
     stop, signed_stop = motion.stop, motion.signed_stop
     answers: dict[str, float | None] = {"t_stop": None if stop is None else stop[0], "theta_stop": None if signed_stop is None else signed_stop[1]}
@@ -199,17 +210,20 @@ def _answers(motion, time: float | None, until_omega: float | None) -> dict[str,
     if until_omega is not None:
         reached = motion.reach(until_omega)
         answers["t_until"], answers["theta_until"] = (None, None) if reached is None else reached
+    if until_angle is not None:
+        reached = motion.reach_angle(until_angle)
+        answers["t_until"], answers["omega"] = (None, None) if reached is None else reached
     return answers
 
 
-def _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, chosen: Method, results, notes) -> tuple[Table, float | None] | None:
+def _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, until_angle, chosen: Method, results, notes) -> tuple[Table, float | None] | None:
     """The error of each of a fixed step's answers, against the closed form or a tight rk45
     run: the table of them, and the largest relative error. Answers off by more than
     WITHHELD_ABOVE are withheld (null) with one note that gives them and a step that would do."""
     reference_method = Method("exact") if closed_form else Method("rk45", None, REFERENCE_RTOL)
     against = "the closed form" if closed_form else f"rk45 at rtol {REFERENCE_RTOL:g}"
     try:
-        reference = _answers(evolve(inertia, torques, omega0, Evolver(reference_method)), time, until_omega)
+        reference = _answers(evolve(inertia, torques, omega0, Evolver(reference_method)), time, until_omega, until_angle)
     except InputError:
         notes.append(f"no error estimate: the reference run ({against}) would take too many steps; the {chosen.name} answers are unchecked")
         return None
@@ -471,7 +485,8 @@ def spin_down(
                      f"τ = {quantity_text(torques.drive, 'N*m')}")
         results.put("torque", torques.drive, " that meets the target")
     report = solve(
-        moment, torques, omega0 or 0.0, time=time, until_omega=until_omega, method=method, dt=dt, rtol=rtol, push=push, inertia_steps=body_steps
+        moment, torques, omega0 or 0.0, time=time, until_omega=until_omega, until_angle=until_angle, method=method, dt=dt, rtol=rtol,
+        push=push, inertia_steps=body_steps,
     )
     if "torque" in results:
         results.put("torque_net", report.results["alpha0"].value * moment, " at the start")
