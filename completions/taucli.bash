@@ -88,7 +88,7 @@ _taucli() {
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --power --ke0 --rim-speed --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --power --ke0 --rim-speed --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in

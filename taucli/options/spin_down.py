@@ -1,7 +1,7 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
 from taucli.options.common import ANSWER, BODY_OPTIONS, DT, METHOD, MOTION, RTOL
-from taucli.table import Command, Option, Result
+from taucli.table import FLAG, Command, Option, Result
 
 COMMAND = Command(
     name="spin-down",
@@ -35,6 +35,12 @@ COMMAND = Command(
         Option("power", "power", "A motor of constant power P (τ = P/ω; negative: a load draining the wheel), e.g. 1kW.", sign="any"),
         Option("ke0", "energy", "Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.", sign="nonnegative", panel=MOTION),
         Option("rim_speed", "velocity", "Initial speed of the rim, giving ω₀ = v/R (R the body's radius, or --radius with --inertia).", sign="any", panel=MOTION),
+        Option(
+            "energy", FLAG,
+            "Also report the kinetic energy, the work of the drive and of each loss (to --time or the stop) and their power "
+            "(always with --alpha, --in-time, --power or --ke0).",
+            panel=MOTION,
+        ),
         METHOD,
         DT,
         RTOL,

@@ -113,12 +113,14 @@ def solve(
     push: Push | None = None,
     inertia_steps: Sequence[Step] = (),
     estimate_error: bool = True,
+    energy: bool = False,
 ) -> Report:
     """Spin-down or spin-up of a wheel on a fixed axle; see the module docstring for the model.
 
     A fixed-step method (euler, rk4) has each answer's error estimated against a reference (the
     ``error_estimate`` table); an answer estimated more than 1e-3 off is withheld, null, with a
-    note. ``estimate_error=False`` leaves that out (the bench times the method alone)."""
+    note. ``estimate_error=False`` leaves that out (the bench times the method alone). ``energy``
+    adds KE, the work of each torque and the power."""
     if torques.drag and not 1 <= torques.drag_exponent <= 10:
         raise InputError("drag_exponent", "expected a number from 1 to 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
     if torques.drag and torques.drag_exponent == 1:
@@ -175,6 +177,8 @@ def solve(
         results.put("omega", answers["omega"], f" at θ = {fmt(until_angle)} rad")
 
     tables, described = {}, chosen.describe(evolver.steps)
+    if energy and not evolver.unstable:
+        _energy(motion, inertia, torques, omega0, time, results, notes)
     if evolver.unstable:
         notes.extend(dict.fromkeys(evolver.unstable))
         for name in results:
@@ -199,6 +203,92 @@ def solve(
         model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
     trajectory = None if evolver.unstable else deferred(_trajectory, motion, time, omega_inf)
     return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
+
+
+def _energy(motion, inertia: float, torques: Torques, omega0: float, time: float | None, results: Results, notes: list[str]) -> None:
+    """KE0, and KE with the work of the drive and of each loss up to --time (or the stop), and
+    the power of each at --time (or the start).
+
+    In each stretch of motion one way (a phase, ω ≥ 0 in its frame) I dω/dt = A − bω − kωⁿ with
+    A = ±τ_drive − τ_f; times ω and integrated, ½I(ω_b² − ω_a²) = A·d − W_viscous − W_drag over
+    the distance d. So the drive does ±τ_drive·d, friction takes τ_f·d, and the viscous and drag
+    losses together take the rest; where both act, the viscous one is integrated (b∫ω²dt by
+    8-point Gauss-Legendre on the motion) and drag takes what remains.
+    """
+    n = torques.drag_exponent
+    results.put("KE0", inertia * omega0 * omega0 / 2)
+    stop = motion.stop
+    end = time if time is not None else (stop[0] if stop is not None and not motion.held_from_start else None)
+    if end is not None:
+        omega_end = motion.state_at(end)[0] if time is not None else 0.0
+        results.put("KE", inertia * omega_end * omega_end / 2, " at the stop" if time is None else f" at t = {fmt(end)} s")
+    at = 0.0 if time is None else time
+    omega_at = motion.state_at(at)[0]
+    when = " at the start" if time is None else f" at t = {fmt(at)} s"
+    if torques.drive:
+        results.put("power", torques.drive * omega_at, when)
+    if torques.friction:
+        results.put("power_friction", torques.friction * abs(omega_at), when)
+    if torques.viscous:
+        results.put("power_viscous", torques.viscous * omega_at * omega_at, when)
+    if torques.drag:
+        results.put("power_drag", torques.drag * abs(omega_at) ** (n + 1), when)
+    if end is None:
+        if not motion.held_from_start:
+            notes.append("KE and work: the wheel never stops, so give {time} to say up to when")
+        return
+    by = f" by t = {fmt(end)} s" if time is not None else " until it stops"
+    work = {"drive": 0.0, "friction": 0.0, "viscous": 0.0, "drag": 0.0}
+    segments = []
+    if not motion.held_from_start:
+        first_end = end if stop is None else min(end, stop[0])
+        segments.append((motion.first, first_end, stop is not None and end >= stop[0]))
+        if motion.second is not None and stop is not None and end > stop[0]:
+            segments.append((motion.second, end - stop[0], False))
+    for phase, duration, to_stop in segments:
+        start = phase.closed.omega0
+        if to_stop:
+            finish, distance = 0.0, stop[1]
+        else:
+            finish, distance = motion.evolver.state(phase, duration)
+        drive = phase.direction * torques.drive
+        work["drive"] += drive * distance
+        work["friction"] += torques.friction * distance
+        rest = (drive - torques.friction) * distance - inertia * (finish - start) * (finish + start) / 2
+        if torques.viscous and torques.drag:
+            sampler = _phase_sampler(motion.evolver, phase)
+            viscous = torques.viscous * numerics_gauss(lambda t: sampler(t) ** 2, duration)
+            work["viscous"] += viscous
+            work["drag"] += max(0.0, rest - viscous)
+        elif torques.viscous:
+            work["viscous"] += max(0.0, rest)
+        elif torques.drag:
+            work["drag"] += max(0.0, rest)
+    if torques.drive:
+        results.put("work_drive", work["drive"], by)
+        if end > 0:
+            results.put("power_mean", work["drive"] / end, by)
+    for name in ("friction", "viscous", "drag"):
+        if getattr(torques, name):
+            results.put("work_" + name, work[name], by)
+
+
+def _phase_sampler(evolver: Evolver, phase: Phase):
+    """ω(t) within a phase, for times asked in increasing order (a stepper steps on)."""
+    last = [None]
+
+    def omega(t: float) -> float:
+        state = evolver.state(phase, t, last[0])
+        last[0] = (t, *state)
+        return state[0]
+
+    return omega
+
+
+def numerics_gauss(f, duration: float) -> float:
+    from taucli.numerics import gauss_legendre
+
+    return gauss_legendre(f, 0.0, duration)
 
 
 def _answers(motion, time: float | None, until_omega: float | None, until_angle: float | None = None) -> dict[str, float | None]:
@@ -397,6 +487,7 @@ def spin_down(
     power: float | None = None,
     ke0: float | None = None,
     rim_speed: float | None = None,
+    energy: bool = False,
     method: str = "auto",
     dt: float | None = None,
     rtol: float | None = None,
@@ -486,7 +577,7 @@ def spin_down(
         results.put("torque", torques.drive, " that meets the target")
     report = solve(
         moment, torques, omega0 or 0.0, time=time, until_omega=until_omega, until_angle=until_angle, method=method, dt=dt, rtol=rtol,
-        push=push, inertia_steps=body_steps,
+        push=push, inertia_steps=body_steps, energy=energy or ke0 is not None or power is not None or in_time is not None,
     )
     if "torque" in results:
         results.put("torque_net", report.results["alpha0"].value * moment, " at the start")
