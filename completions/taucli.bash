@@ -61,6 +61,7 @@ _taucli() {
             --depth) _taucli_units m cm mm km in ft; return 0 ;;
             --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
             --offset) _taucli_units m cm mm km in ft; return 0 ;;
+            --part) :; return 0 ;;
             --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --force) _taucli_units N kN lbf; return 0 ;;
@@ -88,7 +89,7 @@ _taucli() {
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --power --ke0 --rim-speed --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --power --ke0 --rim-speed --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -154,6 +155,7 @@ _taucli() {
             --depth) _taucli_units m cm mm km in ft; return 0 ;;
             --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
             --offset) _taucli_units m cm mm km in ft; return 0 ;;
+            --part) :; return 0 ;;
             --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --omega1) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
@@ -167,7 +169,7 @@ _taucli() {
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --inertia-final --torque-profile --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in
