@@ -171,3 +171,25 @@ def test_units_do_not_change_the_answer():
     a = values(taucli.spin_down(omega0="100 rpm", until_omega="500 rpm", until_angle="50 rev"))
     b = values(taucli.spin_down(omega0=100 * TWO_PI / 60, until_omega=500 * TWO_PI / 60, until_angle=50 * TWO_PI))
     assert a["t_until"] == pytest.approx(b["t_until"], rel=1e-14) and a["t_until"] == pytest.approx(10, rel=1e-14)
+
+
+def test_a_rim_speed_for_omega0():
+    """A tyre of radius 0.3 m at 20 m/s: ω₀ = v/R = 66.7 rad/s, with a note; --radius beside --inertia too."""
+    by_shape = taucli.spin_down(shape="ring", mass=1, radius="30 cm", rim_speed="20 m/s", friction=1)
+    by_inertia = taucli.spin_down(inertia=0.09, radius=0.3, rim_speed=20, friction=1)
+    for report in (by_shape, by_inertia):
+        assert report.results["omega0"].value == pytest.approx(20 / 0.3, rel=1e-15)
+        assert report.results["t_stop"].value == pytest.approx(0.09 * 20 / 0.3, rel=1e-14)
+        assert any("v/R" in note for note in report.notes)
+    with pytest.raises(InputError, match="needs a radius"):
+        taucli.spin_down(inertia=0.09, rim_speed=20)
+    with pytest.raises(InputError, match="conflicts"):
+        taucli.spin_down(inertia=0.09, radius=0.3, rim_speed=20, omega0=3)
+
+
+def test_omega0_from_stored_energy():
+    """A flywheel of I = 2 kg·m² storing 1 MJ turns at √(2E/I) = 1000 rad/s."""
+    report = taucli.spin_down(inertia=2, ke0="1 MJ", friction=1)
+    assert report.results["omega0"].value == pytest.approx(1000, rel=1e-15)
+    assert report.results["KE0"].value == pytest.approx(1e6, rel=1e-15)
+    assert report.results["work_friction"].value == pytest.approx(1e6, rel=1e-13)
