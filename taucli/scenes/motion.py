@@ -103,9 +103,9 @@ class Phase:
 
         def check(omega: float) -> bool:
             gap = omega - steady
-            if gap == 0:
-                return True
             linear = -rate * gap
+            if gap == 0 or linear == 0:  # (λ·δ can underflow where δ is already below a double's reach)
+                return True
             excess = abs(self.rate(omega) - linear) / abs(linear) / order
             return excess * abs(gap) <= 0.1 * rtol * max(steady, abs(gap))
 

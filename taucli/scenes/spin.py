@@ -502,6 +502,8 @@ def spin_down(
     """
     from taucli.scenes.inertia import body
 
+    if power == 0:
+        power = None  # a motor of no power is no motor
     has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     rim = None
     if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
@@ -876,7 +878,8 @@ class PowerMotion:
     def rate(self, u: float) -> float:
         t = self.torques
         drag = t.drag * u**t.drag_exponent if t.drag and u > 0 else 0.0
-        return (self.power / u - t.friction - t.viscous * u - drag) / self.inertia if u > 0 else math.inf
+        u = max(u, 1e-300)  # finite below rest, so that a trial step past it is rejected, not accepted as NaN
+        return (self.power / u - t.friction - t.viscous * u - drag) / self.inertia
 
     def stiffness(self, u: float) -> float:
         t = self.torques
@@ -903,7 +906,9 @@ class PowerMotion:
         if self.lossless:
             t = self.inertia * self.u0 * self.u0 / (2 * -self.power)
             return t, 2 * t * self.u0 / 3
-        edge = min(self._edge(), self.u0 / 2)
+        edge = self._edge()
+        if self.u0 <= 2 * edge:  # already where the losses are under 1e-7 of P/ω: the lossless law
+            return PowerMotion(self.inertia, self.power, Torques(), self.u0, self.method, self.sense).stop()
         solution = self._run(self.u0, math.inf, edge)
         tail = self.inertia * edge * edge / (2 * -self.power)
         return solution.t + tail, solution.theta + 2 * tail * edge / 3
@@ -921,13 +926,16 @@ class PowerMotion:
 
         method = self.method
         name = "rk45" if method.name == "exact" else method.name
-        if t_end == math.inf:
-            steady = self.steady_speed()
-            rate = abs(self.rate(event)) if event else 0.0
+        if t_end == math.inf:  # a bound on the time to the event: the energy to go, over the least net power on the way
             span = abs(self.inertia * (event - u) * (event + u) / 2)
-            t_end = 1.01 * span / max(abs(self.power) - event * abs(self.rate(event) * self.inertia + self.power / event), 1e-300) if rate else 1e9
-            if steady is not None and event is not None and self.power > 0 and event >= steady:
-                return None
+            if self.power < 0:
+                net = -self.power  # a load drains at least P; the losses only add to it
+            else:
+                steady = self.steady_speed()
+                if steady is not None and event >= steady:
+                    return None
+                net = event * self.inertia * self.rate(event)  # P − ω·losses(ω), least at the event
+            t_end = 1.01 * span / net
         try:
             return numerics.integrate(
                 self.rate, u, t_end, name, dt=method.dt, rtol=method.rtol / 20, event_at=event, stiffness=self.stiffness,

@@ -128,6 +128,11 @@ def solve_unknowns(
     w0 = sign * math.sqrt(square)
     if w0 + w1 == 0 or th / (w0 + w1) <= 0:
         w0 = -w0
-    elif square > 0 and th / (w1 - w0) > 0:
+    elif square > 0 and w1 != w0 and th / (w1 - w0) > 0:
         notes.append(f"ω₀ = {-w0:g} rad/s would also do, the wheel turning back on the way; the one that does not turn back is given")
+    if th == 0 or w0 + w1 == 0 or th / (w0 + w1) <= 0:
+        raise InputError(
+            "until_angle", "cannot be reached at this α from any ω₀: the mean speed (ω₀ + ω₁)/2 must turn the wheel that way",
+            got=f"θ = {th:g} rad, ω₁ = {w1:g} rad/s, α = {a:g} rad/s²",
+        )
     return w0, a, notes
