@@ -196,6 +196,11 @@ def solve(
     steps.extend(_net_torque_step(torques, omega0, alpha0, inertia, held_from_start))
     if not held_from_start:
         steps.extend(_kinematics_steps(torques, first, stop, results, time, chosen, omega0))
+        if until_angle is not None and results["t_until"].value is not None:
+            steps.append(Step("Time to turn θ", "θ(t) = θ_target, solved for t", f"θ_target = {quantity_text(until_angle, 'rad')}",
+                              f"t = {quantity_text(results['t_until'].value, 's')}, ω = {quantity_text(results['omega'].value, 'rad/s')}",
+                              "θ grows with t while the wheel turns one way, so the time is bracketed and found by bisection on θ(t)"))
+    steps.extend(_energy_steps(results, inertia, torques.friction))
     if chosen.name != "exact" and method == "auto":
         notes.append(f"no closed form for drag kω^{fmt(torques.drag_exponent)} with these torques: integrated numerically")
     model = _model(torques, chosen)
@@ -745,6 +750,8 @@ def _uniform_report(
     if inertia is not None or losses:
         _uniform_torque(inertia, torques, motion, end, results, steps, notes)
     model = "uniform angular acceleration (constant α)" + ("" if given_alpha else ", from the targets")
+    if inertia is not None:
+        steps.extend(_energy_steps(results, inertia, torques.friction))
     return Report("spin-down", model, "closed form", results, steps, notes)
 
 
@@ -1095,6 +1102,7 @@ def _power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, ti
     described = {"exact": "closed form", "rk45": f"rk45 (Dormand-Prince, adaptive), rtol = {chosen.rtol:g}"}.get(
         chosen.name, f"{chosen.name}, dt = {fmt(chosen.dt or 0.0)} s"
     )
+    steps.extend(_energy_steps(results, inertia, torques.friction, power=power))
     return Report("spin-down", model, described, results, steps, notes)
 
 
@@ -1129,3 +1137,35 @@ def _power_time_at_angle(motion: PowerMotion, theta: float) -> tuple[float, floa
         else:
             high = mid
     return high, motion.state(high)[0]
+
+
+def _energy_steps(results: Results, inertia: float, friction: float, power: float | None = None) -> list[Step]:
+    """The worked steps of the energy results a run gave (KE, the work of each torque)."""
+    steps: list[Step] = []
+    value = {name: results[name].value for name in results}
+    if value.get("KE0") is not None:
+        w0 = math.sqrt(2 * value["KE0"] / inertia)
+        steps.append(Step("Kinetic energy at the start", "KE₀ = ½Iω₀²", f"½ × {quantity_text(inertia, 'kg*m**2')} × ({quantity_text(w0, 'rad/s')})²",
+                          quantity_text(value["KE0"], "J"), "a wheel on a fixed axle has only rotational kinetic energy"))
+    if value.get("KE") is not None:
+        w = math.sqrt(2 * value["KE"] / inertia)
+        steps.append(Step("Kinetic energy" + results["KE"].label.removeprefix("kinetic energy"), "KE = ½Iω²",
+                          f"½ × {quantity_text(inertia, 'kg*m**2')} × ({quantity_text(w, 'rad/s')})²", quantity_text(value["KE"], "J"),
+                          "the same, at the end"))
+    if value.get("work_drive") is not None:
+        if power is not None:
+            steps.append(Step("Work of the motor", "W_drive = P·t (while it turns)", f"{quantity_text(power, 'W')} × t", quantity_text(value["work_drive"], "J"),
+                              "a constant power delivers the same energy every second"))
+        else:
+            steps.append(Step("Work of the drive", "W_drive = τθ (the torque times the angle it turns through)", "",
+                              quantity_text(value["work_drive"], "J"), "a constant torque does τ of work for every radian turned along it"))
+    if value.get("work_friction") is not None and friction:
+        steps.append(Step("Energy friction takes", "W_f = τ_f × angle swept", f"{quantity_text(friction, 'N*m')} × {quantity_text(value['work_friction'] / friction, 'rad')}",
+                          quantity_text(value["work_friction"], "J"), "friction opposes the motion whichever way it turns, so every radian swept costs τ_f"))
+    rest = [name for name in ("work_viscous", "work_drag") if value.get(name) is not None]
+    if rest:
+        total = sum(value[name] for name in rest)
+        steps.append(Step("Energy the viscous torque and drag take", "W_b + W_k = KE₀ − KE + W_drive − W_f", "", quantity_text(total, "J"),
+                          "the energy balance: what the wheel had and the drive gave, less what it keeps and what friction took; "
+                          "where both act, the viscous share b∫ω²dt is integrated and drag has the rest"))
+    return steps
