@@ -447,22 +447,25 @@ def solve(parts: Sequence[Part]) -> Report:
             "the distance from the axis at which the whole mass, gathered in a ring, would have the same I",
         )
     )
-    tables = {}
-    if single is None:
-        rows = tuple(
-            (r.shape.name, r.part.mass, r.inertia_centre, r.offset, r.inertia, 100 * r.inertia / body.inertia if body.inertia else None)
-            for r in body.parts
-        )
-        columns = (
-            ("shape", None, "part"),
-            ("mass", "kg", "mass"),
-            ("I_cm", "kg*m**2", "I_cm"),
-            ("offset", "m", "offset"),
-            ("I", "kg*m**2", "I"),
-            ("share", "%", "share of I"),
-        )
-        tables["parts"] = Table(columns, rows)
+    tables = {} if single is not None else {"parts": parts_table(body)}
     return Report("inertia", body.description, "closed form", results, steps, [], {}, tables)
+
+
+def parts_table(body: BodyInertia) -> Table:
+    """The parts of a body: each one's mass, I_cm, offset, I about the axis and share of the whole."""
+    rows = tuple(
+        (r.shape.name, r.part.mass, r.inertia_centre, r.offset, r.inertia, 100 * r.inertia / body.inertia if body.inertia else None)
+        for r in body.parts
+    )
+    columns = (
+        ("shape", None, "part"),
+        ("mass", "kg", "mass"),
+        ("I_cm", "kg*m**2", "I_cm"),
+        ("offset", "m", "offset"),
+        ("I", "kg*m**2", "I"),
+        ("share", "%", "share of I"),
+    )
+    return Table(columns, rows)
 
 
 def main_part(shape: str | None, mass: float | None, axis: str | None, offset: float | None, dims: Mapping[str, float | None]) -> Part:
@@ -478,6 +481,22 @@ def main_part(shape: str | None, mass: float | None, axis: str | None, offset: f
 def inertia(*, shape: str | None = None, mass: float | None = None, axis: str | None = None, offset: float | None = None, part: Sequence[Part] = (), **dims: float | None) -> Report:
     """``taucli inertia``: a shape's moment of inertia (shifted by --offset), or a body of parts."""
     return solve([main_part(shape, mass, axis, offset, dims), *part])
+
+
+def body_table(
+    *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
+    offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,
+) -> Table | None:
+    """The parts table of a scene's body made of parts (None for a body of one piece)."""
+    if not part:
+        return None
+    if inertia is not None:
+        pieces = [Part("", None, inertia=inertia), *part]
+    elif shape is not None:
+        pieces = [main_part(shape, mass, axis, offset, dims), *part]
+    else:
+        pieces = list(part)
+    return parts_table(body_inertia(pieces)) if len(pieces) > 1 else None
 
 
 def body(

@@ -516,6 +516,11 @@ def spin_down(
             raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed} or {until_arc}")
         rim = body_options.pop("radius")
     moment, body_steps = body(**body_options) if has_body else (None, ())
+    parts = None
+    if body_options.get("part"):
+        from taucli.scenes.inertia import body_table
+
+        parts = body_table(**body_options)
     results = Results(TABLE)
     front_steps: list[Step] = []
     notes: list[str] = []
@@ -565,15 +570,15 @@ def spin_down(
             if time is not None:
                 raise InputError("in_time", "conflicts with {time}: without a body they say the same")
             time = in_time
-        return _with_front(_uniform_report(moment, body_steps, torques, omega0, alpha, time=time, until_omega=until_omega,
-                                           until_angle=until_angle, front=(front_steps, notes, results)), results)
+        return _with_parts(_with_front(_uniform_report(moment, body_steps, torques, omega0, alpha, time=time, until_omega=until_omega,
+                                           until_angle=until_angle, front=(front_steps, notes, results)), results), parts)
     if power is not None:
         if in_time is not None:
             raise InputError("in_time", "conflicts with {power}: the drive is the motor's")
         if push is not None:
             raise InputError("power", "conflicts with {force}: give the motor's power or the push")
-        return _with_front(_power_report(moment, body_steps, power, torques, omega0 or 0.0, time=time, until_omega=until_omega,
-                                         until_angle=until_angle, method=method, dt=dt, rtol=rtol), results, notes, front_steps)
+        return _with_parts(_with_front(_power_report(moment, body_steps, power, torques, omega0 or 0.0, time=time, until_omega=until_omega,
+                                         until_angle=until_angle, method=method, dt=dt, rtol=rtol), results, notes, front_steps), parts)
     if in_time is not None:
         if torque is not None or push is not None or power is not None:
             raise InputError("in_time", "asks for the drive torque that meets the target, so it conflicts with a drive ({torque}, {force}, {power})")
@@ -582,8 +587,8 @@ def spin_down(
         if time is not None:
             raise InputError("time", "conflicts with {in_time}: ask for the target's time one way")
         if not torques.viscous and not torques.drag:
-            return _with_front(_uniform_report(moment, body_steps, torques, omega0, None, time=in_time, until_omega=until_omega,
-                                               until_angle=until_angle, front=(front_steps, notes, results)), results)
+            return _with_parts(_with_front(_uniform_report(moment, body_steps, torques, omega0, None, time=in_time, until_omega=until_omega,
+                                               until_angle=until_angle, front=(front_steps, notes, results)), results), parts)
         torques = _drive_for_target(moment, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
         time, until_omega, until_angle = in_time, None, None
         notes.append(f"the constant drive torque that meets the target in t = {fmt(in_time)} s, found by bisection on the motion: "
@@ -595,7 +600,7 @@ def spin_down(
     )
     if "torque" in results:
         results.put("torque_net", report.results["alpha0"].value * moment, " at the start")
-    return _with_front(report, results, notes, front_steps)
+    return _with_parts(_with_front(report, results, notes, front_steps), parts)
 
 
 def _drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, until_angle, method, dt, rtol) -> Torques:
@@ -627,6 +632,14 @@ def _drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, u
             break
         low, high = (mid, high) if miss(mid) < 0 else (low, mid)
     return Torques((low + high) / 2, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)
+
+
+def _with_parts(report: Report, parts: Table | None) -> Report:
+    """The report with the parts table of a body of parts."""
+    if parts is None:
+        return report
+    return Report(report.scene, report.model, report.method, report.results, report.steps, report.notes, report.inputs,
+                  {"parts": parts, **report.tables}, report.trajectory)
 
 
 def _rim_radius(body_options: dict, option: str) -> float:
