@@ -707,6 +707,7 @@ def _uniform_report(
         results.put("omega0", w0, " (from the targets)")
     if inertia is not None:
         results.put("I", inertia)
+    results.put("alpha0", alpha)
     results.put("alpha", alpha)
 
     stop = motion.stop()
@@ -765,7 +766,22 @@ def _uniform_report(
     model = "uniform angular acceleration (constant α)" + ("" if given_alpha else ", from the targets")
     if inertia is not None:
         steps.extend(_energy_steps(results, inertia, torques.friction))
-    return Report("spin-down", model, "closed form", results, steps, notes)
+    trajectory = deferred(_curves, lambda t: (motion.omega(t), motion.theta(t)), end, stop)
+    return Report("spin-down", model, "closed form", results, steps, notes, trajectory=trajectory)
+
+
+def _curves(state, end: float | None, stop: tuple[float, float] | None) -> Trajectory:
+    """ω(t) and θ(t) to the end asked for, else past the first stop, else for 10 s."""
+    note = ""
+    if end is not None and end > 0:
+        t_end = end
+    elif stop is not None and stop[0] > 0:
+        t_end = 1.25 * stop[0]
+    else:
+        t_end, note = 10.0, "plotted for 10 s; --time to change"
+    marks = ((stop[0], "stops"),) if stop is not None and 0 < stop[0] <= t_end else ()
+    curves = (("omega", "rad/s", "angular velocity ω"), ("theta", "rad", "angle turned θ"))
+    return Trajectory(curves, t_end, state, marks=marks, note=note)
 
 
 def _first_time_at_angle(motion, theta: float, notes: list[str]) -> float | None:
@@ -1116,7 +1132,7 @@ def _power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, ti
         chosen.name, f"{chosen.name}, dt = {fmt(chosen.dt or 0.0)} s"
     )
     steps.extend(_energy_steps(results, inertia, torques.friction, power=power))
-    return Report("spin-down", model, described, results, steps, notes)
+    return Report("spin-down", model, described, results, steps, notes, trajectory=deferred(_curves, motion.state, end, stop))
 
 
 def _power_time_at_angle(motion: PowerMotion, theta: float) -> tuple[float, float] | None:
