@@ -193,3 +193,20 @@ def test_omega0_from_stored_energy():
     assert report.results["omega0"].value == pytest.approx(1000, rel=1e-15)
     assert report.results["KE0"].value == pytest.approx(1e6, rel=1e-15)
     assert report.results["work_friction"].value == pytest.approx(1e6, rel=1e-13)
+
+
+def test_in_time_to_an_angle_with_a_viscous_loss():
+    """From rest, drive a against b: θ(t) = (a/b)(t − (I/b)(1 − e^(−bt/I))); the drive found meets θ at t."""
+    result = values(taucli.spin_down(inertia=1, until_angle=3, in_time=2, viscous=1))
+    with mp.workdps(40):
+        a = mpmath.mpf(result["torque"])
+        theta = a * (2 + mpmath.expm1(-2))
+    assert float(theta) == pytest.approx(3, rel=1e-13)
+
+
+def test_in_time_to_an_angle_at_constant_alpha_with_a_body():
+    """10 rev in 5 s from rest: α = 2θ/t², τ = Iα + τ_f."""
+    result = values(taucli.spin_down(inertia=0.5, until_angle="10 rev", in_time="5 s", friction=0.2))
+    alpha = 2 * 10 * TWO_PI / 25
+    assert result["alpha"] == pytest.approx(alpha, rel=1e-14)
+    assert result["torque"] == pytest.approx(0.5 * alpha + 0.2, rel=1e-14)
