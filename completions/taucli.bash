@@ -61,6 +61,7 @@ _taucli() {
             --depth) _taucli_units m cm mm km in ft; return 0 ;;
             --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
             --offset) _taucli_units m cm mm km in ft; return 0 ;;
+            --part) :; return 0 ;;
             --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --force) _taucli_units N kN lbf; return 0 ;;
@@ -72,16 +73,23 @@ _taucli() {
             --drag-exponent) :; return 0 ;;
             --time) _taucli_units s ms min h; return 0 ;;
             --until-omega) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --until-angle) _taucli_units deg rad rev; return 0 ;;
+            --until-arc) _taucli_units m cm mm km in ft; return 0 ;;
+            --alpha) _taucli_units 'rad/s^2' 'rpm/s' 'rev/s^2'; return 0 ;;
+            --in-time) _taucli_units s ms min h; return 0 ;;
+            --power) _taucli_units W kW MW hp; return 0 ;;
+            --ke0) _taucli_units J kJ MJ 'kW*h' Wh; return 0 ;;
+            --rim-speed) _taucli_units 'm/s' 'km/h' 'ft/s' mph; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto exact euler rk4 rk45" -- "$cur")); return 0 ;;
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --power --ke0 --rim-speed --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -155,6 +163,7 @@ _taucli() {
             --depth) _taucli_units m cm mm km in ft; return 0 ;;
             --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
             --offset) _taucli_units m cm mm km in ft; return 0 ;;
+            --part) :; return 0 ;;
             --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --omega1) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
@@ -170,7 +179,7 @@ _taucli() {
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in

@@ -145,31 +145,52 @@ PART_DIMENSIONS = ("radius", "inner_radius", "outer_radius", "length", "width", 
 
 
 def parse_part_spec(spec: str, number: int, inputs: Inputs):
-    """A ``--part`` value such as "point mass=100g offset=20cm" as an inertia Part."""
+    """A ``--part`` value such as "point mass=100g offset=20cm" as an inertia Part.
+
+    A part is a shape with mass= (or density=) and its dimensions, or its own I: inertia=
+    (with mass= and offset=, I_cm moved by the parallel-axis theorem) or gyration= with mass=;
+    those need no shape word. Keys read with - or _ (inner-radius=, inner_radius=).
+    """
     from taucli.scenes.inertia import Part
 
     source = f"{{part}} {number}"
     words = _PART_KEY.split(spec.strip())
     shape, *pairs = words
-    if not shape or "=" in shape:
+    if shape and "=" in shape:
+        shape, pairs = "", words
+    if not words or not words[0]:
         raise InputError(source, "expected a shape then key=value pairs", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
     fields: dict[str, str] = {}
     for pair in pairs:
         key, _, text = pair.partition("=")
         fields[key.replace("-", "_")] = text.strip()
-    known = {"mass", "axis", "offset", *PART_DIMENSIONS}
+    known = {"mass", "axis", "offset", "inertia", "gyration", "density", *PART_DIMENSIONS}
     for key in fields:
         if key not in known:
             raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", got=repr(key.replace("_", "-")))
-    if "mass" not in fields:
-        raise InputError(source, "needs mass=", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
+    given_inertia = "inertia" in fields or "gyration" in fields
+    if not shape and not given_inertia:
+        raise InputError(source, "expected a shape then key=value pairs (or inertia= or gyration=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
+    if shape and given_inertia:
+        raise InputError(source, "takes a shape or inertia=/gyration=, not both", got=repr(spec))
+    if "mass" not in fields and "density" not in fields and "inertia" not in fields:
+        raise InputError(source, "needs mass= (or density=, or inertia=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
 
     def read_field(key: str, kind: str, sign: str = "positive") -> float:
         return inputs.quantity(f"{source} {key.replace('_', '-')}=", fields[key], kind, sign=sign, key=f"part{number}_{key}")
 
     dims = {key: read_field(key, "length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS if key in fields}
     offset = read_field("offset", "length", "nonnegative") if "offset" in fields else None
-    return Part(shape, read_field("mass", "mass"), dims, fields.get("axis"), offset, source)
+    mass = read_field("mass", "mass") if "mass" in fields else None
+    inertia = read_field("inertia", "moment of inertia") if "inertia" in fields else None
+    gyration = read_field("gyration", "length") if "gyration" in fields else None
+    density = _read_density(source, fields["density"], inputs, number) if "density" in fields else None
+    return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density)
+
+
+def _read_density(source: str, text: str, inputs: Inputs, number: int) -> float:
+    """A part's density (kg/m³), read as every quantity is."""
+    return inputs.quantity(f"{source} density=", text, "density", key=f"part{number}_density")
 
 
 # Vectors ("0.3,0.4,0 m") and quantities given more than once (--mass 2kg --mass 3kg).

@@ -47,6 +47,9 @@ METAVARS = {
     "viscous coefficient": "B",
     "drag coefficient": "K",
     "dimensionless": "NUMBER",
+    "power": "POWER",
+    "energy": "ENERGY",
+    "density": "DENSITY",
 }
 
 
@@ -129,6 +132,9 @@ class Command:
     _index: dict = field(default_factory=dict, compare=False, repr=False)
 
     def __post_init__(self) -> None:
+        names = [option.name for option in (*self.options, *self.output)]
+        if len(set(names)) != len(names):  # an option listed twice (a shared group and its own line)
+            raise ValueError(f"{self.name}: options named twice in its table: {sorted({n for n in names if names.count(n) > 1})}")
         self._index.update({option.name: option for option in (*self.options, *self.output)})
         self._index["inputs:"] = frozenset(option.name for option in self.options)
         self._index.update({"result:" + result.key: result for result in self.results})

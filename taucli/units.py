@@ -71,6 +71,9 @@ KINDS: dict[str, Kind] = {
         Kind("viscous coefficient", "N*m*s", "'0.01 N*m*s'", ("N*m*s", "N*m/(rad/s)")),
         Kind("drag coefficient", "N*m*s**2", "'0.001 N*m*s^2'", ("N*m*s^2",)),
         Kind("dimensionless", "", "0.5", ()),
+        Kind("power", "W", "1 kW", ("W", "kW", "MW", "hp")),
+        Kind("energy", "J", "1 MJ", ("J", "kJ", "MJ", "kW*h", "Wh")),
+        Kind("density", "kg/m**3", "'7800 kg/m^3'", ("kg/m^3", "g/cm^3", "lb/ft^3")),
     )
 }
 STANDARD_GRAVITY = 9.80665  # m/s^2: what lbf and kgf are defined with

@@ -13,6 +13,7 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
+import taucli
 from taucli.errors import InputError
 from taucli.scenes.inertia import SHAPES, Part, body_inertia, part_inertia, solve
 
@@ -318,9 +319,11 @@ def test_parts_table_gives_the_centre_moment_and_offset_of_a_part_turning_off_ce
         assert row["I_cm"] == pytest.approx(0.002883, rel=1e-3) and row["I"] == pytest.approx(0.011532, rel=1e-4)
 
 
+# offsets 0 or within the bounds every length has (a body's computed I is held to the same bounds)
+OFFSETS = st.one_of(st.just(0.0), st.floats(1e-9, 10))
 part_specs = st.one_of(
-    st.tuples(st.sampled_from([c for c in CASES if c[0] != "point"]), st.one_of(st.none(), st.floats(0, 10))),
-    st.tuples(st.just(("point", "distance", {})), st.floats(0, 10)),
+    st.tuples(st.sampled_from([c for c in CASES if c[0] != "point"]), st.one_of(st.none(), OFFSETS)),
+    st.tuples(st.just(("point", "distance", {})), OFFSETS),
     st.tuples(st.just(("point", "distance", {"radius": 0.3})), st.none()),
 )
 
@@ -341,3 +344,60 @@ def test_every_row_of_the_parts_table_obeys_the_parallel_axis_theorem(specs):
         row = dict(zip(columns, cells))
         assert row["offset"] >= 0 and 0 <= row["I_cm"] <= row["I"] * (1 + 1e-15)
         assert row["I"] == pytest.approx(row["I_cm"] + row["mass"] * row["offset"] ** 2, rel=4e-16 * 4)
+
+
+# Parts given by their own I, a radius of gyration, or a density (#18) -----------------------
+
+
+def _ref_disc_from_density(density, radius, length):
+    with mpmath.workdps(40):
+        # mass as ∫ρ dV over the cylinder in shells 2πr·L dr; I as ∫ρ r² dV
+        mass = mpmath.quad(lambda r: density * 2 * mpmath.pi * r * length, [0, radius])
+        moment = mpmath.quad(lambda r: density * 2 * mpmath.pi * r**3 * length, [0, radius])
+        return float(mass), float(moment)
+
+
+def test_a_part_by_density_and_dimensions():
+    mass, moment = _ref_disc_from_density(7800, 0.1, 0.02)
+    report = taucli.inertia(shape="point", mass=1, radius=0.1, part=['disc density=7800kg/m^3 radius=0.1m length=2cm'])
+    assert report.results["I"].value == pytest.approx(0.01 + moment, rel=1e-14)
+    assert report.results["mass"].value == pytest.approx(1 + mass, rel=1e-14)
+
+
+def test_a_part_by_its_own_inertia_moved_and_by_gyration():
+    """inertia= with mass= and offset=: I_cm + Md²; gyration= with mass=: Mk²; keys with - or _."""
+    report = taucli.spin_down(
+        inertia="2 kg*m^2", omega0=1,
+        part=["inertia=0.05kg*m^2 mass=1kg offset=0.3m", "gyration=30cm mass=2kg"],
+    )
+    assert report.results["I"].value == pytest.approx(2 + 0.05 + 1 * 0.09 + 2 * 0.09, rel=1e-14)
+    dashed = taucli.inertia(shape="tube", mass=1, inner_radius=0.1, outer_radius=0.2, part=["tube mass=1kg inner-radius=0.1m outer_radius=0.2m"])
+    assert dashed.results["I"].value == pytest.approx(2 * 0.5 * (0.01 + 0.04), rel=1e-14)
+
+
+def test_a_wheel_with_a_child_on_its_rim():
+    """A merry-go-round: a 30 kg, 1.5 m disc with a 25 kg child at the rim, I = ½MR² + mR² = 90 kg·m²."""
+    report = taucli.spin_down(shape="disc", mass="30 kg", radius="1.5 m", part=["point mass=25kg offset=1.5m"], omega0=2, torque=0)
+    with mpmath.workdps(40):
+        reference = mpmath.mpf(30) * mpmath.mpf("1.5") ** 2 / 2 + 25 * mpmath.mpf("1.5") ** 2
+    assert report.results["I"].value == pytest.approx(float(reference), rel=1e-15)
+    impulse = taucli.impulse(inertia=1, part=["point mass=2kg offset=1m"], omega0=0, torque=2, duration=1)
+    assert impulse.results["omega1"].value == pytest.approx(2 / 3, rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    ("spec", "fragment"),
+    [
+        ("inertia=2 offset=1m", "mass= is needed with offset="),
+        ("gyration=0.3m", "needs mass="),
+        ("ring density=7800 radius=0.1m", "solid of known volume"),
+        ("disc density=7800 mass=1kg radius=0.1m length=1cm", "conflicts with mass="),
+        ("disc density=7800 radius=0.1m", "length= is needed"),
+        ("disc inertia=2", "not both"),
+        ("density=7 radius=1m", "expected a shape"),
+        ("disc density=7kg radius=1m length=1m", "expected a density"),
+    ],
+)
+def test_bad_parts_are_refused(spec, fragment):
+    with pytest.raises(InputError, match=fragment):
+        taucli.inertia(shape="point", mass=1, radius=0.1, part=[spec])

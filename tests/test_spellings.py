@@ -98,6 +98,14 @@ SPELLINGS = {
     ], ("spin-down", "--inertia", "1", "--omega0", "1rad/s"), "--drag"),
     "dimensionless": (0.25, ["0.25", ".25", "0.250", "2.5e-1", "1/4", "25/100", "0.25 dimensionless", "0.5 * 0.5"],
                       ("atwood", "--m1", "4kg", "--m2", "1kg", "--incline", "30deg"), "--mu-k"),
+    # power (#18): 1 hp (mechanical) = 550 ft·lbf/s = 745.69987158227 W
+    "power": (1500.0, ["1500 W", "1500W", "1.5 kW", "1.5kW", "0.0015 MW", "1500 J/s", "1500 N*m/s", f"{1500 / 745.69987158227022!r} hp", "1500"],
+              ("spin-down", "--inertia", "2", "--until-omega", "100rpm"), "--power"),
+    "energy": (2.5e6, ["2.5e6 J", "2.5 MJ", "2500 kJ", "2500kJ", f"{2.5e6 / 3.6e6!r} kW*h", f"{2.5e6 / 3600!r} Wh", f"{2.5e6 / 3.6e6!r} kWh",
+                       "2.5e6 N*m", "2.5e6"], ("spin-down", "--inertia", "2", "--friction", "1"), "--ke0"),
+    # density (a part's density=): 1 lb/ft³ = 0.45359237 kg / 0.3048³ m³
+    "density": (7800.0, ["7800 kg/m^3", "7800 kg/m3", "7.8 g/cm^3", "7.8 g/cm3", "7.8 g/mL", "7800 kg*m^-3",
+                         f"{7800 / (0.45359237 / 0.3048**3)!r} lb/ft^3", "7.8 tonne/m^3", "7800"], None, None),
 }  # fmt: skip
 
 

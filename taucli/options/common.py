@@ -44,7 +44,8 @@ OFFSET = _length("offset", "Distance of the rotation axis from the parallel axis
 PARTS = Option(
     "part",
     PART,
-    'Another part of the same body about the same axis, e.g. --part "point mass=100g offset=0.2m" (repeatable).',
+    'Another part of the same body about the same axis, e.g. --part "point mass=100g offset=0.2m"; '
+    'a part may be given by inertia= (with mass= and offset=), gyration= with mass=, or density= with its dimensions (repeatable).',
     panel=BODY,
     repeatable=True,
     metavar='"SHAPE key=value ..."',
@@ -59,6 +60,7 @@ BODY_OPTIONS = (
     *DIMENSIONS,
     AXIS,
     OFFSET,
+    PARTS,
 )
 
 GRAVITY = Option("g", "acceleration", "Gravity.", default="9.80665 m/s^2")

@@ -1,6 +1,6 @@
 """taucli gyro: a spinning top or gyroscope on a pivot, and the precession of its axis."""
 
-from taucli.options.common import ANSWER, BODY, BODY_OPTIONS, GRAVITY, PARTS
+from taucli.options.common import ANSWER, BODY, BODY_OPTIONS, GRAVITY
 from taucli.table import Command, Option, Result
 
 PIVOT = "Pivot and torque"
@@ -18,7 +18,6 @@ COMMAND = Command(
     example="taucli gyro --shape disc --mass 0.3kg --radius 5cm --spin 4000rpm --cm-distance 5cm",
     options=(
         *BODY_OPTIONS,
-        PARTS,
         Option("spin", "angular velocity", "Spin ω_s: the angular velocity's component along the spin axis, e.g. 4000rpm."),
         Option("cm_distance", "length", "Distance r from the pivot to the centre of mass, along the spin axis, e.g. 5cm.", sign="nonnegative", panel=PIVOT),
         Option(

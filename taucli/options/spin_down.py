@@ -1,7 +1,7 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
 from taucli.options.common import ANSWER, BODY_OPTIONS, DT, METHOD, MOTION, RTOL
-from taucli.table import Command, Option, Result
+from taucli.table import FLAG, Command, Option, Result
 
 COMMAND = Command(
     name="spin-down",
@@ -20,6 +20,27 @@ COMMAND = Command(
         Option("drag_exponent", "dimensionless", "Exponent n of the drag torque kωⁿ, 1 to 10.", default="2", metavar="N"),
         Option("time", "time", "Report ω, θ and revolutions at this time, e.g. 4s.", sign="nonnegative", panel=MOTION),
         Option("until_omega", "angular velocity", "Report the time and angle to reach this speed.", sign="any", panel=MOTION),
+        Option("until_angle", "angle", "Report the time and ω when the wheel has turned this far, e.g. 10rev.", sign="any", panel=MOTION),
+        Option("until_arc", "length", "The same for a length at the rim (cord off a drum): θ = s/R, e.g. 2m.", sign="any", panel=MOTION),
+        Option(
+            "alpha", "angular acceleration",
+            "Constant angular acceleration, standing in for the body and its torques (any three of ω₀, ω₁, α, t, θ give the rest).",
+            sign="any", panel=MOTION,
+        ),
+        Option(
+            "in_time", "time",
+            "Reach the target (--until-omega or --until-angle) in this time: the constant α, and with a body the torque, that does it.",
+            panel=MOTION,
+        ),
+        Option("power", "power", "A motor of constant power P (τ = P/ω; negative: a load draining the wheel), e.g. 1kW.", sign="any"),
+        Option("ke0", "energy", "Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.", sign="nonnegative", panel=MOTION),
+        Option("rim_speed", "velocity", "Initial speed of the rim, giving ω₀ = v/R (R the body's radius, or --radius with --inertia).", sign="any", panel=MOTION),
+        Option(
+            "energy", FLAG,
+            "Also report the kinetic energy, the work of the drive and of each loss (to --time or the stop) and their power "
+            "(always with --alpha, --in-time, --power or --ke0).",
+            panel=MOTION,
+        ),
         METHOD,
         DT,
         RTOL,
@@ -36,6 +57,21 @@ COMMAND = Command(
         Result("revs", "rev", "revolutions…"),
         Result("t_until", "s", "time to reach…"),
         Result("theta_until", "rad", "angle turned until…"),
+        Result("alpha", "rad/s**2", "angular acceleration (constant)"),
+        Result("omega0", "rad/s", "initial angular velocity…"),
+        Result("torque_net", "N*m", "net torque…"),
+        Result("torque", "N*m", "drive torque…"),
+        Result("KE0", "J", "kinetic energy at the start"),
+        Result("KE", "J", "kinetic energy…"),
+        Result("work_drive", "J", "work done by the drive…"),
+        Result("work_friction", "J", "energy friction takes…"),
+        Result("work_viscous", "J", "energy the viscous torque takes…"),
+        Result("work_drag", "J", "energy drag takes…"),
+        Result("power", "W", "drive power…"),
+        Result("power_mean", "W", "mean drive power…"),
+        Result("power_friction", "W", "power friction takes…"),
+        Result("power_viscous", "W", "power the viscous torque takes…"),
+        Result("power_drag", "W", "power drag takes…"),
     ),
     output=ANSWER,
     headline="alpha0",

@@ -554,7 +554,7 @@ def impulse(
     changes with no torque (--inertia-final); or a sampled torque (--torque-profile)."""
     from taucli.scenes.inertia import body
 
-    body_given = body_options.get("inertia") is not None or body_options.get("shape") is not None
+    body_given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     moment, body_steps = body(**body_options) if body_given else (None, ())
     if particle or couple:
         mode = "particle" if particle else "couple"

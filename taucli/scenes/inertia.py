@@ -166,11 +166,14 @@ class Part:
     """
 
     shape: str
-    mass: float
+    mass: float | None
     dims: Mapping[str, float] = field(default_factory=dict)
     axis: str | None = None
     offset: float | None = None
     source: str = ""
+    inertia: float | None = None  # its own I (about its centre when an offset moves it)
+    gyration: float | None = None  # its radius of gyration k (I = Mk²)
+    density: float | None = None  # its mass from its shape's volume
 
     def option(self, name: str) -> str:
         flag = name.replace("_", "-")
@@ -178,7 +181,10 @@ class Part:
 
     def example(self, name: str, value: str) -> str:
         flag = name.replace("_", "-")
-        return f'{{part}} "{self.shape} mass=1kg {flag}={value}"' if self.source else f"{{{name}}} {value}"
+        lead = self.shape or ("gyration=0.3m" if self.gyration is not None else "inertia=0.05kg*m^2")
+        if flag == "mass":
+            return f'{{part}} "{lead} mass={value}"' if self.source else f"{{{name}}} {value}"
+        return f'{{part}} "{lead} mass=1kg {flag}={value}"' if self.source else f"{{{name}}} {value}"
 
 
 @dataclass(frozen=True)
@@ -226,8 +232,82 @@ def _fill(template: str, mass: float, dims: Mapping[str, float]) -> str:
     return template.format(**values)
 
 
+# The volume of each solid shape, from its dimensions: for a part given by its density.
+VOLUMES: dict[str, tuple[str, Callable[..., float]]] = {
+    "disc": ("V = πR²L", lambda radius, length: math.pi * radius * radius * length),
+    "tube": ("V = π(R₂² − R₁²)L", lambda inner_radius, outer_radius, length: math.pi * (outer_radius - inner_radius) * (outer_radius + inner_radius) * length),
+    "sphere": ("V = (4/3)πR³", lambda radius: 4 / 3 * math.pi * radius**3),
+    "thick-shell": ("V = (4/3)π(R₂³ − R₁³)", lambda inner_radius, outer_radius: 4 / 3 * math.pi * (outer_radius - inner_radius)
+                    * (outer_radius * outer_radius + outer_radius * inner_radius + inner_radius * inner_radius)),
+    "box": ("V = WHD", lambda width, height, depth: width * height * depth),
+    "cone": ("V = πR²H/3", lambda radius, height: math.pi * radius * radius * height / 3),
+}
+
+
+def _given_inertia(part: Part) -> PartInertia:
+    """A part given by its own I (inertia=) or radius of gyration (gyration= with mass=), moved by
+    offset= with the parallel-axis theorem (which needs its mass)."""
+    if part.inertia is not None and part.gyration is not None:
+        raise InputError(part.option("gyration"), "conflicts with inertia=: give the part's I one way")
+    if part.dims or part.density is not None:
+        raise InputError(part.option("inertia" if part.inertia is not None else "gyration"), "needs no shape or dimensions: they are in its I")
+    steps: list[Step] = []
+    if part.gyration is not None:
+        if part.mass is None:
+            raise InputError(part.option("mass"), "is needed with gyration= (I = Mk²)", example=part.example("gyration", "0.3m"))
+        own = part.mass * part.gyration**2
+        steps.append(Step("Moment of inertia from the radius of gyration", "I = Mk²",
+                          f"{quantity_text(part.mass, 'kg')} × ({quantity_text(part.gyration, 'm')})²", quantity_text(own, "kg*m**2"),
+                          "k is the distance at which the whole mass, gathered in a ring, would have the same I"))
+    else:
+        own = part.inertia
+        steps.append(Step("Moment of inertia given", "I = I_given", "", quantity_text(own, "kg*m**2"), "the part's own moment of inertia, as given"))
+    shape = Shape("given", "part of given inertia", (), (Axis("given", "its own axis", "I", "", lambda mass: own, "as given"),))
+    if part.offset is None:
+        return PartInertia(part, shape, shape.axes[0], own, own, tuple(steps))
+    if part.mass is None:
+        raise InputError(part.option("mass"), "is needed with offset= (the parallel-axis theorem: I = I_cm + Md²)", example=part.example("offset", "0.2m"))
+    moved = own + part.mass * part.offset**2
+    steps.append(Step("Shift to the rotation axis (parallel-axis theorem)", "I = I_cm + Md²",
+                      f"{quantity_text(own, 'kg*m**2')} + {quantity_text(part.mass, 'kg')} × ({quantity_text(part.offset, 'm')})²",
+                      quantity_text(moved, "kg*m**2"), "the given I is about the part's centre of mass, at distance d from the rotation axis"))
+    return PartInertia(part, shape, shape.axes[0], own, moved, tuple(steps), part.offset)
+
+
+def _mass_from_density(part: Part, shape: Shape) -> tuple[Part, Step]:
+    """The part with its mass from density × volume."""
+    if part.mass is not None:
+        raise InputError(part.option("density"), "conflicts with mass=: give the part's mass or its density")
+    if shape.name not in VOLUMES:
+        raise InputError(part.option("density"), f"needs a solid of known volume ({', '.join(VOLUMES)}), not a {shape.title}")
+    equation, volume_of = VOLUMES[shape.name]
+    import inspect
+
+    needed = tuple(inspect.signature(volume_of).parameters)
+    for dim in needed:
+        if dim not in part.dims:
+            raise InputError(part.option(dim), f"is needed for the volume of a {shape.title} ({equation})", example=part.example(dim, "0.05m"))
+    volume = volume_of(**{dim: part.dims[dim] for dim in needed})
+    mass = part.density * volume
+    step = Step(f"Mass of the {shape.title} from its density", f"M = ρV,  {equation}",
+                f"{quantity_text(part.density, 'kg/m**3')} × {quantity_text(volume, 'm**3')}", quantity_text(mass, "kg"),
+                "a uniform body's mass is its density times its volume")
+    from dataclasses import replace
+
+    return replace(part, mass=mass, density=None), step
+
+
 def part_inertia(part: Part) -> PartInertia:
     """I of one part about the rotation axis: its shape's closed form, then any parallel shift."""
+    if part.inertia is not None or part.gyration is not None:
+        return _given_inertia(part)
+    density_step = None
+    if part.density is not None:
+        part, density_step = _mass_from_density(part, lookup_shape(part.shape, f"{part.source} shape".strip() if part.source else "SHAPE"))
+        found = part_inertia(part)
+        return PartInertia(found.part, found.shape, found.axis, found.inertia_centre, found.inertia, (density_step, *found.steps), found.offset)
+    if part.mass is None:
+        raise InputError(part.option("mass"), "is needed (or density=, inertia=, gyration=)", example=part.example("mass", "1kg"))
     shape = lookup_shape(part.shape, f"{part.source} shape".strip() if part.source else "SHAPE")
     axis = shape.axis(part.axis)
     dims = dict(part.dims)
@@ -306,6 +386,9 @@ def _point_inertia(part: Part, shape: Shape, axis: Axis, dims: Mapping[str, floa
 
 
 def describe_part(result: PartInertia) -> str:
+    if result.shape.name == "given":
+        text = "a part of given inertia" if result.part.gyration is None else f"a part of radius of gyration {fmt(result.part.gyration)} m"
+        return text + (f", shifted {fmt(result.part.offset)} m (parallel-axis theorem)" if result.part.offset is not None else "")
     if result.shape.name == "point":
         distance = result.part.dims.get("radius", result.part.offset)
         return f"point mass {fmt(distance)} m from the axis"
@@ -318,7 +401,7 @@ def describe_part(result: PartInertia) -> str:
 def body_inertia(parts: Sequence[Part]) -> BodyInertia:
     """I of a body of one or more parts about one axis: I = Σ I_i (moments about one axis add)."""
     results = tuple(part_inertia(part) for part in parts)
-    mass = math.fsum(r.part.mass for r in results)
+    mass = math.fsum(r.part.mass or 0.0 for r in results)
     inertia = math.fsum(r.inertia for r in results)
     # The bounds of a typed --inertia hold for one computed from a shape too.
     units.check_bounds(inertia, "moment of inertia", _given(parts), got=f"I = {inertia:g} kg*m**2")
@@ -360,7 +443,7 @@ def _subscript(n: int) -> str:
 def solve(parts: Sequence[Part]) -> Report:
     """The inertia scene: I about the axis, the radius of gyration k = √(I/M), I_cm when shifted."""
     body = body_inertia(parts)
-    gyration = math.sqrt(body.inertia / body.mass)
+    gyration = math.sqrt(body.inertia / body.mass) if body.mass else None
     results = Results(TABLE)
     results.put("I", body.inertia)
     results.put("k", gyration)
@@ -379,22 +462,25 @@ def solve(parts: Sequence[Part]) -> Report:
             "the distance from the axis at which the whole mass, gathered in a ring, would have the same I",
         )
     )
-    tables = {}
-    if single is None:
-        rows = tuple(
-            (r.shape.name, r.part.mass, r.inertia_centre, r.offset, r.inertia, 100 * r.inertia / body.inertia if body.inertia else None)
-            for r in body.parts
-        )
-        columns = (
-            ("shape", None, "part"),
-            ("mass", "kg", "mass"),
-            ("I_cm", "kg*m**2", "I_cm"),
-            ("offset", "m", "offset"),
-            ("I", "kg*m**2", "I"),
-            ("share", "%", "share of I"),
-        )
-        tables["parts"] = Table(columns, rows)
+    tables = {} if single is not None else {"parts": parts_table(body)}
     return Report("inertia", body.description, "closed form", results, steps, [], {}, tables)
+
+
+def parts_table(body: BodyInertia) -> Table:
+    """The parts of a body: each one's mass, I_cm, offset, I about the axis and share of the whole."""
+    rows = tuple(
+        (r.shape.name, r.part.mass, r.inertia_centre, r.offset, r.inertia, 100 * r.inertia / body.inertia if body.inertia else None)
+        for r in body.parts
+    )
+    columns = (
+        ("shape", None, "part"),
+        ("mass", "kg", "mass"),
+        ("I_cm", "kg*m**2", "I_cm"),
+        ("offset", "m", "offset"),
+        ("I", "kg*m**2", "I"),
+        ("share", "%", "share of I"),
+    )
+    return Table(columns, rows)
 
 
 def main_part(shape: str | None, mass: float | None, axis: str | None, offset: float | None, dims: Mapping[str, float | None]) -> Part:
@@ -412,6 +498,22 @@ def inertia(*, shape: str | None = None, mass: float | None = None, axis: str | 
     return solve([main_part(shape, mass, axis, offset, dims), *part])
 
 
+def body_table(
+    *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
+    offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,
+) -> Table | None:
+    """The parts table of a scene's body made of parts (None for a body of one piece)."""
+    if not part:
+        return None
+    if inertia is not None:
+        pieces = [Part("", None, inertia=inertia), *part]
+    elif shape is not None:
+        pieces = [main_part(shape, mass, axis, offset, dims), *part]
+    else:
+        pieces = list(part)
+    return parts_table(body_inertia(pieces)) if len(pieces) > 1 else None
+
+
 def body(
     *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
     offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,
@@ -423,8 +525,14 @@ def body(
             raise InputError("inertia", "conflicts with {shape}: give one of them")
         if shape_options:
             raise InputError(shape_options[0], "goes with {shape}; with {inertia} it is not used")
-        return inertia, ()
+        if not part:
+            return inertia, ()
+        found = body_inertia([Part("", None, inertia=inertia), *part])
+        return found.inertia, found.steps
     if shape is None:
+        if part and not shape_options:  # the parts make up the whole body
+            found = body_inertia(part)
+            return found.inertia, found.steps
         raise InputError("inertia", "or {shape} is required", example="{inertia} 0.1kg*m^2, or {shape} disc {mass} 5kg {radius} 0.2m")
     found = body_inertia([main_part(shape, mass, axis, offset, dims), *part])
     return found.inertia, found.steps

@@ -103,9 +103,9 @@ class Phase:
 
         def check(omega: float) -> bool:
             gap = omega - steady
-            if gap == 0:
-                return True
             linear = -rate * gap
+            if gap == 0 or linear == 0:  # (λ·δ can underflow where δ is already below a double's reach)
+                return True
             excess = abs(self.rate(omega) - linear) / abs(linear) / order
             return excess * abs(gap) <= 0.1 * rtol * max(steady, abs(gap))
 
@@ -239,6 +239,48 @@ class Evolver:
         return (solution.t, solution.theta) if solution.event else None
 
 
+    def reach_angle(self, phase: Phase, distance: float, t_limit: float | None = None) -> tuple[float, float] | None:
+        """(t, ω) when the phase has covered ``distance`` > 0 (None: it never does, or not
+        before t_limit). θ grows with t while the phase moves, so doubling steps bracket the time
+        and bisection finds it to the last bit; a stepping method steps on from the bracket's
+        lower end each time, so the whole search costs a few runs over the bracket."""
+        closed = phase.closed
+        if distance == 0:
+            return 0.0, closed.omega0
+        speed = closed.omega0
+        if speed > 0:
+            guess = distance / speed
+        elif closed.constant > 0:
+            guess = math.sqrt(2 * distance * closed.inertia / closed.constant)
+        else:
+            return None
+        if t_limit is not None:
+            guess = min(guess, t_limit)
+        low = (0.0, closed.omega0, 0.0)
+        width = guess
+        for _ in range(80):
+            t_high = low[0] + width if t_limit is None else min(low[0] + width, t_limit)
+            omega, theta = self.state(phase, t_high, low)
+            if theta >= distance:
+                high = (t_high, omega, theta)
+                break
+            if t_limit is not None and t_high >= t_limit:
+                return None
+            low, width = (t_high, omega, theta), 2 * width
+        else:
+            return None
+        for _ in range(200):
+            mid = (low[0] + high[0]) / 2
+            if mid in (low[0], high[0]):
+                break
+            omega, theta = self.state(phase, mid, low)
+            if theta < distance:
+                low = (mid, omega, theta)
+            else:
+                high = (mid, omega, theta)
+        return high[0], high[1]
+
+
 @dataclass(frozen=True)
 class Motion:
     """The whole motion: a first phase, a stop perhaps, and perhaps a second phase the other way.
@@ -314,6 +356,26 @@ class Motion:
             reached = self.evolver.reach(second, abs(target))
             if reached is not None:
                 return stop[0] + reached[0], direction * stop[1] + second.direction * reached[1]
+        return None
+
+
+    def reach_angle(self, target: float) -> tuple[float, float] | None:
+        """(t, v) when the position first equals target, or None if it never does."""
+        if target == 0:
+            return 0.0, self.state_at(0.0)[0]
+        if self.held_from_start:
+            return None
+        direction, stop, second = self.direction, self.stop, self.second
+        if target * direction > 0 and (stop is None or abs(target) <= stop[1]):
+            reached = self.evolver.reach_angle(self.first, abs(target), None if stop is None else stop[0])
+            if reached is not None:
+                return reached[0], direction * reached[1]
+        if second is not None and stop is not None:
+            distance = (target - direction * stop[1]) * second.direction
+            if distance > 0:
+                reached = self.evolver.reach_angle(second, distance)
+                if reached is not None:
+                    return stop[0] + reached[0], second.direction * reached[1]
         return None
 
 

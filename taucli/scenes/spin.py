@@ -106,22 +106,27 @@ def solve(
     *,
     time: float | None = None,
     until_omega: float | None = None,
+    until_angle: float | None = None,
     method: str = "auto",
     dt: float | None = None,
     rtol: float | None = None,
     push: Push | None = None,
     inertia_steps: Sequence[Step] = (),
     estimate_error: bool = True,
+    energy: bool = False,
 ) -> Report:
     """Spin-down or spin-up of a wheel on a fixed axle; see the module docstring for the model.
 
     A fixed-step method (euler, rk4) has each answer's error estimated against a reference (the
     ``error_estimate`` table); an answer estimated more than 1e-3 off is withheld, null, with a
-    note. ``estimate_error=False`` leaves that out (the bench times the method alone)."""
+    note. ``estimate_error=False`` leaves that out (the bench times the method alone). ``energy``
+    adds KE, the work of each torque and the power."""
     if torques.drag and not 1 <= torques.drag_exponent <= 10:
         raise InputError("drag_exponent", "expected a number from 1 to 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
     if torques.drag and torques.drag_exponent == 1:
         torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0, torques.static)
+    if until_angle is not None and (time is not None or until_omega is not None):
+        raise InputError("until_angle", "conflicts with {time} and {until_omega}: ask for one target at a time (a run each)")
     closed_form = torques.drag == 0 or torques.drag_exponent == 2
     chosen = _choose_method(method, closed_form, dt, rtol)
     evolver = Evolver(chosen)
@@ -142,7 +147,7 @@ def solve(
         )
     elif stop is None and not first.stops:  # (a stop that a stepper blew up before finding is said below)
         notes.append(_never_stops_note(torques, first))
-    answers = _answers(motion, time, until_omega)
+    answers = _answers(motion, time, until_omega, until_angle)
     results.put("t_stop", answers["t_stop"])
     results.put("theta_stop", answers["theta_stop"])
     results.put("revs_stop", None if answers["theta_stop"] is None else answers["theta_stop"] / TWO_PI)
@@ -162,15 +167,25 @@ def solve(
             notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
         results.put("t_until", answers["t_until"], f" ω = {fmt(until_omega)} rad/s")
         results.put("theta_until", answers["theta_until"], f" ω = {fmt(until_omega)} rad/s")
+    if until_angle is not None:
+        where = f"θ = {fmt(until_angle)} rad ({fmt(until_angle / TWO_PI)} rev)"
+        if answers["t_until"] is None and not evolver.unstable:
+            turned = answers["theta_stop"]
+            notes.append(f"the wheel stops first, after {fmt(turned)} rad ({fmt(turned / TWO_PI)} rev), and never reaches {where}"
+                         if turned is not None and second is None else f"the wheel never reaches {where}")
+        results.put("t_until", answers["t_until"], f" θ = {fmt(until_angle)} rad")
+        results.put("omega", answers["omega"], f" at θ = {fmt(until_angle)} rad")
 
     tables, described = {}, chosen.describe(evolver.steps)
+    if energy and not evolver.unstable:
+        _energy(motion, inertia, torques, omega0, time, results, notes)
     if evolver.unstable:
         notes.extend(dict.fromkeys(evolver.unstable))
         for name in results:
             if name not in ("I", "alpha0"):
                 results[name] = Value(None, results[name].unit, results[name].label)
     elif chosen.name in ("euler", "rk4") and estimate_error:
-        estimate = _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, chosen, results, notes)
+        estimate = _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, until_angle, chosen, results, notes)
         if estimate is not None:
             tables["error_estimate"], worst = estimate
             described += f"; estimated error at most {fmt(worst, 2)} relative" if worst is not None else ""
@@ -181,6 +196,11 @@ def solve(
     steps.extend(_net_torque_step(torques, omega0, alpha0, inertia, held_from_start))
     if not held_from_start:
         steps.extend(_kinematics_steps(torques, first, stop, results, time, chosen, omega0))
+        if until_angle is not None and results["t_until"].value is not None:
+            steps.append(Step("Time to turn θ", "θ(t) = θ_target, solved for t", f"θ_target = {quantity_text(until_angle, 'rad')}",
+                              f"t = {quantity_text(results['t_until'].value, 's')}, ω = {quantity_text(results['omega'].value, 'rad/s')}",
+                              "θ grows with t while the wheel turns one way, so the time is bracketed and found by bisection on θ(t)"))
+    steps.extend(_energy_steps(results, inertia, torques.friction))
     if chosen.name != "exact" and method == "auto":
         notes.append(f"no closed form for drag kω^{fmt(torques.drag_exponent)} with these torques: integrated numerically")
     model = _model(torques, chosen)
@@ -190,7 +210,93 @@ def solve(
     return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
 
 
-def _answers(motion, time: float | None, until_omega: float | None) -> dict[str, float | None]:
+def _energy(motion, inertia: float, torques: Torques, omega0: float, time: float | None, results: Results, notes: list[str]) -> None:
+    """KE0, and KE with the work of the drive and of each loss up to --time (or the stop), and
+    the power of each at --time (or the start).
+
+    In each stretch of motion one way (a phase, ω ≥ 0 in its frame) I dω/dt = A − bω − kωⁿ with
+    A = ±τ_drive − τ_f; times ω and integrated, ½I(ω_b² − ω_a²) = A·d − W_viscous − W_drag over
+    the distance d. So the drive does ±τ_drive·d, friction takes τ_f·d, and the viscous and drag
+    losses together take the rest; where both act, the viscous one is integrated (b∫ω²dt by
+    8-point Gauss-Legendre on the motion) and drag takes what remains.
+    """
+    n = torques.drag_exponent
+    results.put("KE0", inertia * omega0 * omega0 / 2)
+    stop = motion.stop
+    end = time if time is not None else (stop[0] if stop is not None and not motion.held_from_start else None)
+    if end is not None:
+        omega_end = motion.state_at(end)[0] if time is not None else 0.0
+        results.put("KE", inertia * omega_end * omega_end / 2, " at the stop" if time is None else f" at t = {fmt(end)} s")
+    at = 0.0 if time is None else time
+    omega_at = motion.state_at(at)[0]
+    when = " at the start" if time is None else f" at t = {fmt(at)} s"
+    if torques.drive:
+        results.put("power", torques.drive * omega_at, when)
+    if torques.friction:
+        results.put("power_friction", torques.friction * abs(omega_at), when)
+    if torques.viscous:
+        results.put("power_viscous", torques.viscous * omega_at * omega_at, when)
+    if torques.drag:
+        results.put("power_drag", torques.drag * abs(omega_at) ** (n + 1), when)
+    if end is None:
+        if not motion.held_from_start:
+            notes.append("KE and work: the wheel never stops, so give {time} to say up to when")
+        return
+    by = f" by t = {fmt(end)} s" if time is not None else " until it stops"
+    work = {"drive": 0.0, "friction": 0.0, "viscous": 0.0, "drag": 0.0}
+    segments = []
+    if not motion.held_from_start:
+        first_end = end if stop is None else min(end, stop[0])
+        segments.append((motion.first, first_end, stop is not None and end >= stop[0]))
+        if motion.second is not None and stop is not None and end > stop[0]:
+            segments.append((motion.second, end - stop[0], False))
+    for phase, duration, to_stop in segments:
+        start = phase.closed.omega0
+        if to_stop:
+            finish, distance = 0.0, stop[1]
+        else:
+            finish, distance = motion.evolver.state(phase, duration)
+        drive = phase.direction * torques.drive
+        work["drive"] += drive * distance
+        work["friction"] += torques.friction * distance
+        rest = (drive - torques.friction) * distance - inertia * (finish - start) * (finish + start) / 2
+        if torques.viscous and torques.drag:
+            sampler = _phase_sampler(motion.evolver, phase)
+            viscous = torques.viscous * numerics_gauss(lambda t: sampler(t) ** 2, duration)
+            work["viscous"] += viscous
+            work["drag"] += max(0.0, rest - viscous)
+        elif torques.viscous:
+            work["viscous"] += max(0.0, rest)
+        elif torques.drag:
+            work["drag"] += max(0.0, rest)
+    if torques.drive:
+        results.put("work_drive", work["drive"], by)
+        if end > 0:
+            results.put("power_mean", work["drive"] / end, by)
+    for name in ("friction", "viscous", "drag"):
+        if getattr(torques, name):
+            results.put("work_" + name, work[name], by)
+
+
+def _phase_sampler(evolver: Evolver, phase: Phase):
+    """ω(t) within a phase, for times asked in increasing order (a stepper steps on)."""
+    last = [None]
+
+    def omega(t: float) -> float:
+        state = evolver.state(phase, t, last[0])
+        last[0] = (t, *state)
+        return state[0]
+
+    return omega
+
+
+def numerics_gauss(f, duration: float) -> float:
+    from taucli.numerics import gauss_legendre
+
+    return gauss_legendre(f, 0.0, duration)
+
+
+def _answers(motion, time: float | None, until_omega: float | None, until_angle: float | None = None) -> dict[str, float | None]:
     """What a method's motion answers (the results a step size changes), by name."""
     stop, signed_stop = motion.stop, motion.signed_stop
     answers: dict[str, float | None] = {"t_stop": None if stop is None else stop[0], "theta_stop": None if signed_stop is None else signed_stop[1]}
@@ -199,17 +305,20 @@ def _answers(motion, time: float | None, until_omega: float | None) -> dict[str,
     if until_omega is not None:
         reached = motion.reach(until_omega)
         answers["t_until"], answers["theta_until"] = (None, None) if reached is None else reached
+    if until_angle is not None:
+        reached = motion.reach_angle(until_angle)
+        answers["t_until"], answers["omega"] = (None, None) if reached is None else reached
     return answers
 
 
-def _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, chosen: Method, results, notes) -> tuple[Table, float | None] | None:
+def _error_estimate(inertia, torques, omega0, closed_form, time, until_omega, until_angle, chosen: Method, results, notes) -> tuple[Table, float | None] | None:
     """The error of each of a fixed step's answers, against the closed form or a tight rk45
     run: the table of them, and the largest relative error. Answers off by more than
     WITHHELD_ABOVE are withheld (null) with one note that gives them and a step that would do."""
     reference_method = Method("exact") if closed_form else Method("rk45", None, REFERENCE_RTOL)
     against = "the closed form" if closed_form else f"rk45 at rtol {REFERENCE_RTOL:g}"
     try:
-        reference = _answers(evolve(inertia, torques, omega0, Evolver(reference_method)), time, until_omega)
+        reference = _answers(evolve(inertia, torques, omega0, Evolver(reference_method)), time, until_omega, until_angle)
     except InputError:
         notes.append(f"no error estimate: the reference run ({against}) would take too many steps; the {chosen.name} answers are unchecked")
         return None
@@ -376,6 +485,14 @@ def spin_down(
     drag_exponent: float | None = None,
     time: float | None = None,
     until_omega: float | None = None,
+    until_angle: float | None = None,
+    until_arc: float | None = None,
+    alpha: float | None = None,
+    in_time: float | None = None,
+    power: float | None = None,
+    ke0: float | None = None,
+    rim_speed: float | None = None,
+    energy: bool = False,
     method: str = "auto",
     dt: float | None = None,
     rtol: float | None = None,
@@ -384,11 +501,53 @@ def spin_down(
     """``taucli spin-down``: the body (--inertia or --shape ...), its torques, and what to report.
 
     The drive is --torque, or the push --force at --lever (at --push-angle, default 90°) that
-    makes it; the losses left out are zero; the wheel starts at ω₀ = 0 unless --omega0 says.
+    makes it, or a motor of constant --power; the losses left out are zero; the wheel starts at
+    ω₀ = 0 unless --omega0 (or --rim-speed, or --ke0) says. --alpha, or no body at all, is
+    rotation at constant α: any three of ω₀, ω₁, α, t, θ give the rest.
     """
     from taucli.scenes.inertia import body
 
-    moment, body_steps = body(**body_options)
+    if power == 0:
+        power = None  # a motor of no power is no motor
+    has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
+    rim = None
+    if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
+        if rim_speed is None and until_arc is None:
+            raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed} or {until_arc}")
+        rim = body_options.pop("radius")
+    moment, body_steps = body(**body_options) if has_body else (None, ())
+    parts = None
+    if body_options.get("part"):
+        from taucli.scenes.inertia import body_table
+
+        parts = body_table(**body_options)
+    results = Results(TABLE)
+    front_steps: list[Step] = []
+    notes: list[str] = []
+    if rim_speed is not None or until_arc is not None:
+        rim = rim if rim is not None else _rim_radius(body_options, "rim_speed" if rim_speed is not None else "until_arc")
+    given = [name for name, value in (("omega0", omega0), ("rim_speed", rim_speed), ("ke0", ke0)) if value is not None]
+    if len(given) > 1:
+        raise InputError(given[1], f"conflicts with {{{given[0]}}}: give the initial speed one way")
+    if rim_speed is not None:
+        omega0 = rim_speed / rim
+        front_steps.append(Step("Angular velocity from the rim speed", "ω₀ = v/R", f"{quantity_text(rim_speed, 'm/s')} / {quantity_text(rim, 'm')}",
+                                quantity_text(omega0, "rad/s"), "a point at radius R moves at v = ωR"))
+        notes.append(f"ω₀ = v/R = {quantity_text(omega0, 'rad/s')}: the rim speed {quantity_text(rim_speed, 'm/s')} at R = {quantity_text(rim, 'm')}")
+        results.put("omega0", omega0, " (from the rim speed)")
+    if ke0 is not None:
+        if moment is None:
+            raise InputError("ke0", "needs a body ({inertia} or {shape}): ω₀ = √(2E/I)")
+        omega0 = math.sqrt(2 * ke0 / moment)
+        front_steps.append(Step("Angular velocity from the stored energy", "KE = ½Iω²  ⇒  ω₀ = √(2KE/I)",
+                                f"√(2 × {quantity_text(ke0, 'J')} / {quantity_text(moment, 'kg*m**2')})", quantity_text(omega0, "rad/s"),
+                                "all the energy of a wheel on a fixed axle is its rotational kinetic energy"))
+        results.put("omega0", omega0, " (from KE0)")
+    if until_arc is not None:
+        if until_angle is not None:
+            raise InputError("until_arc", "conflicts with {until_angle}: give the target one way")
+        until_angle = until_arc / rim
+        notes.append(f"θ = s/R = {quantity_text(until_angle, 'rad')}: the arc {quantity_text(until_arc, 'm')} at R = {quantity_text(rim, 'm')}")
     push = None
     if force is not None or lever is not None or push_angle is not None:
         if torque is not None:
@@ -402,6 +561,640 @@ def spin_down(
     else:
         drive = torque or 0.0
     torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent)
-    return solve(
-        moment, torques, omega0 or 0.0, time=time, until_omega=until_omega, method=method, dt=dt, rtol=rtol, push=push, inertia_steps=body_steps
+    if push is not None:
+        front_steps.append(_push_step(push))
+    if alpha is not None or not has_body:
+        if power is not None:
+            raise InputError("power", "conflicts with {alpha}: a constant power gives a changing α" if alpha is not None else "needs a body ({inertia} or {shape})")
+        if in_time is not None:
+            if time is not None:
+                raise InputError("in_time", "conflicts with {time}: without a body they say the same")
+            time = in_time
+        return _with_parts(_with_front(_uniform_report(moment, body_steps, torques, omega0, alpha, time=time, until_omega=until_omega,
+                                           until_angle=until_angle, front=(front_steps, notes, results)), results), parts)
+    if power is not None:
+        if in_time is not None:
+            raise InputError("in_time", "conflicts with {power}: the drive is the motor's")
+        if push is not None:
+            raise InputError("power", "conflicts with {force}: give the motor's power or the push")
+        return _with_parts(_with_front(_power_report(moment, body_steps, power, torques, omega0 or 0.0, time=time, until_omega=until_omega,
+                                         until_angle=until_angle, method=method, dt=dt, rtol=rtol), results, notes, front_steps), parts)
+    if in_time is not None:
+        if torque is not None or push is not None or power is not None:
+            raise InputError("in_time", "asks for the drive torque that meets the target, so it conflicts with a drive ({torque}, {force}, {power})")
+        if (until_omega is None) == (until_angle is None):
+            raise InputError("in_time", "needs one target: {until_omega} or {until_angle}", example="{until_omega} 1000rpm {in_time} 3s")
+        if time is not None:
+            raise InputError("time", "conflicts with {in_time}: ask for the target's time one way")
+        if not torques.viscous and not torques.drag:
+            return _with_parts(_with_front(_uniform_report(moment, body_steps, torques, omega0, None, time=in_time, until_omega=until_omega,
+                                               until_angle=until_angle, front=(front_steps, notes, results)), results), parts)
+        torques = _drive_for_target(moment, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
+        time, until_omega, until_angle = in_time, None, None
+        notes.append(f"the constant drive torque that meets the target in t = {fmt(in_time)} s, found by bisection on the motion: "
+                     f"τ = {quantity_text(torques.drive, 'N*m')}")
+        results.put("torque", torques.drive, " that meets the target")
+    report = solve(
+        moment, torques, omega0 or 0.0, time=time, until_omega=until_omega, until_angle=until_angle, method=method, dt=dt, rtol=rtol,
+        push=push, inertia_steps=body_steps, energy=energy or ke0 is not None or power is not None or in_time is not None,
     )
+    if "torque" in results:
+        results.put("torque_net", report.results["alpha0"].value * moment, " at the start")
+    return _with_parts(_with_front(report, results, notes, front_steps), parts)
+
+
+def _drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, until_angle, method, dt, rtol) -> Torques:
+    """The constant drive with which the wheel is at ω₁ (or has turned θ) at t: ω(t) and θ(t) grow
+    with the drive, so bisection brackets it; to the last bit of a double."""
+    closed_form = torques.drag == 0 or torques.drag_exponent == 2
+    evolver_method = _choose_method(method, closed_form, dt, rtol)
+
+    def miss(drive: float) -> float:
+        trial = Torques(drive, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)
+        omega, theta = evolve(inertia, trial, omega0, Evolver(evolver_method)).state_at(in_time)
+        return omega - until_omega if until_omega is not None else theta - until_angle
+
+    target = until_omega if until_omega is not None else until_angle
+    scale = max(abs(target) / in_time, abs(omega0), 1.0)
+    size = inertia * scale / in_time + torques.friction + torques.viscous * scale + torques.drag * scale**torques.drag_exponent
+    low, high = -size, size
+    for _ in range(200):
+        if miss(high) >= 0:
+            break
+        low, high = high, 2 * high
+    for _ in range(200):
+        if miss(low) <= 0:
+            break
+        low, high = 2 * low, low
+    for _ in range(200):
+        mid = (low + high) / 2
+        if mid in (low, high):
+            break
+        low, high = (mid, high) if miss(mid) < 0 else (low, mid)
+    return Torques((low + high) / 2, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)
+
+
+def _with_parts(report: Report, parts: Table | None) -> Report:
+    """The report with the parts table of a body of parts."""
+    if parts is None:
+        return report
+    return Report(report.scene, report.model, report.method, report.results, report.steps, report.notes, report.inputs,
+                  {"parts": parts, **report.tables}, report.trajectory)
+
+
+def _rim_radius(body_options: dict, option: str) -> float:
+    """The radius of the body's rim: its radius, or its outer radius."""
+    for name in ("radius", "outer_radius"):
+        if body_options.get(name) is not None:
+            return body_options[name]
+    raise InputError(option, "needs a radius: the body's ({shape} with {radius}), or {radius} beside {inertia}")
+
+
+def _with_front(report: Report, front: Results, notes: Sequence[str] = (), steps: Sequence[Step] = ()) -> Report:
+    """The report with what was worked out before the motion (ω₀ from a rim speed or KE0) first."""
+    if not front and not notes and not steps:
+        return report
+    results = Results(TABLE)
+    results.update(front)
+    results.update(report.results)
+    merged_steps = list(report.steps)
+    if steps:
+        body_count = next((i for i, step in enumerate(merged_steps) if step.title.startswith(("Torque of the push", "Net torque"))), 0)
+        merged_steps[body_count:body_count] = [s for s in steps if s.title != "Torque of the push"]
+    return Report(report.scene, report.model, report.method, results, merged_steps, [*notes, *report.notes], report.inputs, report.tables, report.trajectory)
+
+
+# ---------------------------------------------------------------------------------------------
+# Constant angular acceleration (--alpha, or no body): kinematics, and with a body the torque.
+
+
+def _uniform_report(
+    inertia: float | None,
+    inertia_steps: Sequence[Step],
+    torques: Torques,
+    omega0: float | None,
+    alpha: float | None,
+    *,
+    time: float | None,
+    until_omega: float | None,
+    until_angle: float | None,
+    front: tuple[list[Step], list[str], Results],
+) -> Report:
+    """Rotation at constant α: from --alpha, or from the targets (any three of ω₀, ω₁, α, t, θ)."""
+    from taucli.scenes.uniform import Uniform, solve_unknowns
+
+    front_steps, notes, results = front
+    given_alpha = alpha is not None
+    if torques.drive:
+        raise InputError("torque", "conflicts with {alpha}: the drive is what a constant α asks for (reported as torque)" if given_alpha else "needs a body ({inertia} or {shape})")
+    losses = [name for name, value in (("friction", torques.friction), ("viscous", torques.viscous), ("drag", torques.drag)) if value]
+    if inertia is None and not given_alpha and until_omega is None and until_angle is None and losses:
+        alpha, given_alpha = 0.0, True  # losses and no body: a wheel held at a constant speed
+        notes.append("no body and no α: the wheel is held at a constant speed, and torque is the drive that balances the losses")
+    if inertia is None and losses and not (given_alpha and alpha == 0):
+        raise InputError(losses[0], "needs a body ({inertia} or {shape}), or {alpha} 0 for a wheel held at a constant speed")
+    w0_given = omega0
+    w0, alpha, solved_notes = solve_unknowns(omega0, alpha, time, until_omega, until_angle)
+    notes.extend(solved_notes)
+    if alpha != 0 and (torques.viscous or torques.drag):
+        raise InputError("viscous" if torques.viscous else "drag", "makes α change with ω, so it cannot be constant: leave out {alpha}, or give it as 0")
+    motion = Uniform(w0, alpha)
+    targets = sum(x is not None for x in (time, until_omega, until_angle))
+    pair = not given_alpha or (w0_given is None and targets >= 2)  # the targets fixed α or ω₀
+    steps = list(inertia_steps) + front_steps
+    steps.extend(_uniform_alpha_steps(w0, alpha, time, until_omega, until_angle, given_alpha, w0_given))
+    if w0_given is None and pair and given_alpha:
+        results.put("omega0", w0, " (from the targets)")
+    if inertia is not None:
+        results.put("I", inertia)
+    results.put("alpha0", alpha)
+    results.put("alpha", alpha)
+
+    stop = motion.stop()
+    if stop is not None:
+        results.put("t_stop", stop[0])
+        results.put("theta_stop", stop[1])
+        results.put("revs_stop", stop[1] / TWO_PI)
+        notes.append(
+            f"a constant α carries the wheel on through ω = 0: it stops at t = {fmt(stop[0])} s, "
+            f"after {fmt(abs(stop[1]) / TWO_PI)} rev, and turns back (t_stop, theta_stop give the first stop)"
+        )
+
+    end: float | None = None  # the time the energy, power and work are given at
+    if pair:
+        if time is not None:
+            end = time
+        elif until_omega is not None and until_angle is not None:
+            end = 2 * until_angle / (w0 + until_omega)
+        elif until_omega is not None:
+            end = motion.time_to_omega(until_omega)
+        else:
+            end = _first_time_at_angle(motion, until_angle, notes)
+        if end is None:
+            raise InputError("until_omega", "is never reached at this α", got=f"α = {alpha:g} rad/s²")
+        label = f" at t = {fmt(end)} s"
+        results.put("omega", motion.omega(end), label)
+        results.put("theta", motion.theta(end), f" by t = {fmt(end)} s")
+        results.put("revs", motion.theta(end) / TWO_PI, f" by t = {fmt(end)} s")
+        if time is None:
+            results.put("t_until", end, " the target")
+    else:
+        if until_omega is not None and until_angle is not None:
+            raise InputError("until_angle", "conflicts with {until_omega}: ask for one target at a time")
+        if time is not None:
+            end = time
+            results.put("omega", motion.omega(time), f" at t = {fmt(time)} s")
+            results.put("theta", motion.theta(time), f" by t = {fmt(time)} s")
+            results.put("revs", motion.theta(time) / TWO_PI, f" by t = {fmt(time)} s")
+        if until_omega is not None:
+            t = motion.time_to_omega(until_omega)
+            if t is None:
+                notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')} at this α")
+            elif stop is not None and t > stop[0]:
+                notes.append(f"ω = {quantity_text(until_omega, 'rad/s')} is reached only after the wheel has stopped and turned back")
+            results.put("t_until", t, f" ω = {fmt(until_omega)} rad/s")
+            results.put("theta_until", None if t is None else motion.theta(t), f" ω = {fmt(until_omega)} rad/s")
+        if until_angle is not None:
+            t = _first_time_at_angle(motion, until_angle, notes)
+            part = f" θ = {fmt(until_angle)} rad"
+            results.put("t_until", t, part)
+            if time is None:
+                results.put("omega", None if t is None else motion.omega(t), f" at θ = {fmt(until_angle)} rad")
+                end = t
+    if inertia is not None or losses:
+        _uniform_torque(inertia, torques, motion, end, results, steps, notes)
+    model = "uniform angular acceleration (constant α)" + ("" if given_alpha else ", from the targets")
+    if inertia is not None:
+        steps.extend(_energy_steps(results, inertia, torques.friction))
+    trajectory = deferred(_curves, lambda t: (motion.omega(t), motion.theta(t)), end, stop)
+    return Report("spin-down", model, "closed form", results, steps, notes, trajectory=trajectory)
+
+
+def _curves(state, end: float | None, stop: tuple[float, float] | None) -> Trajectory:
+    """ω(t) and θ(t) to the end asked for, else past the first stop, else for 10 s."""
+    note = ""
+    if end is not None and end > 0:
+        t_end = end
+    elif stop is not None and stop[0] > 0:
+        t_end = 1.25 * stop[0]
+    else:
+        t_end, note = 10.0, "plotted for 10 s; --time to change"
+    marks = ((stop[0], "stops"),) if stop is not None and 0 < stop[0] <= t_end else ()
+    curves = (("omega", "rad/s", "angular velocity ω"), ("theta", "rad", "angle turned θ"))
+    return Trajectory(curves, t_end, state, marks=marks, note=note)
+
+
+def _first_time_at_angle(motion, theta: float, notes: list[str]) -> float | None:
+    """The first time the wheel is at θ, with notes on the second root and on turning back."""
+    times = motion.times_at_angle(theta)
+    stop = motion.stop()
+    where = f"θ = {fmt(theta)} rad ({fmt(theta / TWO_PI)} rev)"
+    if not times:
+        turn = f"it stops after {fmt(abs(stop[1]) / TWO_PI)} rev and turns back" if stop else "it turns the other way"
+        notes.append(f"the wheel never reaches {where}: {turn}")
+        return None
+    if stop is not None and times[0] > stop[0]:
+        notes.append(f"the wheel turns back first (it stops at t = {fmt(stop[0])} s, {fmt(stop[1])} rad) and reaches {where} on the way back")
+    elif len(times) == 2:
+        notes.append(f"the other root, t = {fmt(times[1])} s, is when the wheel, turned back, passes {where} again")
+    return times[0]
+
+
+def _uniform_alpha_steps(w0, alpha, time, w1, theta, given_alpha, w0_given) -> list[Step]:
+    steps: list[Step] = []
+    if given_alpha:
+        return steps
+    if time is not None and w1 is not None:
+        steps.append(Step("Angular acceleration from the change of speed", "α = (ω₁ − ω₀)/t", f"({fmt(w1)} − {fmt(w0)}) / {fmt(time)}",
+                          quantity_text(alpha, "rad/s**2"), "constant α: ω changes by the same amount every second"))
+        steps.append(Step("Angle turned", "θ = ½(ω₀ + ω₁)t", f"½ × ({fmt(w0)} + {fmt(w1)}) × {fmt(time)}",
+                          quantity_text((w0 + w1) * time / 2, "rad") + f" = {fmt((w0 + w1) * time / 2 / TWO_PI)} rev",
+                          "at constant α the mean speed is the average of the first and the last"))
+    elif time is not None and theta is not None:
+        steps.append(Step("Angular acceleration from the angle and the time", "θ = ω₀t + ½αt²  ⇒  α = 2(θ − ω₀t)/t²",
+                          f"2 × ({fmt(theta)} − {fmt(w0)} × {fmt(time)}) / {fmt(time)}²", quantity_text(alpha, "rad/s**2"),
+                          "the rotational analogue of s = ut + ½at², solved for the acceleration"))
+    elif w1 is not None and theta is not None:
+        steps.append(Step("Angular acceleration from the speeds and the angle", "ω₁² = ω₀² + 2αθ  ⇒  α = (ω₁² − ω₀²)/(2θ)",
+                          f"({fmt(w1)}² − {fmt(w0)}²) / (2 × {fmt(theta)})", quantity_text(alpha, "rad/s**2"),
+                          "the rotational analogue of v² = u² + 2as"))
+        steps.append(Step("Time taken", "t = 2θ/(ω₀ + ω₁)", f"2 × {fmt(theta)} / ({fmt(w0)} + {fmt(w1)})",
+                          quantity_text(2 * theta / (w0 + w1), "s"), "the angle is the mean speed times the time"))
+    return steps
+
+
+def _uniform_torque(inertia, torques: Torques, motion, end: float | None, results: Results, steps: list[Step], notes: list[str]) -> None:
+    """The torque that keeps α constant against the losses, and the energy, work and power."""
+    alpha, w0 = motion.alpha, motion.omega0
+    sense = 1.0 if w0 > 0 else -1.0 if w0 < 0 else math.copysign(1.0, alpha) if alpha else 0.0
+    n = torques.drag_exponent
+    f = torques.friction if sense else 0.0
+
+    def losses(omega: float, s: float) -> float:  # the torque of the losses against +ω, moving in sense s
+        return s * f + torques.viscous * omega + s * torques.drag * abs(omega) ** n
+
+    net = 0.0 if inertia is None else inertia * alpha
+    drive = net + losses(w0, sense)
+    if inertia is not None:
+        results.put("torque_net", net, "")
+        steps.append(Step("Net torque (Newton's second law for rotation)", "τ_net = Iα",
+                          f"{quantity_text(inertia, 'kg*m**2')} × {quantity_text(alpha, 'rad/s**2')}", quantity_text(net, "N*m"),
+                          "the net torque a constant α takes"))
+    held = alpha == 0
+    results.put("torque", drive, " that holds ω steady" if held else " that gives this α")
+    if f or torques.viscous or torques.drag:
+        steps.append(Step("Drive torque", "τ = τ_net + τ_f + bω + kωⁿ" if held else "τ = τ_net + τ_f",
+                          f"{quantity_text(net, 'N*m')} + {quantity_text(drive - net, 'N*m')}", quantity_text(drive, "N*m"),
+                          "the drive must also overcome the losses, which oppose the motion"))
+    stop = motion.stop()
+    at = end if end is not None else 0.0
+    omega_at = motion.omega(at)
+    after = stop is not None and at > stop[0]
+    drive_at = net + losses(omega_at, -sense) if after else drive
+    if after and f:
+        notes.append(f"past the stop friction turns round: holding α takes τ = {quantity_text(drive_at, 'N*m')} from t = {fmt(stop[0])} s on")
+    when = f" at t = {fmt(at)} s" if end is not None else " at the start"
+    results.put("power", drive_at * omega_at, when)
+    if f:
+        results.put("power_friction", f * abs(omega_at), when)
+    if torques.viscous:
+        results.put("power_viscous", torques.viscous * omega_at * omega_at, when)
+    if torques.drag:
+        results.put("power_drag", torques.drag * abs(omega_at) ** (n + 1), when)
+    if inertia is not None:
+        results.put("KE0", inertia * w0 * w0 / 2)
+    if end is None:
+        return
+    by = f" by t = {fmt(end)} s"
+    if inertia is not None:
+        results.put("KE", inertia * omega_at * omega_at / 2, f" at t = {fmt(end)} s")
+    theta = motion.theta(end)
+    if after:
+        work = drive * stop[1] + drive_at * (theta - stop[1])
+    else:
+        work = drive * theta
+    results.put("work_drive", work, by)
+    if end > 0:
+        results.put("power_mean", work / end, by)
+    if f:
+        results.put("work_friction", f * motion.path(end), by)
+    if torques.viscous:
+        results.put("work_viscous", torques.viscous * w0 * w0 * end, by)
+    if torques.drag:
+        results.put("work_drag", torques.drag * abs(w0) ** (n + 1) * end, by)
+
+
+# ---------------------------------------------------------------------------------------------
+# A motor of constant power (--power): I dω/dt = P/ω − τ_f − bω − kωⁿ.
+
+
+@dataclass(frozen=True)
+class PowerMotion:
+    """The motion under a constant power P, in the frame where u = |ω| ≥ 0 (``sense`` = ±1).
+
+    Without losses, ½Iu² grows (or, for P < 0, falls) at the rate P: u² = u₀² + 2Pt/I and
+    θ = 2t(u² + uu₀ + u₀²)/(3(u + u₀)), which has no difference of near-equal numbers. With
+    losses there is no closed form: u is stepped by the method, from a start just off rest where
+    P/u dominates (so the lossless law carries the first ~1e-12 of the energy exactly enough),
+    and a load (P < 0) is stopped the same way just before rest.
+    """
+
+    inertia: float
+    power: float
+    torques: Torques
+    u0: float
+    method: Method
+    sense: float
+
+    @property
+    def lossless(self) -> bool:
+        t = self.torques
+        return not (t.friction or t.viscous or t.drag)
+
+    def rate(self, u: float) -> float:
+        t = self.torques
+        drag = t.drag * u**t.drag_exponent if t.drag and u > 0 else 0.0
+        u = max(u, 1e-300)  # finite below rest, so that a trial step past it is rejected, not accepted as NaN
+        return (self.power / u - t.friction - t.viscous * u - drag) / self.inertia
+
+    def stiffness(self, u: float) -> float:
+        t = self.torques
+        drag = t.drag_exponent * t.drag * u ** (t.drag_exponent - 1) if t.drag else 0.0
+        return (abs(self.power) / (u * u) + t.viscous + drag) / self.inertia
+
+    def _edge(self) -> float:
+        """A speed near rest below which the losses are under 1e-7 of P/u."""
+        t, p = self.torques, abs(self.power)
+        scales = [p / t.friction if t.friction else math.inf, math.sqrt(p / t.viscous) if t.viscous else math.inf,
+                  (p / t.drag) ** (1 / (t.drag_exponent + 1)) if t.drag else math.inf]
+        return 1e-7 * min(scales)
+
+    def lossless_state(self, t: float) -> tuple[float, float]:
+        u0 = self.u0
+        square = u0 * u0 + 2 * self.power * t / self.inertia
+        u = math.sqrt(max(square, 0.0))
+        return u, (2 * t * (u * u + u * u0 + u0 * u0) / (3 * (u + u0)) if u + u0 else 0.0)
+
+    def stop(self) -> tuple[float, float] | None:
+        """(t, θ) where a load brings the wheel to rest (None while P > 0)."""
+        if self.power >= 0 or self.u0 == 0:
+            return None if self.u0 or self.power >= 0 else (0.0, 0.0)
+        if self.lossless:
+            t = self.inertia * self.u0 * self.u0 / (2 * -self.power)
+            return t, 2 * t * self.u0 / 3
+        edge = self._edge()
+        if self.u0 <= 2 * edge:  # already where the losses are under 1e-7 of P/ω: the lossless law
+            return PowerMotion(self.inertia, self.power, Torques(), self.u0, self.method, self.sense).stop()
+        solution = self._run(self.u0, math.inf, edge)
+        tail = self.inertia * edge * edge / (2 * -self.power)
+        return solution.t + tail, solution.theta + 2 * tail * edge / 3
+
+    def _start(self) -> tuple[float, float, float]:
+        """(t, u, θ) to step from: the start, or just off rest on the lossless law."""
+        if self.u0 > 0 or self.power <= 0:
+            return 0.0, self.u0, 0.0
+        edge = self._edge()
+        t = self.inertia * edge * edge / (2 * self.power)
+        return t, edge, 2 * t * edge / 3
+
+    def _run(self, u: float, t_end: float, event: float | None):
+        from taucli import numerics
+
+        method = self.method
+        name = "rk45" if method.name == "exact" else method.name
+        if t_end == math.inf:  # a bound on the time to the event: the energy to go, over the least net power on the way
+            span = abs(self.inertia * (event - u) * (event + u) / 2)
+            if self.power < 0:
+                net = -self.power  # a load drains at least P; the losses only add to it
+            else:
+                steady = self.steady_speed()
+                if steady is not None and event >= steady:
+                    return None
+                net = event * self.inertia * self.rate(event)  # P − ω·losses(ω), least at the event
+            t_end = 1.01 * span / net
+        try:
+            return numerics.integrate(
+                self.rate, u, t_end, name, dt=method.dt, rtol=method.rtol / 20, event_at=event, stiffness=self.stiffness,
+            )
+        except numerics.TooManySteps:
+            raise InputError("rtol" if name == "rk45" else "dt", f"this run needs more than {numerics.MAX_STEPS[name]:,} {name} steps",
+                             hint="use a looser --rtol, or a larger --dt") from None
+
+    def state(self, t: float) -> tuple[float, float]:
+        """(ω, θ) at t, signed."""
+        if self.lossless:
+            stop = self.stop()
+            if stop is not None and t >= stop[0]:
+                return 0.0, self.sense * stop[1]
+            u, theta = self.lossless_state(t)
+            return self.sense * u, self.sense * theta
+        stop = self.stop()
+        if stop is not None and t >= stop[0]:
+            return 0.0, self.sense * stop[1]
+        t0, u0, theta0 = self._start()
+        if t <= t0:
+            u, theta = PowerMotion(self.inertia, self.power, Torques(), self.u0, self.method, self.sense).lossless_state(t)
+            return self.sense * u, self.sense * theta
+        solution = self._run(u0, t - t0, None)
+        return self.sense * solution.omega, self.sense * (theta0 + solution.theta)
+
+    def time_to(self, target: float) -> tuple[float, float] | None:
+        """(t, θ) when |ω| = target, or None."""
+        u1 = target * self.sense
+        if u1 < 0 or (u1 > self.u0) != (self.power > 0) or u1 == self.u0:
+            return (0.0, 0.0) if u1 == self.u0 else None
+        if self.lossless:
+            t = self.inertia * (u1 - self.u0) * (u1 + self.u0) / (2 * self.power)
+            return t, self.sense * self.lossless_state(t)[1]
+        if u1 == 0:
+            stop = self.stop()
+            return None if stop is None else (stop[0], self.sense * stop[1])
+        t0, u0, theta0 = self._start()
+        solution = self._run(u0, math.inf, u1)
+        if solution is None or not solution.event:
+            return None
+        return t0 + solution.t, self.sense * (theta0 + solution.theta)
+
+    def steady_speed(self) -> float | None:
+        """Where P/u balances the losses (P > 0 with losses), by bisection; None otherwise."""
+        if self.power <= 0 or self.lossless:
+            return None
+        low, high = 0.0, 1.0
+        while self.rate(high) > 0:
+            low, high = high, 2 * high
+        for _ in range(200):
+            mid = (low + high) / 2
+            if mid in (low, high):
+                break
+            low, high = (mid, high) if self.rate(mid) > 0 else (low, mid)
+        return (low + high) / 2
+
+
+def _power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, time, until_omega, until_angle, method, dt, rtol) -> Report:
+    """spin-down under a motor of constant power."""
+    if torques.drive:
+        raise InputError("power", "conflicts with {torque}: the motor's torque is P/ω")
+    if until_angle is not None and (time is not None or until_omega is not None):
+        raise InputError("until_angle", "conflicts with {time} and {until_omega}: ask for one target at a time (a run each)")
+    lossless = not (torques.friction or torques.viscous or torques.drag)
+    if method == "exact" and not lossless:
+        raise InputError("method", "exact has no closed form for a constant power against losses", hint="use {method} auto or rk45")
+    if method in ("euler", "rk4") or method == "rk45":
+        chosen = Method(method, dt or (DEFAULT_DT if method != "rk45" else None), rtol or DEFAULT_RTOL)
+    else:
+        chosen = Method("exact" if lossless else "rk45", None, rtol or DEFAULT_RTOL)
+    sense = -1.0 if omega0 < 0 else 1.0
+    motion = PowerMotion(inertia, power, torques, abs(omega0), chosen, sense)
+    results, notes = Results(TABLE), []
+    results.put("I", inertia)
+    rate = motion.rate(abs(omega0)) if omega0 else None
+    results.put("alpha0", None if rate is None or not math.isfinite(rate) else sense * rate)
+    if omega0 == 0:
+        notes.append("alpha0 and the torque at the start: none, a constant power from rest asks for an unbounded torque P/ω at ω = 0")
+    if power < 0 and omega0 == 0:
+        notes.append("a load with the wheel at rest: nothing turns")
+    stop = motion.stop()
+    results.put("t_stop", None if stop is None else stop[0])
+    results.put("theta_stop", None if stop is None else sense * stop[1])
+    results.put("revs_stop", None if stop is None else sense * stop[1] / TWO_PI)
+    steady = motion.steady_speed()
+    results.put("omega_inf", 0.0 if power < 0 else None if steady is None else sense * steady)
+    if power > 0 and steady is None:
+        notes.append("omega_inf: no steady speed; with no losses the motor's power all goes into the wheel, so ω grows without bound")
+    omega_at = omega0
+    at = None
+    if time is not None:
+        omega_at, theta = motion.state(time)
+        at = time
+        results.put("omega", omega_at, f" at t = {fmt(time)} s")
+        results.put("theta", theta, f" by t = {fmt(time)} s")
+        results.put("revs", theta / TWO_PI, f" by t = {fmt(time)} s")
+    if until_omega is not None:
+        reached = motion.time_to(until_omega)
+        if reached is None:
+            notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
+        results.put("t_until", None if reached is None else reached[0], f" ω = {fmt(until_omega)} rad/s")
+        results.put("theta_until", None if reached is None else reached[1], f" ω = {fmt(until_omega)} rad/s")
+        if reached is not None:
+            at, omega_at = reached[0], until_omega
+    if until_angle is not None:
+        reached = _power_time_at_angle(motion, until_angle)
+        if reached is None:
+            notes.append(f"the wheel never reaches θ = {fmt(until_angle)} rad")
+        results.put("t_until", None if reached is None else reached[0], f" θ = {fmt(until_angle)} rad")
+        results.put("omega", None if reached is None else reached[1], f" at θ = {fmt(until_angle)} rad")
+        if reached is not None:
+            at, omega_at = reached
+    when = " at the start" if at is None else f" at t = {fmt(at)} s"
+    results.put("torque", power / omega_at if omega_at else None, when)
+    results.put("power", power if omega_at or power > 0 else 0.0, when)
+    results.put("KE0", inertia * omega0 * omega0 / 2)
+    end = at if at is not None else (stop[0] if stop is not None else None)
+    if end is not None:
+        omega_end = motion.state(end)[0] if at is None else omega_at
+        theta_end = motion.state(end)[1]
+        ke = inertia * omega_end * omega_end / 2
+        results.put("KE", ke, f" at t = {fmt(end)} s" if at is not None else " at the stop")
+        driving_time = min(end, stop[0]) if stop is not None else end
+        work = power * driving_time
+        by = f" by t = {fmt(end)} s" if at is not None else " until it stops"
+        results.put("work_drive", work, by)
+        if end > 0:
+            results.put("power_mean", work / end, by)
+        friction = torques.friction * abs(theta_end)
+        if torques.friction:
+            results.put("work_friction", friction, by)
+        rest = inertia * omega0 * omega0 / 2 - ke + work - friction
+        if torques.viscous and torques.drag:
+            from taucli.numerics import gauss_legendre
+
+            viscous = torques.viscous * gauss_legendre(lambda t: motion.state(t)[0] ** 2, 0.0, end, panels=16)
+            results.put("work_viscous", viscous, by)
+            results.put("work_drag", max(0.0, rest - viscous), by)
+        elif torques.viscous:
+            results.put("work_viscous", max(0.0, rest), by)
+        elif torques.drag:
+            results.put("work_drag", max(0.0, rest), by)
+    steps = list(inertia_steps)
+    if lossless:
+        steps.append(Step("Energy from a constant power", "½Iω² = ½Iω₀² + Pt  ⇒  t = I(ω₁² − ω₀²)/(2P)", "", "",
+                          "a motor of constant power adds energy at the rate P; with no losses it all goes into the wheel"))
+        if until_omega is not None and results["t_until"].value is not None:
+            steps.append(Step("Time to reach ω₁", "t = I(ω₁ − ω₀)(ω₁ + ω₀)/(2P)",
+                              f"{quantity_text(inertia, 'kg*m**2')} × ({fmt(until_omega)} − {fmt(omega0)}) × ({fmt(until_omega)} + {fmt(omega0)}) / (2 × {quantity_text(power, 'W')})",
+                              quantity_text(results["t_until"].value, "s"), "the energy ½I(ω₁² − ω₀²) delivered at the rate P"))
+        model = "constant power P (τ = P/ω), no losses: ½Iω² grows linearly in time"
+    else:
+        steps.append(Step("Integrate the equation of motion", "I dω/dt = P/ω − τ_f − bω − kωⁿ,  dθ/dt = ω", chosen.name, "",
+                          "no closed form exists for a constant power against these losses"))
+        model = "constant power P (τ = P/ω) against losses: no closed form"
+    described = {"exact": "closed form", "rk45": f"rk45 (Dormand-Prince, adaptive), rtol = {chosen.rtol:g}"}.get(
+        chosen.name, f"{chosen.name}, dt = {fmt(chosen.dt or 0.0)} s"
+    )
+    steps.extend(_energy_steps(results, inertia, torques.friction, power=power))
+    return Report("spin-down", model, described, results, steps, notes, trajectory=deferred(_curves, motion.state, end, stop))
+
+
+def _power_time_at_angle(motion: PowerMotion, theta: float) -> tuple[float, float] | None:
+    """(t, ω) when the wheel under constant power has turned θ: bisection on the motion."""
+    distance = theta * motion.sense
+    if distance < 0:
+        return None
+    if distance == 0:
+        return 0.0, motion.sense * motion.u0
+    stop = motion.stop()
+    if stop is not None and distance > stop[1]:
+        return None
+    low, high = 0.0, None
+    if stop is not None:
+        high = stop[0]
+    else:
+        guess = max(distance / motion.u0 if motion.u0 else 0.0, math.sqrt(distance * motion.inertia / max(motion.power, 1e-300)), 1e-9)
+        for _ in range(200):
+            if abs(motion.state(guess)[1]) >= distance:
+                high = guess
+                break
+            low, guess = guess, 2 * guess
+        if high is None:
+            return None
+    for _ in range(200):
+        mid = (low + high) / 2
+        if mid in (low, high):
+            break
+        if abs(motion.state(mid)[1]) < distance:
+            low = mid
+        else:
+            high = mid
+    return high, motion.state(high)[0]
+
+
+def _energy_steps(results: Results, inertia: float, friction: float, power: float | None = None) -> list[Step]:
+    """The worked steps of the energy results a run gave (KE, the work of each torque)."""
+    steps: list[Step] = []
+    value = {name: results[name].value for name in results}
+    if value.get("KE0") is not None:
+        w0 = math.sqrt(2 * value["KE0"] / inertia)
+        steps.append(Step("Kinetic energy at the start", "KE₀ = ½Iω₀²", f"½ × {quantity_text(inertia, 'kg*m**2')} × ({quantity_text(w0, 'rad/s')})²",
+                          quantity_text(value["KE0"], "J"), "a wheel on a fixed axle has only rotational kinetic energy"))
+    if value.get("KE") is not None:
+        w = math.sqrt(2 * value["KE"] / inertia)
+        steps.append(Step("Kinetic energy" + results["KE"].label.removeprefix("kinetic energy"), "KE = ½Iω²",
+                          f"½ × {quantity_text(inertia, 'kg*m**2')} × ({quantity_text(w, 'rad/s')})²", quantity_text(value["KE"], "J"),
+                          "the same, at the end"))
+    if value.get("work_drive") is not None:
+        if power is not None:
+            steps.append(Step("Work of the motor", "W_drive = P·t (while it turns)", f"{quantity_text(power, 'W')} × t", quantity_text(value["work_drive"], "J"),
+                              "a constant power delivers the same energy every second"))
+        else:
+            steps.append(Step("Work of the drive", "W_drive = τθ (the torque times the angle it turns through)", "",
+                              quantity_text(value["work_drive"], "J"), "a constant torque does τ of work for every radian turned along it"))
+    if value.get("work_friction") is not None and friction:
+        steps.append(Step("Energy friction takes", "W_f = τ_f × angle swept", f"{quantity_text(friction, 'N*m')} × {quantity_text(value['work_friction'] / friction, 'rad')}",
+                          quantity_text(value["work_friction"], "J"), "friction opposes the motion whichever way it turns, so every radian swept costs τ_f"))
+    rest = [name for name in ("work_viscous", "work_drag") if value.get(name) is not None]
+    if rest:
+        total = sum(value[name] for name in rest)
+        steps.append(Step("Energy the viscous torque and drag take", "W_b + W_k = KE₀ − KE + W_drive − W_f", "", quantity_text(total, "J"),
+                          "the energy balance: what the wheel had and the drive gave, less what it keeps and what friction took; "
+                          "where both act, the viscous share b∫ω²dt is integrated and drag has the rest"))
+    return steps
