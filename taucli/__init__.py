@@ -18,6 +18,7 @@ from taucli.errors import InputError  # noqa: E402
 from taucli.report import Report  # noqa: E402
 
 __all__ = ["InputError", "Report", "atwood", "impulse", "inertia", "rolling", "spin_down"]
+__all__ += ["pendulum"]
 
 
 def __getattr__(name: str):

@@ -42,6 +42,7 @@ METAVARS = {
     "viscous coefficient": "B",
     "drag coefficient": "K",
     "dimensionless": "NUMBER",
+    "torsion constant": "KAPPA",
 }
 
 

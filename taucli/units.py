@@ -49,6 +49,7 @@ KINDS: dict[str, Kind] = {
         Kind("viscous coefficient", "N*m*s", "0.01 N*m*s", ("N*m*s", "N*m/(rad/s)")),
         Kind("drag coefficient", "N*m*s**2", "0.001 N*m*s^2", ("N*m*s^2",)),
         Kind("dimensionless", "", "0.5", ()),
+        Kind("torsion constant", "N*m/rad", "0.5 N*m/rad", ("N*m/rad", "N*m/deg", "mN*m/rad")),
     )
 }
 

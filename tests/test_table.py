@@ -25,6 +25,7 @@ WORKING = {
     "atwood": ["--m1", "4kg", "--m2", "1kg", "--pulley-mass", "2kg", "--pulley-radius", "0.1m", "--distance", "1m"],
     "rolling": ["sphere", "--angle", "30deg", "--length", "2m", "--mass", "1kg", "--radius", "0.1m"],
     "impulse": ["--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "0.5s"],
+    "pendulum": ["--shape", "rod", "--length", "1m", "--mass", "2kg", "--axis", "end", "--angle0", "90deg", "--angle", "0deg", "--time", "1s"],
 }
 
 

@@ -5,12 +5,14 @@ no solver, no typer, no rich and no pint, so ``--help`` and completion can read 
 """
 
 from taucli.options import atwood, impulse, inertia, rolling, spin_down, tools
+from taucli.options import pendulum
 from taucli.options.common import ANSWER
 from taucli.table import Command
 
 SCENES: dict[str, Command] = {
     module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse)
 }
+SCENES[pendulum.COMMAND.name] = pendulum.COMMAND
 COMMANDS: dict[str, Command] = {**SCENES, "bench": tools.BENCH, "completions": tools.COMPLETIONS}
 OUTPUT_OPTIONS = ANSWER
 
