@@ -62,10 +62,8 @@ class Swing:
 
 
 def sine(theta: float) -> float:
-    """sin θ, measured from the nearer of 0 and ±180° so that sin(180°) is 0, not 1.2e-16."""
-    if abs(theta) <= math.pi / 2:
-        return math.sin(theta)
-    return math.sin(math.copysign(math.pi, theta) - theta)
+    """sin θ, with the double nearest 180° (math.pi) read as 180° itself: 0, not 1.2e-16."""
+    return 0.0 if abs(theta) == math.pi else math.sin(theta)
 
 
 # The motion in time: each model gives state(t) and the first time it reaches an angle. ---------
@@ -321,8 +319,10 @@ def _exact_model(swing: Swing):
     if swing.gravity_torque == 0:
         return Harmonic(math.sqrt(swing.torsion / swing.inertia), swing.theta0, swing.omega0)
     rate = math.sqrt(swing.gravity_torque / swing.inertia)
-    # cos(θ₀/2) as sin((π − |θ₀|)/2): exact near the top (π − |θ₀| has no rounding there), and 0 at 180°
-    s0, c0 = math.sin(swing.theta0 / 2), math.sin((math.pi - abs(swing.theta0)) / 2)
+    # cos(θ₀/2) is correctly rounded near the top too (math.cos reduces its argument exactly); the
+    # double nearest 180° (math.pi) is read as the top itself, so that 180deg is the balance.
+    s0 = math.copysign(1.0, swing.theta0) if abs(swing.theta0) == math.pi else math.sin(swing.theta0 / 2)
+    c0 = 0.0 if abs(swing.theta0) == math.pi else math.cos(swing.theta0 / 2)
     w = swing.omega0 / (2 * rate)
     kc2 = (c0 - abs(w)) * (c0 + abs(w))  # k'² = cos²(θ₀/2) − (ω₀/2ω₀ₙ)², as a product
     k = math.hypot(s0, w)
