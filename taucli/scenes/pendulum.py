@@ -30,6 +30,8 @@ TWO_PI = 2 * math.pi
 DEFAULT_DT = 1e-3
 DEFAULT_RTOL = 1e-10
 STEPPERS = ("euler", "rk4", "rk45", "verlet")
+REFERENCE_RTOL = 1e-11  # rk45's, for a stepper's error where there is no closed form
+WITHHELD_ABOVE = 1e-3  # a stepper's answers are withheld when its period is further off, relative (as in spin-down)
 
 
 @dataclass(frozen=True)
@@ -177,8 +179,13 @@ class Separatrix:
         return gap / self.rate if gap >= 0 else None
 
 
+class BlewUp(Exception):
+    """A stepped run left the finite numbers: the step is far outside the method's stable range."""
+
+
 class Stepped:
-    """θ'' = α(θ) stepped by a method of numerics.integrate_angle, each answer from t = 0."""
+    """θ'' = α(θ) stepped by a method of numerics.integrate_angle, each answer from t = 0, all of
+    them within one budget of steps (numerics.MAX_ANGLE_STEPS)."""
 
     def __init__(self, swing: Swing, method: str, dt: float, rtol: float, horizon: float):
         self.swing, self.method, self.dt, self.rtol, self.horizon = swing, method, dt, rtol, horizon
@@ -186,18 +193,30 @@ class Stepped:
         size = max(abs(swing.theta0), abs(swing.omega0) / natural, 1e-3)
         self.scale = (size, size * natural + abs(swing.omega0))
         self.steps = 0
+        self.budget = numerics.MAX_ANGLE_STEPS[method]
+        self._last = (0.0, swing.theta0, swing.omega0)  # where state() got to, to carry on from
 
     def _run(self, t_end: float, event=None, theta0=None, omega0=None) -> numerics.AngleSolution:
         start = (self.swing.theta0 if theta0 is None else theta0, self.swing.omega0 if omega0 is None else omega0)
         solution = numerics.integrate_angle(
-            self.swing.accel, *start, t_end, self.method, dt=self.dt, rtol=self.rtol, scale=self.scale, event=event
+            self.swing.accel, *start, t_end, self.method, dt=self.dt, rtol=self.rtol, scale=self.scale, event=event,
+            max_steps=max(self.budget - self.steps, 1),
         )
         self.steps += solution.steps
+        if not (math.isfinite(solution.theta) and math.isfinite(solution.omega)):
+            raise BlewUp()
         return solution
 
     def state(self, t: float) -> tuple[float, float]:
-        solution = self._run(t)
-        return solution.theta, solution.omega
+        """(θ, ω) at t, carried on from the last time asked for when t is later (a plot's samples)."""
+        t_last, theta, omega = self._last
+        if t < t_last:
+            t_last, theta, omega = 0.0, self.swing.theta0, self.swing.omega0
+        if t > t_last:
+            solution = self._run(t - t_last, theta0=theta, omega0=omega)
+            theta, omega = solution.theta, solution.omega
+        self._last = (t, theta, omega)
+        return theta, omega
 
     def time_to(self, theta: float) -> float | None:
         if theta == self.swing.theta0:
@@ -386,7 +405,11 @@ def _solve(swing, body_mass, distance, gravity, method, dt, rtol, angle, time, b
         state = model.state(time) if time is not None else None
     except numerics.TooManySteps:
         limit = numerics.MAX_ANGLE_STEPS[method]
-        notes.append(f"--method {method} would take more than {limit} steps at dt = {fmt(dt)} s; a larger {{dt}} or rk45 would do")
+        step = f"rtol = {fmt(rtol)}" if method == "rk45" else f"dt = {fmt(dt)} s"
+        notes.append(f"--method {method} would take more than {limit} steps at {step}; its answers are left out (a larger {{dt}}, or rk45)")
+        period = t_bottom = t_angle = state = None
+    except BlewUp:
+        notes.append(f"--method {method} blew up at dt = {fmt(dt)} s (the step is far too large for it): its answers are left out")
         period = t_bottom = t_angle = state = None
 
     circulating = isinstance(exact, Circulation)
@@ -439,9 +462,24 @@ def _solve(swing, body_mass, distance, gravity, method, dt, rtol, angle, time, b
             notes.append("small-angle model (sin θ ≈ θ): its error grows as about θ₀²/16 of the period (1% near 23°, 18% at 90°)")
         else:
             notes.append("small-angle model (sin θ ≈ θ): the body goes over the top, which no small-angle swing does: its times are meaningless here")
-    if isinstance(model, Stepped) and exact is not None and exact.period is not None and period is not None:
-        notes.append(f"{method} at dt = {fmt(dt)} s: period {fmt(abs(period / exact.period - 1), 2)} off the exact one (relative)" if method != "rk45"
-                     else f"rk45 at rtol = {fmt(rtol)}: period {fmt(abs(period / exact.period - 1), 2)} off the exact one (relative)")
+    if isinstance(model, Stepped) and (period is not None or t_bottom is not None or state is not None):
+        error = _period_error(swing, exact, model, period, notes)
+        if state is not None and error is not None and error <= WITHHELD_ABOVE:
+            error = max(error, _state_error(swing, exact, model, time, state, notes))
+        if error is not None and error > WITHHELD_ABOVE:
+            order = {"euler": 1, "verlet": 2, "rk4": 4}.get(method)
+            shown = "no full swing" if period is None else f"a period of {fmt(period, 6)} s"
+            shown += f" and θ = {fmt(state[0], 6)} rad at t = {fmt(time)} s" if state is not None else ""
+            better = f"; --dt {fmt(dt * (WITHHELD_ABOVE / 10 / error) ** (1 / order), 2)}s would do" if order and math.isfinite(error) else ""
+            notes.append(
+                f"{method}'s answers are withheld: it gave {shown}, {fmt(error, 2) if math.isfinite(error) else 'far'} off the "
+                f"{'exact' if exact is not None else 'rk45 (rtol 1e-11)'} one (more than {fmt(WITHHELD_ABOVE)}){better}"
+            )
+            for key in ("period", "t_bottom", "t_angle", "theta"):
+                if key in results:
+                    results[key] = results[key]._replace(value=None)
+            if time is not None and angle is None:
+                results["omega"] = results["omega"]._replace(value=None)
 
     model_words = _model_words(swing, method, exact, body_words)
     method_words = {"exact": "closed form (elliptic integrals)" if big_g else "closed form (harmonic)", "small-angle": "closed form (harmonic, small-angle)"}.get(
@@ -450,6 +488,40 @@ def _solve(swing, body_mass, distance, gravity, method, dt, rtol, angle, time, b
     steps = DeferredSteps(_steps, swing, body_mass, distance, gravity, body_steps, dict(results), exact, method, angle)
     trajectory = deferred(_trajectory, model, time, period, t_bottom)
     return Report("pendulum", model_words, method_words, results, steps, notes, trajectory=trajectory)
+
+
+def _period_error(swing: Swing, exact, model: Stepped, period: float | None, notes: list[str]) -> float | None:
+    """How far a stepper's period is from the exact one (or rk45's at rtol 1e-11 where there is
+    none), relative; inf where it found no swing and the reference did; None with no reference."""
+    if exact is not None:
+        reference = exact.period
+    else:
+        try:
+            reference = Stepped(swing, "rk45", model.dt, REFERENCE_RTOL, model.horizon).period(False)
+        except (numerics.TooManySteps, BlewUp):
+            reference = None
+    if reference is None:
+        notes.append(f"{model.method}'s error is not estimated: there is no reference period here")
+        return None
+    if period is None:
+        return math.inf
+    error = abs(period / reference - 1)
+    against = "the exact one" if exact is not None else "rk45's at rtol 1e-11"
+    step = f"rtol = {fmt(model.rtol)}" if model.method == "rk45" else f"dt = {fmt(model.dt)} s"
+    notes.append(f"{model.method} at {step}: period {fmt(error, 2)} off {against} (relative)")
+    return error
+
+
+def _state_error(swing: Swing, exact, model: Stepped, time: float, state: tuple[float, float], notes: list[str]) -> float:
+    """How far a stepper's (θ, ω) at --time is from the exact one (or rk45's), as a fraction of
+    the sizes the motion reaches (model.scale); 0 where there is no reference."""
+    try:
+        reference = exact.state(time) if exact is not None else Stepped(swing, "rk45", model.dt, REFERENCE_RTOL, model.horizon).state(time)
+    except (numerics.TooManySteps, BlewUp):
+        return 0.0
+    error = max(abs(state[0] - reference[0]) / model.scale[0], abs(state[1] - reference[1]) / model.scale[1])
+    notes.append(f"{model.method}: θ and ω at t = {fmt(time)} s {fmt(error, 2)} off {'the exact ones' if exact is not None else 'rk45' + chr(39) + 's'} (relative to the swing's size)")
+    return error
 
 
 def _pivot_force(swing: Swing, mass: float, distance: float, gravity: float, theta: float, speed: float | None) -> float | None:
@@ -481,8 +553,20 @@ def _trajectory(model, time: float | None, period: float | None, t_bottom: float
         t_end, note = 2 * period, "plotted for two periods; --time to change"
     else:
         t_end, note = 10.0, "plotted for 10 s; --time to change"
-    marks = ((t_bottom, "at the bottom"),) if t_bottom else ()
     curves = (("theta", "rad", "angle θ from the downward vertical"), ("omega", "rad/s", "angular velocity ω"))
+    if isinstance(model, Stepped):  # stepped once through the samples, within a budget of its own
+        model = Stepped(model.swing, model.method, model.dt, model.rtol, model.horizon)
+        points = [(0.0, model.swing.theta0, model.swing.omega0)]
+        for i in range(1, 201):
+            t = t_end * i / 200
+            try:
+                points.append((t, *model.state(t)))
+            except (numerics.TooManySteps, BlewUp):
+                t_end, note = points[-1][0], f"plotted for {fmt(points[-1][0])} s: {model.method} cannot go further"
+                break
+        marks = ((t_bottom, "at the bottom"),) if t_bottom and t_bottom <= t_end else ()
+        return Trajectory(curves, t_end, None, points=tuple(points), marks=marks, note=note)
+    marks = ((t_bottom, "at the bottom"),) if t_bottom else ()
     return Trajectory(curves, t_end, model.state, marks=marks, note=note)
 
 
