@@ -197,7 +197,7 @@ _taucli() {
         ;;
     bench)
         case "$prev" in
-            --scene) COMPREPLY=($(compgen -W "spin-down impulse" -- "$cur")); return 0 ;;
+            --scene) COMPREPLY=($(compgen -W "spin-down impulse pendulum" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--scene --quick --out --json --help" -- "$cur"))

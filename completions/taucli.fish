@@ -194,7 +194,7 @@ complete -c taucli -n '__fish_seen_subcommand_from pendulum' -l out -r -F -d 'Al
 complete -c taucli -n '__fish_seen_subcommand_from pendulum' -l points -x -d 'Values in a range FROM..TO, ends included (default 50).'
 complete -c taucli -n '__fish_seen_subcommand_from pendulum' -l y -x -a 'I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta' -d 'A result to chart against a range (repeatable; default the scene\'s main result).'
 complete -c taucli -n '__fish_seen_subcommand_from pendulum' -l help -d 'Show this message and exit.'
-complete -c taucli -n '__fish_seen_subcommand_from bench' -l scene -x -a 'spin-down impulse' -d 'spin-down or impulse (repeatable; default both).'
+complete -c taucli -n '__fish_seen_subcommand_from bench' -l scene -x -a 'spin-down impulse pendulum' -d 'spin-down or impulse or pendulum (repeatable; default both).'
 complete -c taucli -n '__fish_seen_subcommand_from bench' -l quick -d 'Fewer settings and repeats: a few seconds.'
 complete -c taucli -n '__fish_seen_subcommand_from bench' -l out -r -F -d 'Also draw the charts to FILE.svg or FILE.png (needs matplotlib).'
 complete -c taucli -n '__fish_seen_subcommand_from bench' -l json -d 'Print one strict JSON document on stdout.'

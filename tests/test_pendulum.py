@@ -319,3 +319,29 @@ def test_a_stepper_far_off_is_withheld_not_shown(method, dt, torsion):
     r = values(report)
     assert r["period"] is None and r["theta"] is None and r["omega"] is None and r["t_bottom"] is None
     assert any("withheld" in note for note in report.notes)
+
+
+# The pendulum on the work-precision chart (taucli bench) -------------------------------------
+
+
+@pytest.mark.parametrize("name", ["pendulum at 60°", "pendulum at 179°"])
+def test_the_bench_references_are_quadrature_of_the_period(name):
+    from taucli import bench
+
+    degrees, reference = bench.PENDULUM_PROBLEMS[name]
+    with mp.workdps(60):
+        exact = 4 * quarter_period_by_quadrature(mp.mpf(math.radians(degrees)))
+        assert abs(exact - mp.mpf(reference)) < mp.mpf(10) ** -45 * exact
+
+
+def test_the_bench_charts_every_pendulum_method():
+    from taucli import bench
+
+    points = bench.run(("pendulum",), quick=True)
+    for name in bench.PENDULUM_PROBLEMS:
+        mine = {p.method: p for p in points if p.problem == name}
+        assert {"exact", "small-angle", "euler", "rk4", "rk45", "verlet"} <= set(mine)
+        assert mine["exact"].error < 1e-15
+        assert mine["small-angle"].error > 0.06  # 6.4% at 60°, far more at 179°
+    diverged = {(p.problem, p.method) for p in points if p.status == "diverged"}
+    assert ("pendulum at 179°", "euler") in diverged  # euler's energy gain carries it over the top
