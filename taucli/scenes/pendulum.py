@@ -223,7 +223,10 @@ class Stepped:
             return 0.0
         if self.swing.speed_at(theta) is None:
             return None
-        solution = self._run(self.horizon, lambda angle, _: angle - theta)
+        if self.swing.torsion:
+            solution = self._run(self.horizon, lambda angle, _: angle - theta)
+        else:  # under gravity alone θ and θ ± 2π are the same place (it may have gone over the top)
+            solution = self._run(self.horizon, lambda angle, _: math.sin((angle - theta) / 2))
         return solution.t if solution.event else None
 
     def period(self, circulates: bool) -> float | None:
@@ -231,6 +234,8 @@ class Stepped:
             target = self.swing.theta0 + math.copysign(TWO_PI, self.swing.omega0)
             solution = self._run(self.horizon, lambda angle, _: angle - target)
             return solution.t if solution.event else None
+        if self.swing.theta0 == 0 and self.swing.omega0 == 0:  # at rest at the bottom: the limit of small swings
+            return TWO_PI * math.sqrt(self.swing.inertia / (self.swing.gravity_torque + self.swing.torsion))
         first = self._run(self.horizon, lambda _, speed: speed)
         if not first.event:
             return None
