@@ -670,6 +670,32 @@ def _steps(swing: Swing, mass, distance, gravity, body_steps, results, exact, me
                 "with more energy than the top needs, θ keeps growing; sin(θ/2) = sn(kω₀ₙt, 1/k)",
             )
         )
+    elif method in STEPPERS:
+        how = {
+            "euler": "explicit Euler: θ += hω, ω += hα(θ) (first order; it gains energy every step)",
+            "rk4": "classical Runge-Kutta, four stages (fourth order; it loses energy slowly)",
+            "rk45": "Dormand-Prince 5(4), its step held to the tolerance",
+            "verlet": "velocity Verlet: a half kick, a drift, a half kick (second order, symplectic: its energy stays bounded)",
+        }[method]
+        steps.append(
+            Step(
+                f"Period by stepping the motion ({method})",
+                "θ' = ω, ω' = α(θ) = −(mgd sin θ + κθ)/I; T = 2 × (time between two turning points, ω = 0)",
+                "",
+                "withheld (see the notes)" if value("period") is None else quantity_text(value("period"), "s"),
+                how + "; each turning point, the bottom and --angle are located by re-stepping the step that crosses them",
+            )
+        )
+    elif method == "small-angle":
+        steps.append(
+            Step(
+                "Small-angle model: the period at every amplitude",
+                "T = T₀ = 2π√(I / (mgd + κ)), θ(t) = θ₀ cos Ωt + (ω₀/Ω) sin Ωt",
+                "",
+                quantity_text(value("period"), "s"),
+                "sin θ ≈ θ makes the motion harmonic; the real period is longer, by about θ₀²/16 (see the note)",
+            )
+        )
     if mass is not None and value("pivot_force0") is not None:
         steps.append(
             Step(
