@@ -184,16 +184,17 @@ _taucli() {
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --angle) _taucli_units deg rad rev; return 0 ;;
             --time) _taucli_units s ms min h; return 0 ;;
+            --at) _taucli_units m cm mm km in ft; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto exact small-angle euler rk4 rk45 verlet" -- "$cur")); return 0 ;;
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --torsion --g --angle --time --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --torsion --g --angle --time --at --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -369,3 +369,16 @@ def test_the_exact_motion_and_rk45_agree_swinging_or_going_over(theta0, omega0, 
     stepped = values(taucli.pendulum(**common, time=t, method="rk45", rtol=1e-12))
     assert stepped["theta"] == pytest.approx(exact["theta"], abs=1e-7)
     assert stepped["omega"] == pytest.approx(exact["omega"], abs=1e-7)
+
+
+def test_a_rods_tip_falls_faster_than_g():
+    """From the horizontal, the tip of a rod on its end has a_t = Lα₀ = 3g/2; at the bottom it moves
+    at √(3gL) with a centripetal acceleration of 3g and no tangential one."""
+    length = 1.5
+    report = taucli.pendulum(shape="rod", length=length, mass=2, axis="end", angle0="90 deg", at=length, angle="0 deg")
+    r = values(report)
+    assert r["a_t0"] == pytest.approx(1.5 * G0, rel=1e-15)
+    assert r["v_t"] == pytest.approx(math.sqrt(3 * G0 * length), rel=1e-15)
+    assert r["a_c"] == pytest.approx(3 * G0, rel=1e-15)
+    assert r["a_t"] == 0
+    assert any("faster than a free body" in step.why for step in report.steps)

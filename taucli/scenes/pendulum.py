@@ -302,6 +302,7 @@ def pendulum(
     g: float | None = None,
     angle: float | None = None,
     time: float | None = None,
+    at: float | None = None,
     method: str | None = None,
     dt: float | None = None,
     rtol: float | None = None,
@@ -335,7 +336,59 @@ def pendulum(
     chosen = _choose(method or "auto", big_g > 0, kappa > 0)
     swing = Swing(moment, big_g, kappa, theta0, omega0 or 0.0)
     report = _solve(swing, body_mass, distance, gravity, chosen, dt or DEFAULT_DT, rtol or DEFAULT_RTOL, angle, time, body_steps, body_words)
+    if at is not None:
+        _point(report, swing, at, angle, gravity)
     return assumed.applied(report)
+
+
+def _point(report: Report, swing: Swing, r: float, angle: float | None, gravity: float) -> None:
+    """A point at r from the pivot: a_t = rα (sizes), v_t = rω, a_c = rω², at the start and at
+    --angle; with a step that says why a rod's far end falls faster than g."""
+    results = Results(TABLE)
+    where = f" {fmt(r)} m from the pivot"
+    alpha0 = abs(swing.accel(swing.theta0))
+    results.put("a_t0", r * alpha0, where)
+    steps = [
+        Step(
+            f"Tangential acceleration at the start of the point{where}",
+            "a_t = rα₀",
+            f"{quantity_text(r, 'm')} × {quantity_text(alpha0, 'rad/s**2')}",
+            quantity_text(r * alpha0, "m/s**2"),
+            (
+                f"every point of a rigid body has the same α; a point beyond I/(md) = {fmt(swing.inertia * gravity / swing.gravity_torque)} m "
+                f"falls faster than a free body's g sin θ₀ = {quantity_text(gravity * abs(sine(swing.theta0)), 'm/s**2')}: the rest of the body, "
+                "nearer the pivot, pulls it along (a rod's tip from the horizontal: a_t = 3g/2)"
+            )
+            if swing.gravity_torque and not swing.torsion
+            else "every point of a rigid body has the same α, so a_t grows with r",
+        )
+    ]
+    if angle is not None:
+        speed = swing.speed_at(angle)
+        part = f"{where} at θ = {fmt(math.degrees(angle))}°"
+        alpha = abs(swing.accel(angle))
+        results.put("v_t", None if speed is None else r * speed, part)
+        results.put("a_t", None if speed is None else r * alpha, part)
+        results.put("a_c", None if speed is None else r * speed * speed, part)
+        if speed is not None:
+            steps.append(
+                Step(
+                    f"The point{part}",
+                    "v_t = rω, a_t = rα, a_c = rω²",
+                    f"{quantity_text(r, 'm')} × {quantity_text(speed, 'rad/s')}; α = {quantity_text(alpha, 'rad/s**2')}",
+                    f"v_t = {quantity_text(r * speed, 'm/s')}, a_t = {quantity_text(r * alpha, 'm/s**2')}, a_c = {quantity_text(r * speed * speed, 'm/s**2')}",
+                    "ω from energy at that angle, α from the torque there",
+                )
+            )
+    report.results.update(results)
+    report.steps = _Appended(report.steps, steps)
+
+
+class _Appended(DeferredSteps):
+    """A report's steps (written when first read) and more after them."""
+
+    def __init__(self, first, more):
+        super().__init__(lambda: [*first, *more])
 
 
 def _exact_model(swing: Swing):
