@@ -520,7 +520,8 @@ def _solve(swing, body_mass, distance, gravity, method, dt, rtol, angle, time, b
             notes.append("small-angle model (sin θ ≈ θ): its error grows as about θ₀²/16 of the period (1% near 23°, 18% at 90°)")
         else:
             notes.append("small-angle model (sin θ ≈ θ): the body goes over the top, which no small-angle swing does: its times are meaningless here")
-    if isinstance(model, Stepped) and (period is not None or t_bottom is not None or state is not None):
+    # rk45 with no closed form to check it against is the reference itself: its tolerance holds
+    if isinstance(model, Stepped) and (period is not None or t_bottom is not None or state is not None) and (exact is not None or method != "rk45"):
         error = _period_error(swing, exact, model, period, notes)
         if state is not None and error is not None and error <= WITHHELD_ABOVE:
             error = max(error, _state_error(swing, exact, model, time, state, notes))
