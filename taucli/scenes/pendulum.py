@@ -647,8 +647,10 @@ def _steps(swing: Swing, mass, distance, gravity, body_steps, results, exact, me
             "τ₀ = −(" + " + ".join(terms) + ")",
             "−(" + " + ".join(numbers) + ")",
             quantity_text(-(big_g * sine(theta0) + kappa * theta0), "N*m"),
-            "gravity acts at the centre of mass, a distance d from the pivot; its lever arm is d sin θ"
-            + ("; the spring twists back in proportion to the angle" if kappa else ""),
+            "; ".join(
+                ["gravity acts at the centre of mass, a distance d from the pivot; its lever arm is d sin θ"] * bool(big_g)
+                + ["the spring twists back in proportion to the angle"] * bool(kappa)
+            ),
         )
     )
     steps.append(
@@ -722,6 +724,17 @@ def _steps(swing: Swing, mass, distance, gravity, body_steps, results, exact, me
                 f"k = {fmt(exact.k, 8)}",
                 quantity_text(value("period"), "s"),
                 "with more energy than the top needs, θ keeps growing; sin(θ/2) = sn(kω₀ₙt, 1/k)",
+            )
+        )
+    elif isinstance(exact, Harmonic) and method == "exact":
+        steps.append(
+            Step(
+                "Period (exact at any amplitude)",
+                "T = 2π√(I/κ)",
+                f"2π√({quantity_text(inertia, 'kg*m**2')} / {fmt(kappa)} N·m/rad)",
+                quantity_text(value("period"), "s"),
+                "the spring's torque κθ is linear in θ, so the motion is simple harmonic however far it swings; "
+                "the time to the bottom from rest is a quarter of it",
             )
         )
     elif method in STEPPERS:
