@@ -18,7 +18,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse torque gyro bench completions --version --debug --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro bench completions --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in
@@ -181,6 +181,40 @@ _taucli() {
         esac
         COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
         ;;
+    pendulum)
+        case "$prev" in
+            --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
+            --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --length) _taucli_units m cm mm km in ft; return 0 ;;
+            --width) _taucli_units m cm mm km in ft; return 0 ;;
+            --height) _taucli_units m cm mm km in ft; return 0 ;;
+            --depth) _taucli_units m cm mm km in ft; return 0 ;;
+            --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
+            --offset) _taucli_units m cm mm km in ft; return 0 ;;
+            --part) :; return 0 ;;
+            --cm-distance) _taucli_units m cm mm km in ft; return 0 ;;
+            --angle0) _taucli_units deg rad rev; return 0 ;;
+            --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --torsion) _taucli_units 'N*m/rad' 'N*m/deg' 'mN*m/rad'; return 0 ;;
+            --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
+            --angle) _taucli_units deg rad rev; return 0 ;;
+            --time) _taucli_units s ms min h; return 0 ;;
+            --at) _taucli_units m cm mm km in ft; return 0 ;;
+            --method) COMPREPLY=($(compgen -W "auto exact small-angle euler rk4 rk45 verlet" -- "$cur")); return 0 ;;
+            --dt) _taucli_units s ms min h; return 0 ;;
+            --rtol) :; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
+            --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
+        esac
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --torsion --g --angle --time --at --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        ;;
     torque)
         case "$prev" in
             --r) :; return 0 ;;
@@ -228,7 +262,7 @@ _taucli() {
         ;;
     bench)
         case "$prev" in
-            --scene) COMPREPLY=($(compgen -W "spin-down impulse" -- "$cur")); return 0 ;;
+            --scene) COMPREPLY=($(compgen -W "spin-down impulse pendulum" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--scene --quick --out --json --help" -- "$cur"))

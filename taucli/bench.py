@@ -47,7 +47,17 @@ FULL = {
 }
 QUICK = {"euler": [1e-1, 1e-2, 1e-3], "rk4": [0.3, 3e-2, 3e-3], "rk45": [1e-5, 1e-9, 1e-12], "scipy": [1e-6, 1e-12], "samples": [5, 31, 301, 3001]}
 SCENES = ("spin-down", "impulse")
+SCENES += ("pendulum",)  # (#19)
 MARKERS = {"exact": "X", "euler": "e", "rk4": "4", "rk45": "d", "scipy RK45": "R", "scipy DOP853": "8", "scipy LSODA": "L", "trapezoid": "t", "simpson": "s"}
+MARKERS.update({"verlet": "v", "small-angle": "h"})  # (#19)
+# name -> (amplitude θ₀ in degrees, period 4K(sin(θ₀/2)) of θ'' = −sin θ from rest at θ₀, to 50
+# digits for the double math.radians(θ₀))
+PENDULUM_PROBLEMS: dict[str, tuple[float, str]] = {
+    "pendulum at 60°": (60.0, "6.7430014192503840637329802594068084835009956534441"),
+    "pendulum at 179°": (179.0, "24.511115298106897760983209285784891344579310211168"),
+}
+FULL.update({"pendulum euler": [1e-2, 3e-3, 1e-3, 3e-4], "pendulum rk4": [0.3, 0.1, 3e-2, 1e-2, 3e-3], "verlet": [0.1, 3e-2, 1e-2, 3e-3, 1e-3]})
+QUICK.update({"pendulum euler": [1e-2, 1e-3], "pendulum rk4": [0.3, 3e-2, 3e-3], "verlet": [0.1, 1e-2, 1e-3]})
 ERROR_FLOOR = 1e-17  # an error of 0 is drawn here
 
 
@@ -163,6 +173,71 @@ def _pulse_points(name: str, ladder: dict, repeats: int) -> list[Point]:
     return points
 
 
+def _pendulum_points(name: str, ladder: dict, repeats: int) -> list[Point]:
+    """The period of θ'' = −sin θ from rest (I = mgd = 1): the time each method takes to find it,
+    and its error. The steppers locate the turning points (ω = 0) as events, as the scene does."""
+    from taucli.numerics import TooManySteps
+    from taucli.scenes.pendulum import BlewUp, Harmonic, Stepped, Swing, _exact_model
+
+    degrees, reference = PENDULUM_PROBLEMS[name]
+    swing = Swing(1.0, 1.0, 0.0, math.radians(degrees), 0.0)
+    horizon = 3 * float(reference)
+    runs: list[tuple[str, str, Callable]] = [
+        ("exact", "elliptic K", lambda: _exact_model(swing).period),
+        ("small-angle", "2π√(I/mgd)", lambda: Harmonic(1.0, swing.theta0, 0.0).period),
+    ]
+    for method, key in (("euler", "pendulum euler"), ("rk4", "pendulum rk4"), ("verlet", "verlet")):
+        for dt in ladder[key]:
+            runs.append((method, f"dt={dt:g}", lambda method=method, dt=dt: Stepped(swing, method, dt, 1e-10, horizon).period(False)))
+    for rtol in ladder["rk45"]:
+        runs.append(("rk45", f"rtol={rtol:g}", lambda rtol=rtol: Stepped(swing, "rk45", 1e-2, rtol, horizon).period(False)))
+    points = []
+    for method, setting, solve in runs:
+        def run_once(solve=solve):
+            try:
+                return solve()
+            except (TooManySteps, BlewUp):  # a diverged point, timed as far as it went
+                return None
+
+        period = run_once()
+        status = "ok" if period is not None else "diverged"
+        error = _relative(period, reference) if period is not None else None
+        points.append(Point("pendulum", name, method, setting, time_per_call(run_once, repeats), error, status))
+    points.extend(_scipy_pendulum_points(name, swing.theta0, reference, ladder, repeats))
+    return points
+
+
+def _scipy_pendulum_points(name: str, theta0: float, reference: str, ladder: dict, repeats: int) -> list[Point]:
+    """scipy's solve_ivp on the same pendulum, where installed: the period as twice the time to
+    the first turning point (its event ω = 0, falling through zero from rest at θ₀ > 0)."""
+    try:
+        from scipy.integrate import solve_ivp
+    except ImportError:
+        return []
+
+    def rate(_, y):
+        return [y[1], -math.sin(y[0])]
+
+    def turned(_, y):
+        return y[1]
+
+    turned.terminal, turned.direction = True, 1  # ω < 0 on the way down, back up to 0 at the far side
+    bound = 3 * float(reference)
+    points = []
+    for method in ("RK45", "DOP853", "LSODA"):
+        for rtol in ladder["scipy"]:
+            def run(method=method, rtol=rtol):
+                return solve_ivp(rate, (0.0, bound), [theta0, 0.0], method=method, rtol=rtol, atol=rtol * 1e-3, events=turned)
+
+            solution = run()
+            if not solution.t_events[0].size:
+                points.append(Point("pendulum", name, f"scipy {method}", f"rtol={rtol:g}", time_per_call(run, repeats), None, "diverged"))
+                continue
+            period = 2 * float(solution.t_events[0][0])
+            points.append(Point("pendulum", name, f"scipy {method}", f"rtol={rtol:g}", time_per_call(run, repeats), _relative(period, reference), "ok"))
+    return points
+
+
 def run(scenes: tuple[str, ...] = SCENES, quick: bool = False) -> list[Point]:
     """Measure every point of the chosen scenes."""
     ladder, repeats = (QUICK, 3) if quick else (FULL, 5)
@@ -173,6 +248,9 @@ def run(scenes: tuple[str, ...] = SCENES, quick: bool = False) -> list[Point]:
     if "impulse" in scenes:
         for name in PULSE_PROBLEMS:
             points.extend(_pulse_points(name, ladder, repeats))
+    if "pendulum" in scenes:
+        for name in PENDULUM_PROBLEMS:
+            points.extend(_pendulum_points(name, ladder, repeats))
     return points
 
 

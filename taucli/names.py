@@ -24,4 +24,5 @@ METHOD_NAMES = ("auto", "exact", "euler", "rk4", "rk45")  # "auto", "exact", *nu
 QUADRATURE_NAMES = ("auto", "trapezoid", "simpson")  # scenes.impulse rules
 PULLEY_SHAPES = ("disc", "ring")  # scenes.atwood.Pulley.SHAPE_FACTORS
 BENCH_SCENES = ("spin-down", "impulse")  # bench.SCENES
+BENCH_SCENES += ("pendulum",)  # (#19)
 SHELLS = ("bash", "zsh", "fish")  # completions.FILE_NAMES

@@ -50,6 +50,7 @@ METAVARS = {
     "power": "POWER",
     "energy": "ENERGY",
     "density": "DENSITY",
+    "torsion constant": "KAPPA",
 }
 
 

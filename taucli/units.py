@@ -74,6 +74,7 @@ KINDS: dict[str, Kind] = {
         Kind("power", "W", "1 kW", ("W", "kW", "MW", "hp")),
         Kind("energy", "J", "1 MJ", ("J", "kJ", "MJ", "kW*h", "Wh")),
         Kind("density", "kg/m**3", "'7800 kg/m^3'", ("kg/m^3", "g/cm^3", "lb/ft^3")),
+        Kind("torsion constant", "N*m/rad", "0.5 N*m/rad", ("N*m/rad", "N*m/deg", "mN*m/rad")),
     )
 }
 STANDARD_GRAVITY = 9.80665  # m/s^2: what lbf and kgf are defined with

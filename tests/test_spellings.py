@@ -103,6 +103,9 @@ SPELLINGS = {
               ("spin-down", "--inertia", "2", "--until-omega", "100rpm"), "--power"),
     "energy": (2.5e6, ["2.5e6 J", "2.5 MJ", "2500 kJ", "2500kJ", f"{2.5e6 / 3.6e6!r} kW*h", f"{2.5e6 / 3600!r} Wh", f"{2.5e6 / 3.6e6!r} kWh",
                        "2.5e6 N*m", "2.5e6"], ("spin-down", "--inertia", "2", "--friction", "1"), "--ke0"),
+    # torsion constant (#19): 1 N·m/deg = 180/π N·m/rad
+    "torsion constant": (0.5, ["0.5 N*m/rad", "0.5 Nm/rad", "0.5 N.m/rad", "500 mN*m/rad", f"{0.5 * math.pi / 180!r} N*m/deg", "0.5 J/rad",
+                               "0.5 N*m", "0.5"], ("pendulum", "--inertia", "0.02", "--cm-distance", "0", "--mass", "1kg", "--angle0", "30deg"), "--torsion"),
     # density (a part's density=): 1 lb/ft³ = 0.45359237 kg / 0.3048³ m³
     "density": (7800.0, ["7800 kg/m^3", "7800 kg/m3", "7.8 g/cm^3", "7.8 g/cm3", "7.8 g/mL", "7800 kg*m^-3",
                          f"{7800 / (0.45359237 / 0.3048**3)!r} lb/ft^3", "7.8 tonne/m^3", "7800"], None, None),

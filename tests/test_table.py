@@ -27,6 +27,7 @@ WORKING = {
     "impulse": ["--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "0.5s"],
     "torque": ["--r", "0.3,0.4,0 m", "--force", "0,0,10 N", "--mass", "2kg", "--velocity", "0,1,0 m/s"],
     "gyro": ["--shape", "disc", "--mass", "0.3kg", "--radius", "5cm", "--spin", "4000rpm", "--cm-distance", "5cm", "--tilt", "30deg"],
+    "pendulum": ["--shape", "rod", "--length", "1m", "--mass", "2kg", "--axis", "end", "--angle0", "90deg", "--angle", "0deg", "--time", "1s"],
 }
 
 
