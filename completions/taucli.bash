@@ -40,12 +40,15 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     spin-down)
         case "$prev" in
@@ -80,8 +83,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -108,8 +114,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -134,12 +143,15 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T v omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in
@@ -169,8 +181,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in
@@ -185,8 +200,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     gyro)
         case "$prev" in
@@ -214,8 +232,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in
