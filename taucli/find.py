@@ -194,9 +194,9 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
         ),
         Step(
             f"Solve for {name}",
-            f"{key}({name}) − {fmt(target, 6)} = 0 on [{fmt(low, 6)}, {fmt(high, 6)}] {_unit(si_unit)}".rstrip(),
-            f"{name} = {quantity_text(x, si_unit, 10)} (Brent's method, {iterations} steps)",
-            f"{key} = {quantity_text(reached, unit or '', 10)}",
+            f"{name} = the root of {key}({name}) − {fmt(target, 6)} in [{fmt(low, 6)}, {fmt(high, 6)}] {_unit(si_unit)}".rstrip(),
+            "",
+            f"{quantity_text(x, si_unit, 10)} (Brent's method, {iterations} steps), where {key} = {quantity_text(reached, unit or '', 10)}",
             f"the bracket is where {key} crosses the target on a grid of {PER_DECADE} values a decade over the range {name} may take"
             + (f"; {len(roots)} roots in all" if len(roots) > 1 else "; the only root"),
         ),
@@ -220,10 +220,11 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
         method += "; uncertainties to first order (full Jacobian, the implicit function theorem for the solved input)"
         steps.append(Step(
             f"The uncertainty of {name}",
-            f"δ{name} = (δ{key} − Σ ∂{key}/∂p δp) / (∂{key}/∂{name})",
-            f"∂{key}/∂{name} = {fmt(fx, 6)}" + "".join(f", ∂{key}/∂{p} = {fmt(slopes[p].get(key, 0.0), 6)}" for p in spreads),
-            f"δ{name} = {quantity_text(sigma.get(name, 0.0), si_unit, 3)}",
-            f"{key} is held at its target (known to ± {fmt(target_spread, 3)}) while each input moves; the changes add in quadrature",
+            f"δ{name} = √(δ{key}² + Σ (∂{key}/∂p · δp)²) / |∂{key}/∂{name}|",
+            f"√({' + '.join(f'{fmt(term, 4)}²' for term in [target_spread, *(slopes[p].get(key, 0.0) * spreads[p] for p in spreads)])}) / {fmt(abs(fx), 6)}",
+            quantity_text(sigma.get(name, 0.0), si_unit, 3),
+            f"the implicit function theorem: {key} is held at its target while the target and each uncertain input p move; "
+            f"∂{key}/∂{name} = {fmt(fx, 6)} by differences; independent changes add in quadrature",
         ))
     elif (spreads or target_spread) and not fx:
         extra.append(f"{key} does not change with {{{name}}} at the root, so no uncertainty follows for it")
