@@ -235,11 +235,11 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
         uncertainties=sigma, input_uncertainties=dict(spreads),
     )
     if mc and (spreads or target_spread):
-        monte_carlo(scene, report, spread_all, mc, lambda draw: _redrawn(scene, name, key, target, x, fx, draw, spreads))
+        monte_carlo(scene, report, spread_all, mc, lambda draw: _redrawn(scene, name, key, target, x, draw, spreads), {"{want}": target})
     return report
 
 
-def _redrawn(scene: Scene, name: str, key: str, target: float, x0: float, fx: float | None, draw: dict, spreads) -> dict | None:
+def _redrawn(scene: Scene, name: str, key: str, target: float, x0: float, draw: dict, spreads) -> dict | None:
     """One Monte Carlo draw with --find: the root near x0 for the drawn inputs and target."""
     y = draw.pop("{want}", target)
     moved = {p: draw[p] for p in spreads}

@@ -261,17 +261,14 @@ def linearity(scene: Scene, nominal: Report, spreads: Mapping[str, float], slope
                 before = nominal.results.get(key)
                 if before is not None and (isinstance(value.value, (bool, str)) or value.value is None or before.value is None) and value.value != before.value:
                     changes.append(f"{key} becomes {value.value}")
-        for key, r0 in base.items():
-            lin = abs(slopes[name].get(key, 0.0)) * sigma
-            try:
-                up, down = scene.results({**point, name: point[name] + sigma}), scene.results({**point, name: point[name] - sigma})
-            except Exception:
-                up = down = None
-            if up is None or down is None or key not in up or key not in down:
-                continue
-            curve = abs(up[key] + down[key] - 2 * r0) / 2
-            if curve > 0.25 * lin and curve > 1e-9 * abs(r0):
-                bent.append(key)
+        if not changes:
+            up, down = scene.results({**point, name: point[name] + sigma}), scene.results({**point, name: point[name] - sigma})
+            for key, r0 in base.items():
+                if up is None or down is None or key not in up or key not in down:
+                    continue
+                curve = abs(up[key] + down[key] - 2 * r0) / 2  # the second-order term over ±1σ
+                if curve > 0.25 * abs(slopes[name].get(key, 0.0)) * sigma and curve > 1e-9 * abs(r0):
+                    bent.append(key)
         if changes:
             notes.append(f"within ±1σ of {flag} the scene is far from linear: " + "; ".join(dict.fromkeys(changes)) + " (first-order uncertainties are rough here; --mc N checks them)")
         elif bent:
@@ -287,9 +284,11 @@ def measured(nominal: Report, sigma: dict[str, float], spreads: Mapping[str, flo
     )
 
 
-def monte_carlo(scene: Scene, report: Measured, spreads: Mapping[str, float], draws: int, solve_draw: Callable[[dict], Report | dict | None]) -> None:
+def monte_carlo(scene: Scene, report: Measured, spreads: Mapping[str, float], draws: int, solve_draw: Callable[[dict], Report | dict | None],
+                centres: Mapping[str, float] | None = None) -> None:
     """Draw each uncertain input from its normal distribution (redrawn outside its physical range),
-    solve, and keep each numeric result's mean and standard deviation, with a note."""
+    solve, and keep each numeric result's mean and standard deviation, with a note. ``centres``
+    holds the centre of a draw that is not an input (--want's target)."""
     import random
     import statistics
 
@@ -299,9 +298,11 @@ def monte_carlo(scene: Scene, report: Measured, spreads: Mapping[str, float], dr
     for _ in range(draws):
         draw = {}
         for name, sigma in spreads.items():
-            centre = scene.si.get(name, 0.0)
+            if centres and name in centres:
+                draw[name] = rng.gauss(centres[name], sigma)
+                continue
             for _attempt in range(100):
-                x = rng.gauss(centre, sigma)
+                x = rng.gauss(scene.si[name], sigma)
                 if scene.allowed(name, x):
                     break
                 redrawn += 1

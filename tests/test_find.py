@@ -138,3 +138,14 @@ def test_a_sweep_solves_for_the_input_at_each_point():
 def test_brent_finds_a_root_to_a_few_ulp():
     root, steps = brent(lambda x: x**3 - 2, 0.0, 2.0, -2.0, 6.0)
     assert root == pytest.approx(2 ** (1 / 3), rel=4e-16) and steps < 60
+
+
+def test_monte_carlo_with_find_agrees_with_the_implicit_function_theorem():
+    code, out, _ = run("atwood", "--m1", "4kg+/-0.02kg", "--m2", "1kg", "--pulley-radius", "0.1m", "--find", "pulley_inertia",
+                       "--want", "a=4.0+/-0.02m/s^2", "--mc", "3000", "--json")
+    doc = json.loads(out)
+    draws = doc["monte_carlo"]["draws"]
+    for key in ("pulley_inertia", "T1"):
+        linear = doc["results"][key]["uncertainty"]
+        drawn = doc["monte_carlo"]["results"][key]["uncertainty"]
+        assert code == 0 and abs(drawn - linear) < 3 * linear / math.sqrt(2 * (draws - 1)), key
