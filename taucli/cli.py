@@ -154,7 +154,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
             raise InputError((swept_range or swept_list).name, "cannot be a range or a list with {batch}: give one scene per line")
         from taucli import batch
 
-        return batch.run(command, {**scene_given, **_finding(answer)}, render.Output(to=tuple(answer["to"] or ()), steps=not answer["no_steps"]), env)
+        return batch.run(command, {**scene_given, **_finding(answer, batch=True)}, render.Output(to=tuple(answer["to"] or ()), steps=not answer["no_steps"]), env)
     output = render.Output(
         json=bool(answer["json"] or answer["jsonl"]),
         get=tuple(answer["get"] or ()),
@@ -193,8 +193,11 @@ def _whole_number(command: Command, text: Optional[str], name: str = "points") -
         raise InputError(name, "expected a whole number", example=f"{{{name}}} 50", got=repr(text)) from None
 
 
-def _finding(answer: dict) -> dict:
+def _finding(answer: dict, *, batch: bool = False) -> dict:
     """--find and --want (#22), where given: a batch's lines take them as keys too."""
+    if batch and (answer["mc"] is not None or answer["uncertainty"]):
+        name = "mc" if answer["mc"] is not None else "uncertainty"
+        raise InputError(name, "does not combine with {batch}, which writes whole JSON documents (each with its \"uncertainty\")")
     return {name: answer[name] for name in ("find", "want") if answer[name] is not None}
 
 

@@ -201,3 +201,9 @@ def test_property_sigma_scales_with_the_inputs_sigma_to_first_order(value, relat
     one = taucli.spin_down(inertia=f"{value!r} ± {value * relative * 1e-3!r}", omega0="30 rad/s", friction="0.3 N*m")
     many = taucli.spin_down(inertia=f"{value!r} ± {value * relative * 1e-3 * scale!r}", omega0="30 rad/s", friction="0.3 N*m")
     assert many.uncertainties["t_stop"] == pytest.approx(scale * one.uncertainties["t_stop"], rel=1e-6)
+
+
+@pytest.mark.parametrize("flag", [("--mc", "100"), ("--uncertainty",)])
+def test_batch_refuses_mc_and_the_get_column(flag):
+    code, _, err = run("atwood", "--batch", *flag, stdin='{"m1": "4kg"}\n')
+    assert code == 2 and flag[0] in err and "--batch" in err
