@@ -138,38 +138,28 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
         values = scene.results({name: x})
         return None if values is None or key not in values else values[key] - target
 
-    grid = _grid(scene, name)
-    values = [f(x) for x in grid]
-    roots, brackets, jumps = [], [], 0
-    holds = [i for i, v in enumerate(values) if v is not None and _meets(v, target)]
-    if len(holds) >= 2 and any(j == i + 1 for i, j in zip(holds, holds[1:])):
-        _refuse_interval(scene, name, key, target, unit, grid, values, holds, f)
-    for i in range(len(grid) - 1):
-        fa, fb = values[i], values[i + 1]
-        if fa is None or fb is None:
-            continue
-        if fa == 0 and i > 0:
-            continue  # counted as the right end of the cell before
-        if fa * fb > 0:
-            continue
-        try:
-            x, count = brent(f, grid[i], grid[i + 1], fa, fb)
-        except ArithmeticError:
-            continue
-        fx = f(x)
-        if fx is None or abs(fx) > 1e-9 * max(abs(target), abs(fx + target), 1e-300) and abs(fx) > 1e-12:
-            jumps += 1  # a jump across the target, not a root
-            continue
-        if not roots or not math.isclose(x, roots[-1], rel_tol=1e-12, abs_tol=1e-300):
-            roots.append(x)
-            brackets.append((grid[i], grid[i + 1], count))
-    if not roots:
-        _refuse_unreachable(scene, name, key, target, unit, grid, values, jumps)
-    best = min(range(len(roots)), key=lambda i: abs(roots[i]))
-    x = roots[best]
-    low, high, iterations = brackets[best]
+    closed = _closed_form(scene, name, key, target, f)
+    if closed is not None:
+        x, equation, numbers = closed
+        roots, jumps = [x], 0
+        solution = Step(f"Solve for {name}: the inverse in closed form", equation, numbers, quantity_text(x, si_unit, 10),
+                        f"{key} is monotonic in {name} in this model, so this is the only root; the forward solve at it gives {key} = {fmt(target, 10)}")
+        how = f"{name} by its closed-form inverse"
+    else:
+        roots, brackets, jumps = _roots(scene, name, key, target, unit, f)
+        best = min(range(len(roots)), key=lambda i: abs(roots[i]))
+        x = roots[best]
+        low, high, iterations = brackets[best]
+        solution = Step(
+            f"Solve for {name}",
+            f"{name} = the root of {key}({name}) − {fmt(target, 6)} in [{fmt(low, 6)}, {fmt(high, 6)}] {_unit(si_unit)}".rstrip(),
+            "",
+            f"{quantity_text(x, si_unit, 10)} (Brent's method, {iterations} steps)",
+            f"the bracket is where {key} crosses the target on a grid of {PER_DECADE} values a decade over the range {name} may take"
+            + (f"; {len(roots)} roots in all" if len(roots) > 1 else "; the only root"),
+        )
+        how = f"{name} by a bracketed root-finder (Brent's method) to full precision"
     nominal = scene.report({name: x})
-    reached = nominal.results[key].value
     point = {name: x, **{p: scene.si[p] for p in spreads}}
     scales = {**spreads, name: max(abs(x) * 1e-3, 1e-300)}
     slopes = jacobian(scene, point, scales)
@@ -190,18 +180,11 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
             "",
             "",
             f"{key} as {command.name} gives it (the steps below) for each trial {name}; the inverse is the root of "
-            f"{key}({name}) − {fmt(target, 6)} = 0 (no closed-form inverse is used)",
+            f"{key}({name}) − {fmt(target, 6)} = 0" + (" (no closed-form inverse is used)" if closed is None else ""),
         ),
-        Step(
-            f"Solve for {name}",
-            f"{name} = the root of {key}({name}) − {fmt(target, 6)} in [{fmt(low, 6)}, {fmt(high, 6)}] {_unit(si_unit)}".rstrip(),
-            "",
-            f"{quantity_text(x, si_unit, 10)} (Brent's method, {iterations} steps), where {key} = {quantity_text(reached, unit or '', 10)}",
-            f"the bracket is where {key} crosses the target on a grid of {PER_DECADE} values a decade over the range {name} may take"
-            + (f"; {len(roots)} roots in all" if len(roots) > 1 else "; the only root"),
-        ),
+        solution,
     ]
-    method = f"{nominal.method}; {name} by a bracketed root-finder (Brent's method) to full precision"
+    method = f"{nominal.method}; {how}"
     sigma: dict[str, float] = {}
     spread_all = dict(spreads)
     if (spreads or target_spread) and fx:
@@ -237,6 +220,92 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
     if mc and (spreads or target_spread):
         monte_carlo(scene, report, spread_all, mc, lambda draw: _redrawn(scene, name, key, target, x, draw, spreads), {"{want}": target})
     return report
+
+
+def _roots(scene: Scene, name: str, key: str, target: float, unit, f) -> tuple[list[float], list[tuple], int]:
+    """Every root of f over the input's range: (roots, their brackets and Brent's steps, jumps)."""
+    grid = _grid(scene, name)
+    values = [f(x) for x in grid]
+    roots, brackets, jumps = [], [], 0
+    holds = [i for i, v in enumerate(values) if v is not None and _meets(v, target)]
+    if len(holds) >= 2 and any(j == i + 1 for i, j in zip(holds, holds[1:])):
+        _refuse_interval(scene, name, key, target, unit, grid, values, holds, f)
+    for i in range(len(grid) - 1):
+        fa, fb = values[i], values[i + 1]
+        if fa is None or fb is None:
+            continue
+        if fa == 0 and i > 0:
+            continue  # counted as the right end of the cell before
+        if fa * fb > 0:
+            continue
+        try:
+            x, count = brent(f, grid[i], grid[i + 1], fa, fb)
+        except ArithmeticError:
+            continue
+        fx = f(x)
+        if fx is None or abs(fx) > 1e-9 * max(abs(target), abs(fx + target), 1e-300) and abs(fx) > 1e-12:
+            jumps += 1  # a jump across the target, not a root
+            continue
+        if not roots or not math.isclose(x, roots[-1], rel_tol=1e-12, abs_tol=1e-300):
+            roots.append(x)
+            brackets.append((grid[i], grid[i + 1], count))
+    if not roots:
+        _refuse_unreachable(scene, name, key, target, unit, grid, values, jumps)
+    return roots, brackets, jumps
+
+
+# Closed-form inverses, where one is easy: (scene, input, result) -> the inverse. Each is used only
+# where the scene's options are those of its model and the forward solve at its value meets the
+# target to 1e-12; otherwise the root-finder is used.
+PLAIN_ATWOOD = ("axle_friction", "incline", "mu_k", "mu_s", "rim_mu", "radius1", "radius2", "pulley_shape")
+
+
+def _atwood_inverse(scene: Scene, name: str, target: float):
+    si = scene.si
+    if any(option in scene.given for option in PLAIN_ATWOOD) or target == 0 or "m1" not in si:
+        return None
+    from taucli.scenes.assumed import STANDARD_GRAVITY
+
+    m1, m2, g = si["m1"], si.get("m2", 0.0), si.get("g", STANDARD_GRAVITY)
+    extra = (m1 - m2) * g / target - m1 - m2  # I/R², or M/2: (m1 − m2) g = (m1 + m2 + I/R²) a
+    if name == "pulley_inertia":
+        if "pulley_radius" not in si or "pulley_mass" in scene.given:
+            return None
+        r = si["pulley_radius"]
+        return (extra * r * r, "I = R² ((m₁ − m₂) g / a − m₁ − m₂)",
+                f"{fmt(r)}² × (({fmt(m1)} − {fmt(m2)}) × {fmt(g)} / {fmt(target)} − {fmt(m1)} − {fmt(m2)})")
+    if "pulley_inertia" in scene.given:
+        return None
+    return 2 * extra, "M = 2 ((m₁ − m₂) g / a − m₁ − m₂)", f"2 × (({fmt(m1)} − {fmt(m2)}) × {fmt(g)} / {fmt(target)} − {fmt(m1)} − {fmt(m2)})"
+
+
+def _stop_inverse(scene: Scene, name: str, target: float):
+    loads = ("viscous", "drag", "torque", "force", "power", "alpha", "brake", "face")
+    if any(option in scene.given for option in loads) or "omega0" not in scene.si or target <= 0:
+        return None
+    probe = scene.results({name: 1.0})  # I does not depend on the friction
+    if probe is None or "I" not in probe:
+        return None
+    inertia, omega0 = probe["I"], abs(scene.si["omega0"])
+    return inertia * omega0 / target, "τ = I ω₀ / t_stop", f"{fmt(inertia)} × {fmt(omega0)} / {fmt(target)}"
+
+
+CLOSED_FORMS = {
+    ("atwood", "pulley_inertia", "a"): _atwood_inverse,
+    ("atwood", "pulley_mass", "a"): _atwood_inverse,
+    ("spin-down", "friction", "t_stop"): _stop_inverse,
+}
+
+
+def _closed_form(scene: Scene, name: str, key: str, target: float, f):
+    inverse = CLOSED_FORMS.get((scene.command.name, name, key))
+    found = inverse and inverse(scene, name, target)
+    if not found or not math.isfinite(found[0]) or not scene.allowed(name, found[0]):
+        return None
+    residual = f(found[0])
+    if residual is None or abs(residual) > 1e-12 * abs(target):
+        return None
+    return found
 
 
 def _redrawn(scene: Scene, name: str, key: str, target: float, x0: float, draw: dict, spreads) -> dict | None:

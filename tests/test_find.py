@@ -40,8 +40,22 @@ def test_the_lab_pulley_inertia_from_a_measured_acceleration():
     # δI = |∂I/∂a| δa, the derivative by mpmath of the independent inverse
     slope = mpmath.diff(lambda a: pulley_inertia(4, 1, mpmath.mpf("0.1"), a), 4)
     assert report.uncertainties["pulley_inertia"] == pytest.approx(float(abs(slope) * mpmath.mpf("0.1")), rel=1e-7)
-    assert "Brent" in report.method
+    assert "closed-form inverse" in report.method
     assert report.steps[0].equation.startswith("a(pulley_inertia)")
+
+
+@pytest.mark.parametrize("name, options, want", [
+    ("pulley_inertia", {"m1": "4kg", "m2": "1kg", "pulley_radius": "0.1m"}, "a=4m/s^2"),
+    ("pulley_mass", {"m1": "4kg", "m2": "1kg"}, "a=4.9m/s^2"),
+    ("friction", {"shape": "disc", "mass": "5kg", "radius": "0.2m", "omega0": "30rad/s"}, "t_stop=10s"),
+])
+def test_a_closed_form_inverse_agrees_with_the_root_finder(name, options, want):
+    scene = taucli.atwood if "m1" in options else taucli.spin_down
+    closed = scene(**options, find=name, want=want)
+    # a zero friction (or a zero viscous loss) given is the same scene, outside the closed form's model
+    found = scene(**options, **({"axle_friction": 0} if "m1" in options else {"viscous": 0}), find=name, want=want)
+    assert "closed-form inverse" in closed.method and "Brent" in found.method
+    assert closed.results[name].value == pytest.approx(found.results[name].value, rel=1e-13)
 
 
 def test_the_solved_inputs_uncertainty_includes_every_inputs():
