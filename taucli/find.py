@@ -125,6 +125,7 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
     from taucli.table import spelled
 
     command = scene.command
+    name = str(name).strip().lstrip("-").replace("-", "_")  # pulley_inertia, pulley-inertia or --pulley-inertia
     option = command.option(name)
     if option is None or name not in command.input_names or not option.is_quantity or option.repeatable:
         quantities = ", ".join(o.name for o in command.options if o.is_quantity and not o.repeatable)
