@@ -49,7 +49,6 @@ class Inputs:
             self.notes.append(note)
         return value
 
-
     def _uncertain(self, given: str, option: str, kind: str, key: str) -> str:
         """The value's text of "4.0+/-0.1 kg", its uncertainty kept (SI) under ``key``."""
         from taucli.uncertain import split
