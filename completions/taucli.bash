@@ -40,12 +40,15 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     spin-down)
         case "$prev" in
@@ -88,8 +91,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --power --ke0 --rim-speed --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --power --ke0 --rim-speed --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -116,8 +122,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -142,12 +151,15 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T v omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in
@@ -178,8 +190,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in
@@ -212,8 +227,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --torsion --g --angle --time --at --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --torsion --g --angle --time --at --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in
@@ -228,8 +246,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     gyro)
         case "$prev" in
@@ -257,8 +278,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
+            --find) :; return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -25,7 +25,7 @@ def function(name: str) -> Callable[..., Report] | None:
 
 
 def _made(command: Command) -> Callable[..., Report]:
-    from taucli import pipeline
+    from taucli import uncertain
 
     positional = [option.name for option in command.options if option.positional]
 
@@ -36,7 +36,8 @@ def _made(command: Command) -> Callable[..., Report]:
             if name in given:
                 raise TypeError(f"{command.function_name}() got multiple values for argument {name!r}")
             given[name] = value
-        return pipeline.solve(command, {name.replace("-", "_"): value for name, value in given.items()})
+        given = {name.replace("-", "_"): value for name, value in given.items()}
+        return uncertain.solve(command, given, find=given.pop("find", None), want=given.pop("want", None))
 
     parameters = [
         inspect.Parameter(
@@ -45,13 +46,14 @@ def _made(command: Command) -> Callable[..., Report]:
             default=None,
         )
         for option in command.options
-    ]
+    ]  # and find=, want= (#22), read by taucli.uncertain.solve
     scene.__signature__ = inspect.Signature(parameters, return_annotation=Report)
     scene.__name__ = scene.__qualname__ = command.function_name
     scene.__module__ = "taucli"
     scene.__doc__ = (
         f"{command.summary}\n\nKeywords (texts with units, or SI numbers): "
         + ", ".join(option.name for option in command.options)
+        + ".\n\nfind=NAME with want=\"RESULT=VALUE\" solves for an input; a text such as \"4.0+/-0.1 kg\" carries an uncertainty"
         + f".\n\nResults: {command.results_line()}.\n\nAs on the command line: {command.example}"
     )
     return scene

@@ -27,6 +27,7 @@ from taucli.render import STRICT_JSON, Output, document, prepared
 from taucli.table import FLAG, Command
 
 PER_LINE_OUTPUT = ("to", "no_steps")  # how to answer, which a line may say for itself
+FINDING = ("find", "want")  # --find NAME --want RESULT=VALUE (#22), which a line may say for itself
 _EXAMPLE_LINE = '{"m1": "4kg", "m2": "1kg"}'
 # A write of at most PIPE_BUF bytes reaches a pipe whole (POSIX): lines are written in blocks
 # of no more than this, each block ending a line, so a run that is killed leaves whole lines.
@@ -35,7 +36,7 @@ BLOCK_BYTES = 4096
 
 def run(command: Command, fixed: dict, output: Output, env) -> int:
     """Solve one scene per line of ``env.stdin``; ``fixed`` holds the command line's options."""
-    from taucli import pipeline
+    from taucli.uncertain import solve
 
     lines = env.stdin
     if lines is None:
@@ -58,7 +59,8 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
         solved += 1
         try:
             given, answer = _line(line, keys, command)
-            report = pipeline.solve(command, {**fixed, **given}, spell=command.flag)
+            given = {**fixed, **given}
+            report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag)
             shown = output._replace(**answer) if answer else output
             text = STRICT_JSON.encode(document(prepared(report, shown), steps=shown.steps)) + "\n"
         except TaucliError as err:
@@ -128,7 +130,7 @@ _STRICT = json.JSONDecoder(parse_constant=_reject_constant)
 
 def _keys(command: Command) -> dict[str, str]:
     """Every key a line may use (``pulley_mass``, ``pulley-mass``, ``--pulley-mass``) -> the option's name."""
-    names = [option.name for option in command.options] + list(PER_LINE_OUTPUT)
+    names = [option.name for option in command.options] + list(PER_LINE_OUTPUT) + list(FINDING)
     keys = {}
     for name in names:
         for key in (name, name.replace("_", "-"), "--" + name.replace("_", "-")):
@@ -158,6 +160,8 @@ def _line(line: str, keys: dict[str, str], command: Command) -> tuple[dict, dict
             answer["to"] = tuple(value if isinstance(value, list) else [value])
         elif name == "no_steps":
             answer["steps"] = not _flag(value, name)
+        elif name in FINDING:
+            options[name] = value
         else:
             option = command.option(name)
             if option.kind == FLAG:

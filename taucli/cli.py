@@ -139,7 +139,7 @@ def _present(value) -> bool:
 
 def run_scene(command: Command, given: dict, env: Environment) -> int:
     """One scene's run: a single answer, a sweep, or a batch, as the answer options say."""
-    from taucli import pipeline, render, sweep
+    from taucli import render, sweep
 
     answer = {option.name: given.pop(option.name, None) for option in command.output}
     scene_given = {name: value for name, value in given.items() if _present(value)}
@@ -154,7 +154,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
             raise InputError((swept_range or swept_list).name, "cannot be a range or a list with {batch}: give one scene per line")
         from taucli import batch
 
-        return batch.run(command, scene_given, render.Output(to=tuple(answer["to"] or ()), steps=not answer["no_steps"]), env)
+        return batch.run(command, {**scene_given, **_finding(answer, batch=True)}, render.Output(to=tuple(answer["to"] or ()), steps=not answer["no_steps"]), env)
     output = render.Output(
         json=bool(answer["json"] or answer["jsonl"]),
         get=tuple(answer["get"] or ()),
@@ -163,6 +163,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         plot=bool(answer["plot"]),
         out=answer["out"],
         json_lines=bool(answer["jsonl"]),
+        uncertainty=bool(answer["uncertainty"]),
     )
     if output.plot and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
@@ -172,21 +173,32 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         from taucli import plot
 
         plot.check_file(output.out)
+    from taucli import uncertain
+
+    finding = {**_finding(answer), "mc": _whole_number(command, answer["mc"], "mc")}
     if swept_range is None and swept_list is None:
-        render.render(pipeline.solve(command, scene_given, stdin=env.stdin, spell=command.flag), output, env.stdout)
+        render.render(uncertain.solve(command, scene_given, stdin=env.stdin, spell=command.flag, **finding), output, env.stdout)
         return int(ExitStatus.OK)
-    solved = sweep.solve_all(command, swept_range, swept_list, scene_given, lambda options: pipeline.solve(command, options, stdin=env.stdin, spell=command.flag))
+    solved = sweep.solve_all(command, swept_range, swept_list, scene_given, lambda options: uncertain.solve(command, options, stdin=env.stdin, spell=command.flag, **finding))
     sweep.render(solved, swept_range, swept_list, output, list(answer["y"] or ()), env.stdout)
     return int(ExitStatus.OK)
 
 
-def _whole_number(command: Command, text: Optional[str]) -> Optional[int]:
+def _whole_number(command: Command, text: Optional[str], name: str = "points") -> Optional[int]:
     if text is None:
         return None
     try:
         return int(text)
     except ValueError:
-        raise InputError("points", "expected a whole number", example="{points} 50", got=repr(text)) from None
+        raise InputError(name, "expected a whole number", example=f"{{{name}}} 50", got=repr(text)) from None
+
+
+def _finding(answer: dict, *, batch: bool = False) -> dict:
+    """--find and --want (#22), where given: a batch's lines take them as keys too."""
+    if batch and (answer["mc"] is not None or answer["uncertainty"]):
+        name = "mc" if answer["mc"] is not None else "uncertainty"
+        raise InputError(name, "does not combine with {batch}, which writes whole JSON documents (each with its \"uncertainty\")")
+    return {name: answer[name] for name in ("find", "want") if answer[name] is not None}
 
 
 def _no_such_option(command: Command, unknown: str) -> str:

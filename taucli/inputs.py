@@ -28,6 +28,7 @@ class Inputs:
     values: dict[str, Value] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
     gravity: float | None = None  # the scene's --g, for a weight given as a mass
+    uncertainties: dict[str, float] | None = None  # "4.0+/-0.1 kg": each σ in SI (taucli.uncertain)
 
     def quantity(self, name: str, given, kind: str, *, sign: str = "positive", key: str | None = None) -> float | None:
         """The SI value of ``given``: text with a unit, or a number, which is SI."""
@@ -35,6 +36,8 @@ class Inputs:
             return None
         option = name if name.startswith("{") else "{" + name + "}"
         if isinstance(given, str):
+            if "±" in given or "+/-" in given or ")" in given:
+                given = self._uncertain(given, option, kind, key or name)
             parsed = units.parse(given, option, kind, sign=sign, gravity=self.gravity)
             value, note = parsed.value, parsed.note
         elif isinstance(given, (int, float)) and not isinstance(given, bool):
@@ -45,6 +48,17 @@ class Inputs:
         if note:
             self.notes.append(note)
         return value
+
+    def _uncertain(self, given: str, option: str, kind: str, key: str) -> str:
+        """The value's text of "4.0+/-0.1 kg", its uncertainty kept (SI) under ``key``."""
+        from taucli.uncertain import split
+
+        parts = split(given)
+        if parts is None:
+            return given
+        spread = units.parse(parts[1], option + " (its uncertainty)", kind, sign="nonnegative", gravity=self.gravity).value
+        self.uncertainties = {**(self.uncertainties or {}), key: spread}
+        return parts[0]
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:

@@ -36,6 +36,7 @@ class Output(NamedTuple):
     plot: bool = False  # draw the motion in time (or, in --json, include its samples)
     out: str | None = None  # also draw the chart to this .svg or .png file
     json_lines: bool = False  # a sweep's documents one per line rather than one array
+    uncertainty: bool = False  # --get: each result's standard uncertainty in a second column (#22)
 
     @property
     def charted(self) -> bool:
@@ -121,6 +122,9 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
             raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to I=g*cm^2")
         converted, note = units.converted(float(value.value), value.unit, unit, "--to")
         results[name] = value._replace(value=converted, unit=unit)
+        spreads = getattr(report, "uncertainties", None)
+        if spreads and name in spreads:  # #22: the uncertainty in the same unit (units scale, none is offset)
+            report = replace(report, uncertainties={**spreads, name: abs(units.convert(spreads[name], value.unit, unit, "--to"))})
         if note and note not in notes:
             notes.append(note)
     return replace(report, results=results, notes=notes)
@@ -169,7 +173,20 @@ def document(report: Report, *, steps: bool = True) -> dict:
     }
     for name, table in report.tables.items():
         doc[name] = _json_table(table)
+    if getattr(report, "uncertainties", None) is not None:
+        _json_uncertain(doc, report)
     return doc
+
+
+def _json_uncertain(doc: dict, report) -> None:
+    """#22: "uncertainty" beside "value" in each result (and input) that has one; --mc's check."""
+    for part, spreads in (("results", report.uncertainties), ("inputs", report.input_uncertainties)):
+        for name, entry in doc[part].items():
+            if name in spreads:
+                doc[part][name] = {"value": entry["value"], "uncertainty": spreads[name], **entry}
+    if report.draws:
+        doc["monte_carlo"] = {"draws": report.draws, "results": {
+            name: {"mean": mean, "uncertainty": spread} for name, (mean, spread) in report.monte_carlo.items()}}
 
 
 def render(report: Report, output: Output, stream: TextIO) -> None:
@@ -179,7 +196,11 @@ def render(report: Report, output: Output, stream: TextIO) -> None:
         from taucli import plot
     chart = plot.motion_chart([("", report)], chart_units(report, output.to)) if output.drawn else None
     if output.get:
-        stream.write("".join(bare(named_result(report, name, "--get").value) + "\n" for name in output.get))
+        if output.uncertainty:  # #22: a second column, the result's standard uncertainty
+            spreads = getattr(report, "uncertainties", None) or {}
+            stream.write("".join(bare(named_result(report, name, "--get").value) + " " + _spread(report, name, spreads) + "\n" for name in output.get))
+        else:
+            stream.write("".join(bare(named_result(report, name, "--get").value) + "\n" for name in output.get))
     elif output.json:
         doc = document(report, steps=output.steps)
         if output.charted:
@@ -193,6 +214,14 @@ def render(report: Report, output: Output, stream: TextIO) -> None:
     if output.out is not None:
         plot.write_file(chart, output.out)
     stream.flush()
+
+
+def _spread(report: Report, name: str, spreads: Mapping[str, float]) -> str:
+    """A result's uncertainty for --get --uncertainty: 0.0 for a number no uncertain input moves."""
+    if name in spreads:
+        return bare(spreads[name])
+    value = report.results[name].value
+    return "0.0" if isinstance(value, (int, float)) and not isinstance(value, bool) else "null"
 
 
 def bare(value) -> str:
@@ -212,6 +241,8 @@ def shown(value, digits: int = 6) -> str:
         return "yes" if value else "no"
     if isinstance(value, (int, float)):
         return fmt(float(value), digits)
+    if isinstance(value, list):  # --find's roots (#22)
+        return ", ".join(shown(item, digits) for item in value)
     return str(value)
 
 
@@ -294,6 +325,11 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
     console.print(Text(f"method: {report.method}", style="dim"))
 
     rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items()]
+    spreads = getattr(report, "uncertainties", None)
+    if spreads:  # #22: 4.90 ± 0.08, digits matched to the uncertainty
+        from taucli.uncertain import with_uncertainty
+
+        rows = [(name, with_uncertainty(report.results[name].value, spreads[name]) if name in spreads else value, unit, label) for name, value, unit, label in rows]
     widths = [max((len(row[i]) for row in rows), default=0) for i in range(3)]
     if console.width < NARROW or sum(widths) + LABEL_MIN + 6 > console.width:  # one result to a line, numbers whole
         for name, value, unit, label in rows:

@@ -69,6 +69,15 @@ METHOD = Option("method", CHOICE, " | ".join(METHOD_NAMES) + ".", panel=MOTION, 
 DT = Option("dt", "time", "Fixed step for euler and rk4.", panel=MOTION, default="1 ms")
 RTOL = Option("rtol", "dimensionless", "Relative tolerance for rk45.", panel=MOTION, default="1e-10")
 
+# Solving for an input, and uncertainty (#22; taucli.find, taucli.uncertain).
+FIND = "Solve for an input, and uncertainty (any quantity may be given as 4.0+/-0.1kg)"
+UNCERTAIN = (
+    Option("find", TEXT, "Solve for this input (its option name, e.g. pulley_inertia) so that --want holds.", panel=FIND, metavar="NAME"),
+    Option("want", TEXT, "The target of --find, e.g. --want a=4.0m/s^2 (may carry an uncertainty).", panel=FIND, metavar="RESULT=VALUE"),
+    Option("uncertainty", FLAG, "With --get: each result's standard uncertainty in a second column.", panel=FIND),
+    Option("mc", COUNT, "Check the uncertainties by Monte Carlo with N draws.", panel=FIND, metavar="N"),
+)
+
 # How to answer: read by the command line, not by the scene.
 ANSWER = (
     Option("json", FLAG, "Print one strict JSON document on stdout.", panel=OUTPUT),
@@ -91,4 +100,5 @@ ANSWER = (
     Option("out", FILE, "Also draw the chart to FILE.svg or FILE.png (needs matplotlib: pip install 'taucli[plot]').", panel=SWEEP, metavar="FILE"),
     Option("points", COUNT, "Values in a range FROM..TO, ends included.", panel=SWEEP, default="50", metavar="N"),
     Option("y", TEXT, "A result to chart against a range (repeatable; default the scene's main result).", panel=SWEEP, repeatable=True, metavar="NAME"),
+    *UNCERTAIN,
 )
