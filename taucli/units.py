@@ -409,9 +409,35 @@ class Reading(NamedTuple):
     mixed: str | None = None  # "33 1/3" when a mixed number was read
 
 
+# A number alone, or a number and a plain unit ("4.5kg", "-2 N*m", "300 rpm", "0.1 kg*m^2"): a
+# unit read once in this process is read again as number × the factor found then, without the
+# screen and the respelling (which give a plain unit the same reading every time). A batch of
+# scenes sends thousands of such texts. Anything else takes the whole way.
+_PLAIN_NUMBER = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*")
+_PLAIN_NAME = r"[A-Za-zµμΩ°][A-Za-zµμΩ°.]*(?:(?:\^|\*\*)-?\d{1,2})?"  # kg, N.m, m^2, s**-1
+_PLAIN_UNIT = rf"{_PLAIN_NAME}(?:[*/·]{_PLAIN_NAME})*"  # one way only to match: no backtracking to speak of
+_PLAIN = re.compile(rf"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*({_PLAIN_UNIT})\s*")
+_READ_BEFORE: dict[tuple[str, str], tuple[float, int, str]] = {}  # (unit as typed, kind) -> (factor, how, unit read)
+
+
 def read(text: str, option: str, kind: Kind) -> Reading:
     """``text`` read as ``kind``: screened and respelled, numbers side by side refused, then
     number times the unit's (cached) factor, or pint's reading of the whole expression."""
+    plain = _PLAIN.fullmatch(text) if len(text) <= MAX_TEXT_LENGTH else None
+    if plain is not None and len(plain[1]) <= MAX_DIGITS:
+        found = _READ_BEFORE.get((plain[2], kind.name))
+        if found is not None:
+            return Reading(float(plain[1]) * found[0], found[1], found[2])
+    elif len(text) <= MAX_TEXT_LENGTH and (bare := _PLAIN_NUMBER.fullmatch(text)) is not None and len(bare[1]) <= MAX_DIGITS:
+        return Reading(float(bare[1]), AS_GIVEN, "")
+    reading, number, factor = _read(text, option, kind)
+    if plain is not None and reading.mixed is None and reading.unit and number == float(plain[1]):
+        _READ_BEFORE[(plain[2], kind.name)] = (factor, reading.how, reading.unit)  # the number was read as typed
+    return reading
+
+
+def _read(text: str, option: str, kind: Kind) -> tuple[Reading, float | None, float | None]:
+    """``read``'s whole way, and the number and the unit's factor where it read number × unit."""
     cleaned = _screen(text, option, kind)
     mixed = spellings.mixed_number(cleaned)
     split = None
@@ -424,10 +450,10 @@ def read(text: str, option: str, kind: Kind) -> Reading:
             raise _side_by_side(beside, text, option, kind)
         split = _number_times_unit(cleaned)
         if split is None:
-            return Reading(*_from_pint(cleaned, text, option, kind), None)
+            return Reading(*_from_pint(cleaned, text, option, kind), None), None, None
     number, unit = split
     factor, how = unit_factor(unit, text, option, kind)
-    return Reading(number * factor, how, unit, mixed and mixed.shown)
+    return Reading(number * factor, how, unit, mixed and mixed.shown), number, factor
 
 
 def _side_by_side(beside: spellings.SideBySide, text: str, option: str, kind: Kind) -> InputError:
@@ -462,7 +488,9 @@ def _check(value: float, text: str, option: str, kind: Kind, sign: str) -> None:
     """A value read from ``text`` must be finite, within its kind's bounds, and of its sign."""
     if not math.isfinite(value):
         raise InputError(option, f"expected a finite {kind.name}", example=kind.example, got=repr(text))
-    check_bounds(value, kind.name, option, sign=sign, got=repr(text) if _is_number(text) else None, text=text)
+    low, high = kind.bounds
+    if value and not low <= abs(value) <= high:  # (the message's "got" is worked out only then)
+        check_bounds(value, kind.name, option, sign=sign, got=repr(text) if _is_number(text) else None, text=text)
     if sign == "positive" and value <= 0:
         raise InputError(option, f"expected a positive {kind.name}", example=kind.example, got=repr(text))
     if sign == "nonnegative" and value < 0:
