@@ -48,3 +48,32 @@ def test_a_readme_example_prints_what_the_readme_shows(command, printed, files, 
     monkeypatch.chdir(tmp_path)
     result = run_taucli(*shlex.split(command)[1:], env={"COLUMNS": "80"})
     assert _lines(result.out + result.err) == _lines(printed)
+
+
+@pytest.mark.parametrize("shell", ["zsh", "fish"])
+def test_every_readme_command_works_as_typed_in_zsh_and_fish(shell, tmp_path):
+    """#16 item 17: `--friction 0.3N*m` unquoted is a glob, and zsh stops at 'no matches found'.
+    Each README command, run by the shell itself, exits as it does when bash runs it."""
+    import os
+    import shutil
+    import subprocess
+    import sys
+
+    found = shutil.which(shell)
+    if found is None:
+        if os.environ.get("CI"):
+            pytest.fail(f"{shell} is not installed: .ci/run installs it")
+        pytest.skip(f"{shell} is not installed (apt-get install {shell})")
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    (bin_dir / "taucli").write_text(f"#!/bin/sh\nexec {sys.executable} -m taucli \"$@\"\n")
+    (bin_dir / "taucli").chmod(0o755)
+    env = {**os.environ, "PATH": f"{bin_dir}:{os.environ['PATH']}", "COLUMNS": "80"}
+    commands = [command for command, _, files in sessions() if not files]
+    assert len(commands) > 30
+    for command in commands:
+        in_bash = subprocess.run(["bash", "-c", command], capture_output=True, text=True, env=env, cwd=tmp_path, timeout=60)
+        in_shell = subprocess.run([found, "-c", command], capture_output=True, text=True, env=env, cwd=tmp_path, timeout=60)
+        assert "no matches found" not in in_shell.stderr and "No matches for wildcard" not in in_shell.stderr, (command, in_shell.stderr)
+        assert in_shell.returncode == in_bash.returncode, (command, in_shell.stderr)
+        assert in_shell.stdout == in_bash.stdout, command

@@ -9,7 +9,7 @@ MEETS = "Particles and bodies that meet it (L conserved)"
 COMMAND = Command(
     name="impulse",
     summary="Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.",
-    example="taucli impulse --inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s",
+    example="taucli impulse --inertia '0.1kg*m^2' --omega0 0 --torque '2N*m' --duration 0.5s",
     options=(
         *BODY_OPTIONS,
         Option("omega0", "angular velocity", "Angular velocity before.", sign="any"),

@@ -6,7 +6,7 @@ from taucli.table import FLAG, Command, Option, Result
 COMMAND = Command(
     name="spin-down",
     summary="A wheel on a fixed axle, slowing or spun up: I dω/dt = τ_drive − τ_f − bω − kω².",
-    example="taucli spin-down --shape disc --mass 5kg --radius 0.2m --omega0 30rad/s --friction 0.3N*m",
+    example="taucli spin-down --shape disc --mass 5kg --radius 0.2m --omega0 30rad/s --friction '0.3N*m'",
     options=(
         *BODY_OPTIONS,
         Option("omega0", "angular velocity", "Initial angular velocity, e.g. 300rpm.", sign="any", default="0", panel=MOTION),
