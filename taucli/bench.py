@@ -11,6 +11,7 @@ diverged point, never dropped.
 from __future__ import annotations
 
 import math
+import textwrap
 import statistics
 import timeit
 from collections.abc import Callable
@@ -276,7 +277,7 @@ def chart(points: list[Point], problem: str, width: int = 72, height: int = 18) 
         y = math.log10(max(point.error, ERROR_FLOOR))
         row = min(height - 1, int((y_high - y) / (y_high - y_low) * (height - 1) + 0.5))
         grid[row][column] = MARKERS.get(point.method, "?")
-    lines = [f"{problem} ({mine[0].scene}): relative error against time per solve"]
+    lines = textwrap.wrap(f"{problem} ({mine[0].scene}): relative error against time per solve", width)
     step = (y_high - y_low) / (height - 1)
     for index, row in enumerate(grid):
         exponent = y_high - index * step
@@ -284,14 +285,22 @@ def chart(points: list[Point], problem: str, width: int = 72, height: int = 18) 
         label = f"1e{decade}" if abs(exponent - decade) <= step / 2 and decade % 2 == 0 else ""
         lines.append(f"{label:>7}|" + "".join(row).rstrip())
     lines.append(" " * 7 + "+" + "-" * plot_width)
-    ticks = [" "] * (plot_width + 6)
+    ticks = [" "] * plot_width
+    free_from = 0  # labels keep a space between them; one that would not is left out
     for decade in range(x_low, x_high + 1):
-        column = int((decade - x_low) / (x_high - x_low) * (plot_width - 1) + 0.5)
-        for offset, char in enumerate(_seconds_label(decade)):
+        label = _seconds_label(decade)
+        column = min(int((decade - x_low) / (x_high - x_low) * (plot_width - 1) + 0.5), plot_width - len(label))  # kept inside the width
+        if column < free_from:
+            continue
+        for offset, char in enumerate(label):
             ticks[column + offset] = char
+        free_from = column + len(label) + 1
     lines.append(" " * 8 + "".join(ticks).rstrip())
     used = sorted({p.method for p in mine}, key=list(MARKERS).index)
-    lines.append(" " * 8 + "  ".join(f"{MARKERS[m]} {m}" for m in used) + ("   ! diverged" if any(p.error is None for p in mine) else ""))
+    legend = [f"{MARKERS[m]} {m}" for m in used] + (["! diverged"] if any(p.error is None for p in mine) else [])
+    kept_whole = "   ".join(entry.replace(" ", "\u00a0") for entry in legend)  # an entry is not split between lines
+    wrapped = textwrap.wrap(kept_whole, width, initial_indent=" " * 8, subsequent_indent=" " * 8, break_on_hyphens=False)
+    lines.extend(line.replace("\u00a0", " ") for line in wrapped)
     return lines
 
 

@@ -29,7 +29,7 @@ def bench(*, env, scene=None, quick: bool = False, out: str | None = None, json:
     if json:
         env.stdout.write(encoder.dumps(workbench.document(points), allow_nan=False) + "\n")
         return 0
-    width = max(60, min(shutil.get_terminal_size((100, 24)).columns, 110))
+    width = max(40, min(shutil.get_terminal_size((80, 24)).columns, 110))  # the terminal's width (a pipe: 80)
     for problem in dict.fromkeys(p.problem for p in points):
         env.stdout.write("\n".join(workbench.chart(points, problem, width=width)) + "\n\n")
     if out is not None:
