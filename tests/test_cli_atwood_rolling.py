@@ -120,3 +120,10 @@ def test_an_unknown_option_is_answered_from_the_commands_own_options(taucli):
     assert "--jsonl" not in slip.err
     assert_usage_error(taucli("atwood", "--m1", "4kg", "--pulley-mas", "1kg"), "did you mean '--pulley-mass'?")
     assert_usage_error(taucli("rolling", "sphere", "--angel", "30deg"), "did you mean '--angle'?")
+
+
+def test_a_speed_on_the_flat_with_a_length_is_refused_not_read_as_a_slope_from_rest(taucli):
+    """#16 item 12: --angle 0deg --v0 1 --mu-k 0.3 --length 1 became a 0° incline from rest (v0 set
+    aside: 'from rest it stays where it is'), with exit 0."""
+    assert_usage_error(taucli("rolling", "sphere", "--angle", "0deg", "--v0", "1", "--mu-k", "0.3", "--length", "1"), "--length applies down a slope")
+    assert_usage_error(taucli("rolling", "sphere", "--v0", "1m/s", "--height", "1m"), "--height applies down a slope")

@@ -749,7 +749,15 @@ def rolling(
         pulled = Pull(pull, pull_angle or 0.0, pull_height or 0.0, axle_radius, side)
         report = solve_pull(body, angle or 0.0, gravity, pulled, mu_s=mu_s, mu_k=mu_k, length=length)
         return assumed.applied(report)
-    on_the_flat = (angle is None or angle == 0) and (v0 is not None or omega0 is not None) and length is None and height is None
+    flat = angle is None or angle == 0
+    if flat and (v0 is not None or omega0 is not None) and (length is not None or height is not None):
+        # #16 item 12: this once became a 0° incline from rest, silently setting --v0 aside
+        raise InputError(
+            "length" if length is not None else "height",
+            "applies down a slope; on the flat a ball given {v0} or {omega0} skids (with {mu_k}) or rolls along, and no distance ends it",
+            example="{angle} 10deg {length} 1m, or leave it out",
+        )
+    on_the_flat = flat and (v0 is not None or omega0 is not None)
     if on_the_flat:
         report = solve_flat(body, gravity, mu_k=mu_k, v0=v0 or 0.0, omega0=omega0 or 0.0, mu_s=mu_s)
     else:
