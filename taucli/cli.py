@@ -139,12 +139,16 @@ def _present(value) -> bool:
 
 def run_scene(command: Command, given: dict, env: Environment) -> int:
     """One scene's run: a single answer, a sweep, or a batch, as the answer options say."""
-    from taucli import render, sweep
+    from taucli import pipeline, render
 
     answer = {option.name: given.pop(option.name, None) for option in command.output}
     scene_given = {name: value for name, value in given.items() if _present(value)}
     points = _whole_number(command, answer["points"])
-    swept_range, swept_list = sweep.find(command, scene_given, points)
+    swept_range = swept_list = None
+    if points is not None or any(isinstance(value, str) and (".." in value or "," in value) for value in scene_given.values()):
+        from taucli import sweep
+
+        swept_range, swept_list = sweep.find(command, scene_given, points)
     if answer["batch"]:
         for name in ("plot", "out", "points", "y", "jsonl", "get"):
             if _present(answer[name]):
@@ -173,13 +177,18 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         from taucli import plot
 
         plot.check_file(output.out)
-    from taucli import uncertain
-
     finding = {**_finding(answer), "mc": _whole_number(command, answer["mc"], "mc")}
+    if pipeline.plain(scene_given, **finding):
+        solve = pipeline.solve
+        finding = {}
+    else:
+        from taucli.uncertain import solve
     if swept_range is None and swept_list is None:
-        render.render(uncertain.solve(command, scene_given, stdin=env.stdin, spell=command.flag, **finding), output, env.stdout)
+        render.render(solve(command, scene_given, stdin=env.stdin, spell=command.flag, **finding), output, env.stdout)
         return int(ExitStatus.OK)
-    solved = sweep.solve_all(command, swept_range, swept_list, scene_given, lambda options: uncertain.solve(command, options, stdin=env.stdin, spell=command.flag, **finding))
+    from taucli import sweep
+
+    solved = sweep.solve_all(command, swept_range, swept_list, scene_given, lambda options: solve(command, options, stdin=env.stdin, spell=command.flag, **finding))
     sweep.render(solved, swept_range, swept_list, output, list(answer["y"] or ()), env.stdout)
     return int(ExitStatus.OK)
 

@@ -42,3 +42,14 @@ def solve(
         report.scene, report.model, report.method, report.results, report.steps, notes,
         {**inputs.values, **report.inputs}, report.tables, report.trajectory,
     )  # fmt: skip
+
+
+def plain(given: Mapping[str, object], find=None, want=None, mc=None) -> bool:
+    """Whether ``solve`` alone answers: no input carries an uncertainty, nothing is solved for and
+    no Monte Carlo is asked (else taucli.uncertain does, around ``solve``)."""
+    if find is not None or want is not None or mc:
+        return False
+    for value in given.values():  # inline, not a helper per value: this runs on every batch line
+        if value.__class__ is str and ("±" in value or "+/-" in value or ")" in value):
+            return False
+    return True

@@ -96,12 +96,8 @@ def solve(
     carries one, solved for the input ``find`` where ``want`` (RESULT=VALUE) says."""
     from taucli import pipeline
 
-    if find is None and want is None and not mc:
-        for value in given.values():  # inline, not marked(): this runs on every batch line
-            if value.__class__ is str and ("±" in value or "+/-" in value or ")" in value):
-                break
-        else:
-            return pipeline.solve(command, given, stdin=stdin, spell=spell)
+    if pipeline.plain(given, find, want, mc):
+        return pipeline.solve(command, given, stdin=stdin, spell=spell)
     if (find is None) != (want is None):
         raise InputError("find" if find is None else "want", "goes with {" + ("want" if find is None else "find") + "}",
                          example="{find} pulley_inertia {want} a=4.0m/s^2")
