@@ -399,3 +399,17 @@ def integrate_angle(
             before = after if after != 0 else before
         t, theta, omega = t + step, new_theta, new_omega
     return AngleSolution(t, theta, omega, False, steps)
+
+
+def falling_root(rate: Callable[[float], float]) -> float:
+    """The speed u > 0 where ``rate`` (positive at 0, falling) crosses zero: bracketed by doubling
+    from 1, then bisected until the bracket holds no float between its ends."""
+    low, high = 0.0, 1.0
+    while rate(high) > 0:
+        low, high = high, 2 * high
+    for _ in range(200):
+        mid = (low + high) / 2
+        if mid in (low, high):
+            break
+        low, high = (mid, high) if rate(mid) > 0 else (low, mid)
+    return (low + high) / 2

@@ -153,21 +153,7 @@ def solve(
     if pulley.radius is None:
         notes.append("alpha: give --pulley-radius for the pulley's angular acceleration (a and the tensions do not need it)")
     results.put("a_massless", massless)
-
-    if distance is not None:
-        reached = _travel(motion, distance)
-        if reached is None:
-            notes.append(f"the masses never travel {quantity_text(distance, 'm')}")
-        speed = None if reached is None else motion.state_at(reached)[0]
-        results.put("t", reached, f" {fmt(distance)} m")
-        results.put("v", speed, f" after {fmt(distance)} m")
-    if time is not None:
-        speed, displacement = motion.state_at(time)
-        if "v" not in results:
-            results.put("v", speed, f" at t = {fmt(time)} s")
-        results.put("distance", displacement, f" at t = {fmt(time)} s")
-        if distance is not None:
-            notes.append("v is given at the distance; distance at the time")
+    _motion_results(results, motion, distance, time, notes)
 
     unknown = slope.mu_k is None and normal > 0 and not motion.held_from_start
     if unknown:  # it slides, and the sliding friction is not known: only that it moves, and which way

@@ -122,15 +122,7 @@ class Phase:
             return self.closed.steady_speed
         if self.stops or self.closed.constant == 0:
             return None if self.stops else 0.0
-        low, high = 0.0, 1.0  # rate(ω) falls from A/I > 0; bracket its zero, then bisect
-        while self.rate(high) > 0:
-            low, high = high, 2 * high
-        for _ in range(200):
-            mid = (low + high) / 2
-            if mid in (low, high):
-                break
-            low, high = (mid, high) if self.rate(mid) > 0 else (low, mid)
-        return (low + high) / 2
+        return numerics.falling_root(self.rate)  # rate(ω) falls from A/I > 0
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from taucli.errors import InputError
-from taucli.numerics import METHODS
+from taucli.numerics import METHODS, falling_root
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
@@ -1019,15 +1019,7 @@ class PowerMotion:
         """Where P/u balances the losses (P > 0 with losses), by bisection; None otherwise."""
         if self.power <= 0 or self.lossless:
             return None
-        low, high = 0.0, 1.0
-        while self.rate(high) > 0:
-            low, high = high, 2 * high
-        for _ in range(200):
-            mid = (low + high) / 2
-            if mid in (low, high):
-                break
-            low, high = (mid, high) if self.rate(mid) > 0 else (low, mid)
-        return (low + high) / 2
+        return falling_root(self.rate)
 
 
 def _power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, time, until_omega, until_angle, method, dt, rtol) -> Report:
