@@ -106,6 +106,7 @@ _taucli() {
             --pulley-shape) COMPREPLY=($(compgen -W "disc ring" -- "$cur")); return 0 ;;
             --pulley-inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --axle-friction) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --part) :; return 0 ;;
             --radius1) _taucli_units m cm mm km in ft; return 0 ;;
             --radius2) _taucli_units m cm mm km in ft; return 0 ;;
             --rim-mu) :; return 0 ;;
@@ -126,7 +127,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in

@@ -107,6 +107,7 @@ complete -c taucli -n '__fish_seen_subcommand_from atwood' -l pulley-radius -x -
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l pulley-shape -x -a 'disc ring' -d 'Pulley shape (default disc).'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l pulley-inertia -x -a '(__taucli_units "kg*m^2" "g*cm^2" "lb*ft^2")' -d 'Pulley moment of inertia, instead of mass and shape.'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l axle-friction -x -a '(__taucli_units "N*m" "mN*m" "kN*m" "lbf*ft" "lbf*in")' -d 'Constant friction torque at the axle (holds at rest too).'
+complete -c taucli -n '__fish_seen_subcommand_from atwood' -l part -x -d 'A part of the pulley about its axle (a hub, a rim, spokes), as in taucli inertia, e.g. --part "ring mass=0.5kg radius=0.1m" (repeatable); the parts add to --pulley-inertia or to the inertia of --pulley-mass.'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l radius1 -x -a '(__taucli_units m cm mm km in ft)' -d 'A stepped pulley: the radius m1\'s string is wound at (m2\'s on the other side at --radius2).'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l radius2 -x -a '(__taucli_units m cm mm km in ft)' -d 'A stepped pulley: the radius m2\'s string is wound at.'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l rim-mu -x -d 'Friction coefficient between the string and the rim: past the capstan limit the string slides.'

@@ -127,3 +127,21 @@ def test_a_speed_on_the_flat_with_a_length_is_refused_not_read_as_a_slope_from_r
     aside: 'from rest it stays where it is'), with exit 0."""
     assert_usage_error(taucli("rolling", "sphere", "--angle", "0deg", "--v0", "1", "--mu-k", "0.3", "--length", "1"), "--length applies down a slope")
     assert_usage_error(taucli("rolling", "sphere", "--v0", "1m/s", "--height", "1m"), "--height applies down a slope")
+
+
+@pytest.mark.parametrize(
+    "given,inertia",
+    [
+        (["--part", "ring mass=2kg radius=0.1m"], 2 * 0.1**2),  # a thin ring: MR²
+        (["--pulley-mass", "2kg", "--part", "point mass=1kg radius=0.1m"], 0.5 * 2 * 0.1**2 + 1 * 0.1**2),  # a disc and a point on its rim
+        (["--pulley-inertia", "0.01kg*m^2", "--part", "rod mass=0.6kg length=0.2m", "--part", "rod mass=0.6kg length=0.2m"], 0.01 + 2 * 0.6 * 0.2**2 / 12),
+    ],
+    ids=["ring part", "disc and a point", "inertia and two spokes"],
+)
+def test_a_pulley_of_parts(taucli, given, inertia):
+    """#18: --part for the pulley in atwood: a = (m1 − m2)g/(m1 + m2 + I/R²), I the sum of the parts'."""
+    done = taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--pulley-radius", "0.1m", "--g", "9.8", *given, "--json")
+    assert done.code == 0, done.err
+    expected = (4 - 1) * 9.8 / (4 + 1 + inertia / 0.1**2)
+    assert done.json()["results"]["a"]["value"] == pytest.approx(expected, rel=1e-14)
+    assert_usage_error(taucli("atwood", "--m1", "4kg", "--m2", "1kg", *given), "--pulley-radius is required with --part")

@@ -2,7 +2,7 @@
 
 from taucli.names import PULLEY_SHAPES
 from taucli.options.common import ANSWER, GRAVITY, MOTION
-from taucli.table import CHOICE, Command, Option, Result
+from taucli.table import CHOICE, PART, Command, Option, Result
 
 PULLEY = "Pulley"
 
@@ -18,6 +18,12 @@ COMMAND = Command(
         Option("pulley_shape", CHOICE, "Pulley shape.", choices=PULLEY_SHAPES, default="disc", panel=PULLEY),
         Option("pulley_inertia", "moment of inertia", "Pulley moment of inertia, instead of mass and shape.", sign="nonnegative", panel=PULLEY),
         Option("axle_friction", "torque", "Constant friction torque at the axle (holds at rest too).", sign="nonnegative", panel=PULLEY),
+        Option(
+            "part", PART,
+            'A part of the pulley about its axle (a hub, a rim, spokes), as in taucli inertia, e.g. --part "ring mass=0.5kg radius=0.1m" '
+            "(repeatable); the parts add to --pulley-inertia or to the inertia of --pulley-mass.",
+            panel=PULLEY, repeatable=True, metavar='"SHAPE key=value ..."',
+        ),
         Option("radius1", "length", "A stepped pulley: the radius m1's string is wound at (m2's on the other side at --radius2).", panel=PULLEY),
         Option("radius2", "length", "A stepped pulley: the radius m2's string is wound at.", panel=PULLEY),
         Option("rim_mu", "dimensionless", "Friction coefficient between the string and the rim: past the capstan limit the string slides.", sign="nonnegative", panel=PULLEY),

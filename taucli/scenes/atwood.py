@@ -15,6 +15,7 @@ motion under constant forces, stops and static friction included, is motion.evol
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from taucli.errors import InputError
@@ -561,6 +562,21 @@ def _capstan_step(high, low, mu, wrap, need, grips) -> Step:
     )
 
 
+def _with_parts(pulley: Pulley, parts: Sequence, assumed: Assumed) -> Pulley:
+    """The pulley with its parts: I = I of --pulley-inertia or of --pulley-mass (Σ over one axle adds),
+    plus each part's moment about the axle (taucli.scenes.inertia, parallel axes included)."""
+    from taucli.scenes.inertia import body_inertia
+
+    if pulley.radius is None:
+        raise InputError("pulley_radius", "is required with {part} (the pulley adds I/R² to the moving mass)", example="{pulley_radius} 0.1m")
+    if pulley.inertia is not None and pulley.mass:
+        raise InputError("pulley_inertia", "conflicts with {pulley_mass} and {pulley_shape}: give one description of the pulley")
+    base = pulley.inertia if pulley.inertia is not None else Pulley.SHAPE_FACTORS[pulley.shape or "disc"] * pulley.mass * pulley.radius**2
+    parts = body_inertia(parts)
+    assumed.notes.append(f"pulley: I = {fmt(base + parts.inertia)} kg·m², {'the given pulley and ' if base else ''}{parts.description}")
+    return Pulley(0.0, pulley.radius, None, base + parts.inertia, pulley.axle_friction)
+
+
 def atwood(
     *,
     m1: float | None = None,
@@ -581,6 +597,7 @@ def atwood(
     radius2: float | None = None,
     rim_mu: float | None = None,
     wrap: float | None = None,
+    part: Sequence = (),
 ) -> Report:
     """``taucli atwood``: m2 hangs unless --incline puts it on a slope; the pulley is massless
     unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia; a
@@ -591,6 +608,8 @@ def atwood(
     if m2 is None:
         assumed.notes.append("no --m2: a single mass on a string wound on the pulley")
     pulley = Pulley(pulley_mass or 0.0, pulley_radius, pulley_shape, pulley_inertia, axle_friction or 0.0)
+    if part:
+        pulley = _with_parts(pulley, part, assumed)
     if wrap is not None and rim_mu is None:
         raise InputError("wrap", "needs {rim_mu} (the wrap matters only where the string may slide)", example="{rim_mu} 0.3 {wrap} 180deg")
     if radius1 is not None or radius2 is not None:
