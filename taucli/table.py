@@ -139,6 +139,8 @@ class Command:
         self._index.update({option.name: option for option in (*self.options, *self.output)})
         self._index["inputs:"] = frozenset(option.name for option in self.options)
         self._index.update({"result:" + result.key: result for result in self.results})
+        # what Results.put needs of each result, looked up once: (unit, label, whether it has a "…")
+        self._index["results:"] = {result.key: (result.unit, result.label, FILLED in result.label) for result in self.results}
 
     @property
     def function_name(self) -> str:
@@ -189,10 +191,11 @@ class Results(dict):
         self.command = command
 
     def put(self, key: str, value, part: str = "") -> None:
-        result = self.command.result(key)
-        if result is None:
+        found = self.command._index["results:"].get(key)
+        if found is None:
             raise KeyError(f"{key!r} is not a result of {self.command.name} in its table")
-        self[key] = Value(value, result.unit, result.label.replace(FILLED, part) if part or FILLED in result.label else result.label)
+        unit, label, open_part = found
+        self[key] = Value(value, unit, label.replace(FILLED, part) if open_part else label)
 
 
 FILLED = "…"  # where a result's label takes the part its solver fills in
