@@ -31,7 +31,7 @@ from pathlib import Path
 from conftest import strict_json
 from hypothesis import strategies as st
 
-SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse")
+SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro")  # every scene of taucli.options (tests/test_fuzz.py checks)
 SECONDS = 1.0  # the longest a run may take
 
 # Units by the metavar of the option that takes them.
@@ -154,6 +154,9 @@ CORE = {
     "atwood": ["--m1", "--m2", "--pulley-mass", "--pulley-radius"],
     "rolling": ["", "--angle", "--mu-s", "--length"],
     "impulse": ["--inertia", "--torque", "--duration", "--omega0"],
+    "pendulum": ["--shape", "--mass", "--length", "--angle0"],
+    "torque": ["--r", "--force"],
+    "gyro": ["--inertia", "--spin", "--mass", "--cm-distance"],
 }
 
 
@@ -172,6 +175,11 @@ BASES = {
                 "ring --angle 10deg --height 1m --v0 1m/s", "--k2 0.3 --angle 20deg --mu-s 0.1 --length 3m --omega0 5rad/s --radius 0.1m"],
     "impulse": ["--inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s", "--inertia 4kg*m^2 --inertia-final 1.5kg*m^2 --omega0 1rev/s --to omega1=rev/s",
                 "--inertia 0.01kg*m^2 --torque-profile {good} --method simpson", "--shape rod --mass 1kg --length 1m --omega0 10rpm --omega1 60rpm --duration 2s"],
+    "pendulum": ["--shape rod --length 1m --mass 2kg --axis end --angle0 90deg --angle 0deg", "--shape point --radius 1m --mass 1kg --angle0 179deg",
+                 "--inertia 0.02kg*m^2 --torsion 0.5N*m/rad --cm-distance 0 --mass 1kg --angle0 30deg --time 1s --method verlet --dt 1ms"],
+    "torque": ["--r '0.3,0.4,0 m' --force '0,0,10 N'", "--force 80N --lever 0.25m --angle 60deg", "--r '0,0.8,0 m' --mass 0.5kg --velocity '3,0,0 m/s'"],
+    "gyro": ["--shape disc --mass 0.3kg --radius 5cm --spin 4000rpm --cm-distance 5cm --tilt 30deg",
+             "--inertia 8.0e37kg*m^2 --spin 7.29e-5rad/s --torque 1.79e22N*m --tilt 23.44deg"],
 }
 extreme_numbers = st.one_of(
     st.sampled_from(["0", "-0", "-1", "1e-320", "5e-324", "1e-300", "1e-30", "1e-9", "1e9", "1e30", "1e300", "1.7e308", "-1e308", "1e-16", "0.9999999999999999", "1.0000000000000002"]),

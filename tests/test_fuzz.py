@@ -90,3 +90,9 @@ def test_hostile_command_lines_keep_the_contract(scene):
 @pytest.mark.parametrize("vector", FOUND, ids=lambda vector: repr(vector)[:100])
 def test_vectors_that_once_failed(vector):
     _check(Vector(vector.scene, [arg.format(**FILES) for arg in vector.args], vector.stdin))
+
+
+def test_every_scene_is_fuzzed():
+    from taucli.options import SCENES as TABLES
+
+    assert set(SCENES) == set(TABLES)
