@@ -5,14 +5,12 @@ no solver, no typer, no rich and no pint, so ``--help`` and completion can read 
 """
 
 from taucli.options import atwood, gyro, impulse, inertia, pendulum, rolling, spin_down, tools, torque
-from taucli.options.common import ANSWER
 from taucli.table import Command
 
 SCENES: dict[str, Command] = {
     module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro)
 }
 COMMANDS: dict[str, Command] = {**SCENES, "bench": tools.BENCH, "completions": tools.COMPLETIONS}
-OUTPUT_OPTIONS = ANSWER
 
 
 def scene(name: str) -> Command:
