@@ -13,13 +13,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from taucli.errors import InputError
 from taucli.numerics import METHODS, falling_root
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
+from taucli.scenes.assumed import Assumed
 from taucli.table import Results
 
 TWO_PI = 2 * math.pi
@@ -480,6 +481,9 @@ def spin_down(
     lever: float | None = None,
     push_angle: float | None = None,
     friction: float | None = None,
+    brake: Sequence | None = None,
+    face: Sequence | None = None,
+    g: float | None = None,
     viscous: float | None = None,
     drag: float | None = None,
     drag_exponent: float | None = None,
@@ -509,6 +513,8 @@ def spin_down(
 
     if power == 0:
         power = None  # a motor of no power is no motor
+    if g is not None and not any(plate.force is None for plate in face or ()):
+        raise InputError("g", "is used only for the weight on a {face} with no force=")
     has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     rim = None
     if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
@@ -560,7 +566,18 @@ def spin_down(
         drive = push.torque
     else:
         drive = torque or 0.0
-    torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent)
+    contact, assumed = None, Assumed()
+    axle = friction or 0.0
+    if brake or face:
+        contact = _contacts(brake or (), face or (), body_options, rim, assumed, g, results, front_steps, notes, axle)
+        friction = axle + contact.kinetic
+    static = None if contact is None or contact.static == contact.kinetic else axle + contact.static
+    torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent, static)
+
+    def finish(report: Report, parts: Table | None) -> Report:
+        """The report with the parts table, the contacts' shares of the friction, and what was assumed."""
+        return assumed.applied(_with_contacts(_split_contacts(_with_parts(report, parts), axle, contact), contact))
+
     if push is not None:
         front_steps.append(_push_step(push))
     if alpha is not None or not has_body:
@@ -570,14 +587,14 @@ def spin_down(
             if time is not None:
                 raise InputError("in_time", "conflicts with {time}: without a body they say the same")
             time = in_time
-        return _with_parts(_with_front(_uniform_report(moment, body_steps, torques, omega0, alpha, time=time, until_omega=until_omega,
+        return finish(_with_front(_uniform_report(moment, body_steps, torques, omega0, alpha, time=time, until_omega=until_omega,
                                            until_angle=until_angle, front=(front_steps, notes, results)), results), parts)
     if power is not None:
         if in_time is not None:
             raise InputError("in_time", "conflicts with {power}: the drive is the motor's")
         if push is not None:
             raise InputError("power", "conflicts with {force}: give the motor's power or the push")
-        return _with_parts(_with_front(_power_report(moment, body_steps, power, torques, omega0 or 0.0, time=time, until_omega=until_omega,
+        return finish(_with_front(_power_report(moment, body_steps, power, torques, omega0 or 0.0, time=time, until_omega=until_omega,
                                          until_angle=until_angle, method=method, dt=dt, rtol=rtol), results, notes, front_steps), parts)
     if in_time is not None:
         if torque is not None or push is not None or power is not None:
@@ -587,7 +604,7 @@ def spin_down(
         if time is not None:
             raise InputError("time", "conflicts with {in_time}: ask for the target's time one way")
         if not torques.viscous and not torques.drag:
-            return _with_parts(_with_front(_uniform_report(moment, body_steps, torques, omega0, None, time=in_time, until_omega=until_omega,
+            return finish(_with_front(_uniform_report(moment, body_steps, torques, omega0, None, time=in_time, until_omega=until_omega,
                                                until_angle=until_angle, front=(front_steps, notes, results)), results), parts)
         torques = _drive_for_target(moment, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
         time, until_omega, until_angle = in_time, None, None
@@ -600,7 +617,7 @@ def spin_down(
     )
     if "torque" in results:
         results.put("torque_net", report.results["alpha0"].value * moment, " at the start")
-    return _with_parts(_with_front(report, results, notes, front_steps), parts)
+    return finish(_with_front(report, results, notes, front_steps), parts)
 
 
 def _drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, until_angle, method, dt, rtol) -> Torques:
@@ -1190,3 +1207,71 @@ def _energy_steps(results: Results, inertia: float, friction: float, power: floa
                           "the energy balance: what the wheel had and the drive gave, less what it keeps and what friction took; "
                           "where both act, the viscous share b∫ω²dt is integrated and drag has the rest"))
     return steps
+
+
+# ---------------------------------------------------------------------------------------------
+# Brakes and pressed faces (#24): constant Coulomb torques added to the axle's friction.
+
+
+def _split_contacts(report: Report, axle: float, contact) -> Report:
+    """The report with the friction's work and power shared out by torque among the axle, the
+    brakes and the faces: each is a constant torque against the motion, so each takes its
+    torque times the same angle swept (and times the same |ω|)."""
+    if contact is None or not contact.kinetic:
+        return report
+    total = axle + contact.kinetic
+    results = Results(TABLE)
+    steps = list(report.steps)
+    for key, value in report.results.items():
+        if key not in ("work_friction", "power_friction"):
+            results[key] = value
+            continue
+        kind = key.partition("_")[0]
+        part = value.label.partition("takes")[2]
+        share = value.value / total  # the angle swept, or |ω|
+        if axle:
+            results.put(key, axle * share, part)
+        for name, torque in (("brake", contact.brake), ("face", contact.face)):
+            if torque:
+                results.put(f"{kind}_{name}", torque * share, part)
+                symbol = "τ_b" if name == "brake" else "τ_face"
+                if kind == "work":
+                    steps.append(Step(f"Energy the {name}s take", f"W_{name} = {symbol} × angle swept",
+                                      f"{quantity_text(torque, 'N*m')} × {quantity_text(share, 'rad')}", quantity_text(torque * share, "J"),
+                                      "a constant friction torque against the motion takes its torque for every radian swept"))
+                else:
+                    steps.append(Step(f"Power the {name}s take", f"P_{name} = {symbol}·|ω|",
+                                      f"{quantity_text(torque, 'N*m')} × {quantity_text(share, 'rad/s')}", quantity_text(torque * share, "W"),
+                                      "power is torque times angular speed"))
+    steps = [replace(step, title="Energy all friction takes (axle, brakes, faces)") if step.title == "Energy friction takes" else step for step in steps]
+    return Report(report.scene, report.model, report.method, results, steps, report.notes, report.inputs, report.tables, report.trajectory)
+
+
+def _contacts(brakes, faces, body_options: dict, rim: float | None, assumed: Assumed, g: float | None, results: Results, steps: list[Step], notes: list[str], axle: float):
+    """The brakes' and faces' torques (contact.py), put among the results, steps and notes before the motion."""
+    from taucli.scenes.contact import body_rim, contacts
+
+    shape_rim = body_rim(body_options)
+    options = body_options if shape_rim is not None or rim is None else {**body_options, "shape": "disc", "radius": rim}
+    g = assumed.gravity(g) if any(face.force is None for face in faces) else None
+    contact = contacts(brakes, faces, options, body_options.get("mass"), g)
+    if brakes:
+        results.put("torque_brake", contact.brake)
+    if faces:
+        results.put("torque_face", contact.face)
+    steps.extend(contact.steps)
+    notes.extend(contact.notes)
+    terms = [(symbol, value) for symbol, value in (("τ_axle", axle), ("τ_b", contact.brake), ("τ_face", contact.face)) if value]
+    if terms:
+        steps.append(Step("Friction torques add", "τ_f = " + " + ".join(symbol for symbol, _ in terms),
+                          " + ".join(quantity_text(value, "N*m") for _, value in terms), quantity_text(axle + contact.kinetic, "N*m"),
+                          "each is a constant torque against the motion, so together they act as one friction torque τ_f"))
+    return contact
+
+
+def _with_contacts(report: Report, contact) -> Report:
+    """The model line names the brakes' and faces' friction models."""
+    if contact is None or not contact.models:
+        return report
+    return Report(report.scene, f"{report.model}; {', '.join(contact.models)}", report.method, report.results, report.steps,
+                  report.notes, report.inputs, report.tables, report.trajectory)
