@@ -484,6 +484,7 @@ def spin_down(
     brake: Sequence | None = None,
     face: Sequence | None = None,
     g: float | None = None,
+    at: float | None = None,
     viscous: float | None = None,
     drag: float | None = None,
     drag_exponent: float | None = None,
@@ -576,7 +577,10 @@ def spin_down(
 
     def finish(report: Report, parts: Table | None) -> Report:
         """The report with the parts table, the contacts' shares of the friction, and what was assumed."""
-        return assumed.applied(_with_contacts(_split_contacts(_with_parts(report, parts), axle, contact), contact))
+        report = assumed.applied(_with_contacts(_split_contacts(_with_parts(report, parts), axle, contact), contact))
+        if at is None:
+            return report
+        return _point(report, at, torques, moment, power, omega0, time=time, until_omega=until_omega, until_angle=until_angle)
 
     if push is not None:
         front_steps.append(_push_step(push))
@@ -1275,3 +1279,111 @@ def _with_contacts(report: Report, contact) -> Report:
         return report
     return Report(report.scene, f"{report.model}; {', '.join(contact.models)}", report.method, report.results, report.steps,
                   report.notes, report.inputs, report.tables, report.trajectory)
+
+
+# ---------------------------------------------------------------------------------------------
+# A point at radius r (--at, #24): its speed, accelerations and the arc it has travelled.
+
+
+def _alpha_at(report: Report, torques: Torques, inertia: float | None, power: float | None, omega: float) -> float | None:
+    """α at angular velocity ω: the constant α where there is one, else Newton's second law with
+    the torques at that ω (friction against the motion; at rest, static friction holds what it can)."""
+    if "alpha" in report.results and report.results["alpha"].value is not None and power is None:
+        return report.results["alpha"].value
+    if inertia is None:
+        return None
+    sense = (omega > 0) - (omega < 0)
+    if power is not None:
+        if omega == 0:
+            return None
+        drive = power / omega
+    else:
+        drive = torques.drive
+    if sense == 0:
+        if abs(drive) <= torques.holding:
+            return 0.0
+        return (drive - math.copysign(torques.friction, drive)) / inertia
+    losses = sense * torques.friction + torques.viscous * omega + sense * torques.drag * abs(omega) ** torques.drag_exponent
+    return (drive - losses) / inertia
+
+
+def _point_set(r: float, omega: float, alpha: float | None) -> tuple[float, float | None, float, float | None, float | None]:
+    """v_t, a_t (along the motion: negative while slowing), a_c, a_total and a_angle of a point at r."""
+    v = abs(omega) * r
+    a_c = omega * omega * r
+    if alpha is None:
+        return v, None, a_c, None, None
+    a_t = (alpha if omega >= 0 else -alpha) * r
+    total = math.hypot(a_t, a_c)
+    angle = math.atan2(a_t, a_c) if total else None
+    return v, a_t, a_c, total, angle
+
+
+def _point(report: Report, r: float, torques: Torques, inertia, power, omega0, *, time, until_omega, until_angle) -> Report:
+    """The report with the results of a point at radius r, at --time or the target, else the start."""
+    values = {key: value.value for key, value in report.results.items()}
+    results = Results(TABLE)
+    results.update(report.results)
+    notes = list(report.notes)
+    w0 = values.get("omega0")
+    w0 = w0 if w0 is not None else (omega0 or 0.0)
+    alpha0 = values.get("alpha0")
+    if alpha0 is None:
+        alpha0 = _alpha_at(report, torques, inertia, power, w0)
+    if time is not None:
+        when, omega, theta = f" at t = {fmt(time)} s", values.get("omega"), values.get("theta")
+    elif until_angle is not None:
+        when, omega, theta = " at the target angle", values.get("omega"), until_angle if values.get("omega") is not None else None
+    elif until_omega is not None:
+        when, omega, theta = " at the target speed", until_omega if values.get("theta_until") is not None else None, values.get("theta_until")
+    else:
+        when, omega, theta = " at the start", w0, 0.0
+    later = when != " at the start"
+    steps = list(report.steps)
+    if omega is None:
+        for key in ("v_t", "a_t", "a_c", "a_total", "a_angle", "s"):
+            results.put(key, None, when)
+        notes.append("v_t, a_t, a_c, a_total, a_angle, s: the wheel does not reach the target, so there is no such instant")
+    else:
+        alpha = _alpha_at(report, torques, inertia, power, omega) if later else alpha0
+        v, a_t, a_c, total, angle = _point_set(r, omega, alpha)
+        results.put("v_t", v, when)
+        results.put("a_t", a_t, when)
+        results.put("a_c", a_c, when)
+        results.put("a_total", total, when)
+        results.put("a_angle", angle, when)
+        results.put("s", r * theta, " by then" if later else " at the start")
+        steps.extend(_point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when))
+        if alpha is None:
+            notes.append("a_t, a_total, a_angle: α is not defined at this instant (a constant power at rest)")
+        elif angle is None:
+            notes.append("a_angle: the point has no acceleration at this instant, so no direction")
+    if later:
+        v0, _, a_c0, total0, angle0 = _point_set(r, w0, alpha0)
+        results.put("v_t0", v0)
+        results.put("a_c0", a_c0)
+        results.put("a_total0", total0)
+        results.put("a_angle0", angle0)
+    return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)
+
+
+def _point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when) -> list[Step]:
+    """v = ωr, a_t = αr, a_c = ω²r, a = √(a_t² + a_c²), tan φ = a_t/a_c, s = rθ."""
+    radius = quantity_text(r, "m")
+    steps = [
+        Step(f"Speed of the point{when}", "v = ωr", f"{quantity_text(abs(omega), 'rad/s')} × {radius}", quantity_text(v, "m/s"),
+             "every point of a rigid body turns through the same angle, so a point at radius r covers r per radian"),
+        Step(f"Centripetal acceleration{when}", "a_c = ω²r", f"({quantity_text(abs(omega), 'rad/s')})² × {radius}", quantity_text(a_c, "m/s**2"),
+             "the velocity turns at rate ω, so the point accelerates toward the axis by ωv = ω²r"),
+    ]
+    if alpha is not None:
+        steps.append(Step(f"Tangential acceleration{when}", "a_t = αr", f"{quantity_text(alpha if omega >= 0 else -alpha, 'rad/s**2')} × {radius}",
+                          quantity_text(a_t, "m/s**2"), "the speed ωr changes at αr; taken along the motion, negative while the body slows"))
+        steps.append(Step(f"Total acceleration{when}", "a = √(a_t² + a_c²), φ = atan2(a_t, a_c)",
+                          f"√(({quantity_text(a_t, 'm/s**2')})² + ({quantity_text(a_c, 'm/s**2')})²)",
+                          quantity_text(total, "m/s**2") + ("" if angle is None else f", φ = {quantity_text(angle, 'rad')}"),
+                          "the two components are at right angles; φ is measured from the radius pointing to the axis, positive toward the motion"))
+    if theta:
+        steps.append(Step("Arc the point has travelled", "s = rθ", f"{radius} × {quantity_text(theta, 'rad')}", quantity_text(r * theta, "m"),
+                          "an arc is its radius times the angle it spans (the string a drum winds, the tread a tyre moves)"))
+    return steps
