@@ -19,6 +19,7 @@ from taucli.report import Value
 from taucli.table import CHOICE, COUNT, FILE, FLAG, PART, TEXT, Command, Option
 from taucli.table import VECTOR
 from taucli.table import COUPLE, PARTICLE
+from taucli.table import BRAKE, FACE
 
 
 @dataclass
@@ -368,3 +369,52 @@ def _couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
 
 READERS[PARTICLE] = _particles
 READERS[COUPLE] = _couples
+
+
+# --brake and --face of spin-down (#24): "key=value ..." specs like --particle's.
+_MU_FIELDS = {"mu": ("dimensionless", "nonnegative"), "mu_k": ("dimensionless", "nonnegative"), "mu_s": ("dimensionless", "nonnegative")}
+BRAKE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "radius": ("length", "positive")}
+FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
+               "surfaces": ("dimensionless", "positive")}
+
+
+def _brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    from taucli.scenes.contact import Brake, coefficients
+
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    example = '{brake} "force=100N mu=0.4 radius=0.5m"'
+    brakes = []
+    for number, spec in enumerate(specs, start=1):
+        source = f"{{brake}} {number}" if len(specs) > 1 else "{brake}"
+        _, fields = _spec_fields(_word(option, spec), source, BRAKE_FIELDS, example, shape_word=False)
+        if "force" not in fields:
+            raise InputError(source, "needs force=", example=example, got=repr(spec))
+        values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs)
+        mu_k, mu_s = coefficients(source, values)
+        brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius")))
+    return tuple(brakes)
+
+
+def _faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    from taucli.scenes.contact import PRESSURES, Face, coefficients
+
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    example = '{face} "mu=0.2", or {face} "mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm pressure=wear surfaces=2"'
+    faces = []
+    for number, spec in enumerate(specs, start=1):
+        source = f"{{face}} {number}" if len(specs) > 1 else "{face}"
+        _, fields = _spec_fields(_word(option, spec), source, {*FACE_FIELDS, "pressure"}, example, shape_word=False)
+        values = _read_fields(fields, FACE_FIELDS, source, f"face{number}", inputs)
+        mu_k, mu_s = coefficients(source, values)
+        pressure = fields.get("pressure", "uniform")
+        if pressure not in PRESSURES:
+            raise InputError(source, f"pressure= is one of {', '.join(PRESSURES)}", example=example, got=repr(pressure))
+        surfaces = values.get("surfaces", 1.0)
+        if surfaces != int(surfaces):
+            raise InputError(source, "surfaces= is a whole number", example=example, got=repr(fields["surfaces"]))
+        faces.append(Face(source, mu_k, mu_s, values.get("force"), values.get("inner_radius"), values.get("outer_radius"), pressure, int(surfaces)))
+    return tuple(faces)
+
+
+READERS[BRAKE] = _brakes
+READERS[FACE] = _faces

@@ -30,6 +30,9 @@ NOT_QUANTITIES = NOT_QUANTITIES | {VECTOR}  # read a component at a time by its 
 PARTICLE = "particle"  # "mass=… speed=… radius=… [angle=…] [speed-after=… | e=… | radius-after=…]", repeatable
 COUPLE = "couple"  # "[SHAPE] inertia=… | mass=… dims…, omega0=…": another body on the axis, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
+BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…]": a brake shoe on a turning body, repeatable
+FACE = "face"  # "mu=… [force=…] [inner-radius=…] [outer-radius=…] [pressure=uniform|wear] [surfaces=…]": a pressed flat face, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {

@@ -1,7 +1,7 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
-from taucli.options.common import ANSWER, BODY_OPTIONS, DT, METHOD, MOTION, RTOL
-from taucli.table import FLAG, Command, Option, Result
+from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, METHOD, MOTION, RTOL
+from taucli.table import BRAKE, FACE, FLAG, Command, Option, Result
 
 COMMAND = Command(
     name="spin-down",
@@ -15,6 +15,15 @@ COMMAND = Command(
         Option("lever", "length", "Distance of the push from the axle, e.g. 0.25m."),
         Option("push_angle", "angle", "Angle between lever arm and force.", sign="any", default="90deg"),
         Option("friction", "torque", "Constant friction torque at the axle (also holds it at rest), e.g. 0.3N*m.", sign="nonnegative"),
+        Option("brake", BRAKE,
+               'A brake shoe (or a tool) pressed against the body, e.g. "force=100N mu=0.4 radius=0.5m": torque μ·N·r, like --friction; '
+               "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius (repeatable).",
+               repeatable=True, metavar='"force=… mu=… radius=…"'),
+        Option("face", FACE,
+               'A flat face pressed on a surface, e.g. "mu=0.2" (the body lying on its face: its weight, its radii) or '
+               '"mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm pressure=uniform|wear surfaces=2" (a clutch plate) (repeatable).',
+               repeatable=True, metavar='"mu=… [force=…]"'),
+        GRAVITY,
         Option("viscous", "viscous coefficient", "Viscous coefficient b (torque bω), e.g. 0.01N*m*s.", sign="nonnegative"),
         Option("drag", "drag coefficient", "Drag coefficient k (torque kωⁿ), e.g. 0.001N*m*s^2.", sign="nonnegative"),
         Option("drag_exponent", "dimensionless", "Exponent n of the drag torque kωⁿ, 1 to 10.", default="2", metavar="N"),
@@ -35,6 +44,7 @@ COMMAND = Command(
         Option("power", "power", "A motor of constant power P (τ = P/ω; negative: a load draining the wheel), e.g. 1kW.", sign="any"),
         Option("ke0", "energy", "Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.", sign="nonnegative", panel=MOTION),
         Option("rim_speed", "velocity", "Initial speed of the rim, giving ω₀ = v/R (R the body's radius, or --radius with --inertia).", sign="any", panel=MOTION),
+        Option("at", "length", "A point at this radius: its speed v_t, accelerations a_t, a_c, a_total, a_angle and arc s, e.g. 0.5m.", panel=MOTION),
         Option(
             "energy", FLAG,
             "Also report the kinetic energy, the work of the drive and of each loss (to --time or the stop) and their power "
@@ -72,6 +82,22 @@ COMMAND = Command(
         Result("power_friction", "W", "power friction takes…"),
         Result("power_viscous", "W", "power the viscous torque takes…"),
         Result("power_drag", "W", "power drag takes…"),
+        Result("v_t", "m/s", "speed of the point…"),
+        Result("a_t", "m/s**2", "tangential acceleration…"),
+        Result("a_c", "m/s**2", "centripetal acceleration…"),
+        Result("a_total", "m/s**2", "total acceleration…"),
+        Result("a_angle", "rad", "angle of a from the radius…"),
+        Result("s", "m", "arc travelled…"),
+        Result("v_t0", "m/s", "speed of the point at the start"),
+        Result("a_c0", "m/s**2", "centripetal acceleration at the start"),
+        Result("a_total0", "m/s**2", "total acceleration at the start"),
+        Result("a_angle0", "rad", "angle of a from the radius at the start"),
+        Result("torque_brake", "N*m", "friction torque of the brakes"),
+        Result("work_brake", "J", "energy the brakes take…"),
+        Result("power_brake", "W", "power the brakes take…"),
+        Result("torque_face", "N*m", "friction torque of the faces"),
+        Result("work_face", "J", "energy the faces take…"),
+        Result("power_face", "W", "power the faces take…"),
     ),
     output=ANSWER,
     headline="alpha0",

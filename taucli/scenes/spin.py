@@ -13,13 +13,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from taucli.errors import InputError
 from taucli.numerics import METHODS, falling_root
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
+from taucli.scenes.assumed import Assumed
 from taucli.table import Results
 
 TWO_PI = 2 * math.pi
@@ -480,6 +481,10 @@ def spin_down(
     lever: float | None = None,
     push_angle: float | None = None,
     friction: float | None = None,
+    brake: Sequence | None = None,
+    face: Sequence | None = None,
+    g: float | None = None,
+    at: float | None = None,
     viscous: float | None = None,
     drag: float | None = None,
     drag_exponent: float | None = None,
@@ -509,6 +514,8 @@ def spin_down(
 
     if power == 0:
         power = None  # a motor of no power is no motor
+    if g is not None and not any(plate.force is None for plate in face or ()):
+        raise InputError("g", "is used only for the weight on a {face} with no force=")
     has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     rim = None
     if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
@@ -560,7 +567,21 @@ def spin_down(
         drive = push.torque
     else:
         drive = torque or 0.0
-    torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent)
+    contact, assumed = None, Assumed()
+    axle = friction or 0.0
+    if brake or face:
+        contact = _contacts(brake or (), face or (), body_options, rim, assumed, g, results, front_steps, notes, axle)
+        friction = axle + contact.kinetic
+    static = None if contact is None or contact.static == contact.kinetic else axle + contact.static
+    torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent, static)
+
+    def finish(report: Report, parts: Table | None) -> Report:
+        """The report with the parts table, the contacts' shares of the friction, and what was assumed."""
+        report = assumed.applied(_with_contacts(_split_contacts(_with_parts(report, parts), axle, contact), contact))
+        if at is None:
+            return report
+        return _point(report, at, torques, moment, power, omega0, time=time, until_omega=until_omega, until_angle=until_angle)
+
     if push is not None:
         front_steps.append(_push_step(push))
     if alpha is not None or not has_body:
@@ -570,14 +591,14 @@ def spin_down(
             if time is not None:
                 raise InputError("in_time", "conflicts with {time}: without a body they say the same")
             time = in_time
-        return _with_parts(_with_front(_uniform_report(moment, body_steps, torques, omega0, alpha, time=time, until_omega=until_omega,
+        return finish(_with_front(_uniform_report(moment, body_steps, torques, omega0, alpha, time=time, until_omega=until_omega,
                                            until_angle=until_angle, front=(front_steps, notes, results)), results), parts)
     if power is not None:
         if in_time is not None:
             raise InputError("in_time", "conflicts with {power}: the drive is the motor's")
         if push is not None:
             raise InputError("power", "conflicts with {force}: give the motor's power or the push")
-        return _with_parts(_with_front(_power_report(moment, body_steps, power, torques, omega0 or 0.0, time=time, until_omega=until_omega,
+        return finish(_with_front(_power_report(moment, body_steps, power, torques, omega0 or 0.0, time=time, until_omega=until_omega,
                                          until_angle=until_angle, method=method, dt=dt, rtol=rtol), results, notes, front_steps), parts)
     if in_time is not None:
         if torque is not None or push is not None or power is not None:
@@ -587,7 +608,7 @@ def spin_down(
         if time is not None:
             raise InputError("time", "conflicts with {in_time}: ask for the target's time one way")
         if not torques.viscous and not torques.drag:
-            return _with_parts(_with_front(_uniform_report(moment, body_steps, torques, omega0, None, time=in_time, until_omega=until_omega,
+            return finish(_with_front(_uniform_report(moment, body_steps, torques, omega0, None, time=in_time, until_omega=until_omega,
                                                until_angle=until_angle, front=(front_steps, notes, results)), results), parts)
         torques = _drive_for_target(moment, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
         time, until_omega, until_angle = in_time, None, None
@@ -600,7 +621,7 @@ def spin_down(
     )
     if "torque" in results:
         results.put("torque_net", report.results["alpha0"].value * moment, " at the start")
-    return _with_parts(_with_front(report, results, notes, front_steps), parts)
+    return finish(_with_front(report, results, notes, front_steps), parts)
 
 
 def _drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, until_angle, method, dt, rtol) -> Torques:
@@ -1189,4 +1210,180 @@ def _energy_steps(results: Results, inertia: float, friction: float, power: floa
         steps.append(Step("Energy the viscous torque and drag take", "W_b + W_k = KE₀ − KE + W_drive − W_f", "", quantity_text(total, "J"),
                           "the energy balance: what the wheel had and the drive gave, less what it keeps and what friction took; "
                           "where both act, the viscous share b∫ω²dt is integrated and drag has the rest"))
+    return steps
+
+
+# ---------------------------------------------------------------------------------------------
+# Brakes and pressed faces (#24): constant Coulomb torques added to the axle's friction.
+
+
+def _split_contacts(report: Report, axle: float, contact) -> Report:
+    """The report with the friction's work and power shared out by torque among the axle, the
+    brakes and the faces: each is a constant torque against the motion, so each takes its
+    torque times the same angle swept (and times the same |ω|)."""
+    if contact is None or not contact.kinetic:
+        return report
+    total = axle + contact.kinetic
+    results = Results(TABLE)
+    steps = list(report.steps)
+    for key, value in report.results.items():
+        if key not in ("work_friction", "power_friction"):
+            results[key] = value
+            continue
+        kind = key.partition("_")[0]
+        part = value.label.partition("takes")[2]
+        share = value.value / total  # the angle swept, or |ω|
+        if axle:
+            results.put(key, axle * share, part)
+        for name, torque in (("brake", contact.brake), ("face", contact.face)):
+            if torque:
+                results.put(f"{kind}_{name}", torque * share, part)
+                symbol = "τ_b" if name == "brake" else "τ_face"
+                if kind == "work":
+                    steps.append(Step(f"Energy the {name}s take", f"W_{name} = {symbol} × angle swept",
+                                      f"{quantity_text(torque, 'N*m')} × {quantity_text(share, 'rad')}", quantity_text(torque * share, "J"),
+                                      "a constant friction torque against the motion takes its torque for every radian swept"))
+                else:
+                    steps.append(Step(f"Power the {name}s take", f"P_{name} = {symbol}·|ω|",
+                                      f"{quantity_text(torque, 'N*m')} × {quantity_text(share, 'rad/s')}", quantity_text(torque * share, "W"),
+                                      "power is torque times angular speed"))
+    steps = [replace(step, title="Energy all friction takes (axle, brakes, faces)") if step.title == "Energy friction takes" else step for step in steps]
+    return Report(report.scene, report.model, report.method, results, steps, report.notes, report.inputs, report.tables, report.trajectory)
+
+
+def _contacts(brakes, faces, body_options: dict, rim: float | None, assumed: Assumed, g: float | None, results: Results, steps: list[Step], notes: list[str], axle: float):
+    """The brakes' and faces' torques (contact.py), put among the results, steps and notes before the motion."""
+    from taucli.scenes.contact import body_rim, contacts
+
+    shape_rim = body_rim(body_options)
+    options = body_options if shape_rim is not None or rim is None else {**body_options, "shape": "disc", "radius": rim}
+    g = assumed.gravity(g) if any(face.force is None for face in faces) else None
+    contact = contacts(brakes, faces, options, body_options.get("mass"), g)
+    if brakes:
+        results.put("torque_brake", contact.brake)
+    if faces:
+        results.put("torque_face", contact.face)
+    steps.extend(contact.steps)
+    notes.extend(contact.notes)
+    terms = [(symbol, value) for symbol, value in (("τ_axle", axle), ("τ_b", contact.brake), ("τ_face", contact.face)) if value]
+    if terms:
+        steps.append(Step("Friction torques add", "τ_f = " + " + ".join(symbol for symbol, _ in terms),
+                          " + ".join(quantity_text(value, "N*m") for _, value in terms), quantity_text(axle + contact.kinetic, "N*m"),
+                          "each is a constant torque against the motion, so together they act as one friction torque τ_f"))
+    return contact
+
+
+def _with_contacts(report: Report, contact) -> Report:
+    """The model line names the brakes' and faces' friction models."""
+    if contact is None or not contact.models:
+        return report
+    return Report(report.scene, f"{report.model}; {', '.join(contact.models)}", report.method, report.results, report.steps,
+                  report.notes, report.inputs, report.tables, report.trajectory)
+
+
+# ---------------------------------------------------------------------------------------------
+# A point at radius r (--at, #24): its speed, accelerations and the arc it has travelled.
+
+
+def _alpha_at(report: Report, torques: Torques, inertia: float | None, power: float | None, omega: float) -> float | None:
+    """α at angular velocity ω: the constant α where there is one, else Newton's second law with
+    the torques at that ω (friction against the motion; at rest, static friction holds what it can)."""
+    if "alpha" in report.results and report.results["alpha"].value is not None and power is None:
+        return report.results["alpha"].value
+    if inertia is None:
+        return None
+    sense = (omega > 0) - (omega < 0)
+    if power is not None:
+        if omega == 0:
+            return None
+        drive = power / omega
+    else:
+        drive = torques.drive
+    if sense == 0:
+        if abs(drive) <= torques.holding:
+            return 0.0
+        return (drive - math.copysign(torques.friction, drive)) / inertia
+    losses = sense * torques.friction + torques.viscous * omega + sense * torques.drag * abs(omega) ** torques.drag_exponent
+    return (drive - losses) / inertia
+
+
+def _point_set(r: float, omega: float, alpha: float | None) -> tuple[float, float | None, float, float | None, float | None]:
+    """v_t, a_t (along the motion: negative while slowing), a_c, a_total and a_angle of a point at r."""
+    v = abs(omega) * r
+    a_c = omega * omega * r
+    if alpha is None:
+        return v, None, a_c, None, None
+    a_t = (alpha if omega >= 0 else -alpha) * r
+    total = math.hypot(a_t, a_c)
+    angle = math.atan2(a_t, a_c) if total else None
+    return v, a_t, a_c, total, angle
+
+
+def _point(report: Report, r: float, torques: Torques, inertia, power, omega0, *, time, until_omega, until_angle) -> Report:
+    """The report with the results of a point at radius r, at --time or the target, else the start."""
+    values = {key: value.value for key, value in report.results.items()}
+    results = Results(TABLE)
+    results.update(report.results)
+    notes = list(report.notes)
+    w0 = values.get("omega0")
+    w0 = w0 if w0 is not None else (omega0 or 0.0)
+    alpha0 = values.get("alpha0")
+    if alpha0 is None:
+        alpha0 = _alpha_at(report, torques, inertia, power, w0)
+    if time is not None:
+        when, omega, theta = f" at t = {fmt(time)} s", values.get("omega"), values.get("theta")
+    elif until_angle is not None:
+        when, omega, theta = " at the target angle", values.get("omega"), until_angle if values.get("omega") is not None else None
+    elif until_omega is not None:
+        when, omega, theta = " at the target speed", until_omega if values.get("theta_until") is not None else None, values.get("theta_until")
+    else:
+        when, omega, theta = " at the start", w0, 0.0
+    later = when != " at the start"
+    steps = list(report.steps)
+    if omega is None:
+        for key in ("v_t", "a_t", "a_c", "a_total", "a_angle", "s"):
+            results.put(key, None, when)
+        notes.append("v_t, a_t, a_c, a_total, a_angle, s: the wheel does not reach the target, so there is no such instant")
+    else:
+        alpha = _alpha_at(report, torques, inertia, power, omega) if later else alpha0
+        v, a_t, a_c, total, angle = _point_set(r, omega, alpha)
+        results.put("v_t", v, when)
+        results.put("a_t", a_t, when)
+        results.put("a_c", a_c, when)
+        results.put("a_total", total, when)
+        results.put("a_angle", angle, when)
+        results.put("s", r * theta, " by then" if later else " at the start")
+        steps.extend(_point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when))
+        if alpha is None:
+            notes.append("a_t, a_total, a_angle: α is not defined at this instant (a constant power at rest)")
+        elif angle is None:
+            notes.append("a_angle: the point has no acceleration at this instant, so no direction")
+    if later:
+        v0, _, a_c0, total0, angle0 = _point_set(r, w0, alpha0)
+        results.put("v_t0", v0)
+        results.put("a_c0", a_c0)
+        results.put("a_total0", total0)
+        results.put("a_angle0", angle0)
+    return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)
+
+
+def _point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when) -> list[Step]:
+    """v = ωr, a_t = αr, a_c = ω²r, a = √(a_t² + a_c²), tan φ = a_t/a_c, s = rθ."""
+    radius = quantity_text(r, "m")
+    steps = [
+        Step(f"Speed of the point{when}", "v = ωr", f"{quantity_text(abs(omega), 'rad/s')} × {radius}", quantity_text(v, "m/s"),
+             "every point of a rigid body turns through the same angle, so a point at radius r covers r per radian"),
+        Step(f"Centripetal acceleration{when}", "a_c = ω²r", f"({quantity_text(abs(omega), 'rad/s')})² × {radius}", quantity_text(a_c, "m/s**2"),
+             "the velocity turns at rate ω, so the point accelerates toward the axis by ωv = ω²r"),
+    ]
+    if alpha is not None:
+        steps.append(Step(f"Tangential acceleration{when}", "a_t = αr", f"{quantity_text(alpha if omega >= 0 else -alpha, 'rad/s**2')} × {radius}",
+                          quantity_text(a_t, "m/s**2"), "the speed ωr changes at αr; taken along the motion, negative while the body slows"))
+        steps.append(Step(f"Total acceleration{when}", "a = √(a_t² + a_c²), φ = atan2(a_t, a_c)",
+                          f"√(({quantity_text(a_t, 'm/s**2')})² + ({quantity_text(a_c, 'm/s**2')})²)",
+                          quantity_text(total, "m/s**2") + ("" if angle is None else f", φ = {quantity_text(angle, 'rad')}"),
+                          "the two components are at right angles; φ is measured from the radius pointing to the axis, positive toward the motion"))
+    if theta:
+        steps.append(Step("Arc the point has travelled", "s = rθ", f"{radius} × {quantity_text(theta, 'rad')}", quantity_text(r * theta, "m"),
+                          "an arc is its radius times the angle it spans (the string a drum winds, the tread a tyre moves)"))
     return steps
