@@ -327,15 +327,22 @@ def _read_fields(fields: dict[str, str], table: dict, source: str, prefix: str, 
             for key, text in fields.items() if key in table}
 
 
+def _specs(option: Option, given):
+    """Each "key=value ..." spec given for a repeatable spec option: (its number, the name its
+    messages use: "{brake}", or "{brake} 2" where several are given, the spec's text)."""
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    for number, spec in enumerate(specs, start=1):
+        source = "{" + option.name + "}" + (f" {number}" if len(specs) > 1 else "")
+        yield number, source, _word(option, spec)
+
+
 def _particles(option: Option, given, inputs: Inputs, stdin) -> tuple:
     from taucli.scenes.impulse import Particle
 
-    specs = given if isinstance(given, (list, tuple)) else [given]
     example = '{particle} "mass=30kg speed=4m/s radius=2m"'
     particles = []
-    for number, spec in enumerate(specs, start=1):
-        source = f"{{particle}} {number}" if len(specs) > 1 else "{particle}"
-        _, fields = _spec_fields(_word(option, spec), source, PARTICLE_FIELDS, example, shape_word=False)
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, PARTICLE_FIELDS, example, shape_word=False)
         for needed in ("mass", "radius"):
             if needed not in fields:
                 raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
@@ -348,12 +355,10 @@ def _couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
     from taucli.scenes.impulse import Couple
     from taucli.scenes.inertia import Part
 
-    specs = given if isinstance(given, (list, tuple)) else [given]
     example = '{couple} "inertia=3kg*m^2 omega0=0", or {couple} "disc mass=2kg radius=0.1m omega0=100rpm"'
     couples = []
-    for number, spec in enumerate(specs, start=1):
-        source = f"{{couple}} {number}" if len(specs) > 1 else "{couple}"
-        shape, fields = _spec_fields(_word(option, spec), source, {*COUPLE_FIELDS, "axis"}, example, shape_word=True)
+    for number, source, spec in _specs(option, given):
+        shape, fields = _spec_fields(spec, source, {*COUPLE_FIELDS, "axis"}, example, shape_word=True)
         values = _read_fields(fields, COUPLE_FIELDS, source, f"couple{number}", inputs)
         if (shape is None) == ("inertia" not in values):
             raise InputError(source, "needs inertia= or a shape with its mass and dimensions (one of them)", example=example, got=repr(spec))
@@ -381,12 +386,10 @@ FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": 
 def _brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
     from taucli.scenes.contact import Brake, coefficients
 
-    specs = given if isinstance(given, (list, tuple)) else [given]
     example = '{brake} "force=100N mu=0.4 radius=0.5m"'
     brakes = []
-    for number, spec in enumerate(specs, start=1):
-        source = f"{{brake}} {number}" if len(specs) > 1 else "{brake}"
-        _, fields = _spec_fields(_word(option, spec), source, BRAKE_FIELDS, example, shape_word=False)
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, BRAKE_FIELDS, example, shape_word=False)
         if "force" not in fields:
             raise InputError(source, "needs force=", example=example, got=repr(spec))
         values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs)
@@ -398,12 +401,10 @@ def _brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
 def _faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
     from taucli.scenes.contact import PRESSURES, Face, coefficients
 
-    specs = given if isinstance(given, (list, tuple)) else [given]
     example = '{face} "mu=0.2", or {face} "mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm pressure=wear surfaces=2"'
     faces = []
-    for number, spec in enumerate(specs, start=1):
-        source = f"{{face}} {number}" if len(specs) > 1 else "{face}"
-        _, fields = _spec_fields(_word(option, spec), source, {*FACE_FIELDS, "pressure"}, example, shape_word=False)
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*FACE_FIELDS, "pressure"}, example, shape_word=False)
         values = _read_fields(fields, FACE_FIELDS, source, f"face{number}", inputs)
         mu_k, mu_s = coefficients(source, values)
         pressure = fields.get("pressure", "uniform")
