@@ -141,20 +141,27 @@ def _scipy_points(name: str, ladder: dict, repeats: int) -> list[Point]:
         return y[0]
 
     stopped.terminal, stopped.direction = True, -1
-    bound = 1.01 * inertia * omega0 / torques.friction
+
+    def error(solution) -> float:
+        t_stop, theta_stop = float(solution.t_events[0][0]), float(solution.y_events[0][0][1])
+        return max(_relative(t_stop, t_ref), _relative(theta_stop, theta_ref))
+
+    return _scipy_runs("spin-down", name, solve_ivp, rate, [omega0, 0.0], 1.01 * inertia * omega0 / torques.friction, stopped, error, ladder, repeats)
+
+
+def _scipy_runs(scene: str, name: str, solve_ivp, rate, start: list[float], bound: float, event, error, ladder: dict, repeats: int) -> list[Point]:
+    """Each of scipy's RK45, DOP853 and LSODA at each rtol of the ladder, run to ``event``:
+    the time per solve and ``error(solution)``, or diverged where the event never came."""
     points = []
     for method in ("RK45", "DOP853", "LSODA"):
         for rtol in ladder["scipy"]:
             def run(method=method, rtol=rtol):
-                return solve_ivp(rate, (0.0, bound), [omega0, 0.0], method=method, rtol=rtol, atol=rtol * 1e-3, events=stopped)
+                return solve_ivp(rate, (0.0, bound), start, method=method, rtol=rtol, atol=rtol * 1e-3, events=event)
 
             solution = run()
-            if not solution.t_events[0].size:
-                points.append(Point("spin-down", name, f"scipy {method}", f"rtol={rtol:g}", time_per_call(run, repeats), None, "diverged"))
-                continue
-            t_stop, theta_stop = float(solution.t_events[0][0]), float(solution.y_events[0][0][1])
-            error = max(_relative(t_stop, t_ref), _relative(theta_stop, theta_ref))
-            points.append(Point("spin-down", name, f"scipy {method}", f"rtol={rtol:g}", time_per_call(run, repeats), error, "ok"))
+            reached = bool(solution.t_events[0].size)
+            points.append(Point(scene, name, f"scipy {method}", f"rtol={rtol:g}", time_per_call(run, repeats),
+                                error(solution) if reached else None, "ok" if reached else "diverged"))
     return points
 
 
@@ -223,20 +230,11 @@ def _scipy_pendulum_points(name: str, theta0: float, reference: str, ladder: dic
         return y[1]
 
     turned.terminal, turned.direction = True, 1  # ω < 0 on the way down, back up to 0 at the far side
-    bound = 3 * float(reference)
-    points = []
-    for method in ("RK45", "DOP853", "LSODA"):
-        for rtol in ladder["scipy"]:
-            def run(method=method, rtol=rtol):
-                return solve_ivp(rate, (0.0, bound), [theta0, 0.0], method=method, rtol=rtol, atol=rtol * 1e-3, events=turned)
 
-            solution = run()
-            if not solution.t_events[0].size:
-                points.append(Point("pendulum", name, f"scipy {method}", f"rtol={rtol:g}", time_per_call(run, repeats), None, "diverged"))
-                continue
-            period = 2 * float(solution.t_events[0][0])
-            points.append(Point("pendulum", name, f"scipy {method}", f"rtol={rtol:g}", time_per_call(run, repeats), _relative(period, reference), "ok"))
-    return points
+    def error(solution) -> float:
+        return _relative(2 * float(solution.t_events[0][0]), reference)
+
+    return _scipy_runs("pendulum", name, solve_ivp, rate, [theta0, 0.0], 3 * float(reference), turned, error, ladder, repeats)
 
 
 def run(scenes: tuple[str, ...] = SCENES, quick: bool = False) -> list[Point]:
