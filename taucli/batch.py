@@ -23,7 +23,7 @@ import json
 
 from taucli import __version__
 from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean, out_of_range
-from taucli.render import STRICT_JSON, Output, document, prepared
+from taucli.render import Output, document_text, prepared
 from taucli.table import FLAG, Command
 
 PER_LINE_OUTPUT = ("to", "no_steps")  # how to answer, which a line may say for itself
@@ -62,7 +62,7 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
             given = {**fixed, **given}
             report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag)
             shown = output._replace(**answer) if answer else output
-            text = STRICT_JSON.encode(document(prepared(report, shown), steps=shown.steps)) + "\n"
+            text = document_text(prepared(report, shown), steps=shown.steps) + "\n"
         except TaucliError as err:
             text = _error(number, err.exit_status, err, failures)
             first_failure = first_failure or number

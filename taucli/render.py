@@ -165,10 +165,7 @@ def document(report: Report, *, steps: bool = True) -> dict:
         "method": report.method,
         "inputs": {name: {"value": v.value, "unit": v.unit} for name, v in report.inputs.items()},
         "results": {name: _json_value(v) for name, v in report.results.items()},
-        "steps": [
-            {"title": s.title, "equation": s.equation, "numbers": s.numbers, "result": s.result, "why": s.why}
-            for s in (report.steps if steps else ())
-        ],
+        "steps": document_steps(report.steps) if steps else [],
         "notes": list(report.notes),
     }
     for name, table in report.tables.items():
@@ -178,6 +175,79 @@ def document(report: Report, *, steps: bool = True) -> dict:
     return doc
 
 
+_ENCODED: dict[object, str] = {}  # a text, or a result's (name, unit, label), -> its JSON, as written before
+_ENCODE_TEXT = json.encoder.encode_basestring  # a str's JSON as STRICT_JSON writes it (not ASCII-only)
+
+
+def _text(text: str | None) -> str:
+    found = _ENCODED.get(text)
+    if found is None:
+        found = "null" if text is None else _ENCODE_TEXT(text)
+        if len(_ENCODED) < 4096:  # texts repeat (units, labels, notes); numbers in notes make some new each time
+            _ENCODED[text] = found
+    return found
+
+
+def _number(value) -> str:
+    """A value's JSON as STRICT_JSON writes it: float repr, null, true/false; NaN and ±inf refused."""
+    kind = value.__class__
+    if kind is float:
+        if value != value or value in (math.inf, -math.inf):
+            raise ValueError(f"{value!r} is not a number strict JSON allows")
+        return float.__repr__(value)
+    if value is None:
+        return "null"
+    if kind is bool:
+        return "true" if value else "false"
+    return STRICT_JSON.encode(value)
+
+
+def _entry(key: tuple[str, str | None, str]) -> tuple[str, str]:
+    """The JSON around a value: '"name":{"value":' and ',"unit":…,"label":…}' (after the uncertainty)."""
+    name, unit, label = key
+    found = (_text(name) + ':{"value":', ',"unit":' + _text(unit) + (',"label":' + _text(label) if label else "") + "}")
+    if len(_ENCODED) < 4096:
+        _ENCODED[key] = found
+    return found
+
+
+def _values(values: Mapping[str, Value], labelled: bool, spreads: Mapping[str, float]) -> str:
+    parts = []
+    for name, v in values.items():
+        value = v.value
+        # a finite float (x − x is 0 only then) written at once: most values of most documents
+        number = float.__repr__(value) if value.__class__ is float and value - value == 0.0 else _number(value)
+        if spreads and name in spreads:
+            number += ',"uncertainty":' + _number(spreads[name])
+        key = (name, v.unit, v.label if labelled else "")
+        ends = _ENCODED.get(key) or _entry(key)
+        parts.append(ends[0] + number + ends[1])
+    return "{" + ",".join(parts) + "}"
+
+
+def document_text(report: Report, *, steps: bool = True, plot: dict | None = None) -> str:
+    """``document(report)`` as strict, compact JSON: the text STRICT_JSON.encode gives for it,
+    written from the JSON of each unit, label and note as first written (a batch writes the
+    same texts on every line; only the numbers change). ``plot`` is added under "plot"."""
+    uncertain = getattr(report, "uncertainties", None) is not None
+    parts = [
+        '{"taucli":', _text(__version__), ',"scene":', _text(report.scene), ',"model":', _text(report.model),
+        ',"method":', _text(report.method),
+        ',"inputs":', _values(report.inputs, False, report.input_uncertainties if uncertain else {}),
+        ',"results":', _values(report.results, True, report.uncertainties if uncertain else {}),
+        ',"steps":', STRICT_JSON.encode(document_steps(report.steps)) if steps and report.steps else "[]",
+        ',"notes":[', ",".join(map(_text, report.notes)), "]",
+    ]  # fmt: skip
+    for name, table in report.tables.items():
+        parts += [",", _text(name), ":", STRICT_JSON.encode(_json_table(table))]
+    if uncertain and report.draws:
+        parts += [',"monte_carlo":', STRICT_JSON.encode(_monte_carlo(report))]
+    if plot is not None:
+        parts += [',"plot":', STRICT_JSON.encode(plot)]
+    parts.append("}")
+    return "".join(parts)
+
+
 def _json_uncertain(doc: dict, report) -> None:
     """#22: "uncertainty" beside "value" in each result (and input) that has one; --mc's check."""
     for part, spreads in (("results", report.uncertainties), ("inputs", report.input_uncertainties)):
@@ -185,8 +255,15 @@ def _json_uncertain(doc: dict, report) -> None:
             if name in spreads:
                 doc[part][name] = {"value": entry["value"], "uncertainty": spreads[name], **entry}
     if report.draws:
-        doc["monte_carlo"] = {"draws": report.draws, "results": {
-            name: {"mean": mean, "uncertainty": spread} for name, (mean, spread) in report.monte_carlo.items()}}
+        doc["monte_carlo"] = _monte_carlo(report)
+
+
+def _monte_carlo(report) -> dict:
+    return {"draws": report.draws, "results": {name: {"mean": mean, "uncertainty": spread} for name, (mean, spread) in report.monte_carlo.items()}}
+
+
+def document_steps(steps) -> list[dict]:
+    return [{"title": s.title, "equation": s.equation, "numbers": s.numbers, "result": s.result, "why": s.why} for s in steps]
 
 
 def render(report: Report, output: Output, stream: TextIO) -> None:
@@ -202,10 +279,7 @@ def render(report: Report, output: Output, stream: TextIO) -> None:
         else:
             stream.write("".join(bare(named_result(report, name, "--get").value) + "\n" for name in output.get))
     elif output.json:
-        doc = document(report, steps=output.steps)
-        if output.charted:
-            doc["plot"] = plot.plot_document(report)
-        stream.write(STRICT_JSON.encode(doc) + "\n")
+        stream.write(document_text(report, steps=output.steps, plot=plot.plot_document(report) if output.charted else None) + "\n")
     else:
         render_human(report, stream, show_steps=output.steps)
         if output.plot:

@@ -251,16 +251,12 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
             values += [renderer.named_result(point.report, name, "--get").value for name in output.get]
             stream.write("\t".join(renderer.bare(value) for value in values) + "\n")
     elif output.json:
-        documents = []
-        for point in points:
-            doc = renderer.document(point.report, steps=output.steps)
-            if output.charted and swept_range is None:
-                doc["plot"] = plot.plot_document(point.report)
-            documents.append(doc)
-        if output.json_lines:
-            stream.write("".join(renderer.STRICT_JSON.encode(doc) + "\n" for doc in documents))
-        else:
-            stream.write(renderer.STRICT_JSON.encode(documents) + "\n")
+        plotted = output.charted and swept_range is None
+        documents = [
+            renderer.document_text(point.report, steps=output.steps, plot=plot.plot_document(point.report) if plotted else None)
+            for point in points
+        ]
+        stream.write("".join(doc + "\n" for doc in documents) if output.json_lines else "[" + ",".join(documents) + "]\n")
     else:
         if not output.plot:
             _render_table(points, swept, stream)
