@@ -279,3 +279,36 @@ def test_with_only_mu_s_a_moving_machine_needs_mu_k_and_a_held_one_does_not():
         assert result[name] is None, name
     assert any("--mu-k" in note for note in moving.notes)
     moving.steps[:]
+
+
+def _massless_reference(m1, m2, angle, mu_k, mu_s, axle_force, v0, g):
+    """a of the same machine with I = 0 (mpmath, 40 digits), from the forces along the string:
+    moving (or set going) in sense s, (m1 + m2)a = s[s(m1 g − m2 g sin θ) − μk N − τ/R]; held: 0."""
+    mpmath.mp.dps = 40
+    m1, m2, g, v0 = map(mpmath.mpf, (m1, m2, g, v0))
+    sin, cos = (mpmath.mpf(1), mpmath.mpf(0)) if angle == HANGING else (mpmath.sin(angle), mpmath.cos(angle))
+    normal = m2 * g * cos
+    pull = m1 * g - m2 * g * sin
+    if v0 != 0:
+        sense = mpmath.sign(v0)
+    elif abs(pull) > (mu_s if mu_s is not None else mu_k) * normal + axle_force:
+        sense = mpmath.sign(pull)
+    else:
+        return mpmath.mpf(0)
+    return sense * (sense * pull - mu_k * normal - axle_force) / (m1 + m2)
+
+
+@settings(max_examples=200)
+@given(
+    m1=st.floats(0.1, 10), m2=st.floats(0.1, 10), on_slope=st.booleans(), angle=st.floats(0, 1.5), mu_k=st.floats(0, 0.8),
+    static_extra=st.one_of(st.none(), st.floats(0, 0.5)), axle=st.floats(0, 2), v0=st.sampled_from([0.0, 1.5, -2.0]),
+)
+def test_the_massless_comparison_is_the_machine_with_no_pulley_inertia(m1, m2, on_slope, angle, mu_k, static_extra, axle, v0):
+    """a_massless: the same masses, frictions and start speed with I = 0, against the forces' sum."""
+    angle = angle if on_slope else HANGING
+    mu_s = None if static_extra is None else mu_k + static_extra
+    if angle == HANGING:
+        mu_k, mu_s = 0.0, None
+    report = solve(m1, m2, Pulley(1.0, 0.1, None, None, axle * 0.1), 9.8, slope=Slope(angle, mu_k, mu_s), v0=v0)
+    expected = _massless_reference(m1, m2, angle, mu_k, mu_s, axle, v0, 9.8)
+    assert values(report)["a_massless"] == pytest.approx(float(expected), rel=1e-12, abs=1e-12)

@@ -22,7 +22,7 @@ from taucli.errors import InputError
 from taucli.options.atwood import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
-from taucli.scenes.motion import Evolver, Loads, Method, evolve
+from taucli.scenes.motion import Evolver, Loads, Method, evolve, start_rate
 from taucli.scenes.friction import needs_kinetic, static_coefficient
 from taucli.table import Results
 
@@ -125,9 +125,7 @@ def solve(
     a = motion.initial_rate
     direction = motion.direction
 
-    massless = None
-    if m1 + m2 > 0:
-        massless = evolve(m1 + m2, loads, v0, Evolver(Method("exact"))).initial_rate
+    massless = start_rate(m1 + m2, loads, v0) if m1 + m2 > 0 else None
 
     results = Results(TABLE)
     results.put("a", a)
@@ -407,7 +405,7 @@ def solve_stepped(
     else:  # g − a1 and g + a2 from a's formula, as sums of positive terms
         tension1 = m1 * (g * (m2 * ratio * (ratio + 1) + own) + direction * axle) / moving
         tension2 = m2 * (g * (m1 * (1 + ratio) + own) - ratio * direction * axle) / moving
-    massless = None if m1 + m2 == 0 else evolve(m1 + m2 * ratio * ratio, loads, v0, Evolver(Method("exact"))).initial_rate
+    massless = None if m1 + m2 == 0 else start_rate(m1 + m2 * ratio * ratio, loads, v0)
     results = Results(TABLE)
     results.put("a", a)
     results.put("a2", ratio * a)

@@ -371,6 +371,23 @@ class Motion:
         return None
 
 
+def start_rate(mass: float, loads: Loads, v0: float) -> float:
+    """dv/dt at the start: ``evolve(...).initial_rate``, without setting up the phases.
+
+    Moving (v0 ≠ 0) or set going (|drive| above what static friction holds), in direction s:
+    (s·drive − friction − b|v0| − k|v0|ⁿ)/m, times s; held: 0.
+    """
+    if v0 != 0:
+        direction = 1 if v0 > 0 else -1
+    elif abs(loads.drive) > loads.holding:
+        direction = 1 if loads.drive > 0 else -1
+    else:
+        return 0.0
+    speed = abs(v0)
+    drag = loads.drag * speed**loads.drag_exponent if loads.drag else 0.0
+    return direction * ((direction * loads.drive - loads.friction - loads.viscous * speed - drag) / mass)
+
+
 def evolve(mass: float, loads: Loads, v0: float, evolver: Evolver) -> Motion:
     """Set up the phases of the motion from v0 under these loads."""
     holding = loads.holding
