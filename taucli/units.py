@@ -312,12 +312,14 @@ def _from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float,
         return value, AS_GIVEN
     how, target = AS_GIVEN, kind.si_unit
     wanted = ureg.Quantity(1, kind.si_unit).dimensionality
-    if kind.name == "mass" and q.dimensionality == ureg.Quantity(1, "N").dimensionality:
-        how, target = WEIGHT, "N"
-    elif kind.name in FORCES and q.dimensionality != wanted and (q * ureg.Quantity(1, "m/s**2")).dimensionality == wanted:
-        how, q = MASS_AS_WEIGHT, q * ureg.Quantity(STANDARD_GRAVITY, "m/s**2")
     try:
+        if kind.name == "mass" and q.dimensionality == ureg.Quantity(1, "N").dimensionality:
+            how, target = WEIGHT, "N"
+        elif kind.name in FORCES and q.dimensionality != wanted and (q * ureg.Quantity(1, "m/s**2")).dimensionality == wanted:
+            how, q = MASS_AS_WEIGHT, q * ureg.Quantity(STANDARD_GRAVITY, "m/s**2")
         value = float(q.to(target).magnitude)
+    except pint.errors.OffsetUnitCalculusError:  # degC, degF: a temperature, which pint will not multiply
+        raise InputError(option, _expected(kind), example=kind.example, got=f"{text!r}, which is a temperature") from None
     except pint.DimensionalityError:
         raise InputError(
             option, _expected(kind), example=kind.example, got=f"{text!r}, which is {_describe(q.dimensionality)}", hint=_case_of(cleaned, kind)

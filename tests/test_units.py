@@ -152,3 +152,11 @@ def test_convert_to_other_units():
         units.convert(0.1, "kg*m**2", "s", "--to")
     with pytest.raises(InputError):
         units.convert(0.1, "kg*m**2", "9**9**9", "--to")
+
+
+@pytest.mark.parametrize("kind", sorted(units.KINDS))
+@pytest.mark.parametrize("text", ["1degC", "2 degF", "1 degC*m"])
+def test_a_temperature_is_refused_for_every_kind_not_a_crash(kind, text):
+    """pint will not multiply an offset unit (it raised OffsetUnitCalculusError: exit 1)."""
+    with pytest.raises(InputError):
+        units.parse(text, "--x", kind, sign="any")
