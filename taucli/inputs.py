@@ -35,6 +35,9 @@ class Inputs:
         """The SI value of ``given``: text with a unit, or a number, which is SI."""
         if given is None:
             return None
+        if given.__class__ is str and (value := units.known(given, kind, sign)) is not None:  # most texts of a batch
+            self.values[key or name] = Value(value, units.KINDS[kind].si_unit, "")
+            return value
         option = name if name.startswith("{") else "{" + name + "}"
         if isinstance(given, str):
             if "±" in given or "+/-" in given or ")" in given:

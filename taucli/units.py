@@ -438,6 +438,21 @@ def read(text: str, option: str, kind: Kind) -> Reading:
     return reading
 
 
+def known(text: str, kind_name: str, sign: str) -> float | None:
+    """``parse``'s value for a plain "number unit" whose unit was read before as given, within
+    its kind's bounds and of its sign: there is no note to make and nothing to refuse. None
+    for anything else, which ``parse`` then reads the whole way (and refuses, if it must)."""
+    plain = _PLAIN.fullmatch(text) if len(text) <= MAX_TEXT_LENGTH else None
+    if plain is None or len(plain[1]) > MAX_DIGITS:
+        return None
+    found = _READ_BEFORE.get((plain[2], kind_name))
+    if found is None or found[1] != AS_GIVEN:
+        return None
+    value = float(plain[1]) * found[0]
+    low, high = KINDS[kind_name].bounds
+    return value if low <= abs(value) <= high and (value > 0 or sign == "any") else None
+
+
 def _read(text: str, option: str, kind: Kind) -> tuple[Reading, float | None, float | None]:
     """``read``'s whole way, and the number and the unit's factor where it read number × unit."""
     cleaned = _screen(text, option, kind)

@@ -154,6 +154,33 @@ def test_convert_to_other_units():
         units.convert(0.1, "kg*m**2", "9**9**9", "--to")
 
 
+_UNIT_WORDS = ["kg", "g", "lb", "lbf", "N", "cm", "m", "ft", "s", "ms", "rpm", "Hz", "rad/s", "deg", "rev", "N*m", "kg*m^2", "J", "mph", "oz", "1/s", "km", "degC"]
+
+
+@pytest.mark.parametrize("kind", sorted(units.KINDS))
+def test_a_unit_read_before_reads_again_as_parse_reads_it(kind):
+    """units.known (a batch's shortcut for "number unit" seen before) gives parse's value, or
+    steps aside (None) wherever parse would note, refuse or read otherwise."""
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    @settings(max_examples=150, deadline=None)
+    @given(number=st.one_of(st.floats(-1e6, 1e6), st.sampled_from([0.0, -0.0, 1e-30, 1e30, 1e300])), unit=st.sampled_from(_UNIT_WORDS),
+           space=st.sampled_from(["", " "]), sign=st.sampled_from(["positive", "nonnegative", "any"]))
+    def check(number, unit, space, sign):
+        text = f"{number!r}{space}{unit}"
+        try:
+            expected = units.parse(text, "--x", kind, sign=sign)
+        except InputError:
+            expected = None
+        units.parse(f"1{space}{unit}", "--x", kind, sign="any") if expected is not None else None  # the unit is now read before
+        found = units.known(text, kind, sign)
+        if found is not None:
+            assert expected is not None and expected.note is None and found == expected.value
+
+    check()
+
+
 @pytest.mark.parametrize("kind", sorted(units.KINDS))
 @pytest.mark.parametrize("text", ["1degC", "2 degF", "1 degC*m"])
 def test_a_temperature_is_refused_for_every_kind_not_a_crash(kind, text):
