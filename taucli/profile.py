@@ -39,9 +39,28 @@ def _unit_factor(text: str | None, kind: str, column: str, notes: list[str]) -> 
     return parsed.value
 
 
+MAX_LINE = 4096  # characters in one line: a row is two numbers; a file with no newline (/dev/zero) is not CSV
+
+
+def _lines(source: Iterable[str]) -> Iterator[str]:
+    """The lines of ``source``, each read at most MAX_LINE characters at a time, so that a file
+    with no line end is refused rather than read into memory without end."""
+    readline = getattr(source, "readline", None)
+    if readline is None:
+        yield from source
+        return
+    number = 0
+    while line := readline(MAX_LINE + 1):
+        number += 1
+        if len(line) > MAX_LINE:
+            raise InputError(OPTION, f"line {number}: longer than {MAX_LINE} characters; expected CSV rows of two numbers, time and torque",
+                             example="t [ms], torque [N*m]", got=repr(line[:20] + "…"))
+        yield line
+
+
 def read_profile(lines: Iterable[str]) -> Profile:
     """A Profile over CSV lines: a header "t [ms], torque [N*m]", then "time, torque" rows."""
-    numbered = ((number, line.strip()) for number, line in enumerate(lines, start=1))
+    numbered = ((number, line.strip()) for number, line in enumerate(_lines(lines), start=1))
     rows = ((number, line) for number, line in numbered if line and not line.startswith("#"))
     try:
         header_number, header = next(rows)

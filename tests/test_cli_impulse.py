@@ -51,6 +51,8 @@ def test_profile_from_a_file_with_samples(taucli, tmp_path):
         (("--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "1s", "--method", "simpson"), ("--method", "--torque-profile")),
         (("--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "-1s"), ("--duration", "positive")),
         (("--inertia", "0.1", "--omega0", "0", "--torque", "2 N", "--duration", "1s"), ("--torque", "force")),
+        # a file with no line end: it was read into memory without end (the fuzz suite's hang)
+        (("--inertia", "0.1", "--torque-profile", "/dev/zero"), ("--torque-profile", "line 1", "longer than")),
     ],
 )
 def test_bad_input(taucli, args, fragments):

@@ -50,6 +50,8 @@ FOUND = [
     Vector("spin-down", ["--inertia", "1e300kg*m^2", "--omega0", "1e300rad/s", "--friction", "6.5699540919324514e-80N*m", "--viscous", "0.5N*m*s", "--method", "rk4", "--dt", "10ms", "--json"]),
     # exit 1: rk4 far past its stability limit reached inf − inf inside fsum (10,000-vector run)
     Vector("spin-down", ["--inertia", "0.9999999999999999kg*m^2", "--omega0", "10rad/s", "--friction", "1N*m", "--viscous", "1e9N*m*s", "--method", "rk4", "--dt", "10ms"]),
+    # hang (20 s, memory growing): a torque profile from a file with no line end was read as one endless line
+    Vector("impulse", ["--duration", "15.6µs", "--torque=23.7kN*m", "--inertia", "4.76g*cm^2", "--torque-profile", "/dev/zero", "--method=auto"]),
     # hours and memory without bound: a range of 10,000 points times a list of 10,000 values (found in review; the grammar
     # then gained long lists, and a 5,000-value list took 18 s: a sweep now has at most 200 points)
     Vector("atwood", ["--m1", "1..2kg", "--points", "10000", "--m2", ",".join(["1kg"] * 10000), "--get", "a"]),
