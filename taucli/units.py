@@ -226,6 +226,15 @@ def quantity(text: str, option: str, kind_name: str, *, original: str | None = N
     return q, kind
 
 
+def _a_unit(name: str) -> bool:
+    """Whether pint knows ``name`` as a unit. ``name in registry`` raises for some names (it reads
+    "nan" as a number with no unit, looks "__dict__" up as an attribute): those are not units."""
+    try:
+        return name in registry()
+    except Exception:  # noqa: BLE001 - whatever pint raises, the name is not one of its units
+        return False
+
+
 def _suggest(name: str, kind: Kind, *, typo: bool = True) -> str | None:
     """'did you mean ...?' for a unit name in the wrong case ("KG", "MG", "nm" for a torque), or
     (``typo``) for a misspelling of one of the kind's common units."""
@@ -234,7 +243,7 @@ def _suggest(name: str, kind: Kind, *, typo: bool = True) -> str | None:
     folded = name.lower().replace("*", "")
     close = [unit for unit in (*kind.common_units, *spellings.GLUED.values()) if unit.lower().replace("*", "") == folded and unit != name]
     for variant in (name.lower(), name.upper(), name.capitalize(), name[:1].lower() + name[1:].upper()):
-        if variant != name and variant in ureg:
+        if variant != name and _a_unit(variant):
             close.append(variant)
     close = list({spellings.respell(unit): unit for unit in reversed(close) if _fits(unit, wanted)}.values())[::-1]
     if close:
@@ -347,7 +356,7 @@ def _mixes_angles(cleaned: str) -> bool:
     import pint
 
     ureg = registry()
-    marked = [f"({t.text}*taucli_angle)" if t.kind == "name" and t.text in ureg and _radians(t.text) else t.text for t in spellings.tokens(cleaned)]
+    marked = [f"({t.text}*taucli_angle)" if t.kind == "name" and _a_unit(t.text) and _radians(t.text) else t.text for t in spellings.tokens(cleaned)]
     try:
         ureg.Quantity("".join(marked))
     except pint.DimensionalityError:

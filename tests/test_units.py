@@ -182,8 +182,9 @@ def test_a_unit_read_before_reads_again_as_parse_reads_it(kind):
 
 
 @pytest.mark.parametrize("kind", sorted(units.KINDS))
-@pytest.mark.parametrize("text", ["1degC", "2 degF", "1 degC*m"])
-def test_a_temperature_is_refused_for_every_kind_not_a_crash(kind, text):
-    """pint will not multiply an offset unit (it raised OffsetUnitCalculusError: exit 1)."""
+@pytest.mark.parametrize("text", ["1degC", "2 degF", "1 degC*m", "nan", "NaN", "nan/s", "__dict__", "__class__", "2 __init__"])
+def test_texts_pint_stumbles_on_are_refused_for_every_kind_not_a_crash(kind, text):
+    """pint will not multiply an offset unit (it raised OffsetUnitCalculusError: exit 1), and
+    `name in registry` raised for "nan" (a number) and "__dict__" (an attribute) for angular kinds."""
     with pytest.raises(InputError):
         units.parse(text, "--x", kind, sign="any")
