@@ -16,22 +16,30 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from taucli.errors import InputError
 from taucli.options.atwood import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
+from taucli.report import (
+    DeferredSteps,
+    Report,
+    Step,
+    Trajectory,
+    Value,
+    deferred,
+    fmt,
+    quantity_text,
+)
 from taucli.scenes.assumed import Assumed
-from taucli.scenes.motion import Evolver, Loads, Method, evolve, start_rate
 from taucli.scenes.friction import needs_kinetic, static_coefficient
+from taucli.scenes.motion import Evolver, Loads, Method, evolve, start_rate
 from taucli.table import Results
 
 HANGING = math.pi / 2
 EPSILON = 2.0**-52
 
 
-@dataclass(frozen=True)
-class Pulley:
+class Pulley(NamedTuple):  # NamedTuples, as report.Value: made on every run (a batch line), at a third of a frozen dataclass's cost
     """The pulley: its mass and shape, or its moment of inertia; its radius; axle friction."""
 
     mass: float = 0.0
@@ -59,8 +67,7 @@ class Pulley:
         return "M/2" if (self.shape or "disc") == "disc" else "M"
 
 
-@dataclass(frozen=True)
-class Slope:
+class Slope(NamedTuple):
     """Where m2 is: hanging (θ = 90°), on a table (0°) or a slope; its friction coefficients."""
 
     angle: float = HANGING

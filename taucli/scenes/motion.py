@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from taucli import numerics
 from taucli.errors import InputError
@@ -31,8 +31,7 @@ DEFAULT_DT = 1e-3
 RTOL_MARGIN = 20.0
 
 
-@dataclass(frozen=True)
-class Loads:
+class Loads(NamedTuple):  # NamedTuples, as report.Value: made on every run (a batch line), at a third of a frozen dataclass's cost
     """What drives and resists: drive along +v; kinetic friction, viscous, drag (all ≥ 0).
 
     ``static`` is the most static friction can hold (None: the same as the kinetic friction).
@@ -50,8 +49,7 @@ class Loads:
         return self.friction if self.static is None else self.static
 
 
-@dataclass(frozen=True)
-class Phase:
+class Phase(NamedTuple):
     """A stretch of motion in one direction (v ≥ 0 in its frame): the closed form, and how to integrate it."""
 
     closed: ClosedFormPhase
@@ -125,8 +123,7 @@ class Phase:
         return numerics.falling_root(self.rate)  # rate(ω) falls from A/I > 0
 
 
-@dataclass(frozen=True)
-class Method:
+class Method(NamedTuple):
     """How a phase is evolved: the closed form, or a stepper with its step or tolerance."""
 
     name: str  # "exact", "euler", "rk4", "rk45"
@@ -273,8 +270,7 @@ class Evolver:
         return high[0], high[1]
 
 
-@dataclass(frozen=True)
-class Motion:
+class Motion(NamedTuple):
     """The whole motion: a first phase, a stop perhaps, and perhaps a second phase the other way.
 
     Positions and speeds from its methods are signed in the user's frame.
