@@ -37,11 +37,10 @@ def solve(
     """
     arguments, inputs = read(command, given, stdin=stdin)
     report = library(command.library)(**arguments)
-    notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
-    return Report(
-        report.scene, report.model, report.method, report.results, report.steps, notes,
-        {**inputs.values, **report.inputs}, report.tables, report.trajectory,
-    )  # fmt: skip
+    # the library's report is made for this call alone: completed in place (a batch line makes one per line)
+    report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
+    report.inputs = {**inputs.values, **report.inputs}
+    return report
 
 
 def plain(given: Mapping[str, object], find=None, want=None, mc=None) -> bool:
