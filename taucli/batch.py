@@ -42,6 +42,7 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
     if lines is None:
         raise InputError("batch", "reads JSON lines on stdin, but stdin is closed", example="taucli atwood --batch < scenes.jsonl")
     interactive = getattr(lines, "isatty", lambda: False)()
+    whole = _a_file(lines)  # all of it there already: no one to wait for, so write in blocks without asking
     if interactive:
         print("taucli: reading scenes as JSON lines from the terminal, one per line; Ctrl-D ends", file=env.stderr)
     if fixed.get("torque_profile") == "-":
@@ -80,7 +81,7 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
             pending, size = [], 0
         pending.append(text)
         size += length
-        if interactive or not _waiting(lines):
+        if interactive or not (whole or _waiting(lines)):
             _write(out, pending)
             pending, size = [], 0
     _write(out, pending)
@@ -89,6 +90,17 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
         return int(ExitStatus.OK)
     print(f"taucli: error: {failed} of {solved} lines failed (the first: line {first_failure})", file=env.stderr)
     return int(ExitStatus.INTERNAL if failures[ExitStatus.INTERNAL] else ExitStatus.USAGE)
+
+
+def _a_file(lines) -> bool:
+    """Whether ``lines`` reads a regular file (not a terminal, pipe or socket)."""
+    import os
+    import stat
+
+    try:
+        return stat.S_ISREG(os.fstat(lines.fileno()).st_mode)
+    except (OSError, ValueError, AttributeError, TypeError):
+        return False
 
 
 def _waiting(lines) -> bool:
@@ -168,7 +180,7 @@ def _line(line: str, keys: dict[str, str], command: Command) -> tuple[dict, dict
                 value = _flag(value, name)
             elif isinstance(value, bool):
                 raise InputError(name, "expected a number or a text with a unit, not true or false", example='"4kg"')
-            elif isinstance(value, str) and option.sweepable and (".." in value or "," in value):
+            elif isinstance(value, str) and (".." in value or "," in value) and option.sweepable:
                 raise InputError(name, "cannot be a range or a list in a batch: give one scene per line", got=repr(value))
             options[name] = value
     return options, answer

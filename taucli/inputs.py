@@ -79,11 +79,12 @@ def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None 
     gravity = command.option("g")
     if gravity is not None and given.get("g") is not None:  # first: a weight given for a mass needs it
         inputs.gravity = arguments["g"] = READERS[gravity.kind](gravity, given["g"], inputs, stdin)
-    for option in command.options:
-        value = given.get(option.name)
-        if value is None or value == () or value == [] or value is False or option.name in arguments:
+    for name in command.in_order(given):  # what was given, not the whole table: a scene has dozens of options
+        value = given[name]
+        if value is None or value == () or value == [] or value is False or name in arguments:
             continue
-        arguments[option.name] = READERS[option.kind](option, value, inputs, stdin)
+        option = command.option(name)
+        arguments[name] = READERS[option.kind](option, value, inputs, stdin)
     return arguments, inputs
 
 

@@ -76,9 +76,13 @@ def _finite(x) -> bool:
 
 def finite_only(report: Report) -> Report:
     """Replace any non-finite result or table cell with None and a note, so JSON stays strict."""
-    tables_finite = all(_finite(cell) for table in report.tables.values() for row in table.rows for cell in row)
-    if tables_finite and all(_finite(v.value) for v in report.results.values()):
-        return report
+    for v in report.results.values():  # a loop, not all(...): this runs on every batch line
+        x = v.value
+        if x.__class__ is float and x - x != 0:  # (x − x is 0 for a finite float, NaN otherwise)
+            break
+    else:
+        if not report.tables or all(_finite(cell) for table in report.tables.values() for row in table.rows for cell in row):
+            return report
     results = dict(report.results)
     notes = list(report.notes)
     for name, value in report.results.items():

@@ -141,6 +141,7 @@ class Command:
             raise ValueError(f"{self.name}: options named twice in its table: {sorted({n for n in names if names.count(n) > 1})}")
         self._index.update({option.name: option for option in (*self.options, *self.output)})
         self._index["inputs:"] = frozenset(option.name for option in self.options)
+        self._index["position:"] = {option.name: number for number, option in enumerate(self.options)}
         self._index.update({"result:" + result.key: result for result in self.results})
         # what Results.put needs of each result, looked up once: (unit, label, whether it has a "…")
         self._index["results:"] = {result.key: (result.unit, result.label, FILLED in result.label) for result in self.results}
@@ -160,6 +161,10 @@ class Command:
         """The flag of an option (or the name unchanged when it is none of this command's)."""
         found = self.option(name)
         return found.flag if found is not None else name
+
+    def in_order(self, names) -> list[str]:
+        """The input ``names`` in the table's order (the order the inputs are echoed in)."""
+        return sorted(names, key=self._index["position:"].__getitem__)
 
     @property
     def input_names(self) -> frozenset[str]:
