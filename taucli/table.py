@@ -192,14 +192,15 @@ class Results(dict):
     is not in the table fails at once rather than reaching a user, and fills the label's "…".
     """
 
-    __slots__ = ("command",)
+    __slots__ = ("command", "_known")
 
     def __init__(self, command: Command):
         super().__init__()
         self.command = command
+        self._known = command._index["results:"]
 
     def put(self, key: str, value, part: str = "") -> None:
-        found = self.command._index["results:"].get(key)
+        found = self._known.get(key)
         if found is None:
             raise KeyError(f"{key!r} is not a result of {self.command.name} in its table")
         unit, label, open_part = found
