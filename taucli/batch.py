@@ -48,18 +48,19 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
     if fixed.get("torque_profile") == "-":
         raise InputError("torque_profile", "cannot be - with {batch}: stdin holds the scenes", example='"torque_profile": "pulse.csv"')
     keys = _keys(command)
-    out = env.stdout
+    texts = frozenset(option.name for option in command.options if option.sweepable)  # one quantity's text each
+    out, encoding = _sink(env.stdout)
     failures = {ExitStatus.USAGE: 0, ExitStatus.INTERNAL: 0}
     first_failure = None
     number = solved = 0
-    pending: list[str] = []
+    pending: list = []  # texts, or their bytes where the stream has a byte buffer
     size = 0
     for number, line in enumerate(lines, start=1):
         if not line.strip():  # a blank line (a file's last newline, a spacer a person typed): nothing to solve
             continue
         solved += 1
         try:
-            given, answer = _line(line, keys, command)
+            given, answer = _line(line, keys, command, texts)
             given = {**fixed, **given}
             report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag)
             shown = output._replace(**answer) if answer else output
@@ -75,7 +76,11 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
         except Exception as err:  # a bug: reported on its line, and the run goes on
             text = _error(number, ExitStatus.INTERNAL, err, failures)
             first_failure = first_failure or number
-        length = len(text) if text.isascii() else len(text.encode())
+        if encoding is not None:  # encoded once: to count its bytes, and to write them
+            text = text.encode(*encoding)
+            length = len(text)
+        else:
+            length = len(text) if text.isascii() else len(text.encode())
         if pending and size + length > BLOCK_BYTES:
             _write(out, pending)
             pending, size = [], 0
@@ -115,9 +120,19 @@ def _waiting(lines) -> bool:
     return bool(ready)
 
 
-def _write(out, pending: list[str]) -> None:
+def _sink(stream) -> tuple:
+    """Where the blocks go: the stream's byte buffer and (encoding, errors) where it has one, else
+    the stream itself and None."""
+    buffer, encoding = getattr(stream, "buffer", None), getattr(stream, "encoding", None)
+    if buffer is None or not isinstance(encoding, str):
+        return stream, None
+    stream.flush()  # anything written to it as text goes first
+    return buffer, (encoding, getattr(stream, "errors", None) or "strict")
+
+
+def _write(out, pending: list) -> None:
     if pending:
-        out.write("".join(pending))
+        out.write(pending[0][:0].join(pending))  # "" or b"", as the pending lines are
         out.flush()
 
 
@@ -150,8 +165,9 @@ def _keys(command: Command) -> dict[str, str]:
     return keys
 
 
-def _line(line: str, keys: dict[str, str], command: Command) -> tuple[dict, dict]:
-    """The options of one line, and what it says of how to answer (to, no_steps)."""
+def _line(line: str, keys: dict[str, str], command: Command, texts: frozenset[str] = frozenset()) -> tuple[dict, dict]:
+    """The options of one line, and what it says of how to answer (to, no_steps). ``texts``: the
+    options whose value is one quantity's text, passed on as it is unless it is a range or list."""
     text = line.strip()
     try:
         given = _STRICT.decode(text)
@@ -174,6 +190,8 @@ def _line(line: str, keys: dict[str, str], command: Command) -> tuple[dict, dict
             answer["steps"] = not _flag(value, name)
         elif name in FINDING:
             options[name] = value
+        elif value.__class__ is str and name in texts and ".." not in value and "," not in value:
+            options[name] = value  # the usual value: one quantity's text
         else:
             option = command.option(name)
             if option.kind == FLAG:
