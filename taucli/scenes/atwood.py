@@ -32,7 +32,7 @@ from taucli.report import (
 )
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.friction import needs_kinetic, static_coefficient
-from taucli.scenes.motion import Evolver, Loads, Method, evolve, start_rate
+from taucli.scenes.motion import Evolver, Loads, Method, Motion, evolve, start_direction, start_rate
 from taucli.table import Results
 
 HANGING = math.pi / 2
@@ -128,15 +128,17 @@ def solve(
     drive = (m1 - m2) * g if slope.hanging else m1 * g - m2 * g * sin_angle
     axle = pulley.axle_force()
     loads = Loads(drive=drive, friction=kinetic * normal + axle, static=mu_s * normal + axle)
-    motion = evolve(moving_mass, loads, v0, Evolver(Method("exact")))
-    a = motion.initial_rate
-    direction = motion.direction
+    direction = start_direction(loads, v0)
+    held = direction == 0
+    a = start_rate(moving_mass, loads, v0)
+    # the motion that follows (stops, a second phase), worked out where a question needs it
+    motion = evolve(moving_mass, loads, v0, Evolver(Method("exact"))) if distance is not None or time is not None else None
 
     massless = start_rate(m1 + m2, loads, v0) if m1 + m2 > 0 else None
 
     results = Results(TABLE)
     results.put("a", a)
-    if motion.held_from_start:
+    if held:
         tension_high, tension_low = _statics(m1, m2, g, sin_angle, mu_s * normal, pulley, notes)
         notes.append(
             "nothing moves: "
@@ -159,29 +161,33 @@ def solve(
     if pulley.radius is None:
         notes.append("alpha: give --pulley-radius for the pulley's angular acceleration (a and the tensions do not need it)")
     results.put("a_massless", massless)
-    _motion_results(results, motion, distance, time, notes)
+    if motion is not None:
+        _motion_results(results, motion, distance, time, notes)
 
-    unknown = slope.mu_k is None and normal > 0 and not motion.held_from_start
+    unknown = slope.mu_k is None and normal > 0 and not held
     if unknown:  # it slides, and the sliding friction is not known: only that it moves, and which way
         needs_kinetic(", ".join(name for name, value in results.items() if value.value is not None), notes)
         results = {name: value._replace(value=None) for name, value in results.items()}
         a = massless = None
-    steps = DeferredSteps(_steps, m1, m2, pulley, g, slope, sin_angle, normal, a, massless, dict(results), motion.held_from_start, direction)
+    steps = DeferredSteps(_steps, m1, m2, pulley, g, slope, sin_angle, normal, a, massless, dict(results), held, direction)
     model = ("massless pulley" if not pulley_mass else f"massive pulley ({_pulley_words(pulley)})") + ", string does not slip"
     if not slope.hanging:
         model += f"; m2 on {'a table' if slope.angle == 0 else f'a {fmt(math.degrees(slope.angle))}° slope'}"
         if slope.mu_k or mu_s:
             model += " with friction"
-    if motion.held_from_start and loads.holding:
+    if held and loads.holding:
         model += "; friction holds it at rest"
     elif loads.friction:
         model += "; friction overcome"
-    trajectory = None if unknown else deferred(_trajectory, motion, distance, time, results)
+    trajectory = None if unknown else deferred(_trajectory, motion or (moving_mass, loads, v0), distance, time, results)
     return Report("atwood", model, "closed form", results, steps, notes, trajectory=trajectory)
 
 
 def _trajectory(motion, distance: float | None, time: float | None, results: dict[str, Value]) -> Trajectory:
-    """Position and velocity of m1 (down positive): to --time, or to --distance, or past the stop."""
+    """Position and velocity of m1 (down positive): to --time, or to --distance, or past the stop.
+    ``motion`` is the Motion, or (mass, loads, v0) to evolve it from."""
+    if not isinstance(motion, Motion):
+        motion = evolve(*motion, Evolver(Method("exact")))
     stop, note, marks = motion.stop, "", []
     reached = results["t"].value if distance is not None else None
     if time is not None and time > 0:

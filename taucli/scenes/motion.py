@@ -367,17 +367,22 @@ class Motion(NamedTuple):
         return None
 
 
+def start_direction(loads: Loads, v0: float) -> int:
+    """The sense of the first motion: v0's, or where the drive exceeds what static friction can
+    hold, the drive's; 0 when static friction holds the body from the start."""
+    if v0 != 0:
+        return 1 if v0 > 0 else -1
+    return (1 if loads.drive > 0 else -1) if abs(loads.drive) > loads.holding else 0
+
+
 def start_rate(mass: float, loads: Loads, v0: float) -> float:
     """dv/dt at the start: ``evolve(...).initial_rate``, without setting up the phases.
 
     Moving (v0 ≠ 0) or set going (|drive| above what static friction holds), in direction s:
     (s·drive − friction − b|v0| − k|v0|ⁿ)/m, times s; held: 0.
     """
-    if v0 != 0:
-        direction = 1 if v0 > 0 else -1
-    elif abs(loads.drive) > loads.holding:
-        direction = 1 if loads.drive > 0 else -1
-    else:
+    direction = start_direction(loads, v0)
+    if direction == 0:
         return 0.0
     speed = abs(v0)
     drag = loads.drag * speed**loads.drag_exponent if loads.drag else 0.0
@@ -387,10 +392,7 @@ def start_rate(mass: float, loads: Loads, v0: float) -> float:
 def evolve(mass: float, loads: Loads, v0: float, evolver: Evolver) -> Motion:
     """Set up the phases of the motion from v0 under these loads."""
     holding = loads.holding
-    if v0 != 0:
-        direction = 1 if v0 > 0 else -1
-    else:
-        direction = (1 if loads.drive > 0 else -1) if abs(loads.drive) > holding else 0
+    direction = start_direction(loads, v0)
 
     def phase(sign: int, start: float) -> Phase:
         constant = sign * loads.drive - loads.friction
