@@ -90,11 +90,11 @@ _taucli() {
             --method) COMPREPLY=($(compgen -W "auto exact euler rk4 rk45" -- "$cur")); return 0 ;;
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
             --find) :; return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;

@@ -20,7 +20,7 @@ import math
 
 from taucli import units
 from taucli.errors import InputError
-from taucli.report import Report, Step, Value, fmt, quantity_text
+from taucli.report import Report, Step, Value, fmt, quantity_text, term
 from taucli.uncertain import Measured, Scene, combine, jacobian, linearity, monte_carlo, numeric, split
 
 PER_DECADE = 4
@@ -143,7 +143,7 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
     if closed is not None:
         x, equation, numbers = closed
         roots, jumps = [x], 0
-        solution = Step(f"Solve for {name}: the inverse in closed form", equation, numbers, quantity_text(x, si_unit, 10),
+        solution = Step(f"Solve for {name}: the inverse in closed form", equation, numbers, quantity_text(x, si_unit),
                         f"{key} is monotonic in {name} in this model, so this is the only root; the forward solve at it gives {key} = {fmt(target, 10)}")
         how = f"{name} by its closed-form inverse"
     else:
@@ -205,8 +205,9 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
         steps.append(Step(
             f"The uncertainty of {name}",
             f"δ{name} = √(δ{key}² + Σ (∂{key}/∂p · δp)²) / |∂{key}/∂{name}|",
-            f"√({' + '.join(f'{fmt(term, 4)}²' for term in [target_spread, *(slopes[p].get(key, 0.0) * spreads[p] for p in spreads)])}) / {fmt(abs(fx), 6)}",
-            quantity_text(sigma.get(name, 0.0), si_unit, 3),
+            f"√({' + '.join(f'({term(part, unit)})²' for part in [target_spread, *(slopes[p].get(key, 0.0) * spreads[p] for p in spreads)])})"
+            f" / {term(abs(fx), _per(unit, si_unit))}",
+            quantity_text(sigma.get(name, 0.0), si_unit),
             f"the implicit function theorem: {key} is held at its target while the target and each uncertain input p move; "
             f"∂{key}/∂{name} = {fmt(fx, 6)} by differences; independent changes add in quadrature",
         ))
@@ -274,10 +275,10 @@ def _atwood_inverse(scene: Scene, name: str, target: float):
             return None
         r = si["pulley_radius"]
         return (extra * r * r, "I = R² ((m₁ − m₂) g / a − m₁ − m₂)",
-                f"{fmt(r)}² × (({fmt(m1)} − {fmt(m2)}) × {fmt(g)} / {fmt(target)} − {fmt(m1)} − {fmt(m2)})")
+                f"({term(r, 'm')})² × (({term(m1, 'kg')} − {term(m2, 'kg')}) × {term(g, 'm/s**2')} / {term(target, 'm/s**2')} − {term(m1, 'kg')} − {term(m2, 'kg')})")
     if "pulley_inertia" in scene.given:
         return None
-    return 2 * extra, "M = 2 ((m₁ − m₂) g / a − m₁ − m₂)", f"2 × (({fmt(m1)} − {fmt(m2)}) × {fmt(g)} / {fmt(target)} − {fmt(m1)} − {fmt(m2)})"
+    return 2 * extra, "M = 2 ((m₁ − m₂) g / a − m₁ − m₂)", f"2 × (({term(m1, 'kg')} − {term(m2, 'kg')}) × {term(g, 'm/s**2')} / {term(target, 'm/s**2')} − {term(m1, 'kg')} − {term(m2, 'kg')})"
 
 
 def _stop_inverse(scene: Scene, name: str, target: float):
@@ -288,7 +289,7 @@ def _stop_inverse(scene: Scene, name: str, target: float):
     if probe is None or "I" not in probe:
         return None
     inertia, omega0 = probe["I"], abs(scene.si["omega0"])
-    return inertia * omega0 / target, "τ = I ω₀ / t_stop", f"{fmt(inertia)} × {fmt(omega0)} / {fmt(target)}"
+    return inertia * omega0 / target, "τ = I ω₀ / t_stop", f"{term(inertia, 'kg*m**2')} × {term(omega0, 'rad/s')} / {term(target, 's')}"
 
 
 CLOSED_FORMS = {
@@ -330,6 +331,11 @@ def _redrawn(scene: Scene, name: str, key: str, target: float, x0: float, draw: 
             return values and {**values, name: x}
         step *= 2
     return None
+
+
+def _per(unit: str, by: str) -> str:
+    """The unit of a derivative ∂y/∂x: m/s**2 per kg*m**2 -> m/s**2/(kg*m**2)."""
+    return f"{unit}/({by})" if any(sign in by for sign in "*/") else f"{unit}/{by}"
 
 
 def _meets(v: float, target: float) -> bool:

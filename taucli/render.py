@@ -16,7 +16,7 @@ from typing import NamedTuple, TextIO
 
 from taucli import __version__
 from taucli.errors import InputError, did_you_mean
-from taucli.report import Report, Table, Value, fmt, pretty_unit
+from taucli.report import DIGITS, Report, Table, Value, fmt, pretty_unit
 
 
 # Compact, and strict: NaN or Infinity raise rather than print (finite_only keeps them out).
@@ -312,7 +312,7 @@ def bare(value) -> str:
     return str(value)
 
 
-def shown(value, digits: int = 6) -> str:
+def shown(value, digits: int = DIGITS) -> str:
     if value is None:
         return "—"
     if isinstance(value, bool):

@@ -128,7 +128,10 @@ class deferred:
         return self._built
 
 
-def fmt(x: float, digits: int = 4) -> str:
+DIGITS = 6  # significant figures of every number a person is shown: the results table and the steps alike
+
+
+def fmt(x: float, digits: int = DIGITS) -> str:
     """A number as a person writes it in a worked solution: ``digits`` significant figures."""
     if x == 0:
         return "0"
@@ -159,7 +162,14 @@ def pretty_unit(unit: str | None) -> str:
     return unit.replace("*", "·")
 
 
-def quantity_text(x: float, unit: str, digits: int = 4) -> str:
+def quantity_text(x: float, unit: str, digits: int = DIGITS) -> str:
     """A number with its unit, for the numbers line of a step: 0.2 m, 5 kg."""
     shown = pretty_unit(unit)
     return f"{fmt(x, digits)} {shown}" if shown else fmt(x, digits)
+
+
+def term(x: float, unit: str | None = None) -> str:
+    """A number (with its unit) as a term of a numbers line: 30 rad/s; a negative one in
+    parentheses with a true minus, (−1.5 rad/s²), so that "+ (−1.5 rad/s²) × 20 s" reads right."""
+    text = quantity_text(x, unit) if unit else fmt(x)
+    return f"(−{text[1:]})" if text.startswith("-") else text

@@ -29,10 +29,19 @@ from taucli.report import (
     deferred,
     fmt,
     quantity_text,
+    term,
 )
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.friction import needs_kinetic, static_coefficient
-from taucli.scenes.motion import Evolver, Loads, Method, Motion, evolve, start_direction, start_rate
+from taucli.scenes.motion import (
+    Evolver,
+    Loads,
+    Method,
+    Motion,
+    evolve,
+    start_direction,
+    start_rate,
+)
 from taucli.table import Results
 
 HANGING = math.pi / 2
@@ -301,9 +310,9 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
     numbers = (
         f"({quantity_text(m1 * g, 'N')} − {quantity_text(m2 * g * sin_angle, 'N')}"
         + (f" − {quantity_text((slope.mu_k or 0.0) * normal + pulley.axle_force(), 'N')}" if resist and slope.mu_k is not None else " − friction" if resist else "")
-        + f") / ({fmt(m1)} + {fmt(m2)}"
-        + (f" + {fmt(pulley.effective_mass())}" if pulley_term else "")
-        + " kg)"
+        + f") / ({term(m1, 'kg')} + {term(m2, 'kg')}"
+        + (f" + {term(pulley.effective_mass(), 'kg')}" if pulley_term else "")
+        + ")"
     )
     steps.append(
         Step(
@@ -322,16 +331,16 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
             Step(
                 "Compare: the same machine with a massless pulley",
                 f"a₀ = ({drive_text}{resist}) / (m₁ + m₂)",
-                f"{quantity_text(m1 * g - m2 * g * sin_angle, 'N')}{' − friction' if resist else ''} / {fmt(m1 + m2)} kg",
+                f"{term(m1 * g - m2 * g * sin_angle, 'N')}{' − friction' if resist else ''} / {term(m1 + m2, 'kg')}",
                 quantity_text(massless, "m/s**2"),
                 f"the massive pulley costs {fmt(abs(massless - a))} m/s² of acceleration: part of gravity's work goes into spinning it",
             )
         )
     tension_high, tension_low = results["T1"].value, results["T2"].value
     if not held and a is not None:
-        steps.append(Step("Tension on m₁'s side", "T₁ = m₁(g − a)", f"{fmt(m1)} × ({fmt(g)} − {fmt(a)})", quantity_text(tension_high, "N"), "from m₁'s equation"))
+        steps.append(Step("Tension on m₁'s side", "T₁ = m₁(g − a)", f"{term(m1, 'kg')} × ({term(g, 'm/s**2')} − {term(a, 'm/s**2')})", quantity_text(tension_high, "N"), "from m₁'s equation"))
         if slope.hanging:
-            steps.append(Step("Tension on m₂'s side", "T₂ = m₂(g + a)", f"{fmt(m2)} × ({fmt(g)} + {fmt(a)})", quantity_text(tension_low, "N"), "from m₂'s equation"))
+            steps.append(Step("Tension on m₂'s side", "T₂ = m₂(g + a)", f"{term(m2, 'kg')} × ({term(g, 'm/s**2')} + {term(a, 'm/s**2')})", quantity_text(tension_low, "N"), "from m₂'s equation"))
         else:
             steps.append(
                 Step("Tension on m₂'s side", "T₂ = m₂(a + g sin θ) + μₖN", "", quantity_text(tension_low, "N"), "from m₂'s equation")
@@ -349,7 +358,7 @@ def _steps(m1, m2, pulley, g, slope, sin_angle, normal, a, massless, results, he
                 )
             )
     if pulley.radius is not None and a is not None:
-        steps.append(Step("Angular acceleration of the pulley", "α = a/R", f"{fmt(a)} / {fmt(pulley.radius)}", quantity_text(a / pulley.radius, "rad/s**2"), "the string does not slip on the rim"))
+        steps.append(Step("Angular acceleration of the pulley", "α = a/R", f"{term(a, 'm/s**2')} / {term(pulley.radius, 'm')}", quantity_text(a / pulley.radius, "rad/s**2"), "the string does not slip on the rim"))
     return steps
 
 
@@ -466,7 +475,7 @@ def _stepped_steps(m1, m2, inertia, g, r1, r2, axle, a, results, held) -> list[S
         Step(
             "Put the tensions from the masses into the pulley's equation",
             f"α = (m₁g r₁ − m₂g r₂{axle_term}) / (I + m₁r₁² + m₂r₂²)",
-            f"({fmt(m1 * g * r1)} − {fmt(m2 * g * r2)}{' − ' + fmt(axle) if axle else ''} N·m) / ({fmt(inertia)} + {fmt(m1 * r1 * r1)} + {fmt(m2 * r2 * r2)} kg·m²)",
+            f"({term(m1 * g * r1, 'N*m')} − {term(m2 * g * r2, 'N*m')}{' − ' + term(axle, 'N*m') if axle else ''}) / ({term(inertia, 'kg*m**2')} + {term(m1 * r1 * r1, 'kg*m**2')} + {term(m2 * r2 * r2, 'kg*m**2')})",
             quantity_text(results["alpha"].value, "rad/s**2") + ("  (held: a = 0)" if held else ""),
             "each mass adds m r² at its own radius to the pulley's I; the larger torque wins",
         ),
@@ -546,11 +555,14 @@ def solve_rim(
         Step("For m₁ and m₂", "m₁g − T₁ = m₁a,  T₂ − m₂g = m₂a", "", "", "each mass's weight and its string's tension"),
         _capstan_step(high, low, rim_mu, wrap, need, False),
         Step("The string slides: the tensions take the capstan ratio", "T₁ = e^(μβ) T₂" if sense > 0 else "T₂ = e^(μβ) T₁",
-             f"e^({fmt(rim_mu)} × {fmt(wrap)}) = {fmt(ratio)}", "", "sliding friction along the wrap makes the tension grow by e^(μβ) towards the side the string moves to"),
-        Step("Solve for the masses", "a = g (m₁ − E m₂)/(m₁ + E m₂)" if sense > 0 else "a = g (E m₁ − m₂)/(E m₁ + m₂)", f"E = {fmt(ratio)}",
+             f"e^({fmt(rim_mu)} × {term(wrap, 'rad')}) = {fmt(ratio)}", f"E = {fmt(ratio)}", "sliding friction along the wrap makes the tension grow by e^(μβ) towards the side the string moves to"),
+        Step("Solve for the masses", "a = g (m₁ − E m₂)/(m₁ + E m₂)" if sense > 0 else "a = g (E m₁ − m₂)/(E m₁ + m₂)",
+             f"{term(g, 'm/s**2')} × ({term(m1, 'kg')} − {fmt(ratio)} × {term(m2, 'kg')}) / ({term(m1, 'kg')} + {fmt(ratio)} × {term(m2, 'kg')})"
+             if sense > 0 else
+             f"{term(g, 'm/s**2')} × ({fmt(ratio)} × {term(m1, 'kg')} − {term(m2, 'kg')}) / ({fmt(ratio)} × {term(m1, 'kg')} + {term(m2, 'kg')})",
              quantity_text(a, "m/s**2"), "the tensions from the masses' equations, put into the capstan ratio"),
         Step("The pulley, turned by the friction alone", "I α = (T₁ − T₂) R,  a_rim = α R = (T₁ − T₂)/(I/R²)",
-             f"({fmt(tension1)} − {fmt(tension2)} N) / {fmt(pulley.effective_mass())} kg", quantity_text(rim_a, "m/s**2"),
+             f"({term(tension1, 'N')} − {term(tension2, 'N')}) / {term(pulley.effective_mass(), 'kg')}", quantity_text(rim_a, "m/s**2"),
              "the rim lags the string: the string slides over it"),
     ])  # written when read
     model = ("massive pulley (" + _pulley_words(pulley) + "), the string slides over the rim (capstan friction)")
@@ -566,7 +578,7 @@ def _capstan_step(high, low, mu, wrap, need, grips) -> Step:
     return Step(
         "Does the string grip? The capstan limit",
         "T_high / T_low ≤ e^(μβ)",
-        f"{fmt(high, 6)} / {fmt(low, 6)} against e^({fmt(mu)} × {fmt(wrap)})",
+        f"{term(high, 'N')} / {term(low, 'N')} against e^({fmt(mu)} × {term(wrap, 'rad')})",
         f"{fmt(high / low, 6)} {'≤' if grips else '>'} {_exp_text(mu * wrap)}",
         "friction over a wrap of β can change the tension by at most a factor e^(μβ); "
         + (f"so it grips (least μ = {fmt(need)})" if grips else f"so it slides (gripping needs μ ≥ {fmt(need)})"),

@@ -30,7 +30,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 from taucli.errors import InputError
 from taucli.options.gyro import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text
+from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
 from taucli.table import Results
 
@@ -439,7 +439,7 @@ def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate
         Step(
             "The exact steady precession",
             "mgr = Ω(Iω_s − I⊥Ω cos θ)",
-            f"Ω({fmt(angular_momentum)} − {fmt(a)} Ω)",
+            f"Ω({term(angular_momentum, 'kg*m**2/s')} − {term(a, 'kg*m**2')} × Ω)",
             quantity_text(weight_torque, "N*m"),
             "the precession turns the body too, adding I⊥Ω sin θ across the axis to L; the horizontal part of L is then "
             "(Iω_s − I⊥Ω cos θ) sin θ, and turning it at Ω takes τ = mgr sin θ: a quadratic, I⊥Ω²cos θ − Iω_sΩ + mgr = 0"
@@ -451,7 +451,7 @@ def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate
             Step(
                 "No real root: the spin is too slow",
                 "ω_min = √(4·I⊥·mgr·cos θ)/I",
-                f"√(4 × {fmt(perp)} × {fmt(weight_torque)} × {fmt(cos_t)}) / {fmt(moment)}",
+                f"√(4 × {term(perp, 'kg*m**2')} × {term(weight_torque, 'N*m')} × {term(cos_t)}) / {term(moment, 'kg*m**2')}",
                 quantity_text(minimum, "rad/s"),
                 f"the discriminant (Iω_s)² − 4I⊥ cos θ·mgr is negative below ω_min; at ω_s = {fmt(spin)} rad/s no steady precession exists",
             )
@@ -467,7 +467,7 @@ def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate
         Step(
             "The slow root, written without cancellation",
             "Ω_slow = 2mgr / (Iω_s + √D),  D = (Iω_s)² − 4I⊥ cos θ·mgr",
-            f"2 × {fmt(weight_torque)} / ({fmt(angular_momentum)} + {fmt(root_d)})",
+            f"2 × {term(weight_torque, 'N*m')} / ({term(angular_momentum, 'kg*m**2/s')} + {term(root_d, 'kg*m**2/s')})",
             quantity_text(slow, "rad/s"),
             "the usual (Iω_s − √D)/(2I⊥ cos θ) subtracts two nearly equal numbers when the spin is fast; this form adds them",
         )
@@ -477,7 +477,7 @@ def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate
             Step(
                 "The fast root",
                 "Ω_fast = (Iω_s + √D) / (2I⊥ cos θ)",
-                f"({fmt(angular_momentum)} + {fmt(root_d)}) / (2 × {fmt(a)})",
+                f"({term(angular_momentum, 'kg*m**2/s')} + {term(root_d, 'kg*m**2/s')}) / (2 × {term(a, 'kg*m**2')})",
                 quantity_text(fast, "rad/s"),
                 "the other steady motion: a precession so fast that I⊥Ω²cos θ carries the torque almost alone, "
                 "Ω ≈ Iω_s/(I⊥ cos θ); a top seldom settles into it"
@@ -490,8 +490,8 @@ def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate
         Step(
             "Why the approximation holds",
             "ε = I⊥Ω_slow cos θ / (Iω_s)",
-            f"{fmt(a * slow)} / {fmt(angular_momentum)}",
-            fmt(neglected, 3),
+            f"{term(a * slow, 'kg*m**2/s')} / {term(angular_momentum, 'kg*m**2/s')}",
+            fmt(neglected),
             "in mgr = Ω(Iω_s − I⊥Ω cos θ), where Iω_s ≫ I⊥Ω cos θ (ε ≪ 1) the second term drops out and Ω ≈ mgr/(Iω_s); "
             "mgr/(Iω_s) = Ω_slow(1 − ε) exactly",
         )

@@ -15,7 +15,16 @@ from dataclasses import dataclass
 from taucli.errors import InputError
 from taucli.numerics import StreamingQuadrature
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, Table, Trajectory, deferred, fmt, quantity_text
+from taucli.report import (
+    Report,
+    Step,
+    Table,
+    Trajectory,
+    deferred,
+    fmt,
+    quantity_text,
+    term,
+)
 from taucli.scenes.assumed import Assumed
 from taucli.table import Results
 
@@ -108,16 +117,16 @@ def solve_balance(
         )
     )
     solved = {
-        "omega1": ("ω₁ = ω₀ + τΔt/I", f"{fmt(w0)} + {fmt(tau)} × {fmt(dt)} / {fmt(i)}", quantity_text(w1, "rad/s")),
-        "omega0": ("ω₀ = ω₁ − τΔt/I", f"{fmt(w1)} − {fmt(tau)} × {fmt(dt)} / {fmt(i)}", quantity_text(w0, "rad/s")),
-        "torque": ("τ = I(ω₁ − ω₀)/Δt", f"{fmt(i)} × ({fmt(w1)} − {fmt(w0)}) / {fmt(dt)}", quantity_text(tau, "N*m")),
-        "duration": ("Δt = I(ω₁ − ω₀)/τ", f"{fmt(i)} × ({fmt(w1)} − {fmt(w0)}) / {fmt(tau)}", quantity_text(dt, "s")),
-        "inertia": ("I = τΔt/(ω₁ − ω₀)", f"{fmt(tau)} × {fmt(dt)} / ({fmt(w1)} − {fmt(w0)})", quantity_text(i, "kg*m**2")),
+        "omega1": ("ω₁ = ω₀ + τΔt/I", f"{term(w0, 'rad/s')} + {term(tau, 'N*m')} × {term(dt, 's')} / {term(i, 'kg*m**2')}", quantity_text(w1, "rad/s")),
+        "omega0": ("ω₀ = ω₁ − τΔt/I", f"{term(w1, 'rad/s')} − {term(tau, 'N*m')} × {term(dt, 's')} / {term(i, 'kg*m**2')}", quantity_text(w0, "rad/s")),
+        "torque": ("τ = I(ω₁ − ω₀)/Δt", f"{term(i, 'kg*m**2')} × ({term(w1, 'rad/s')} − {term(w0, 'rad/s')}) / {term(dt, 's')}", quantity_text(tau, "N*m")),
+        "duration": ("Δt = I(ω₁ − ω₀)/τ", f"{term(i, 'kg*m**2')} × ({term(w1, 'rad/s')} − {term(w0, 'rad/s')}) / {term(tau, 'N*m')}", quantity_text(dt, "s")),
+        "inertia": ("I = τΔt/(ω₁ − ω₀)", f"{term(tau, 'N*m')} × {term(dt, 's')} / ({term(w1, 'rad/s')} − {term(w0, 'rad/s')})", quantity_text(i, "kg*m**2")),
     }
     if unknown is not None:
         equation, numbers, result = solved[unknown]
         steps.append(Step(f"Solve for {unknown}", equation, numbers, result, "the one quantity not given"))
-    steps.append(Step("The impulse", "J = τΔt", f"{fmt(tau)} × {fmt(dt)}", quantity_text(impulse, "N*m*s"), "the same as the change of angular momentum ΔL = IΔω"))
+    steps.append(Step("The impulse", "J = τΔt", f"{term(tau, 'N*m')} × {term(dt, 's')}", quantity_text(impulse, "N*m*s"), "the same as the change of angular momentum ΔL = IΔω"))
     model = "constant torque: τΔt = IΔω" + (f", solved for {unknown}" if unknown else ", all five given and consistent")
     trajectory = deferred(Trajectory, CURVES, dt, lambda t: (tau, w0 + tau * t / i))
     return Report("impulse", model, "closed form", results, steps, notes, trajectory=trajectory)
@@ -155,10 +164,10 @@ def _partial_balance(given: dict[str, float | None], missing: list[str], notes: 
     if impulse is not None:
         by_torque = tau is not None and dt is not None
         steps.append(Step("The impulse", "J = τΔt" if by_torque else "J = I(ω₁ − ω₀)",
-                          f"{fmt(tau)} × {fmt(dt)}" if by_torque else f"{fmt(i)} × ({fmt(w1)} − {fmt(w0)})", quantity_text(impulse, "N*m*s"),
+                          f"{term(tau, 'N*m')} × {term(dt, 's')}" if by_torque else f"{term(i, 'kg*m**2')} × ({term(w1, 'rad/s')} − {term(w0, 'rad/s')})", quantity_text(impulse, "N*m*s"),
                           "all the motion remembers of the torque"))
     if change is not None:
-        steps.append(Step("The change of angular velocity", "Δω = ω₁ − ω₀", f"{fmt(w1)} − {fmt(w0)}", quantity_text(change, "rad/s"), "from the two given"))
+        steps.append(Step("The change of angular velocity", "Δω = ω₁ − ω₀", f"{term(w1, 'rad/s')} − {term(w0, 'rad/s')}", quantity_text(change, "rad/s"), "from the two given"))
     known = " and ".join(name for name, value in (("J", impulse), ("Δω", change)) if value is not None)
     return Report("impulse", f"constant torque: τΔt = IΔω, which fixes only {known} here", "closed form", results, steps, notes)
 
@@ -182,10 +191,10 @@ def solve_changing_inertia(inertia0: float, inertia1: float, omega0: float, *, i
         *inertia_steps,
         Step("No external torque: angular momentum is conserved", "τ = dL/dt = 0  ⇒  I₀ω₀ = I₁ω₁", "", "",
              "τ = Iα does not hold while I changes; τ = d(Iω)/dt does, and with τ = 0, Iω stays constant"),
-        Step("Angular velocity after", "ω₁ = I₀ω₀ / I₁", f"{fmt(inertia0)} × {fmt(omega0)} / {fmt(inertia1)}", quantity_text(omega1, "rad/s"),
+        Step("Angular velocity after", "ω₁ = I₀ω₀ / I₁", f"{term(inertia0, 'kg*m**2')} × {term(omega0, 'rad/s')} / {term(inertia1, 'kg*m**2')}", quantity_text(omega1, "rad/s"),
              "less inertia, faster spin: the skater pulling in her arms"),
         Step("Kinetic energy is not conserved", "KE = L²/(2I)  ⇒  KE₁/KE₀ = I₀/I₁",
-             f"{fmt(energy0)} J × {fmt(inertia0)} / {fmt(inertia1)}", quantity_text(energy1, "J"),
+             f"{term(energy0, 'J')} × {term(inertia0, 'kg*m**2')} / {term(inertia1, 'kg*m**2')}", quantity_text(energy1, "J"),
              "pulling mass inward against the outward pull of the spin takes work, done by the body's own muscles; "
              "spreading out gives it back"),
     ]
@@ -254,7 +263,7 @@ def solve_profile(
         *inertia_steps,
         Step("Angular impulse of a varying torque", "J = ∫τ dt = ΔL = I(ω₁ − ω₀)", f"{count} samples over {fmt(duration)} s, {chosen} rule",
              quantity_text(impulse, "N*m*s"), "the torque changes in time, so its impulse is an integral, taken here from the samples"),
-        Step("Angular velocity after", "ω₁ = ω₀ + J/I", f"{fmt(omega0)} + {fmt(impulse)} / {fmt(inertia)}", quantity_text(omega1, "rad/s"),
+        Step("Angular velocity after", "ω₁ = ω₀ + J/I", f"{term(omega0, 'rad/s')} + {term(impulse, 'N*m*s')} / {term(inertia, 'kg*m**2')}", quantity_text(omega1, "rad/s"),
              "the impulse is all the motion remembers of the torque"),
     ]
     model = f"sampled torque profile ({count} samples), J by the {chosen} rule"
@@ -359,7 +368,7 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         name = f"couple {number}" if len(couples) > 1 else "couple"
         joined.append((name, i_c, w_c))
         couple_rows.append((name, i_c, w_c))
-        steps.append(Step(f"Angular momentum of the {name}", "L = I_c ω_c", f"{fmt(i_c)} × {fmt(w_c)}", quantity_text(i_c * w_c, "kg*m**2/s"), "a second body on the same axis"))
+        steps.append(Step(f"Angular momentum of the {name}", "L = I_c ω_c", f"{term(i_c, 'kg*m**2')} × {term(w_c, 'rad/s')}", quantity_text(i_c * w_c, "kg*m**2/s"), "a second body on the same axis"))
     stick, ride, leave, bounce = [], [], [], []
     extra_inertia = []  # m(ρ² − r²) of each particle that stays, r where it is before
     radial_energy = []  # ½m(v cos φ)²: a particle's motion toward the axis, stopped by the axle
@@ -370,11 +379,11 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
             joined.append((name, p.mass * p.radius**2, omega0))
             rho = p.radius if p.radius_after is None else p.radius_after
             extra_inertia.append(p.mass * (rho - p.radius) * (rho + p.radius))
-            steps.append(Step(f"Angular momentum of the {name} (riding on the body)", "L = m r² ω₀", f"{fmt(p.mass)} × {fmt(p.radius)}² × {fmt(omega0)}",
+            steps.append(Step(f"Angular momentum of the {name} (riding on the body)", "L = m r² ω₀", f"{term(p.mass, 'kg')} × ({term(p.radius, 'm')})² × {term(omega0, 'rad/s')}",
                               quantity_text(p.mass * p.radius**2 * omega0, "kg*m**2/s"), "it moves with the body, a point mass at r"))
             continue
         momentum = p.mass * p.speed * p.arm
-        steps.append(Step(f"Angular momentum of the {name}", "L = m v r⊥,  r⊥ = r sin φ", f"{fmt(p.mass)} × {fmt(p.speed)} × {fmt(p.radius)}"
+        steps.append(Step(f"Angular momentum of the {name}", "L = m v r⊥,  r⊥ = r sin φ", f"{term(p.mass, 'kg')} × {term(p.speed, 'm/s')} × {term(p.radius, 'm')}"
                           + (f" × sin {fmt(math.degrees(p.angle))}°" if p.angle is not None else ""), quantity_text(momentum, "kg*m**2/s"),
                           "a particle moving along a line has angular momentum about the axis m v times the line's distance from the axis"))
         if p.speed_after is not None:
@@ -469,13 +478,13 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         "opposite pairs along one line, so their torques about the axis cancel; the axle's force passes through the axis, "
         "so it has no torque about it",
     ))
-    steps.append(Step("Angular momentum before", "L₀ = Σ of the parts", " + ".join(fmt(row[1]) for row in rows), quantity_text(momentum0, "kg*m**2/s"),
+    steps.append(Step("Angular momentum before", "L₀ = Σ of the parts", " + ".join(term(row[1], "kg*m**2/s") for row in rows), quantity_text(momentum0, "kg*m**2/s"),
                       "angular momenta about one axis add"))
     stays = [(name, p) for name, p in (*stick, *ride)]
     if stays or couple_rows:
         steps.append(Step("Moment of inertia after", "I₁ = I + Σ I_c + Σ m ρ²",
-                          " + ".join([fmt(inertia), *(fmt(i_c) for _, i_c, _ in couple_rows),
-                                      *(f"{fmt(p.mass)} × {fmt(p.radius if p.radius_after is None else p.radius_after)}²" for _, p in stays)]),
+                          " + ".join([term(inertia, "kg*m**2"), *(term(i_c, "kg*m**2") for _, i_c, _ in couple_rows),
+                                      *(f"{term(p.mass, 'kg')} × ({term(p.radius if p.radius_after is None else p.radius_after, 'm')})²" for _, p in stays)]),
                           quantity_text(i_after, "kg*m**2"), "what stays on the axis turns together at ω₁; a particle that stays is a point mass at ρ"))
     if bounce:
         name, p = bounce[0]
@@ -484,10 +493,10 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     top = "L₀" + (" − Σ m v′ r⊥" if leave else "") + (" + Σ m r⊥ e (v − ω₀r⊥)" if bounce else "")
     bottom = "I₁" + (" + Σ m r⊥²" if bounce else "")
     equation = f"ω₁ = {f'({top})' if top != 'L₀' else top} / {f'({bottom})' if bottom != 'I₁' else bottom}"
-    steps.append(Step("Angular velocity after", equation, f"{fmt(numerator)} / {fmt(i_effective)}", quantity_text(omega1, "rad/s"),
+    steps.append(Step("Angular velocity after", equation, f"{term(numerator, 'kg*m**2/s')} / {term(i_effective, 'kg*m**2')}", quantity_text(omega1, "rad/s"),
                       "L₀ = L₁ solved for the one unknown"))
     for name, p in bounce:
-        steps.append(Step(f"Speed of the {name} after", "v′ = ω₁r⊥ − e (v − ω₀r⊥)", f"{fmt(omega1)} × {fmt(p.arm)} − {fmt(p.e)} × ({fmt(p.speed)} − {fmt(omega0)} × {fmt(p.arm)})",
+        steps.append(Step(f"Speed of the {name} after", "v′ = ω₁r⊥ − e (v − ω₀r⊥)", f"{term(omega1, 'rad/s')} × {term(p.arm, 'm')} − {fmt(p.e)} × ({term(p.speed, 'm/s')} − {term(omega0, 'rad/s')} × {term(p.arm, 'm')})",
                           quantity_text(after[name], "m/s"),
                           "the restitution law solved for v′: " + ("negative, it bounces back" if after[name] < 0 else "it follows the body's point, which now moves away at least as fast")))
     why_energy = ("kinetic energy is not conserved: while the two come to move together they slide on each other (or the particle deforms, "
@@ -497,7 +506,7 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     if bounce:
         name, p = bounce[0]
         steps.append(Step("The energy lost in the rebound", "KE_lost = ½ μ (1 − e²)(v − ω₀r⊥)²,  μ = m I / (I + m r⊥²)",
-                          f"½ × {fmt(p.mass * inertia / (inertia + p.mass * p.arm**2))} × (1 − {fmt(p.e)}²) × ({fmt(p.speed)} − {fmt(omega0)} × {fmt(p.arm)})²",
+                          f"½ × {term(p.mass * inertia / (inertia + p.mass * p.arm**2), 'kg')} × (1 − {fmt(p.e)}²) × ({term(p.speed, 'm/s')} − {term(omega0, 'rad/s')} × {term(p.arm, 'm')})²",
                           quantity_text(lost, "J"),
                           "along the particle's line the body's point acts as a mass I/r⊥²: a collision of two masses, which keeps "
                           "the fraction e² of the energy of their approach"))

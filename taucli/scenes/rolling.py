@@ -21,7 +21,17 @@ from dataclasses import dataclass
 
 from taucli.errors import InputError, did_you_mean
 from taucli.options.rolling import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text
+from taucli.report import (
+    DeferredSteps,
+    Report,
+    Step,
+    Trajectory,
+    Value,
+    deferred,
+    fmt,
+    quantity_text,
+    term,
+)
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.friction import needs_kinetic, static_coefficient
 from taucli.table import Results
@@ -177,7 +187,7 @@ def solve_incline(
     if a is None:
         needs_kinetic(", ".join(name for name in ("a", "alpha", "friction", "v", "t", "d_climb", "h_climb", "t_climb") if name in results), notes)
 
-    steps = DeferredSteps(_incline_steps, roller, angle, g, static, mu_k, mu_min, rolls, a, results)
+    steps = DeferredSteps(_incline_steps, roller, angle, g, static, mu_k, mu_min, rolls, a, results, run)
     model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) on a {fmt(math.degrees(angle))}° slope, "
     if vertical:
         model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) falling along a vertical face (no normal force, no friction)"
@@ -203,7 +213,7 @@ def _incline_trajectory(a: float, v0: float, results: dict[str, Value]) -> Traje
     return Trajectory(curves, bottom, lambda t: (a * t * t / 2, a * t), marks=((bottom, "reaches the bottom"),))
 
 
-def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, results) -> list[Step]:
+def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, results, run=None) -> list[Step]:
     k2 = roller.k2
     degrees = fmt(math.degrees(angle))
     steps = [
@@ -221,7 +231,7 @@ def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, results) -> l
             Step(
                 "Solve the three equations",
                 "a = g sin θ / (1 + k²)",
-                f"{fmt(g)} × sin {degrees}° / (1 + {fmt(k2)})",
+                f"{term(g, 'm/s**2')} × sin {degrees}° / (1 + {fmt(k2)})",
                 quantity_text(a, "m/s**2"),
                 "f = k² m a from the rotation and no-slip equations; put into the translation equation, m cancels and so does R",
             )
@@ -242,14 +252,15 @@ def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, results) -> l
             Step(
                 "Slipping: kinetic friction instead of the no-slip condition",
                 "f = μₖ m g cos θ,  a = g (sin θ − μₖ cos θ),  α = μₖ g cos θ / (k² R)",
-                "" if mu_k is None else f"{fmt(g)} × (sin {degrees}° − {fmt(mu_k)} × cos {degrees}°)",
+                "" if mu_k is None else f"{term(g, 'm/s**2')} × (sin {degrees}° − {fmt(mu_k)} × cos {degrees}°)",
                 "needs μₖ (--mu-k)" if a is None else quantity_text(a, "m/s**2"),
                 "the contact slides, so friction takes its kinetic value and a no longer equals Rα",
             )
         )
     if "v" in results and results["v"].value is not None:
         steps.append(
-            Step("Speed and time at the bottom (uniform acceleration from rest)", "v = √(2 a L),  t = 2L / v", "",
+            Step("Speed and time at the bottom (uniform acceleration from rest)", "v = √(2 a L),  t = 2L / v",
+                 f"√(2 × {term(a, 'm/s**2')} × {term(run, 'm')}),  2 × {term(run, 'm')} / {term(results['v'].value, 'm/s')}",
                  f"{quantity_text(results['v'].value, 'm/s')}, {quantity_text(results['t'].value, 's')}", "constant a along the slope")
         )
         if rolls:
@@ -296,9 +307,9 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
         Step("While it skids, kinetic friction acts against the slip", "m dv/dt = −μₖ m g·sgn s,  I dω/dt = +μₖ m g R·sgn s,  s = v − Rω", "", "",
              "friction slows the centre and spins the ball up (or the reverse, for backspin)"),
         Step("The slip closes at a constant rate", "ds/dt = −μₖ g (1 + 1/k²)·sgn s  ⇒  t_roll = |s₀| k² / (μₖ g (1 + k²))",
-             "" if slip == 0 else f"{fmt(abs(slip))} × {fmt(k2)} / ({fmt(mu_k)} × {fmt(g)} × (1 + {fmt(k2)}))", quantity_text(t_roll, "s"),
+             "" if slip == 0 else f"{term(abs(slip), 'm/s')} × {fmt(k2)} / ({fmt(mu_k)} × {term(g, 'm/s**2')} × (1 + {fmt(k2)}))", quantity_text(t_roll, "s"),
              "once s = 0 the contact is at rest and friction stops acting: it rolls"),
-        Step("Speed once it rolls", "v_roll = (v₀ + k² R ω₀) / (1 + k²)", f"({fmt(v0)} + {fmt(k2)} × {fmt(spin_speed)}) / (1 + {fmt(k2)})",
+        Step("Speed once it rolls", "v_roll = (v₀ + k² R ω₀) / (1 + k²)", f"({term(v0, 'm/s')} + {fmt(k2)} × {term(spin_speed, 'm/s')}) / (1 + {fmt(k2)})",
              quantity_text(v_roll, "m/s"), "friction acts at the contact, so angular momentum about the contact point is conserved"),
     ]
     model = f"{roller.description} (k² = {fmt(k2)}) skidding on the flat until it rolls"
@@ -564,14 +575,14 @@ def _pull_steps(roller, slope, g, pull, sigma, normal, needed, rolling_a, mu_min
         Step("Rotation about the centre (in the rolling sense of a)", f"I α = f R {torque},  {lever}", "", "",
              f"friction acts at the contact, R from the centre; the pull's line of action passes ℓ from it: here ℓ = {quantity_text(pull.lever(), 'm')}, "
              f"and I = k² m R² with k² = {fmt(k2)}"),
-        Step("Normal force", "N = m g cos θ − F sin φ", f"{fmt(mass)} × {fmt(g)} × cos {fmt(math.degrees(slope))}° − {fmt(pull.force)} × sin {fmt(math.degrees(pull.angle))}°",
+        Step("Normal force", "N = m g cos θ − F sin φ", f"{term(mass, 'kg')} × {term(g, 'm/s**2')} × cos {fmt(math.degrees(slope))}° − {term(pull.force, 'N')} × sin {fmt(math.degrees(pull.angle))}°",
              quantity_text(normal, "N"), "a pull above the surface lifts part of the weight off it"),
         Step("Rolling (a = R α): solve the three equations", f"a = ({along} {torque}/R) / (m (1 + k²)),  f = k² m a {'−' if flat else '+'} Fℓ/R", "",
              f"{quantity_text(rolling_a, 'm/s**2')};  f = {quantity_text(needed, 'N')}",
              "f from the rotation equation with α = a/R, put into the translation equation; f < 0 means friction must point along a"),
     ]
     if mu_min is not None:
-        steps.append(Step("The least μs that rolls it", "μ_min = |f| / N", f"{fmt(abs(needed))} / {fmt(normal)}", fmt(mu_min),
+        steps.append(Step("The least μs that rolls it", "μ_min = |f| / N", f"{term(abs(needed), 'N')} / {term(normal, 'N')}", fmt(mu_min),
                           "static friction can give at most μs N" + ("" if static is None else f"; here μs = {fmt(static)} {'≥' if rolls else '<'} μ_min, so it {'rolls' if rolls else 'slips'}")))
     if not rolls:
         steps.append(Step("Slipping: kinetic friction, the way the needed friction points", "f = ±μₖ N,  a = (… − f)/m,  α = (f R ± F ℓ)/I", "",
@@ -579,7 +590,7 @@ def _pull_steps(roller, slope, g, pull, sigma, normal, needed, rolling_a, mu_min
                           "the contact slides the way friction would have had to stop it, so kinetic friction opposes that"))
     if "critical_angle" in results and results["critical_angle"].value is not None:
         steps.append(Step("The spool's critical angle (a = 0)", "cos φc = r/R" if flat else "cos φc = r/R + m g sin θ / F",
-                          f"{fmt(pull.axle)} / {fmt(roller.radius)}" if flat else "", f"{fmt(math.degrees(results['critical_angle'].value))}°",
+                          f"{term(pull.axle, 'm')} / {term(roller.radius, 'm')}" if flat else "", f"{fmt(math.degrees(results['critical_angle'].value))}°",
                           "the pull's line of action passes through the contact point: it has no torque about it, so nothing turns the spool"
                           if flat else "the pull's torque about the contact point balances gravity's"))
     if "v" in results and results["v"].value is not None:
@@ -632,7 +643,7 @@ def solve_yoyo(
             results.put("KE_trans", 0.5 * mass * speed * speed, part)
             results.put("KE_rot", 0.5 * ratio * mass * speed * speed, part)
             results.put("KE", 0.5 * (1 + ratio) * mass * speed * speed, part)
-    steps = DeferredSteps(_yoyo_steps, ratio, a, tension, results if height is not None else None)
+    steps = DeferredSteps(_yoyo_steps, ratio, a, tension, results if height is not None else None, g, mass, v0, height, r)
     model = f"yo-yo: {roller.description} (k² = I/mR² = {fmt(k2)}) falling as its string unwinds" + ("" if axle is None else f" from an axle of radius {fmt(axle)} m")
     if about_axle is not None:
         model = f"yo-yo: body (I/(m r²) = {fmt(ratio)}) falling as its string unwinds from an axle of radius {fmt(about_axle)} m"
@@ -640,17 +651,22 @@ def solve_yoyo(
     return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
 
 
-def _yoyo_steps(ratio, a, tension, results) -> list[Step]:
+def _yoyo_steps(ratio, a, tension, results, g=None, mass=None, v0=0.0, height=None, r=None) -> list[Step]:
     steps = [
         Step("For the yo-yo's centre (down positive)", "m a = m g − T", "", "", "gravity down, the string's tension up"),
         Step("Rotation about the centre", "I α = T r", "", "", "the string leaves the axle at r from the centre"),
         Step("The string unwinds without slipping", "a = r α", "", "", "the point where the string leaves is momentarily at rest"),
-        Step("Solve", "a = g / (1 + I/(m r²)),  T = m g (I/(m r²)) / (1 + I/(m r²))", f"I/(m r²) = {fmt(ratio)}",
+        Step("Solve", "a = g / (1 + I/(m r²)),  T = m g (I/(m r²)) / (1 + I/(m r²))",
+             f"I/(m r²) = {fmt(ratio)}:  a = {term(g, 'm/s**2')} / (1 + {fmt(ratio)})"
+             + ("" if mass is None else f",  T = {term(mass, 'kg')} × {term(g, 'm/s**2')} × {fmt(ratio)} / (1 + {fmt(ratio)})"),
              quantity_text(a, "m/s**2") + ("" if tension is None else f", T = {quantity_text(tension, 'N')}"),
              "T r = I a / r from the rotation; put into the translation equation"),
     ]
     if results is not None:
-        steps.append(Step("After the drop", "v = √(v₀² + 2 a h),  ω = v / r", "", quantity_text(results["v"].value, "m/s"),
+        speed = results["v"].value
+        numbers = f"√(({term(v0, 'm/s')})² + 2 × {term(a, 'm/s**2')} × {term(height, 'm')})" + ("" if r is None else f",  {term(speed, 'm/s')} / {term(r, 'm')}")
+        shown = quantity_text(speed, "m/s") + ("" if r is None else f", ω = {quantity_text(results['omega'].value, 'rad/s')}")
+        steps.append(Step("After the drop", "v = √(v₀² + 2 a h),  ω = v / r", numbers, shown,
                           "constant a; energy: m g h = ½ m v² (1 + I/(m r²)) − ½ m v₀² (1 + I/(m r²))"))
     return steps
 
@@ -680,7 +696,7 @@ def solve_rolling_flat(roller: Roller, v0: float) -> Report:
         notes.append("omega: give --radius (the energies do not need it)")
     steps = [
         Step("Rolling without slipping", "ω = v / R", "", "" if radius is None else quantity_text(v0 / radius, "rad/s"), "the contact point is at rest"),
-        Step("Kinetic energy", "KE = ½ m v² + ½ I ω² = ½ m v² (1 + k²)", f"½ × {fmt(mass)} × {fmt(v0)}² × (1 + {fmt(k2)})", quantity_text((1 + k2) * trans, "J"),
+        Step("Kinetic energy", "KE = ½ m v² + ½ I ω² = ½ m v² (1 + k²)", f"½ × {term(mass, 'kg')} × ({term(v0, 'm/s')})² × (1 + {fmt(k2)})", quantity_text((1 + k2) * trans, "J"),
              f"I ω² = k² m R² (v/R)² = k² m v²: a share k²/(1 + k²) = {fmt(100 * k2 / (1 + k2), 3)}% is rotation"),
     ]
     model = f"{roller.description} (k² = {fmt(k2)}) rolling without slipping on the flat"

@@ -18,9 +18,27 @@ from dataclasses import dataclass, replace
 from taucli.errors import InputError
 from taucli.numerics import METHODS, falling_root
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import Report, Step, Table, Trajectory, Value, deferred, fmt, quantity_text
-from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Evolver, Loads, Method, Phase, evolve
+from taucli.report import (
+    Report,
+    Step,
+    Table,
+    Trajectory,
+    Value,
+    deferred,
+    fmt,
+    quantity_text,
+    term,
+)
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.motion import (
+    DEFAULT_DT,
+    DEFAULT_RTOL,
+    Evolver,
+    Loads,
+    Method,
+    Phase,
+    evolve,
+)
 from taucli.table import Results
 
 TWO_PI = 2 * math.pi
@@ -60,14 +78,18 @@ def _net_torque_step(torques: Torques, omega0: float, alpha0: float, inertia: fl
         (f"k|ω|{power}", -moving * torques.drag * abs(omega0) ** torques.drag_exponent),
     ]
     present = [(symbol, value) for symbol, value in terms if value or (symbol == "τ_f" and torques.friction)]
+    # the drive is signed as given (its term shows its sign: (−3 N·m)); each loss shows the sign it acts with
     equation = "τ_net = " + " ".join(
-        f"{'−' if value < 0 or (symbol != 'τ_drive' and value == 0) else '+'} {symbol}" for symbol, value in present
+        "+ τ_drive" if symbol == "τ_drive" else f"{'−' if value <= 0 else '+'} {symbol}" for symbol, value in present
     ).removeprefix("+ ")
-    numbers = " ".join(f"{'−' if value < 0 else '+'} {quantity_text(abs(value), 'N*m')}" for _, value in present).removeprefix("+ ")
+    numbers = " ".join(
+        f"+ {term(value, 'N*m')}" if symbol == "τ_drive" else f"{'−' if value < 0 else '+'} {quantity_text(abs(value), 'N*m')}"
+        for symbol, value in present
+    ).removeprefix("+ ")
     if held:
         why = "at rest, static friction matches the driving torque up to τ_f, so nothing turns"
     elif omega0:
-        why = "friction and drag oppose the motion, so they take the sign opposite to ω; the driving torque acts along +ω"
+        why = "friction and drag oppose the motion, so they take the sign opposite to ω; the driving torque keeps its own sign (positive along +ω)"
     elif torques.friction:
         why = "from rest, the driving torque beats static friction, and kinetic friction opposes the motion it starts"
     else:
@@ -77,7 +99,7 @@ def _net_torque_step(torques: Torques, omega0: float, alpha0: float, inertia: fl
     step_alpha = Step(
         "Angular acceleration (Newton's second law for rotation)",
         "α = τ_net / I",
-        f"{quantity_text(net, 'N*m')} / {quantity_text(inertia, 'kg*m**2')}",
+        f"{term(net, 'N*m')} / {term(inertia, 'kg*m**2')}",
         quantity_text(alpha0, "rad/s**2"),
         "the negative sign means α opposes ω: the wheel slows"
         if alpha0 * omega0 < 0
@@ -161,8 +183,7 @@ def solve(
     if time is not None:
         omega_t, theta_t = answers["omega"], answers["theta"]
         results.put("omega", omega_t, f" at t = {fmt(time)} s")
-        results.put("theta", theta_t, f" by t = {fmt(time)} s")
-        results.put("revs", theta_t / TWO_PI, f" by t = {fmt(time)} s")
+        _put_angles(results, theta_t, answers["theta_stop"] if second is not None and stop is not None and time > stop[0] else None, time)
     if until_omega is not None:
         if answers["t_until"] is None and not evolver.unstable:
             notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
@@ -196,7 +217,7 @@ def solve(
         steps.append(_push_step(push))
     steps.extend(_net_torque_step(torques, omega0, alpha0, inertia, held_from_start))
     if not held_from_start:
-        steps.extend(_kinematics_steps(torques, first, stop, results, time, chosen, omega0))
+        steps.extend(_kinematics_steps(torques, first, second, stop, results, time, chosen, omega0))
         if until_angle is not None and results["t_until"].value is not None:
             steps.append(Step("Time to turn θ", "θ(t) = θ_target, solved for t", f"θ_target = {quantity_text(until_angle, 'rad')}",
                               f"t = {quantity_text(results['t_until'].value, 's')}, ω = {quantity_text(results['omega'].value, 'rad/s')}",
@@ -209,6 +230,19 @@ def solve(
         model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
     trajectory = None if evolver.unstable else deferred(_trajectory, motion, time, omega_inf)
     return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
+
+
+def _put_angles(results: Results, theta: float, turned_back_at: float | None, time: float) -> None:
+    """theta and revs by ``time``: the net angle, signed. Where the wheel stopped at the angle
+    ``turned_back_at`` and turned back before then, also the total it turned both ways:
+    |θ_stop| + |θ − θ_stop|."""
+    label = f" by t = {fmt(time)} s"
+    results.put("theta", theta, label)
+    results.put("revs", theta / TWO_PI, label)
+    if turned_back_at is not None:
+        total = abs(turned_back_at) + abs(theta - turned_back_at)
+        results.put("theta_total", total, label)
+        results.put("revs_total", total / TWO_PI, label)
 
 
 def _energy(motion, inertia: float, torques: Torques, omega0: float, time: float | None, results: Results, notes: list[str]) -> None:
@@ -416,7 +450,7 @@ def _push_step(push: Push) -> Step:
     )
 
 
-def _kinematics_steps(torques, first, stop, results, time, method, omega0) -> list[Step]:
+def _kinematics_steps(torques, first, second, stop, results, time, method, omega0) -> list[Step]:
     steps: list[Step] = []
     closed = first.closed
     alpha = results["alpha0"].value
@@ -433,16 +467,21 @@ def _kinematics_steps(torques, first, stop, results, time, method, omega0) -> li
         )
     elif closed.uniform:
         if stop is not None and stop[0] > 0:
-            steps.append(Step("Time to stop", "ω = ω₀ + αt = 0  ⇒  t = ω₀/|α|", f"{fmt(w0)} / {fmt(abs(alpha))}", quantity_text(stop[0], "s"),
-                              "constant torque gives constant α, so ω falls linearly to zero"))
-            steps.append(Step("Angle turned while stopping", "θ = ω₀²/(2|α|)", f"{fmt(w0)}² / (2 × {fmt(abs(alpha))})",
+            steps.append(Step("Time to stop", "ω = ω₀ + αt = 0  ⇒  t = ω₀/|α|", f"{term(w0, 'rad/s')} / {term(abs(alpha), 'rad/s**2')}",
+                              quantity_text(stop[0], "s"), "constant torque gives constant α, so ω falls linearly to zero"))
+            steps.append(Step("Angle turned while stopping", "θ = ω₀²/(2|α|)", f"({term(w0, 'rad/s')})² / (2 × {term(abs(alpha), 'rad/s**2')})",
                               quantity_text(abs(stop[1]), "rad") + f" = {fmt(abs(stop[1]) / TWO_PI)} rev", "the rotational analogue of v² = 2as"))
-        if time is not None and results["theta"].value is not None:
-            steps.append(Step("Angular velocity after t", "ω = ω₀ + αt", f"{fmt(omega0)} + {fmt(alpha)} × {fmt(time)}",
+        back = second is not None and stop is not None and time is not None and time > stop[0]
+        if time is not None and results["theta"].value is not None and not back:
+            steps.append(Step("Angular velocity after t", "ω = ω₀ + αt", f"{term(omega0, 'rad/s')} + {term(alpha, 'rad/s**2')} × {term(time, 's')}",
                               quantity_text(results["omega"].value, "rad/s"), "constant α: ω changes by the same amount every second"))
-            steps.append(Step("Angle turned in t", "θ = ω₀t + ½αt²", f"{fmt(omega0)} × {fmt(time)} + ½ × {fmt(alpha)} × {fmt(time)}²",
+            steps.append(Step("Angle turned in t", "θ = ω₀t + ½αt²",
+                              f"{term(omega0, 'rad/s')} × {term(time, 's')} + ½ × {term(alpha, 'rad/s**2')} × ({term(time, 's')})²",
                               quantity_text(results["theta"].value, "rad"), "the rotational analogue of s = ut + ½at²"))
-            steps.append(Step("Convert to revolutions", "revs = θ / 2π", f"{fmt(results['theta'].value)} / 2π",
+        elif back and results["theta"].value is not None:
+            steps.extend(_turned_back_steps(torques, results['I'].value, second, stop, results, time))
+        if time is not None and results["theta"].value is not None:
+            steps.append(Step("Convert to revolutions", "revs = θ / 2π", f"{term(results['theta'].value, 'rad')} / 2π",
                               f"{fmt(results['revs'].value)} rev", "one full revolution is 2π radians"))
     else:
         discriminant = closed.viscous**2 + 4 * closed.drag * closed.constant
@@ -450,8 +489,8 @@ def _kinematics_steps(torques, first, stop, results, time, method, omega0) -> li
             Step(
                 "The constants of I dω/dt = A − bω − kω²",
                 f"D = b² + 4kA,  with A = τ_drive − τ_f = {quantity_text(closed.constant, 'N*m')}",
-                f"({fmt(closed.viscous)})² + 4 × {fmt(closed.drag)} × ({fmt(closed.constant)})",
-                fmt(discriminant)
+                f"({term(closed.viscous, 'N*m*s')})² + 4 × {term(closed.drag, 'N*m*s**2')} × {term(closed.constant, 'N*m')}",
+                quantity_text(discriminant, "N**2*m**2*s**2")
                 + (" (D < 0: the tangent form)" if discriminant < 0 else " (D > 0: the tanh form)" if closed.drag else " (k = 0: exponential)"),
                 "the sign of D decides which of the log, arctangent or artanh integrals the separable equation gives",
             )
@@ -471,6 +510,30 @@ def _kinematics_steps(torques, first, stop, results, time, method, omega0) -> li
                               "", f"{quantity_text(stop[0], 's')}, {quantity_text(abs(stop[1]), 'rad')} = {fmt(abs(stop[1]) / TWO_PI)} rev",
                               "friction keeps a constant torque against the motion, so the wheel stops in a finite time"))
     return steps
+
+
+def _turned_back_steps(torques, inertia: float, second, stop, results, time: float) -> list[Step]:
+    """The drive outlasts the stop: the wheel starts back from rest at t_stop with the second
+    phase's constant α₂ = (τ_drive ∓ τ_f)/I (friction now on the other side), so ω and θ are
+    taken from there."""
+    alpha2 = second.direction * second.rate(0.0)
+    since = time - stop[0]
+    theta, theta_stop = results["theta"].value, stop[1] if results["theta_stop"].value is None else results["theta_stop"].value
+    friction = f" {'+' if second.direction < 0 else '−'} {term(torques.friction, 'N*m')}" if torques.friction else ""
+    return [
+        Step("Angular acceleration after the stop", f"α₂ = (τ_drive {'+' if second.direction < 0 else '−'} τ_f)/I" if torques.friction else "α₂ = τ_drive/I",
+             f"({term(torques.drive, 'N*m')}{friction}) / {term(inertia, 'kg*m**2')}", quantity_text(alpha2, "rad/s**2"),
+             "the drive is larger than static friction, so the wheel starts back the other way; friction turns with the motion, against it"),
+        Step("Angular velocity after t", "ω = α₂(t − t_stop)", f"{term(alpha2, 'rad/s**2')} × ({term(time, 's')} − {term(stop[0], 's')})",
+             quantity_text(results["omega"].value, "rad/s"), "from rest at t_stop, ω grows at the constant α₂"),
+        Step("Net angle turned in t", "θ = θ_stop + ½α₂(t − t_stop)²",
+             f"{term(theta_stop, 'rad')} + ½ × {term(alpha2, 'rad/s**2')} × ({term(since, 's')})²",
+             quantity_text(theta, "rad"), "θ is where the wheel is, net of the turn back"),
+        Step("Total angle turned, both ways", "θ_total = |θ_stop| + |θ − θ_stop|",
+             f"{term(abs(theta_stop), 'rad')} + {term(abs(theta - theta_stop), 'rad')}",
+             quantity_text(results["theta_total"].value, "rad") + f" = {fmt(results['revs_total'].value)} rev",
+             "the wheel turned θ_stop one way, then back: the total counts both"),
+    ]
 
 
 def spin_down(
@@ -755,8 +818,7 @@ def _uniform_report(
             raise InputError("until_omega", "is never reached at this α", got=f"α = {alpha:g} rad/s²")
         label = f" at t = {fmt(end)} s"
         results.put("omega", motion.omega(end), label)
-        results.put("theta", motion.theta(end), f" by t = {fmt(end)} s")
-        results.put("revs", motion.theta(end) / TWO_PI, f" by t = {fmt(end)} s")
+        _put_angles(results, motion.theta(end), stop[1] if stop is not None and end > stop[0] else None, end)
         if time is None:
             results.put("t_until", end, " the target")
     else:
@@ -765,8 +827,7 @@ def _uniform_report(
         if time is not None:
             end = time
             results.put("omega", motion.omega(time), f" at t = {fmt(time)} s")
-            results.put("theta", motion.theta(time), f" by t = {fmt(time)} s")
-            results.put("revs", motion.theta(time) / TWO_PI, f" by t = {fmt(time)} s")
+            _put_angles(results, motion.theta(time), stop[1] if stop is not None and time > stop[0] else None, time)
         if until_omega is not None:
             t = motion.time_to_omega(until_omega)
             if t is None:
@@ -826,20 +887,20 @@ def _uniform_alpha_steps(w0, alpha, time, w1, theta, given_alpha, w0_given) -> l
     if given_alpha:
         return steps
     if time is not None and w1 is not None:
-        steps.append(Step("Angular acceleration from the change of speed", "α = (ω₁ − ω₀)/t", f"({fmt(w1)} − {fmt(w0)}) / {fmt(time)}",
+        steps.append(Step("Angular acceleration from the change of speed", "α = (ω₁ − ω₀)/t", f"({term(w1, 'rad/s')} − {term(w0, 'rad/s')}) / {term(time, 's')}",
                           quantity_text(alpha, "rad/s**2"), "constant α: ω changes by the same amount every second"))
-        steps.append(Step("Angle turned", "θ = ½(ω₀ + ω₁)t", f"½ × ({fmt(w0)} + {fmt(w1)}) × {fmt(time)}",
+        steps.append(Step("Angle turned", "θ = ½(ω₀ + ω₁)t", f"½ × ({term(w0, 'rad/s')} + {term(w1, 'rad/s')}) × {term(time, 's')}",
                           quantity_text((w0 + w1) * time / 2, "rad") + f" = {fmt((w0 + w1) * time / 2 / TWO_PI)} rev",
                           "at constant α the mean speed is the average of the first and the last"))
     elif time is not None and theta is not None:
         steps.append(Step("Angular acceleration from the angle and the time", "θ = ω₀t + ½αt²  ⇒  α = 2(θ − ω₀t)/t²",
-                          f"2 × ({fmt(theta)} − {fmt(w0)} × {fmt(time)}) / {fmt(time)}²", quantity_text(alpha, "rad/s**2"),
+                          f"2 × ({term(theta, 'rad')} − {term(w0, 'rad/s')} × {term(time, 's')}) / ({term(time, 's')})²", quantity_text(alpha, "rad/s**2"),
                           "the rotational analogue of s = ut + ½at², solved for the acceleration"))
     elif w1 is not None and theta is not None:
         steps.append(Step("Angular acceleration from the speeds and the angle", "ω₁² = ω₀² + 2αθ  ⇒  α = (ω₁² − ω₀²)/(2θ)",
-                          f"({fmt(w1)}² − {fmt(w0)}²) / (2 × {fmt(theta)})", quantity_text(alpha, "rad/s**2"),
+                          f"(({term(w1, 'rad/s')})² − ({term(w0, 'rad/s')})²) / (2 × {term(theta, 'rad')})", quantity_text(alpha, "rad/s**2"),
                           "the rotational analogue of v² = u² + 2as"))
-        steps.append(Step("Time taken", "t = 2θ/(ω₀ + ω₁)", f"2 × {fmt(theta)} / ({fmt(w0)} + {fmt(w1)})",
+        steps.append(Step("Time taken", "t = 2θ/(ω₀ + ω₁)", f"2 × {term(theta, 'rad')} / ({term(w0, 'rad/s')} + {term(w1, 'rad/s')})",
                           quantity_text(2 * theta / (w0 + w1), "s"), "the angle is the mean speed times the time"))
     return steps
 
@@ -1134,7 +1195,7 @@ def _power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, ti
                           "a motor of constant power adds energy at the rate P; with no losses it all goes into the wheel"))
         if until_omega is not None and results["t_until"].value is not None:
             steps.append(Step("Time to reach ω₁", "t = I(ω₁ − ω₀)(ω₁ + ω₀)/(2P)",
-                              f"{quantity_text(inertia, 'kg*m**2')} × ({fmt(until_omega)} − {fmt(omega0)}) × ({fmt(until_omega)} + {fmt(omega0)}) / (2 × {quantity_text(power, 'W')})",
+                              f"{term(inertia, 'kg*m**2')} × ({term(until_omega, 'rad/s')} − {term(omega0, 'rad/s')}) × ({term(until_omega, 'rad/s')} + {term(omega0, 'rad/s')}) / (2 × {term(power, 'W')})",
                               quantity_text(results["t_until"].value, "s"), "the energy ½I(ω₁² − ω₀²) delivered at the rate P"))
         model = "constant power P (τ = P/ω), no losses: ½Iω² grows linearly in time"
     else:

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 
 from taucli.errors import InputError
 from taucli.options.torque import COMMAND as TABLE
-from taucli.report import Report, Step, Table, fmt, quantity_text
+from taucli.report import Report, Step, Table, fmt, pretty_unit, quantity_text, term
 from taucli.table import Results
 
 Vector = tuple[float, float, float]
@@ -86,24 +86,20 @@ def _vec(v: Sequence[float]) -> str:
 
 def _determinant_step(title: str, name: str, row1: Vector, row2: Vector, result: Vector, unit: str, why: str, mass: float | None = None) -> Step:
     """r × B as the determinant |x̂ ŷ ẑ; r; B| expanded along its first row (times m for L)."""
-    a, b = row1, row2
-    letter = "v" if mass is not None else "F"
-    expanded = (f"x̂({fmt(a[1])}×{fmt(b[2])} − {fmt(a[2])}×{fmt(b[1])}) + ŷ({fmt(a[2])}×{fmt(b[0])} − {fmt(a[0])}×{fmt(b[2])}) "
-                f"+ ẑ({fmt(a[0])}×{fmt(b[1])} − {fmt(a[1])}×{fmt(b[0])})")
-    scale = "" if mass is None else f"{fmt(mass)} × "
-    return Step(
-        title,
-        f"{name} = {'m ' if mass is not None else ''}|x̂ ŷ ẑ; rₓ r_y r_z; {letter}ₓ {letter}_y {letter}_z|",
-        f"{scale}|x̂ ŷ ẑ; {' '.join(fmt(c) for c in a)}; {' '.join(fmt(c) for c in b)}| = {scale}[{expanded}]" if mass is not None
-        else f"|x̂ ŷ ẑ; {' '.join(fmt(c) for c in a)}; {' '.join(fmt(c) for c in b)}| = {expanded}",
-        f"{_vec(result)} {unit}",
-        why,
-    )
+    a, b = [term(c) for c in row1], [term(c) for c in row2]
+    letter, row_unit = ("v", "m/s") if mass is not None else ("F", "N")
+    expanded = (f"x̂({a[1]}×{b[2]} − {a[2]}×{b[1]}) + ŷ({a[2]}×{b[0]} − {a[0]}×{b[2]}) "
+                f"+ ẑ({a[0]}×{b[1]} − {a[1]}×{b[0]})")
+    rows = f"|x̂ ŷ ẑ; {' '.join(a)} m; {' '.join(b)} {row_unit}|"
+    product = pretty_unit("m**2/s" if mass is not None else "N*m")
+    numbers = (f"{term(mass, 'kg')} × {rows} = {term(mass, 'kg')} × [{expanded}] {product}" if mass is not None
+               else f"{rows} = [{expanded}] {product}")
+    return Step(title, f"{name} = {'m ' if mass is not None else ''}|x̂ ŷ ẑ; rₓ r_y r_z; {letter}ₓ {letter}_y {letter}_z|", numbers, f"{_vec(result)} {unit}", why)
 
 
 def _size_step(title: str, symbol: str, v: Vector, unit: str) -> Step:
-    return Step(title, f"|{symbol}| = √({symbol}ₓ² + {symbol}_y² + {symbol}_z²)", "√(" + " + ".join(f"({fmt(c)})²" if c < 0 else f"{fmt(c)}²" for c in v) + ")",
-                quantity_text(size(v), unit), "the length of the vector")
+    squares = " + ".join(f"({term(c, unit).strip('()')})²" for c in v)
+    return Step(title, f"|{symbol}| = √({symbol}ₓ² + {symbol}_y² + {symbol}_z²)", f"√({squares})", quantity_text(size(v), unit), "the length of the vector")
 
 
 def _pairs(r: tuple, vector_forces: list, velocities: tuple) -> tuple[list, list]:
@@ -167,7 +163,7 @@ def torque(
                                            "the torque about the point is r × F, r from the point to where the force acts; "
                                            "the rows of the determinant are the unit vectors, r and F"))
             if arm is not None:
-                steps.append(Step(f"Lever arm{label}", "r⊥ = |r × F| / |F| = |r| sin φ", f"{fmt(size(tau))} N·m / {fmt(size(f))} N", quantity_text(arm, "m"),
+                steps.append(Step(f"Lever arm{label}", "r⊥ = |r × F| / |F| = |r| sin φ", f"{term(size(tau), 'N*m')} / {term(size(f), 'N')}", quantity_text(arm, "m"),
                                   "the lever arm is the distance from the point to the force's line of action (φ between r and F): "
                                   "only the force's part perpendicular to r turns"))
             net_force = tuple(math.fsum(c) for c in zip(net_force, f)) if net_force else tuple(f)
@@ -181,7 +177,7 @@ def torque(
             arms.append(arm_length * abs(sine) if size_f else None)
             label = f" {number}" if len(force) > 1 else ""
             steps.append(Step(f"Torque of force{label} in the plane", "τ = r F sin θ,  r⊥ = r |sin θ|",
-                              f"{fmt(arm_length)} m × {fmt(size_f)} N × sin {fmt(math.degrees(theta))}°", f"{quantity_text(tau_z, 'N*m')}, r⊥ = {quantity_text(arm_length * abs(sine), 'm')}",
+                              f"{term(arm_length, 'm')} × {term(size_f, 'N')} × sin {fmt(math.degrees(theta))}°", f"{quantity_text(tau_z, 'N*m')}, r⊥ = {quantity_text(arm_length * abs(sine), 'm')}",
                               "only the force's part perpendicular to the lever turns; θ from the lever to the force, "
                               "counter-clockwise positive, so a positive τ turns counter-clockwise seen from +z"))
             if sine == 0 and size_f:
