@@ -122,16 +122,17 @@ _taucli() {
             --v0) _taucli_units 'm/s' 'km/h' 'ft/s' mph; return 0 ;;
             --distance) _taucli_units m cm mm km in ft; return 0 ;;
             --time) _taucli_units s ms min h; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance" -- "$cur")); return 0 ;;
+            --at) _taucli_units m cm mm km in ft; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) :; return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --rim-mu --wrap --incline --mu-k --mu-s --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -151,11 +152,12 @@ _taucli() {
             --pull-angle) _taucli_units deg rad rev; return 0 ;;
             --axle-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T v omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost" -- "$cur")); return 0 ;;
+            --at) _taucli_units m cm mm km in ft; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T v omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T v omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T v omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) :; return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
@@ -164,7 +166,7 @@ _taucli() {
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --g --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in
@@ -190,16 +192,17 @@ _taucli() {
             --particle) :; return 0 ;;
             --couple) :; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
-            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
+            --at) _taucli_units m cm mm km in ft; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) :; return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in

@@ -169,6 +169,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         json_lines=bool(answer["jsonl"]),
         uncertainty=bool(answer["uncertainty"]),
     )
+    _point_at_the_rim(command, scene_given, {*output.get, *(answer["y"] or ()), *(to.partition("=")[0].strip() for to in output.to)})
     if output.plot and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
     if answer["y"] and swept_range is None:
@@ -191,6 +192,15 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     solved = sweep.solve_all(command, swept_range, swept_list, scene_given, lambda options: solve(command, options, stdin=env.stdin, spell=command.flag, **finding))
     sweep.render(solved, swept_range, swept_list, output, list(answer["y"] or ()), env.stdout)
     return int(ExitStatus.OK)
+
+
+def _point_at_the_rim(command: Command, given: dict, asked: set) -> None:
+    """A point's result asked for (--get v_t) with no --at: the point on the rim (#24), which
+    the scene finds, or refuses where the body has no one radius."""
+    from taucli.options.common import POINT_RESULTS
+
+    if command.option("at") is not None and given.get("at") is None and asked & {result.key for result in POINT_RESULTS}:
+        given["at"] = "rim"
 
 
 def _whole_number(command: Command, text: Optional[str], name: str = "points") -> Optional[int]:

@@ -274,6 +274,9 @@ def read_vector(given, name: str, kind: str, inputs: Inputs, key: str):
 
 def _repeated(option: Option, given, inputs: Inputs, stdin):
     """A quantity option: one value, or (repeatable) each value given, as a tuple."""
+    if option.words and isinstance(given, str) and given.strip().lower() in option.words:
+        inputs.values[option.name] = Value(given.strip().lower(), None, "")
+        return given.strip().lower()
     if not option.repeatable:
         return _quantity(option, given, inputs, stdin)
     items = list(given) if isinstance(given, (list, tuple)) else [given]

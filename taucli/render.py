@@ -421,7 +421,7 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
     for name, table in report.tables.items():
         headings = [f"{heading} ({pretty_unit(unit)})" if unit else heading for _, unit, heading in table.columns]
         right = [unit is not None for _, unit, _ in table.columns]
-        draw_table(console, headings, [[shown(cell, 4) for cell in row] for row in table.rows], title=name, right=right)
+        draw_table(console, headings, [[shown(cell) for cell in row] for row in table.rows], title=name, right=right)
 
     if show_steps and report.steps:
         console.print(Text("Steps", style="bold underline"))

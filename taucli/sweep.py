@@ -288,8 +288,8 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
             headings.append(f"{name} ({unit})" if unit else name)
         rows = []
         for row, point in enumerate(points):
-            cells = [shown(values[row], 4) for _, values in columns]
-            cells += [shown(point.report.results[name].value if name in point.report.results else None, 4) for name in names]
+            cells = [shown(values[row]) for _, values in columns]
+            cells += [shown(point.report.results[name].value if name in point.report.results else None) for name in names]
             rows.append(cells)
         # numbers are never split: a table too wide for the terminal becomes a list, one point at a time
         draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)

@@ -72,6 +72,7 @@ class Option:
     positional: bool = False  # the command's argument (SHAPE) rather than an option
     metavar: str | None = None  # else the kind's
     of: str | None = None  # VECTOR: the quantity kind of its components ("force")
+    words: tuple[str, ...] = ()  # words a quantity option takes as well ("rim" for --at)
 
     @property
     def flag(self) -> str:

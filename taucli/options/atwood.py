@@ -1,7 +1,7 @@
 """taucli atwood: two masses on a string over a pulley with mass."""
 
 from taucli.names import PULLEY_SHAPES
-from taucli.options.common import ANSWER, GRAVITY, MOTION
+from taucli.options.common import ANSWER, GRAVITY, MOTION, POINT_RESULTS, point_option
 from taucli.table import CHOICE, PART, Command, Option, Result
 
 PULLEY = "Pulley"
@@ -35,6 +35,7 @@ COMMAND = Command(
         Option("v0", "velocity", "Initial speed of m1 (down positive).", sign="any", default="0", panel=MOTION),
         Option("distance", "length", "Report the time and speed after this distance.", sign="nonnegative", panel=MOTION),
         Option("time", "time", "Report the speed and displacement at this time.", sign="nonnegative", panel=MOTION),
+        point_option("on the pulley (after --distance, else at --time, else the start)"),
     ),
     results=(
         Result("a", "m/s**2", "acceleration of the masses (m1 downward positive)"),
@@ -49,6 +50,7 @@ COMMAND = Command(
         Result("t", "s", "time to travel…"),
         Result("v", "m/s", "velocity…"),
         Result("distance", "m", "displacement of m1 (down positive)…"),
+        *POINT_RESULTS,
     ),
     output=ANSWER,
     headline="a",

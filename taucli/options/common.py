@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from taucli.names import METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
-from taucli.table import CHOICE, COUNT, FILE, FLAG, PART, TEXT, Option
+from taucli.table import CHOICE, COUNT, FILE, FLAG, PART, TEXT, Option, Result
 
 BODY = "Body (shape and dimensions)"
 MOTION = "Motion and method"
@@ -101,4 +101,24 @@ ANSWER = (
     Option("points", COUNT, "Values in a range FROM..TO, ends included.", panel=SWEEP, default="50", metavar="N"),
     Option("y", TEXT, "A result to chart against a range (repeatable; default the scene's main result).", panel=SWEEP, repeatable=True, metavar="NAME"),
     *UNCERTAIN,
+)
+
+
+def point_option(what: str) -> Option:
+    """--at r (#24): a point at this radius of the turning body (``what`` says which body and when)."""
+    return Option("at", "length", f"A point at this radius {what}: its speed v_t, accelerations a_t, a_c, a_total, a_angle and arc s, "
+                  "e.g. 0.5m, or rim (the body's radius; taken when a point's result is asked for with no --at).", panel=MOTION, words=("rim",))
+
+
+POINT_RESULTS = (  # taucli.scenes.point
+    Result("v_t", "m/s", "speed of the point…"),
+    Result("a_t", "m/s**2", "tangential acceleration…"),
+    Result("a_c", "m/s**2", "centripetal acceleration…"),
+    Result("a_total", "m/s**2", "total acceleration…"),
+    Result("a_angle", "rad", "angle of a from the radius…"),
+    Result("s", "m", "arc travelled…"),
+    Result("v_t0", "m/s", "speed of the point at the start"),
+    Result("a_c0", "m/s**2", "centripetal acceleration at the start"),
+    Result("a_total0", "m/s**2", "total acceleration at the start"),
+    Result("a_angle0", "rad", "angle of a from the radius at the start"),
 )

@@ -1,7 +1,7 @@
 """taucli impulse: angular impulse and momentum, τΔt = IΔω."""
 
 from taucli.names import QUADRATURE_NAMES
-from taucli.options.common import ANSWER, BODY_OPTIONS
+from taucli.options.common import ANSWER, BODY_OPTIONS, POINT_RESULTS, point_option
 from taucli.table import CHOICE, COUPLE, FILE, PARTICLE, Command, Option, Result
 
 MEETS = "Particles and bodies that meet it (L conserved)"
@@ -27,6 +27,7 @@ COMMAND = Command(
         Option("couple", COUPLE, 'Another body on the same axis that locks to it, e.g. "inertia=3kg*m^2 omega0=0" or "disc mass=2kg radius=0.1m omega0=100rpm" (repeatable).',
                repeatable=True, metavar='"inertia=… omega0=…"', panel=MEETS),
         Option("method", CHOICE, "Quadrature for a profile: " + " | ".join(QUADRATURE_NAMES) + ".", choices=QUADRATURE_NAMES, default="auto", metavar="METHOD"),
+        point_option("(at the start, and at the end of the impulse)"),
     ),
     results=(
         Result("J", "N*m*s", "angular impulse…"),
@@ -44,6 +45,7 @@ COMMAND = Command(
         Result("peak_torque", "N*m", "largest torque…"),
         Result("KE_lost", "J", "kinetic energy lost (KE0 − KE1)…"),
         Result("KE_lost_fraction", "", "fraction of the kinetic energy lost"),
+        *POINT_RESULTS,
     ),
     output=ANSWER,
     headline="omega1",

@@ -1,7 +1,7 @@
 """taucli rolling: a round body on an incline, or a skidding ball on the flat; pulled, a spool, a yo-yo."""
 
 from taucli.names import ROLLING_BODIES
-from taucli.options.common import ANSWER, BODY, GRAVITY, MOTION
+from taucli.options.common import ANSWER, BODY, GRAVITY, MOTION, POINT_RESULTS, point_option
 from taucli.table import CHOICE, FLAG, Command, Option, Result
 
 PULL = "Pull, spool and yo-yo"
@@ -29,6 +29,7 @@ COMMAND = Command(
         Option("axle_radius", "length", "A spool: the string is wound at this radius (below R) and leaves from below unless --pull-height is positive; a yo-yo's axle.", panel=PULL),
         Option("yoyo", FLAG, "A yo-yo: the body falls as its string, fixed above and wound at --axle-radius, unwinds.", panel=PULL),
         GRAVITY,
+        point_option("from the centre, turning with the body (at the end: the bottom, the drop, rolling at last; else the start)"),
     ),
     results=(
         Result("a", "m/s**2", "acceleration of the centre…"),
@@ -52,6 +53,7 @@ COMMAND = Command(
         Result("v_roll", "m/s", "speed once it rolls"),
         Result("omega_roll", "rad/s", "angular velocity once it rolls"),
         Result("energy_lost", "J", "kinetic energy turned to heat by sliding friction"),
+        *POINT_RESULTS,
     ),
     output=ANSWER,
     headline="a",

@@ -1,6 +1,6 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
-from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, METHOD, MOTION, RTOL
+from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, METHOD, MOTION, RTOL, POINT_RESULTS, point_option
 from taucli.table import BRAKE, FACE, FLAG, Command, Option, Result
 
 COMMAND = Command(
@@ -44,7 +44,7 @@ COMMAND = Command(
         Option("power", "power", "A motor of constant power P (τ = P/ω; negative: a load draining the wheel), e.g. 1kW.", sign="any"),
         Option("ke0", "energy", "Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.", sign="nonnegative", panel=MOTION),
         Option("rim_speed", "velocity", "Initial speed of the rim, giving ω₀ = v/R (R the body's radius, or --radius with --inertia).", sign="any", panel=MOTION),
-        Option("at", "length", "A point at this radius: its speed v_t, accelerations a_t, a_c, a_total, a_angle and arc s, e.g. 0.5m.", panel=MOTION),
+        point_option("(at --time or the target, else the start)"),
         Option(
             "energy", FLAG,
             "Also report the kinetic energy, the work of the drive and of each loss (to --time or the stop) and their power "
@@ -84,16 +84,7 @@ COMMAND = Command(
         Result("power_friction", "W", "power friction takes…"),
         Result("power_viscous", "W", "power the viscous torque takes…"),
         Result("power_drag", "W", "power drag takes…"),
-        Result("v_t", "m/s", "speed of the point…"),
-        Result("a_t", "m/s**2", "tangential acceleration…"),
-        Result("a_c", "m/s**2", "centripetal acceleration…"),
-        Result("a_total", "m/s**2", "total acceleration…"),
-        Result("a_angle", "rad", "angle of a from the radius…"),
-        Result("s", "m", "arc travelled…"),
-        Result("v_t0", "m/s", "speed of the point at the start"),
-        Result("a_c0", "m/s**2", "centripetal acceleration at the start"),
-        Result("a_total0", "m/s**2", "total acceleration at the start"),
-        Result("a_angle0", "rad", "angle of a from the radius at the start"),
+        *POINT_RESULTS,
         Result("torque_brake", "N*m", "friction torque of the brakes"),
         Result("work_brake", "J", "energy the brakes take…"),
         Result("power_brake", "W", "power the brakes take…"),

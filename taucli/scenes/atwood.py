@@ -32,6 +32,7 @@ from taucli.report import (
     term,
 )
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.point import RIM, put_point, put_start, rim_radius
 from taucli.scenes.friction import needs_kinetic, static_coefficient
 from taucli.scenes.motion import (
     Evolver,
@@ -585,6 +586,32 @@ def _capstan_step(high, low, mu, wrap, need, grips) -> Step:
     )
 
 
+def _on_the_pulley(report: Report, r: float, radius: float | None, v0: float, distance: float | None, time: float | None) -> Report:
+    """A point at r on the pulley, which turns with m1's string: ω = v/R and α = a/R (R the
+    radius m1's string leaves at; down positive turns it positive); after --distance (θ = d/R),
+    else at --time (θ = x/R), else at the start."""
+    if radius is None:
+        raise InputError("at", "needs {pulley_radius} (a point on the pulley turns at ω = v/R)", example="{pulley_radius} 0.1m {at} 0.05m")
+    values = {key: value.value for key, value in report.results.items()}
+    alpha = values.get("alpha")
+    results = Results(TABLE)
+    results.update(report.results)
+    notes, steps = list(report.notes), list(report.steps)
+    if distance is not None:
+        when, speed, travelled = f" after {fmt(distance)} m", values.get("v"), distance
+    elif time is not None:
+        when, speed, travelled = f" at t = {fmt(time)} s", values.get("v"), values.get("distance")
+    else:
+        when, speed, travelled = " at the start", v0, 0.0
+    if values.get("a") is None:  # the motion is not known (μk not given): nor is the point's
+        speed = None
+    omega = None if speed is None else speed / radius
+    steps += put_point(results, r, omega, alpha, None if travelled is None else travelled / radius, when, notes)
+    if omega is not None and when != " at the start":
+        put_start(results, r, v0 / radius, alpha)
+    return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)
+
+
 def _with_parts(pulley: Pulley, parts: Sequence, assumed: Assumed) -> Pulley:
     """The pulley with its parts: I = I of --pulley-inertia or of --pulley-mass (Σ over one axle adds),
     plus each part's moment about the axle (taucli.scenes.inertia, parallel axes included)."""
@@ -621,10 +648,24 @@ def atwood(
     rim_mu: float | None = None,
     wrap: float | None = None,
     part: Sequence = (),
+    at: float | None = None,
 ) -> Report:
     """``taucli atwood``: m2 hangs unless --incline puts it on a slope; the pulley is massless
     unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia; a
-    stepped pulley with --radius1/--radius2; a string that may slide with --rim-mu."""
+    stepped pulley with --radius1/--radius2; a string that may slide with --rim-mu; --at r, a
+    point on the pulley."""
+    if at is not None:
+        if rim_mu is not None:
+            raise InputError("at", "does not apply with {rim_mu}: where the string slides the pulley's own turning is not followed in time")
+        report = atwood(m1=m1, m2=m2, pulley_mass=pulley_mass, pulley_radius=pulley_radius, pulley_shape=pulley_shape, pulley_inertia=pulley_inertia,
+                        axle_friction=axle_friction, incline=incline, mu_k=mu_k, mu_s=mu_s, g=g, v0=v0, distance=distance, time=time,
+                        radius1=radius1, radius2=radius2, part=part)
+        if at == RIM and (radius1 is not None or radius2 is not None):
+            raise InputError("at", "rim: a stepped pulley has two radii; give the point's radius", example="{at} 0.1m")
+        r, note = rim_radius(at, pulley_radius, "{pulley_radius}")
+        report = _on_the_pulley(report, r, radius1 if radius1 is not None else pulley_radius, v0 or 0.0, distance, time)
+        report.notes += [note] if note else []
+        return report
     if m1 is None:
         raise InputError("m1", "is required", example="{m1} 4kg")
     assumed = Assumed()

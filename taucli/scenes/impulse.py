@@ -25,6 +25,7 @@ from taucli.report import (
     quantity_text,
     term,
 )
+from taucli.scenes.point import put_point, put_start, rim_radius
 from taucli.scenes.assumed import Assumed
 from taucli.table import Results
 
@@ -557,11 +558,24 @@ def impulse(
     method: str = "auto",
     particle: Sequence[Particle] = (),
     couple: Sequence[Couple] = (),
+    at: float | None = None,
     **body_options,
 ) -> Report:
     """``taucli impulse``: τΔt = IΔω solved for the one left out; or a moment of inertia that
-    changes with no torque (--inertia-final); or a sampled torque (--torque-profile)."""
+    changes with no torque (--inertia-final); or a sampled torque (--torque-profile); --at r, a
+    point of the body before and after."""
     from taucli.scenes.inertia import body
+
+    if at is not None:
+        report = impulse(omega0=omega0, omega1=omega1, torque=torque, duration=duration, inertia_final=inertia_final,
+                         torque_profile=torque_profile, method=method, particle=particle, couple=couple, **body_options)
+        body_given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
+        given = {"omega0": omega0, "omega1": omega1, "torque": torque, "duration": duration,
+                 "inertia": body(**body_options)[0] if body_given else None}
+        r, note = rim_radius(at, body_options.get("radius", body_options.get("outer_radius")), "a body with {radius}")
+        report = _point_after(report, r, given)
+        report.notes += [note] if note else []
+        return report
 
     body_given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     moment, body_steps = body(**body_options) if body_given else (None, ())
@@ -594,3 +608,34 @@ def impulse(
     if omega0 is None:
         omega0 = assumed.value("omega0", 0.0, "rad/s", "no --omega0: the body starts at rest")
     return assumed.applied(solve_profile(moment, omega0, torque_profile, rule=method, inertia_steps=body_steps))
+
+
+def _point_after(report: Report, r: float, given: dict) -> Report:
+    """A point of the body at r: at the start (ω₀) and at the end of the impulse (ω₁). A constant
+    torque still acts at the end (α = τ/I) and the body has turned θ = ½(ω₀ + ω₁)Δt; after a
+    meeting or a change of shape no torque acts (α = 0) and the angle is not followed; a sampled
+    torque's α at its end is not kept (null, with a note)."""
+    values = {**given, **{key: value.value for key, value in (*report.inputs.items(), *report.results.items()) if value.value is not None}}
+    omega0, omega1 = values.get("omega0"), values.get("omega1")
+    torque, inertia, duration = values.get("torque"), values.get("inertia"), values.get("duration")
+    results = Results(TABLE)
+    results.update(report.results)
+    notes, steps = list(report.notes), list(report.steps)
+    if torque is not None and inertia:
+        alpha, theta = torque / inertia, None if duration is None or omega0 is None or omega1 is None else (omega0 + omega1) * duration / 2
+        alpha0, when = alpha, " at the end of the impulse"
+    elif report.model.startswith("sampled"):
+        alpha = alpha0 = theta = None
+        when = " after the impulse"
+    else:
+        alpha = alpha0 = 0.0
+        theta, when = None, " after"
+    if omega0 is None or omega1 is None:
+        steps += put_point(results, r, None, None, None, when, notes)
+        notes[-1] = "v_t, a_t, a_c, a_total, a_angle, s: ω before or after is not determined by what is given"
+    else:
+        steps += put_point(results, r, omega1, alpha, theta, when, notes)
+        put_start(results, r, omega0, alpha0)
+        if theta is None:
+            notes.append("s: the angle turned while it changes is not followed here")
+    return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)

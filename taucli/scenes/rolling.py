@@ -32,6 +32,7 @@ from taucli.report import (
     quantity_text,
     term,
 )
+from taucli.scenes.point import put_point, put_start, rim_radius
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.friction import needs_kinetic, static_coefficient
 from taucli.table import Results
@@ -723,10 +724,19 @@ def rolling(
     axle_radius: float | None = None,
     yoyo: bool | None = None,
     g: float | None = None,
+    at: float | None = None,
 ) -> Report:
     """``taucli rolling``: down (or up) an incline, or a ball skidding on the flat (--v0 or
     --omega0 with no slope, length or height) until it rolls; a body pulled (--pull), a spool
-    (--axle-radius), a yo-yo (--yoyo)."""
+    (--axle-radius), a yo-yo (--yoyo); --at r, a point of the body at r from its centre."""
+    if at is not None:
+        report = rolling(shape=shape, k2=k2, inertia=inertia, mass=mass, radius=radius, angle=angle, mu_s=mu_s, mu_k=mu_k, length=length,
+                         height=height, v0=v0, omega0=omega0, pull=pull, pull_height=pull_height, pull_angle=pull_angle,
+                         axle_radius=axle_radius, yoyo=yoyo, g=g)
+        r, note = rim_radius(at, radius, "{radius}")
+        report = _point_on_body(report, r, v0 or 0.0, omega0, radius if not yoyo else axle_radius)
+        report.notes += [note] if note else []
+        return report
     if yoyo and inertia is not None and radius is None and axle_radius is not None and mass is not None and shape is None and k2 is None:
         # a yo-yo needs only I/(m r²): its outer radius plays no part (Halliday's 950 g·cm², 120 g, r = 3.2 mm)
         assumed = Assumed()
@@ -783,3 +793,40 @@ def rolling(
             raise InputError("omega0", "applies on the flat ({angle} 0 with {v0}): a skidding ball")
         report = solve_incline(body, angle, gravity, mu_s=mu_s, mu_k=mu_k, length=length, height=height, v0=v0 or 0.0)
     return assumed.applied(report)
+
+
+def _point_on_body(report: Report, r: float, v0: float, omega0: float | None, radius: float | None) -> Report:
+    """A point of the body at r from its centre, turning with the body's ω and α about the
+    centre (its motion relative to the centre; the centre's own velocity adds to it), at the
+    start and at the end of the run the scene reports (the bottom, a drop, a pulled distance:
+    ω = ω₀ + αt, θ = ω₀t + ½αt², α constant; a skid: α = (ω_roll − ω₀)/t_roll while it slides,
+    θ = ½(ω₀ + ω_roll)t_roll, then α = 0 once it rolls on the flat). ω₀ is --omega0 (a skid
+    without it starts with no spin), or v₀/R for a body set rolling (a yo-yo thrown down: R its
+    axle)."""
+    values = {key: value.value for key, value in report.results.items()}
+    results = Results(TABLE)
+    results.update(report.results)
+    notes, steps = list(report.notes), list(report.steps)
+    skid = values.get("omega_roll") is not None and values.get("t_roll") is not None
+    if omega0 is None:  # a skid starts without spin; a body set rolling (or a yo-yo thrown down) at v₀/R
+        omega0 = 0.0 if skid or not v0 else (None if radius is None else v0 / radius)
+    if omega0 is None:
+        raise InputError("at", "needs {radius}: the body's ω₀ = v₀/R", example="{radius} 0.1m {at} 0.05m")
+    if skid and values["t_roll"] > 0:  # a skid, until it rolls
+        omega, duration = values["omega_roll"], values["t_roll"]
+        alpha0, alpha, theta, when = (omega - omega0) / duration, 0.0, (omega0 + omega) * duration / 2, " once it rolls"
+    else:
+        alpha0 = alpha = values.get("alpha")
+        duration = values.get("t")
+        omega = theta = None
+        if alpha is not None and duration is not None:
+            omega, theta = omega0 + alpha * duration, omega0 * duration + alpha * duration * duration / 2
+        label = report.results["v"].label if "v" in report.results else ""
+        when = " " + label.removeprefix("speed").split(",")[0].strip() if label else ""
+    if omega is None:
+        steps += put_point(results, r, omega0, alpha0, 0.0, " at the start", notes)
+    else:
+        steps += put_point(results, r, omega, alpha, theta, when, notes)
+        put_start(results, r, omega0, alpha0)
+    notes.append("the point's motion about the centre of the body (v_t = ωr relative to the centre; the centre's own velocity adds to it)")
+    return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)

@@ -29,6 +29,7 @@ from taucli.report import (
     quantity_text,
     term,
 )
+from taucli.scenes.point import KEYS, RIM, put_point, put_start, rim_radius
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.motion import (
     DEFAULT_DT,
@@ -582,8 +583,8 @@ def spin_down(
     has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     rim = None
     if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
-        if rim_speed is None and until_arc is None:
-            raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed} or {until_arc}")
+        if rim_speed is None and until_arc is None and at != RIM:
+            raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed}, {until_arc} or {at} rim")
         rim = body_options.pop("radius")
     moment, body_steps = body(**body_options) if has_body else (None, ())
     parts = None
@@ -643,7 +644,10 @@ def spin_down(
         report = assumed.applied(_with_contacts(_split_contacts(_with_parts(report, parts), axle, contact), contact))
         if at is None:
             return report
-        return _point(report, at, torques, moment, power, omega0, time=time, until_omega=until_omega, until_angle=until_angle)
+        r, note = rim_radius(at, rim if rim is not None else body_options.get("radius", body_options.get("outer_radius")), "a body with {radius}")
+        report = _point(report, r, torques, moment, power, omega0, time=time, until_omega=until_omega, until_angle=until_angle)
+        report.notes += [note] if note else []
+        return report
 
     if push is not None:
         front_steps.append(_push_step(push))
@@ -1368,18 +1372,6 @@ def _alpha_at(report: Report, torques: Torques, inertia: float | None, power: fl
     return (drive - losses) / inertia
 
 
-def _point_set(r: float, omega: float, alpha: float | None) -> tuple[float, float | None, float, float | None, float | None]:
-    """v_t, a_t (along the motion: negative while slowing), a_c, a_total and a_angle of a point at r."""
-    v = abs(omega) * r
-    a_c = omega * omega * r
-    if alpha is None:
-        return v, None, a_c, None, None
-    a_t = (alpha if omega >= 0 else -alpha) * r
-    total = math.hypot(a_t, a_c)
-    angle = math.atan2(a_t, a_c) if total else None
-    return v, a_t, a_c, total, angle
-
-
 def _point(report: Report, r: float, torques: Torques, inertia, power, omega0, *, time, until_omega, until_angle) -> Report:
     """The report with the results of a point at radius r, at --time or the target, else the start."""
     values = {key: value.value for key, value in report.results.items()}
@@ -1402,49 +1394,13 @@ def _point(report: Report, r: float, torques: Torques, inertia, power, omega0, *
     later = when != " at the start"
     steps = list(report.steps)
     if omega is None:
-        for key in ("v_t", "a_t", "a_c", "a_total", "a_angle", "s"):
-            results.put(key, None, when)
-        notes.append("v_t, a_t, a_c, a_total, a_angle, s: the wheel does not reach the target, so there is no such instant")
+        steps += put_point(results, r, None, None, None, when, notes)
+        notes[-1] = f"{', '.join(KEYS)}: the wheel does not reach the target, so there is no such instant"
     else:
         alpha = _alpha_at(report, torques, inertia, power, omega) if later else alpha0
-        v, a_t, a_c, total, angle = _point_set(r, omega, alpha)
-        results.put("v_t", v, when)
-        results.put("a_t", a_t, when)
-        results.put("a_c", a_c, when)
-        results.put("a_total", total, when)
-        results.put("a_angle", angle, when)
-        results.put("s", r * theta, " by then" if later else " at the start")
-        steps.extend(_point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when))
+        steps += put_point(results, r, omega, alpha, theta, when, notes)
         if alpha is None:
-            notes.append("a_t, a_total, a_angle: α is not defined at this instant (a constant power at rest)")
-        elif angle is None:
-            notes.append("a_angle: the point has no acceleration at this instant, so no direction")
+            notes[-1] = "a_t, a_total, a_angle: α is not defined at this instant (a constant power at rest)"
     if later:
-        v0, _, a_c0, total0, angle0 = _point_set(r, w0, alpha0)
-        results.put("v_t0", v0)
-        results.put("a_c0", a_c0)
-        results.put("a_total0", total0)
-        results.put("a_angle0", angle0)
+        put_start(results, r, w0, alpha0)
     return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)
-
-
-def _point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when) -> list[Step]:
-    """v = ωr, a_t = αr, a_c = ω²r, a = √(a_t² + a_c²), tan φ = a_t/a_c, s = rθ."""
-    radius = quantity_text(r, "m")
-    steps = [
-        Step(f"Speed of the point{when}", "v = ωr", f"{quantity_text(abs(omega), 'rad/s')} × {radius}", quantity_text(v, "m/s"),
-             "every point of a rigid body turns through the same angle, so a point at radius r covers r per radian"),
-        Step(f"Centripetal acceleration{when}", "a_c = ω²r", f"({quantity_text(abs(omega), 'rad/s')})² × {radius}", quantity_text(a_c, "m/s**2"),
-             "the velocity turns at rate ω, so the point accelerates toward the axis by ωv = ω²r"),
-    ]
-    if alpha is not None:
-        steps.append(Step(f"Tangential acceleration{when}", "a_t = αr", f"{quantity_text(alpha if omega >= 0 else -alpha, 'rad/s**2')} × {radius}",
-                          quantity_text(a_t, "m/s**2"), "the speed ωr changes at αr; taken along the motion, negative while the body slows"))
-        steps.append(Step(f"Total acceleration{when}", "a = √(a_t² + a_c²), φ = atan2(a_t, a_c)",
-                          f"√(({quantity_text(a_t, 'm/s**2')})² + ({quantity_text(a_c, 'm/s**2')})²)",
-                          quantity_text(total, "m/s**2") + ("" if angle is None else f", φ = {quantity_text(angle, 'rad')}"),
-                          "the two components are at right angles; φ is measured from the radius pointing to the axis, positive toward the motion"))
-    if theta:
-        steps.append(Step("Arc the point has travelled", "s = rθ", f"{radius} × {quantity_text(theta, 'rad')}", quantity_text(r * theta, "m"),
-                          "an arc is its radius times the angle it spans (the string a drum winds, the tread a tyre moves)"))
-    return steps
