@@ -187,22 +187,25 @@ _taucli() {
             --omega1) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --duration) _taucli_units s ms min h; return 0 ;;
+            --brake) :; return 0 ;;
+            --face) :; return 0 ;;
+            --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --inertia-final) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --torque-profile) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --particle) :; return 0 ;;
             --couple) :; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) :; return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --brake --face --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from taucli.names import METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
-from taucli.table import CHOICE, COUNT, FILE, FLAG, PART, TEXT, Option, Result
+from taucli.table import BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
 
 BODY = "Body (shape and dimensions)"
 MOTION = "Motion and method"
@@ -121,4 +121,27 @@ POINT_RESULTS = (  # taucli.scenes.point
     Result("a_c0", "m/s**2", "centripetal acceleration at the start"),
     Result("a_total0", "m/s**2", "total acceleration at the start"),
     Result("a_angle0", "rad", "angle of a from the radius at the start"),
+)
+
+
+# Contacts pressed against the body (#24): spin-down and impulse. taucli.scenes.contact
+BRAKE_OPTION = Option(
+    "brake", BRAKE,
+    'A brake shoe (or a tool) pressed against the body, e.g. "force=100N mu=0.4 radius=0.5m": torque μ·N·r, like --friction; '
+    "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius (repeatable).",
+    repeatable=True, metavar='"force=… mu=… radius=…"',
+)
+FACE_OPTION = Option(
+    "face", FACE,
+    'A flat face pressed on a surface, e.g. "mu=0.2" (the body lying on its face: its weight, its radii) or '
+    '"mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm pressure=uniform|wear surfaces=2" (a clutch plate) (repeatable).',
+    repeatable=True, metavar='"mu=… [force=…]"',
+)
+CONTACT_RESULTS = (
+    Result("torque_brake", "N*m", "friction torque of the brakes"),
+    Result("work_brake", "J", "energy the brakes take…"),
+    Result("power_brake", "W", "power the brakes take…"),
+    Result("torque_face", "N*m", "friction torque of the faces"),
+    Result("work_face", "J", "energy the faces take…"),
+    Result("power_face", "W", "power the faces take…"),
 )

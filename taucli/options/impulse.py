@@ -1,7 +1,7 @@
 """taucli impulse: angular impulse and momentum, τΔt = IΔω."""
 
 from taucli.names import QUADRATURE_NAMES
-from taucli.options.common import ANSWER, BODY_OPTIONS, POINT_RESULTS, point_option
+from taucli.options.common import ANSWER, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, point_option
 from taucli.table import CHOICE, COUPLE, FILE, PARTICLE, Command, Option, Result
 
 MEETS = "Particles and bodies that meet it (L conserved)"
@@ -16,6 +16,9 @@ COMMAND = Command(
         Option("omega1", "angular velocity", "Angular velocity after.", sign="any"),
         Option("torque", "torque", "Constant torque while it acts.", sign="any"),
         Option("duration", "time", "How long the torque acts."),
+        BRAKE_OPTION,
+        FACE_OPTION,
+        GRAVITY,
         Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
         Option("torque_profile", FILE, "CSV 't [ms], torque [N*m]' then rows; - for stdin.", metavar="FILE"),
         Option("particle", PARTICLE,
@@ -45,6 +48,8 @@ COMMAND = Command(
         Result("peak_torque", "N*m", "largest torque…"),
         Result("KE_lost", "J", "kinetic energy lost (KE0 − KE1)…"),
         Result("KE_lost_fraction", "", "fraction of the kinetic energy lost"),
+        Result("J_net", "N*m*s", "net angular impulse, drive and friction (IΔω)"),
+        *CONTACT_RESULTS,
         *POINT_RESULTS,
     ),
     output=ANSWER,

@@ -1,7 +1,7 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
-from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, METHOD, MOTION, RTOL, POINT_RESULTS, point_option
-from taucli.table import BRAKE, FACE, FLAG, Command, Option, Result
+from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, METHOD, MOTION, RTOL, POINT_RESULTS, point_option, BRAKE_OPTION, FACE_OPTION, CONTACT_RESULTS
+from taucli.table import FLAG, Command, Option, Result
 
 COMMAND = Command(
     name="spin-down",
@@ -15,14 +15,8 @@ COMMAND = Command(
         Option("lever", "length", "Distance of the push from the axle, e.g. 0.25m."),
         Option("push_angle", "angle", "Angle between lever arm and force.", sign="any", default="90deg"),
         Option("friction", "torque", "Constant friction torque at the axle (also holds it at rest), e.g. 0.3N*m.", sign="nonnegative"),
-        Option("brake", BRAKE,
-               'A brake shoe (or a tool) pressed against the body, e.g. "force=100N mu=0.4 radius=0.5m": torque μ·N·r, like --friction; '
-               "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius (repeatable).",
-               repeatable=True, metavar='"force=… mu=… radius=…"'),
-        Option("face", FACE,
-               'A flat face pressed on a surface, e.g. "mu=0.2" (the body lying on its face: its weight, its radii) or '
-               '"mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm pressure=uniform|wear surfaces=2" (a clutch plate) (repeatable).',
-               repeatable=True, metavar='"mu=… [force=…]"'),
+        BRAKE_OPTION,
+        FACE_OPTION,
         GRAVITY,
         Option("viscous", "viscous coefficient", "Viscous coefficient b (torque bω), e.g. 0.01N*m*s.", sign="nonnegative"),
         Option("drag", "drag coefficient", "Drag coefficient k (torque kωⁿ), e.g. 0.001N*m*s^2.", sign="nonnegative"),
@@ -85,12 +79,7 @@ COMMAND = Command(
         Result("power_viscous", "W", "power the viscous torque takes…"),
         Result("power_drag", "W", "power drag takes…"),
         *POINT_RESULTS,
-        Result("torque_brake", "N*m", "friction torque of the brakes"),
-        Result("work_brake", "J", "energy the brakes take…"),
-        Result("power_brake", "W", "power the brakes take…"),
-        Result("torque_face", "N*m", "friction torque of the faces"),
-        Result("work_face", "J", "energy the faces take…"),
-        Result("power_face", "W", "power the faces take…"),
+        *CONTACT_RESULTS,
     ),
     output=ANSWER,
     headline="alpha0",

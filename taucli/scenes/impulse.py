@@ -559,6 +559,9 @@ def impulse(
     particle: Sequence[Particle] = (),
     couple: Sequence[Couple] = (),
     at: float | None = None,
+    brake: Sequence = (),
+    face: Sequence = (),
+    g: float | None = None,
     **body_options,
 ) -> Report:
     """``taucli impulse``: τΔt = IΔω solved for the one left out; or a moment of inertia that
@@ -568,7 +571,7 @@ def impulse(
 
     if at is not None:
         report = impulse(omega0=omega0, omega1=omega1, torque=torque, duration=duration, inertia_final=inertia_final,
-                         torque_profile=torque_profile, method=method, particle=particle, couple=couple, **body_options)
+                         torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, g=g, **body_options)
         body_given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
         given = {"omega0": omega0, "omega1": omega1, "torque": torque, "duration": duration,
                  "inertia": body(**body_options)[0] if body_given else None}
@@ -579,6 +582,11 @@ def impulse(
 
     body_given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     moment, body_steps = body(**body_options) if body_given else (None, ())
+    if brake or face:
+        return _braked(moment, body_steps, body_options, omega0, omega1, torque, duration, tuple(brake), tuple(face), g,
+                       {"inertia_final": inertia_final, "torque_profile": torque_profile, "particle": particle or None, "couple": couple or None})
+    if g is not None:
+        raise InputError("g", "is used only for the weight on a {face} with no force=")
     if particle or couple:
         mode = "particle" if particle else "couple"
         for name, value in (("omega1", omega1), ("torque", torque), ("duration", duration), ("inertia_final", inertia_final), ("torque_profile", torque_profile)):
@@ -639,3 +647,82 @@ def _point_after(report: Report, r: float, given: dict) -> Report:
         if theta is None:
             notes.append("s: the angle turned while it changes is not followed here")
     return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)
+
+
+def _braked(moment, body_steps, body_options: dict, omega0, omega1, torque, duration, brakes, faces, g, others: dict) -> Report:
+    """A constant torque τ over Δt on a body that brakes or faces rub (#24): a constant Coulomb
+    torque τ_f against the turning (static μ holding it at rest), so I dω/dt = τ − τ_f·sgn ω:
+    it may stop within Δt, stay held, or turn back with the friction reversed (motion.evolve).
+    ω₁ follows; the net angular impulse I(ω₁ − ω₀) = τΔt − ∫τ_f sgn ω dt."""
+    from taucli.scenes.contact import contacts
+    from taucli.scenes.motion import Evolver, Loads, Method, evolve
+
+    for name, value in others.items():
+        if value is not None:
+            raise InputError(name, "does not combine with {brake} or {face} here: they act with a constant {torque} over {duration}")
+    if omega1 is not None:
+        raise InputError("omega1", "is what {brake} and {face} let this solve for: leave it out")
+    for name, value in (("inertia", moment), ("torque", torque), ("duration", duration)):
+        if value is None:
+            raise InputError(name, "is required with {brake} or {face}: the friction's share is worked out over the motion, from the start",
+                             example={"inertia": "{inertia} 0.5kg*m^2", "torque": "{torque} 5N*m", "duration": "{duration} 2s"}[name])
+    assumed = Assumed()
+    if omega0 is None:
+        omega0 = assumed.value("omega0", 0.0, "rad/s", "no --omega0: the body starts at rest")
+    weight = assumed.gravity(g) if any(plate.force is None for plate in faces) else None
+    contact = contacts(brakes, faces, body_options, body_options.get("mass"), weight)
+    loads = Loads(drive=torque, friction=contact.kinetic, static=contact.static)
+    motion = evolve(moment, loads, omega0, Evolver(Method("exact")))
+    omega_end, theta = motion.state_at(duration)
+    stop = motion.stop if motion.stop is not None and motion.stop[0] < duration else None
+    # the angle swept both ways: to the stop, then (turned back) from there
+    swept = abs(theta) if stop is None else abs(stop[1]) + abs(theta - motion.signed_stop[1])
+    results = Results(TABLE)
+    impulse = torque * duration
+    results.put("omega1", omega_end, " Δt")
+    results.put("delta_omega", omega_end - omega0)
+    results.put("J", impulse, " of the applied torque, τΔt")
+    results.put("J_net", moment * (omega_end - omega0))
+    results.put("L0", moment * omega0)
+    results.put("L1", moment * omega_end, " Δt")
+    energy0, energy1 = moment * omega0 * omega0 / 2, moment * omega_end * omega_end / 2
+    results.put("KE0", energy0, "")
+    results.put("KE1", energy1, " Δt")
+    results.put("work", energy1 - energy0)
+    speed0 = abs(omega0)
+    for name, share in (("brake", contact.brake), ("face", contact.face)):
+        if (name == "brake" and brakes) or (name == "face" and faces):
+            results.put(f"torque_{name}", share)
+            results.put(f"work_{name}", share * swept, " during Δt")
+            results.put(f"power_{name}", share * speed0, " at the start")
+    notes = list(contact.notes)
+    if motion.held_from_start:
+        notes.append(f"static friction holds the body: |τ| = {quantity_text(abs(torque), 'N*m')} does not exceed {quantity_text(contact.static, 'N*m')}")
+    elif stop is not None:
+        notes.append(f"the body stops at t = {quantity_text(stop[0], 's')} within Δt"
+                     + (", and the torque turns it back, friction reversed" if motion.second is not None else ", and static friction holds it"))
+    steps = [*body_steps, *contact.steps]
+    steps.append(Step("Friction torques add", "τ_f = " + " + ".join(s for s, v in (("τ_b", contact.brake), ("τ_face", contact.face)) if v),
+                      " + ".join(term(v, "N*m") for v in (contact.brake, contact.face) if v), quantity_text(contact.kinetic, "N*m"),
+                      "each is a constant torque against the motion: together one friction torque τ_f"))
+    if not motion.held_from_start:
+        alpha = motion.initial_rate
+        steps.append(Step("Angular acceleration while it turns", "α = (τ − τ_f·sgn ω)/I",
+                          f"({term(torque, 'N*m')} {'−' if motion.direction > 0 else '+'} {term(contact.kinetic, 'N*m')}) / {term(moment, 'kg*m**2')}",
+                          quantity_text(alpha, "rad/s**2"), "Newton's second law for rotation, friction against the motion"))
+    if stop is None:
+        how = f"{term(omega0, 'rad/s')} + {term(motion.initial_rate, 'rad/s**2')} × {term(duration, 's')}"
+    else:
+        then = ("static friction holds it" if motion.second is None else
+                f"then α₂ = {term(motion.second.direction * motion.second.rate(0.0), 'rad/s**2')} for {term(duration - stop[0], 's')}")
+        how = f"stops at t = |ω₀/α| = {term(stop[0], 's')}; {then}"
+    steps.append(Step("Angular velocity after Δt", "ω₁ = ω₀ + αΔt (to the stop, if it comes first; then held, or turned back)", how,
+                      quantity_text(omega_end, "rad/s"), "constant α within each stretch of motion one way"))
+    steps.append(Step("Angular impulse: applied and net", "J = τΔt;  J_net = IΔω = J − ∫τ_f sgn ω dt",
+                      f"{term(torque, 'N*m')} × {term(duration, 's')};  {term(moment, 'kg*m**2')} × ({term(omega_end, 'rad/s')} − {term(omega0, 'rad/s')})",
+                      f"{quantity_text(impulse, 'N*m*s')};  {quantity_text(moment * (omega_end - omega0), 'N*m*s')}",
+                      "the friction's angular impulse is the difference: what the brakes and faces took from the torque's"))
+    steps.append(Step("Energy the friction takes", "W_f = τ_f × angle swept", f"{term(contact.kinetic, 'N*m')} × {term(swept, 'rad')}",
+                      quantity_text(contact.kinetic * swept, "J"), "a constant friction torque takes its torque for every radian swept, either way"))
+    model = "constant torque with " + ", ".join(contact.models) + ": I dω/dt = τ − τ_f sgn ω (static μ holding at rest)"
+    return assumed.applied(Report("impulse", model, "closed form", results, steps, notes))
