@@ -95,6 +95,8 @@ def test_a_face_on_a_table_takes_its_weight():
     ({"torque": "1N*m"}, "duration"),
     ({"duration": "1s"}, "torque"),
     ({"torque": "1N*m", "duration": "1s", "particle": ["mass=1kg speed=1m/s radius=1m"]}, "particle"),
+    ({"torque": "1N*m", "duration": "1s", "method": "simpson"}, "method"),
+    ({"torque": "1N*m", "duration": "1s", "g": "9.8m/s^2"}, "g"),
 ])
 def test_what_a_braked_impulse_refuses(given, name):
     with pytest.raises(InputError) as caught:

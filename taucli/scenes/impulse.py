@@ -583,6 +583,10 @@ def impulse(
     body_given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     moment, body_steps = body(**body_options) if body_given else (None, ())
     if brake or face:
+        if method != "auto":
+            raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); a braked impulse has a closed form")
+        if g is not None and not any(plate.force is None for plate in face):
+            raise InputError("g", "is used only for the weight on a {face} with no force=")
         return _braked(moment, body_steps, body_options, omega0, omega1, torque, duration, tuple(brake), tuple(face), g,
                        {"inertia_final": inertia_final, "torque_profile": torque_profile, "particle": particle or None, "couple": couple or None})
     if g is not None:
