@@ -7,8 +7,26 @@ alone takes longer than a help should. Everything else goes to taucli.cli.
 import sys
 
 
+SYMBOLS = "²½αωθτ·√−→₁≤μ"  # what taucli's text uses beyond ASCII
+
+
+def _speakable(stream) -> None:
+    """A stream whose encoding cannot write taucli's symbols (PYTHONIOENCODING=ascii, a Latin-1
+    console) writes UTF-8 instead: JSON is UTF-8 by its standard (RFC 8259), and a garbled ² is
+    better than a run that dies on it."""
+    encoding = getattr(stream, "encoding", None)
+    if not encoding or not hasattr(stream, "reconfigure"):
+        return
+    try:
+        SYMBOLS.encode(encoding)
+    except (UnicodeEncodeError, LookupError):
+        stream.reconfigure(encoding="utf-8")
+
+
 def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
+    _speakable(sys.stdout)
+    _speakable(sys.stderr)
     from taucli import help
 
     answered = help.answer(args, sys.stdout, sys.stderr)

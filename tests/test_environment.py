@@ -227,3 +227,20 @@ def test_an_internal_error_shows_a_traceback_only_with_debug(monkeypatch, capsys
     err = capsys.readouterr().err
     assert "Traceback" in err and 'raise RuntimeError("a planted bug")' in err
     assert err.rstrip().splitlines()[-1].startswith("taucli: error: internal error (RuntimeError: a planted bug)")
+
+
+@pytest.mark.parametrize("extra", [("--json",), (), ("--get", "a")])
+def test_a_stdout_that_cannot_write_the_symbols_gets_utf8_not_a_crash(extra):
+    """PYTHONIOENCODING=ascii made every answer exit 1 on ², ½ or α (UnicodeEncodeError)."""
+    import json
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "taucli", "atwood", "--m1", "4kg", "--m2", "1kg", "--pulley-mass", "2kg", *extra],
+                          capture_output=True, env={**__import__("os").environ, "PYTHONIOENCODING": "ascii"})
+    assert done.returncode == 0, done.stderr
+    text = done.stdout.decode("utf-8")
+    if extra == ("--json",):
+        assert json.loads(text)["results"]["a"]["value"] == pytest.approx(4.9 * 9.80665 / 9.8, rel=1e-12)
+    elif not extra:
+        assert "½" in text
