@@ -52,6 +52,17 @@ def run_taucli(*args: str, env: dict[str, str] | None = None, stdin: str | None 
     return Run(done.returncode, done.stdout, done.stderr)
 
 
+@pytest.fixture(autouse=True)
+def _mpmath_precision(request):
+    """Each test's mpmath references at its module's MP_DPS digits (30 where it names none), and
+    the precision restored afterwards: mpmath.mp is one global, so a module's `mpmath.mp.dps = 40`
+    held only until the next module was imported, and a test that set it changed the next ones."""
+    import mpmath
+
+    with mpmath.workdps(getattr(request.module, "MP_DPS", 30)):
+        yield
+
+
 @pytest.fixture
 def taucli():
     return run_taucli

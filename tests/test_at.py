@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 import taucli
 
-mpmath.mp.dps = 50
+MP_DPS = 50  # the references' precision, set for each test by conftest
 
 
 def values(report):

@@ -15,8 +15,9 @@ from hypothesis import strategies as st
 import taucli
 from conftest import assert_usage_error, run_taucli
 
-mpmath.mp.dps = 50
-G = mpmath.mpf("9.80665")
+MP_DPS = 50  # the references' precision, set for each test by conftest
+with mpmath.workdps(MP_DPS):
+    G = mpmath.mpf("9.80665")  # standard gravity, exact to MP_DPS digits
 
 
 def values(report):

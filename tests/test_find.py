@@ -17,8 +17,9 @@ from taucli import cli
 from taucli.errors import InputError
 from taucli.find import brent
 
-mpmath.mp.dps = 40
-G = mpmath.mpf("9.80665")
+MP_DPS = 40  # the references' precision, set for each test by conftest
+with mpmath.workdps(MP_DPS):
+    G = mpmath.mpf("9.80665")  # standard gravity, exact to MP_DPS digits
 
 
 def run(*args: str, stdin: str = "") -> tuple[int, str, str]:

@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 import taucli
 from taucli.errors import InputError
 
-mpmath.mp.dps = 40
+MP_DPS = 40  # the references' precision, set for each test by conftest
 
 
 def _reference(inertia, omega0, torque, duration, kinetic, static):

@@ -15,7 +15,7 @@ import taucli
 from conftest import assert_usage_error, run_taucli
 from taucli.errors import InputError
 
-mpmath.mp.dps = 50
+MP_DPS = 50  # the references' precision, set for each test by conftest
 
 
 def values(report):

@@ -15,7 +15,7 @@ from conftest import assert_usage_error, run_taucli
 from taucli.errors import InputError
 from taucli.scenes.torque import cross, difference_of_products, sin_exact
 
-mpmath.mp.dps = 40
+MP_DPS = 40  # the references' precision, set for each test by conftest
 
 
 def values(report):

@@ -18,8 +18,9 @@ from taucli.options import SCENES
 from taucli.render import STRICT_JSON, document
 from taucli.uncertain import split, with_uncertainty
 
-mpmath.mp.dps = 40
-G = mpmath.mpf("9.80665")
+MP_DPS = 40  # the references' precision, set for each test by conftest
+with mpmath.workdps(MP_DPS):
+    G = mpmath.mpf("9.80665")  # standard gravity, exact to MP_DPS digits
 
 
 def run(*args: str, stdin: str = "") -> tuple[int, str, str]:
