@@ -18,6 +18,8 @@ from pathlib import Path
 
 import mpmath
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from taucli.render import shown
 from taucli.report import pretty_unit
@@ -26,6 +28,7 @@ from test_table import WORKING
 README = Path(__file__).parent.parent / "README.md"
 NUMBER = re.compile(r"(?<![\w.^])[-−]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 UNIT_AFTER = re.compile(r"\s*(?:[a-zA-Zµ°Ω]|rad|rev)")
+MP_DPS = 40  # the references' precision, set for each test by conftest
 
 
 def _commands() -> list[list[str]]:
@@ -110,7 +113,6 @@ def test_the_steps_of_a_drive_that_reverses_the_wheel():
     """spin-down --torque -3 --friction 1: it stops at 15 s and turns back at α₂ = −1 rad/s²;
     the net angle and the total turned both ways, against the motion worked here in mpmath."""
     doc = next(doc for doc in _documents() if doc["scene"] == "spin-down" and doc["inputs"].get("torque", {}).get("value") == -3)
-    mpmath.mp.dps = 40
     inertia, omega0, drive, friction, t = map(mpmath.mpf, (2, 30, -3, 1, 30))
     slowing = (drive - friction) / inertia  # friction against +ω while it turns forward
     t_stop = -omega0 / slowing
@@ -131,3 +133,50 @@ def test_the_steps_of_a_drive_that_reverses_the_wheel():
 def test_no_total_angle_where_the_wheel_does_not_turn_back():
     doc = next(doc for doc in _documents() if doc["scene"] == "spin-down" and "time" in doc["inputs"] and "torque" not in doc["inputs"])
     assert "theta_total" not in doc["results"]
+
+
+def _first_number(text: str) -> float:
+    return float(NUMBER.search(text)[0].replace("−", "-"))
+
+
+@settings(max_examples=150, deadline=None)
+@given(
+    omega0=st.floats(-50, 50).filter(lambda w: abs(w) > 1e-3),
+    alpha=st.floats(-20, 20).filter(lambda a: abs(a) > 1e-3),
+    time=st.floats(0.01, 30),
+    target=st.sampled_from(["time", "until_omega", "until_angle"]),
+)
+def test_a_given_alpha_shows_its_kinematics(omega0, alpha, time, target):
+    """spin-down --alpha: the steps work out what the table gives (ω = ω₀ + αt, θ = ω₀t + ½αt²,
+    the stop, the time to a target), each result against constant-α motion worked in mpmath."""
+    import taucli
+
+    w0, a, t = map(mpmath.mpf, (omega0, alpha, time))
+    omega_at, theta_at = w0 + a * t, w0 * t + a * t * t / 2
+    keyword = {"time": time, "until_omega": float(omega_at), "until_angle": float(theta_at)}[target]
+    report = taucli.spin_down(alpha=alpha, omega0=omega0, **{target: keyword})
+    steps = {step.title: step for step in report.steps}
+    expected = {}
+    if w0 * a < 0:  # it stops on the way
+        expected["Time to stop"] = -w0 / a
+        expected["Angle turned while stopping"] = abs(w0 * w0 / (2 * a))
+    if target == "time":
+        expected["Angular velocity after t"] = omega_at
+        expected["Angle turned in t"] = theta_at
+        expected["Convert to revolutions"] = theta_at / (2 * mpmath.pi)
+        if w0 * a < 0 and t > -w0 / a:
+            stop_angle = -w0 * w0 / (2 * a)
+            expected["Total angle turned, both ways"] = abs(stop_angle) + abs(theta_at - stop_angle)
+    elif target == "until_omega":
+        expected["Time to reach ω₁"] = t
+        expected["Angle turned by then"] = theta_at
+    elif report.results["t_until"].value is not None:  # the first time at θ may come before t
+        first = report.results["t_until"].value
+        assert float(w0 * first + a * first * first / 2) == pytest.approx(float(theta_at), rel=1e-9, abs=1e-9)
+        expected["Angular velocity at the angle"] = w0 + a * first
+        if "Time to turn it" in steps:
+            expected["Time to turn it"] = first
+    for title, value in expected.items():
+        assert title in steps, f"no step {title!r}: {list(steps)}"
+        assert _first_number(steps[title].result) == pytest.approx(float(value), rel=1e-5, abs=float(1e-5 * (abs(w0) + abs(a) * t) * t)), title
+        assert re.search(r"\d", steps[title].numbers), title

@@ -451,6 +451,32 @@ def _push_step(push: Push) -> Step:
     )
 
 
+def _stop_steps(w0: float, alpha: float, stop: tuple[float, float]) -> list[Step]:
+    """t_stop = ω₀/|α| and θ_stop = ω₀²/(2|α|): constant α against the motion."""
+    return [
+        Step("Time to stop", "ω = ω₀ + αt = 0  ⇒  t = ω₀/|α|", f"{term(abs(w0), 'rad/s')} / {term(abs(alpha), 'rad/s**2')}",
+             quantity_text(stop[0], "s"), "constant torque gives constant α, so ω falls linearly to zero"),
+        Step("Angle turned while stopping", "θ = ω₀²/(2|α|)", f"({term(abs(w0), 'rad/s')})² / (2 × {term(abs(alpha), 'rad/s**2')})",
+             quantity_text(abs(stop[1]), "rad") + f" = {fmt(abs(stop[1]) / TWO_PI)} rev", "the rotational analogue of v² = 2as"),
+    ]
+
+
+def _after_time_steps(omega0: float, alpha: float, time: float, results: Results) -> list[Step]:
+    """ω = ω₀ + αt and θ = ω₀t + ½αt² (the net angle: it holds through a turn back at constant α)."""
+    return [
+        Step("Angular velocity after t", "ω = ω₀ + αt", f"{term(omega0, 'rad/s')} + {term(alpha, 'rad/s**2')} × {term(time, 's')}",
+             quantity_text(results["omega"].value, "rad/s"), "constant α: ω changes by the same amount every second"),
+        Step("Angle turned in t", "θ = ω₀t + ½αt²",
+             f"{term(omega0, 'rad/s')} × {term(time, 's')} + ½ × {term(alpha, 'rad/s**2')} × ({term(time, 's')})²",
+             quantity_text(results["theta"].value, "rad"), "the rotational analogue of s = ut + ½at²"),
+    ]
+
+
+def _revolutions_step(results: Results) -> Step:
+    return Step("Convert to revolutions", "revs = θ / 2π", f"{term(results['theta'].value, 'rad')} / 2π",
+                f"{fmt(results['revs'].value)} rev", "one full revolution is 2π radians")
+
+
 def _kinematics_steps(torques, first, second, stop, results, time, method, omega0) -> list[Step]:
     steps: list[Step] = []
     closed = first.closed
@@ -468,22 +494,14 @@ def _kinematics_steps(torques, first, second, stop, results, time, method, omega
         )
     elif closed.uniform:
         if stop is not None and stop[0] > 0:
-            steps.append(Step("Time to stop", "ω = ω₀ + αt = 0  ⇒  t = ω₀/|α|", f"{term(w0, 'rad/s')} / {term(abs(alpha), 'rad/s**2')}",
-                              quantity_text(stop[0], "s"), "constant torque gives constant α, so ω falls linearly to zero"))
-            steps.append(Step("Angle turned while stopping", "θ = ω₀²/(2|α|)", f"({term(w0, 'rad/s')})² / (2 × {term(abs(alpha), 'rad/s**2')})",
-                              quantity_text(abs(stop[1]), "rad") + f" = {fmt(abs(stop[1]) / TWO_PI)} rev", "the rotational analogue of v² = 2as"))
+            steps.extend(_stop_steps(w0, alpha, stop))
         back = second is not None and stop is not None and time is not None and time > stop[0]
         if time is not None and results["theta"].value is not None and not back:
-            steps.append(Step("Angular velocity after t", "ω = ω₀ + αt", f"{term(omega0, 'rad/s')} + {term(alpha, 'rad/s**2')} × {term(time, 's')}",
-                              quantity_text(results["omega"].value, "rad/s"), "constant α: ω changes by the same amount every second"))
-            steps.append(Step("Angle turned in t", "θ = ω₀t + ½αt²",
-                              f"{term(omega0, 'rad/s')} × {term(time, 's')} + ½ × {term(alpha, 'rad/s**2')} × ({term(time, 's')})²",
-                              quantity_text(results["theta"].value, "rad"), "the rotational analogue of s = ut + ½at²"))
+            steps.extend(_after_time_steps(omega0, alpha, time, results))
         elif back and results["theta"].value is not None:
             steps.extend(_turned_back_steps(torques, results['I'].value, second, stop, results, time))
         if time is not None and results["theta"].value is not None:
-            steps.append(Step("Convert to revolutions", "revs = θ / 2π", f"{term(results['theta'].value, 'rad')} / 2π",
-                              f"{fmt(results['revs'].value)} rev", "one full revolution is 2π radians"))
+            steps.append(_revolutions_step(results))
     else:
         discriminant = closed.viscous**2 + 4 * closed.drag * closed.constant
         steps.append(
@@ -847,6 +865,8 @@ def _uniform_report(
             if time is None:
                 results.put("omega", None if t is None else motion.omega(t), f" at θ = {fmt(until_angle)} rad")
                 end = t
+    if given_alpha:
+        steps.extend(_given_alpha_steps(motion, w0_given, time, until_omega, until_angle, results))
     if inertia is not None or losses:
         _uniform_torque(inertia, torques, motion, end, results, steps, notes)
     model = "uniform angular acceleration (constant α)" + ("" if given_alpha else ", from the targets")
@@ -906,6 +926,50 @@ def _uniform_alpha_steps(w0, alpha, time, w1, theta, given_alpha, w0_given) -> l
                           "the rotational analogue of v² = u² + 2as"))
         steps.append(Step("Time taken", "t = 2θ/(ω₀ + ω₁)", f"2 × {term(theta, 'rad')} / ({term(w0, 'rad/s')} + {term(w1, 'rad/s')})",
                           quantity_text(2 * theta / (w0 + w1), "s"), "the angle is the mean speed times the time"))
+    return steps
+
+
+def _given_alpha_steps(motion, w0_given: float | None, time: float | None, until_omega: float | None, until_angle: float | None,
+                       results: Results) -> list[Step]:
+    """The worked kinematics at a given constant α: ω₀ where the targets fix it, the stop, then
+    ω and θ at t, or the time (and the angle or speed) at the target."""
+    w0, alpha = motion.omega0, motion.alpha
+    a = term(alpha, "rad/s**2")
+    steps: list[Step] = []
+    if w0_given is None and "omega0" in results:  # two targets and α fixed ω₀
+        if time is not None and until_omega is not None:
+            equation, numbers = "ω₀ = ω₁ − αt", f"{term(until_omega, 'rad/s')} − {a} × {term(time, 's')}"
+        elif time is not None:
+            equation, numbers = "ω₀ = θ/t − ½αt", f"{term(until_angle, 'rad')} / {term(time, 's')} − ½ × {a} × {term(time, 's')}"
+        else:
+            equation, numbers = "ω₁² = ω₀² + 2αθ  ⇒  ω₀ = ±√(ω₁² − 2αθ)", f"√(({term(until_omega, 'rad/s')})² − 2 × {a} × {term(until_angle, 'rad')})"
+        steps.append(Step("Initial angular velocity from the targets", equation, numbers, quantity_text(w0, "rad/s"),
+                          "at constant α any three of ω₀, ω₁, α, t, θ give the rest"))
+    stop = motion.stop()
+    if stop is not None and stop[0] > 0:
+        steps.extend(_stop_steps(w0, alpha, stop))
+    if time is not None and "theta" in results:
+        steps.extend(_after_time_steps(w0, alpha, time, results))
+        if "theta_total" in results:
+            steps.append(Step("Total angle turned, both ways", "θ_total = |θ_stop| + |θ − θ_stop|",
+                              f"{term(abs(stop[1]), 'rad')} + |{term(results['theta'].value, 'rad')} − {term(stop[1], 'rad')}|",
+                              quantity_text(results["theta_total"].value, "rad"), "θ is the net angle; after the stop the wheel turns back over part of it"))
+        steps.append(_revolutions_step(results))
+    elif "t_until" in results and results["t_until"].value is not None:
+        t = results["t_until"].value
+        if until_omega is not None:
+            steps.append(Step("Time to reach ω₁", "t = (ω₁ − ω₀)/α", f"({term(until_omega, 'rad/s')} − {term(w0, 'rad/s')}) / {a}",
+                              quantity_text(t, "s"), "constant α: ω changes by the same amount every second"))
+            if "theta_until" in results:
+                steps.append(Step("Angle turned by then", "θ = ω₀t + ½αt²", f"{term(w0, 'rad/s')} × {term(t, 's')} + ½ × {a} × ({term(t, 's')})²",
+                                  quantity_text(results["theta_until"].value, "rad"), "the rotational analogue of s = ut + ½at²"))
+        elif until_angle is not None and "omega" in results:
+            omega = results["omega"].value
+            steps.append(Step("Angular velocity at the angle", "ω₁² = ω₀² + 2αθ  ⇒  ω₁ = ±√(ω₀² + 2αθ)", f"√(({term(w0, 'rad/s')})² + 2 × {a} × {term(until_angle, 'rad')})",
+                              quantity_text(omega, "rad/s"), "the rotational analogue of v² = u² + 2as; its sign is the way the wheel turns then"))
+            if w0 + omega:
+                steps.append(Step("Time to turn it", "t = 2θ/(ω₀ + ω₁)", f"2 × {term(until_angle, 'rad')} / ({term(w0, 'rad/s')} + {term(omega, 'rad/s')})",
+                                  quantity_text(t, "s"), "at constant α the mean speed is the average of the first and the last"))
     return steps
 
 
