@@ -461,14 +461,18 @@ def _stop_steps(w0: float, alpha: float, stop: tuple[float, float]) -> list[Step
     ]
 
 
+def _angle_step(title: str, omega0: float, alpha: float, time: float, theta: float) -> Step:
+    """θ = ω₀t + ½αt²: the net angle, which holds through a turn back at constant α."""
+    return Step(title, "θ = ω₀t + ½αt²", f"{term(omega0, 'rad/s')} × {term(time, 's')} + ½ × {term(alpha, 'rad/s**2')} × ({term(time, 's')})²",
+                quantity_text(theta, "rad"), "the rotational analogue of s = ut + ½at²")
+
+
 def _after_time_steps(omega0: float, alpha: float, time: float, results: Results) -> list[Step]:
-    """ω = ω₀ + αt and θ = ω₀t + ½αt² (the net angle: it holds through a turn back at constant α)."""
+    """ω = ω₀ + αt and θ = ω₀t + ½αt² at t."""
     return [
         Step("Angular velocity after t", "ω = ω₀ + αt", f"{term(omega0, 'rad/s')} + {term(alpha, 'rad/s**2')} × {term(time, 's')}",
              quantity_text(results["omega"].value, "rad/s"), "constant α: ω changes by the same amount every second"),
-        Step("Angle turned in t", "θ = ω₀t + ½αt²",
-             f"{term(omega0, 'rad/s')} × {term(time, 's')} + ½ × {term(alpha, 'rad/s**2')} × ({term(time, 's')})²",
-             quantity_text(results["theta"].value, "rad"), "the rotational analogue of s = ut + ½at²"),
+        _angle_step("Angle turned in t", omega0, alpha, time, results["theta"].value),
     ]
 
 
@@ -808,7 +812,8 @@ def _uniform_report(
     targets = sum(x is not None for x in (time, until_omega, until_angle))
     pair = not given_alpha or (w0_given is None and targets >= 2)  # the targets fixed α or ω₀
     steps = list(inertia_steps) + front_steps
-    steps.extend(_uniform_alpha_steps(w0, alpha, time, until_omega, until_angle, given_alpha, w0_given))
+    if not given_alpha:  # the steps that found α; a given α's come once the results are in
+        steps.extend(_uniform_alpha_steps(w0, alpha, time, until_omega, until_angle))
     if w0_given is None and pair and given_alpha:
         results.put("omega0", w0, " (from the targets)")
     if inertia is not None:
@@ -906,10 +911,9 @@ def _first_time_at_angle(motion, theta: float, notes: list[str]) -> float | None
     return times[0]
 
 
-def _uniform_alpha_steps(w0, alpha, time, w1, theta, given_alpha, w0_given) -> list[Step]:
+def _uniform_alpha_steps(w0, alpha, time, w1, theta) -> list[Step]:
+    """α (and the time where it is not given) from the targets: any three of ω₀, ω₁, α, t, θ."""
     steps: list[Step] = []
-    if given_alpha:
-        return steps
     if time is not None and w1 is not None:
         steps.append(Step("Angular acceleration from the change of speed", "α = (ω₁ − ω₀)/t", f"({term(w1, 'rad/s')} − {term(w0, 'rad/s')}) / {term(time, 's')}",
                           quantity_text(alpha, "rad/s**2"), "constant α: ω changes by the same amount every second"))
@@ -961,8 +965,7 @@ def _given_alpha_steps(motion, w0_given: float | None, time: float | None, until
             steps.append(Step("Time to reach ω₁", "t = (ω₁ − ω₀)/α", f"({term(until_omega, 'rad/s')} − {term(w0, 'rad/s')}) / {a}",
                               quantity_text(t, "s"), "constant α: ω changes by the same amount every second"))
             if "theta_until" in results:
-                steps.append(Step("Angle turned by then", "θ = ω₀t + ½αt²", f"{term(w0, 'rad/s')} × {term(t, 's')} + ½ × {a} × ({term(t, 's')})²",
-                                  quantity_text(results["theta_until"].value, "rad"), "the rotational analogue of s = ut + ½at²"))
+                steps.append(_angle_step("Angle turned by then", w0, alpha, t, results["theta_until"].value))
         elif until_angle is not None and "omega" in results:
             omega = results["omega"].value
             steps.append(Step("Angular velocity at the angle", "ω₁² = ω₀² + 2αθ  ⇒  ω₁ = ±√(ω₀² + 2αθ)", f"√(({term(w0, 'rad/s')})² + 2 × {a} × {term(until_angle, 'rad')})",
