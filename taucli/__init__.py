@@ -12,12 +12,10 @@ A value the scene cannot use raises taucli.InputError (a ValueError) naming the 
 
 from __future__ import annotations
 
-__version__ = "0.1.0"
-
-from taucli.errors import InputError  # noqa: E402
-from taucli.report import Report  # noqa: E402
-
-from taucli.options import SCENES  # noqa: E402 (plain data: no solver, typer, rich or pint)
+from taucli.errors import InputError
+from taucli.options import SCENES  # plain data: no solver, typer, rich or pint
+from taucli.report import Report
+from taucli.version import __version__
 
 __all__ = ["InputError", "Report", *(command.function_name for command in SCENES.values())]
 
@@ -26,9 +24,9 @@ def __getattr__(name: str):
     """taucli.atwood and the other scenes, made from their tables when first asked for."""
     if name not in __all__:  # a submodule not imported yet, or no such name
         raise AttributeError(f"module 'taucli' has no attribute {name!r}")
-    import importlib
+    from taucli import api  # deferred: the API's functions are made on first use, not by a plain import
 
-    found = importlib.import_module("taucli.api").function(name)
+    found = api.function(name)
     if found is None:
         raise AttributeError(f"module 'taucli' has no attribute {name!r}")
     globals()[name] = found

@@ -6,6 +6,8 @@ alone takes longer than a help should. Everything else goes to taucli.cli.
 
 import sys
 
+from taucli import help
+
 
 SYMBOLS = "²½αωθτ·√−→₁≤μ"  # what taucli's text uses beyond ASCII
 
@@ -27,12 +29,10 @@ def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
     _speakable(sys.stdout)
     _speakable(sys.stderr)
-    from taucli import help
-
     answered = help.answer(args, sys.stdout, sys.stderr)
     if answered is not None:
         return answered
-    from taucli.cli import main as run
+    from taucli.cli import main as run  # deferred: typer (about 25 ms), which help and --version do without
 
     return run(args)
 

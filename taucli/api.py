@@ -10,14 +10,14 @@ from __future__ import annotations
 import inspect
 from collections.abc import Callable
 
+from taucli import answer
+from taucli.options import SCENES
 from taucli.report import Report
 from taucli.table import Command
 
 
 def function(name: str) -> Callable[..., Report] | None:
     """The API function of the scene called ``name`` (spin_down), or None."""
-    from taucli.options import SCENES
-
     command = SCENES.get(name.replace("_", "-"))
     if command is None or command.function_name != name:
         return None
@@ -25,8 +25,6 @@ def function(name: str) -> Callable[..., Report] | None:
 
 
 def _made(command: Command) -> Callable[..., Report]:
-    from taucli import uncertain
-
     positional = [option.name for option in command.options if option.positional]
 
     def scene(*args, **given) -> Report:
@@ -37,7 +35,7 @@ def _made(command: Command) -> Callable[..., Report]:
                 raise TypeError(f"{command.function_name}() got multiple values for argument {name!r}")
             given[name] = value
         given = {name.replace("-", "_"): value for name, value in given.items()}
-        return uncertain.solve(command, given, find=given.pop("find", None), want=given.pop("want", None))
+        return answer.solve(command, given, find=given.pop("find", None), want=given.pop("want", None))
 
     parameters = [
         inspect.Parameter(
@@ -46,7 +44,7 @@ def _made(command: Command) -> Callable[..., Report]:
             default=None,
         )
         for option in command.options
-    ]  # and find=, want= (#22), read by taucli.uncertain.solve
+    ]  # and find=, want= (#22), read by taucli.answer.solve
     scene.__signature__ = inspect.Signature(parameters, return_annotation=Report)
     scene.__name__ = scene.__qualname__ = command.function_name
     scene.__module__ = "taucli"

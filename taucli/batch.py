@@ -20,8 +20,12 @@ document, 2 when some line was bad input, 1 when some line met a bug.
 from __future__ import annotations
 
 import json
+import os
+import select
+import stat
 
-from taucli import __version__
+from taucli.version import __version__
+from taucli.answer import solve
 from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean, out_of_range
 from taucli.render import Output, document_text, prepared
 from taucli.table import FLAG, Command
@@ -36,8 +40,6 @@ BLOCK_BYTES = 4096
 
 def run(command: Command, fixed: dict, output: Output, env) -> int:
     """Solve one scene per line of ``env.stdin``; ``fixed`` holds the command line's options."""
-    from taucli.uncertain import solve
-
     lines = env.stdin
     if lines is None:
         raise InputError("batch", "reads JSON lines on stdin, but stdin is closed", example="taucli atwood --batch < scenes.jsonl")
@@ -99,9 +101,6 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
 
 def _a_file(lines) -> bool:
     """Whether ``lines`` reads a regular file (not a terminal, pipe or socket)."""
-    import os
-    import stat
-
     try:
         return stat.S_ISREG(os.fstat(lines.fileno()).st_mode)
     except (OSError, ValueError, AttributeError, TypeError):
@@ -111,8 +110,6 @@ def _a_file(lines) -> bool:
 def _waiting(lines) -> bool:
     """Whether more input is ready now, so that writing can wait for it; a file or pipe that
     cannot be asked (a list of lines) counts as ready."""
-    import select
-
     try:
         ready, _, _ = select.select([lines], [], [], 0)
     except (OSError, ValueError, TypeError, AttributeError):

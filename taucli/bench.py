@@ -11,13 +11,18 @@ diverged point, never dropped.
 from __future__ import annotations
 
 import math
-import textwrap
 import statistics
+import textwrap
 import timeit
 from collections.abc import Callable
 from dataclasses import asdict, dataclass
+from decimal import Decimal, localcontext
 
-from taucli.scenes.spin import Torques
+from taucli.version import __version__
+from taucli.numerics import TooManySteps
+from taucli.scenes.impulse import solve_profile
+from taucli.scenes.pendulum import BlewUp, Harmonic, Stepped, Swing, _exact_model
+from taucli.scenes.spin import Torques, solve
 
 # name -> (inertia, torques, ω₀, (t_stop, θ_stop) to 50 digits for these double inputs)
 SPIN_PROBLEMS: dict[str, tuple[float, Torques, float, tuple[str, str]]] = {
@@ -87,8 +92,6 @@ def time_per_call(function: Callable[[], object], repeats: int) -> float:
 def _relative(got: float, reference: str) -> float:
     """|got − reference| / |reference| in 60-digit decimal: the double and the 50-digit
     reference are both taken exactly, so even errors of an ulp are measured, not rounded."""
-    from decimal import Decimal, localcontext
-
     with localcontext() as context:
         context.prec = 60
         exact = Decimal(reference)
@@ -96,8 +99,6 @@ def _relative(got: float, reference: str) -> float:
 
 
 def _spin_points(name: str, ladder: dict, repeats: int) -> list[Point]:
-    from taucli.scenes.spin import solve
-
     inertia, torques, omega0, (t_ref, theta_ref) = SPIN_PROBLEMS[name]
     closed_form = torques.drag == 0 or torques.drag_exponent == 2
     runs: list[tuple[str, str, Callable]] = []
@@ -128,7 +129,7 @@ def _spin_points(name: str, ladder: dict, repeats: int) -> list[Point]:
 def _scipy_points(name: str, ladder: dict, repeats: int) -> list[Point]:
     """scipy's solve_ivp, where installed: what a user would reach for instead."""
     try:
-        from scipy.integrate import solve_ivp
+        from scipy.integrate import solve_ivp  # deferred: scipy, the optional bench extra
     except ImportError:
         return []
     inertia, torques, omega0, (t_ref, theta_ref) = SPIN_PROBLEMS[name]
@@ -166,8 +167,6 @@ def _scipy_runs(scene: str, name: str, solve_ivp, rate, start: list[float], boun
 
 
 def _pulse_points(name: str, ladder: dict, repeats: int) -> list[Point]:
-    from taucli.scenes.impulse import solve_profile
-
     peak, length, reference = PULSE_PROBLEMS[name]
     points = []
     for samples in ladder["samples"]:
@@ -184,9 +183,6 @@ def _pulse_points(name: str, ladder: dict, repeats: int) -> list[Point]:
 def _pendulum_points(name: str, ladder: dict, repeats: int) -> list[Point]:
     """The period of θ'' = −sin θ from rest (I = mgd = 1): the time each method takes to find it,
     and its error. The steppers locate the turning points (ω = 0) as events, as the scene does."""
-    from taucli.numerics import TooManySteps
-    from taucli.scenes.pendulum import BlewUp, Harmonic, Stepped, Swing, _exact_model
-
     degrees, reference = PENDULUM_PROBLEMS[name]
     swing = Swing(1.0, 1.0, 0.0, math.radians(degrees), 0.0)
     horizon = 3 * float(reference)
@@ -219,7 +215,7 @@ def _scipy_pendulum_points(name: str, theta0: float, reference: str, ladder: dic
     """scipy's solve_ivp on the same pendulum, where installed: the period as twice the time to
     the first turning point (its event ω = 0, falling through zero from rest at θ₀ > 0)."""
     try:
-        from scipy.integrate import solve_ivp
+        from scipy.integrate import solve_ivp  # deferred: scipy, the optional bench extra
     except ImportError:
         return []
 
@@ -307,17 +303,15 @@ def _seconds_label(decade: int) -> str:
 
 
 def document(points: list[Point]) -> dict:
-    from taucli import __version__
-
     return {"taucli": __version__, "bench": [asdict(p) for p in points]}
 
 
 def write_image(points: list[Point], path: str) -> None:
     """The same charts as an SVG or PNG file (matplotlib, the optional 'plot' extra)."""
-    import matplotlib
+    import matplotlib  # deferred: matplotlib (hundreds of ms), the optional plot extra
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    import matplotlib.pyplot as plt  # deferred: matplotlib, as above
 
     problems = list(dict.fromkeys(p.problem for p in points))
     columns = min(len(problems), 3)

@@ -11,10 +11,14 @@ nothing), else the platform's user cache folder with ``taucli`` appended.
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
 import sys
+import zlib  # not hashlib: its OpenSSL import costs 4 ms, and the file holds the full stamp
 from functools import lru_cache
+
+from taucli.version import __version__
 
 MAX_ENTRIES = 512  # per store; beyond it, answers are worked out each time and not kept
 
@@ -37,8 +41,6 @@ def folder() -> str | None:
 
 def stamp(*origins: str | None) -> str:
     """What stored answers depend on: taucli's version, and the size and time of each file."""
-    from taucli import __version__
-
     parts = [__version__]
     for origin in origins:
         try:
@@ -51,8 +53,6 @@ def stamp(*origins: str | None) -> str:
 
 def package_file(name: str) -> str | None:
     """The file a package is imported from (found, not imported): pint's __init__.py."""
-    import importlib.util
-
     try:
         return getattr(importlib.util.find_spec(name), "origin", None)
     except (ImportError, ValueError):
@@ -73,8 +73,6 @@ class Store:
     """
 
     def __init__(self, path: str | None, name: str, depends_on):
-        import zlib  # not hashlib: its OpenSSL import costs 4 ms, and the file holds the full stamp
-
         self.entries: dict[str, object] = {}
         self.stamp = depends_on() if path is not None else ""
         digest = f"{zlib.crc32(self.stamp.encode()):08x}"

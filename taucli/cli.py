@@ -8,15 +8,20 @@ without typer at all.
 
 from __future__ import annotations
 
+import difflib
+import inspect
 import os
 import sys
+import traceback
 from dataclasses import dataclass, field
 from typing import Annotated, Optional, TextIO
 
 import typer
 
+from taucli import answer, batch, help, pipeline, plot, render, sweep
 from taucli.errors import ExitStatus, InputError, TaucliError, out_of_range
 from taucli.options import COMMANDS
+from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
 from taucli.table import FLAG, Command, Option
 
@@ -71,8 +76,6 @@ class TaucliCommand(_ReadAsTyped, typer.core.TyperCommand):
 
 def _parameter(option: Option):
     """The typer parameter of one option of a table."""
-    import inspect
-
     if option.positional:
         marker = typer.Argument(metavar=option.shown_metavar, help=option.help_text(), show_default=False)
         annotation, default = Optional[str], None
@@ -87,8 +90,6 @@ def _parameter(option: Option):
 
 def _typed(function, options):
     """``function`` with the typer parameters of ``options`` as its signature."""
-    import inspect
-
     parameters = [_parameter(option) for option in options]
     function.__signature__ = inspect.Signature(parameters)
     function.__annotations__ = {parameter.name: parameter.annotation for parameter in parameters}
@@ -100,8 +101,6 @@ def _callback(command: Command, env: Environment):
     def run(**given) -> int:
         if command.library is not None:
             return run_scene(command, given, env)
-        from taucli import pipeline
-
         return pipeline.library(command.handler)(env=env, **given)
 
     _typed(run, (*command.options, *command.output))
@@ -139,66 +138,53 @@ def _present(value) -> bool:
 
 def run_scene(command: Command, given: dict, env: Environment) -> int:
     """One scene's run: a single answer, a sweep, or a batch, as the answer options say."""
-    from taucli import pipeline, render
-
-    answer = {option.name: given.pop(option.name, None) for option in command.output}
+    asked = {option.name: given.pop(option.name, None) for option in command.output}
     scene_given = {name: value for name, value in given.items() if _present(value)}
-    points = _whole_number(command, answer["points"])
+    points = _whole_number(command, asked["points"])
     swept_range = swept_list = None
     if points is not None or any(isinstance(value, str) and (".." in value or "," in value) for value in scene_given.values()):
-        from taucli import sweep
-
         swept_range, swept_list = sweep.find(command, scene_given, points)
-    if answer["batch"]:
+    if asked["batch"]:
         for name in ("plot", "out", "points", "y", "jsonl", "get"):
-            if _present(answer[name]):
+            if _present(asked[name]):
                 why = "writes whole JSON documents" if name == "get" else "writes one --json document per line"
                 raise InputError(name, f"does not combine with {{batch}}, which {why}", example="{batch} {no_steps}" if name == "get" else None)
         if swept_range or swept_list:
             raise InputError((swept_range or swept_list).name, "cannot be a range or a list with {batch}: give one scene per line")
-        from taucli import batch
-
-        return batch.run(command, {**scene_given, **_finding(answer, batch=True)}, render.Output(to=tuple(answer["to"] or ()), steps=not answer["no_steps"]), env)
+        return batch.run(command, {**scene_given, **_finding(asked, batch=True)}, render.Output(to=tuple(asked["to"] or ()), steps=not asked["no_steps"]), env)
     output = render.Output(
-        json=bool(answer["json"] or answer["jsonl"]),
-        get=tuple(answer["get"] or ()),
-        to=tuple(answer["to"] or ()),
-        steps=not answer["no_steps"],
-        plot=bool(answer["plot"]),
-        out=answer["out"],
-        json_lines=bool(answer["jsonl"]),
-        uncertainty=bool(answer["uncertainty"]),
+        json=bool(asked["json"] or asked["jsonl"]),
+        get=tuple(asked["get"] or ()),
+        to=tuple(asked["to"] or ()),
+        steps=not asked["no_steps"],
+        plot=bool(asked["plot"]),
+        out=asked["out"],
+        json_lines=bool(asked["jsonl"]),
+        uncertainty=bool(asked["uncertainty"]),
     )
-    _point_at_the_rim(command, scene_given, {*output.get, *(answer["y"] or ()), *(to.partition("=")[0].strip() for to in output.to)})
+    _point_at_the_rim(command, scene_given, {*output.get, *(asked["y"] or ()), *(to.partition("=")[0].strip() for to in output.to)})
     if output.plot and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
-    if answer["y"] and swept_range is None:
+    if asked["y"] and swept_range is None:
         raise InputError("y", "names what a range's chart shows; give a range FROM..TO", example="{inertia} 0.5..4kg*m^2 {y} alpha0")
     if output.out is not None:
-        from taucli import plot
-
         plot.check_file(output.out)
-    finding = {**_finding(answer), "mc": _whole_number(command, answer["mc"], "mc")}
-    if pipeline.plain(scene_given, **finding):
-        solve = pipeline.solve
-        finding = {}
-    else:
-        from taucli.uncertain import solve
-    if swept_range is None and swept_list is None:
-        render.render(solve(command, scene_given, stdin=env.stdin, spell=command.flag, **finding), output, env.stdout)
-        return int(ExitStatus.OK)
-    from taucli import sweep
+    finding = {**_finding(asked), "mc": _whole_number(command, asked["mc"], "mc")}
 
-    solved = sweep.solve_all(command, swept_range, swept_list, scene_given, lambda options: solve(command, options, stdin=env.stdin, spell=command.flag, **finding))
-    sweep.render(solved, swept_range, swept_list, output, list(answer["y"] or ()), env.stdout)
+    def solve(options: dict):
+        return answer.solve(command, options, stdin=env.stdin, spell=command.flag, **finding)
+
+    if swept_range is None and swept_list is None:
+        render.render(solve(scene_given), output, env.stdout)
+        return int(ExitStatus.OK)
+    solved = sweep.solve_all(command, swept_range, swept_list, scene_given, solve)
+    sweep.render(solved, swept_range, swept_list, output, list(asked["y"] or ()), env.stdout)
     return int(ExitStatus.OK)
 
 
 def _point_at_the_rim(command: Command, given: dict, asked: set) -> None:
     """A point's result asked for (--get v_t) with no --at: the point on the rim (#24), which
     the scene finds, or refuses where the body has no one radius."""
-    from taucli.options.common import POINT_RESULTS
-
     if command.option("at") is not None and given.get("at") is None and asked & {result.key for result in POINT_RESULTS}:
         given["at"] = "rim"
 
@@ -212,19 +198,17 @@ def _whole_number(command: Command, text: Optional[str], name: str = "points") -
         raise InputError(name, "expected a whole number", example=f"{{{name}}} 50", got=repr(text)) from None
 
 
-def _finding(answer: dict, *, batch: bool = False) -> dict:
+def _finding(asked: dict, *, batch: bool = False) -> dict:
     """--find and --want (#22), where given: a batch's lines take them as keys too."""
-    if batch and (answer["mc"] is not None or answer["uncertainty"]):
-        name = "mc" if answer["mc"] is not None else "uncertainty"
+    if batch and (asked["mc"] is not None or asked["uncertainty"]):
+        name = "mc" if asked["mc"] is not None else "uncertainty"
         raise InputError(name, "does not combine with {batch}, which writes whole JSON documents (each with its \"uncertainty\")")
-    return {name: answer[name] for name in ("find", "want") if answer[name] is not None}
+    return {name: asked[name] for name in ("find", "want") if asked[name] is not None}
 
 
 def _no_such_option(command: Command, unknown: str) -> str:
     """'--slip is not an option of atwood', and the closest of the command's own options where one
     is close (names compared without their dashes, which every flag shares)."""
-    import difflib
-
     message = f"{unknown} is not an option of {command.name}"
     names = {option.flag[2:]: option.flag for option in (*command.options, *command.output) if not option.positional}
     close = difflib.get_close_matches(unknown.lstrip("-"), list(names), n=1, cutoff=0.6)
@@ -262,8 +246,6 @@ def main(argv: list[str] | None = None, env: Environment | None = None) -> int:
     """Run taucli; every exception becomes one line on stderr and an exit status."""
     args = sys.argv[1:] if argv is None else list(argv)
     env = env or Environment()
-    from taucli import help
-
     answered = help.answer(args, env.stdout, env.stderr)
     if answered is not None:
         return answered
@@ -296,8 +278,6 @@ def main(argv: list[str] | None = None, env: Environment | None = None) -> int:
                 return _fail(env, ExitStatus.USAGE, _no_such_option(command, unknown) + where)
             return _fail(env, ExitStatus.USAGE, err.format_message() + where)
         if _debugging(args):
-            import traceback
-
             traceback.print_exc()
         return _fail(
             env,

@@ -14,6 +14,8 @@ from dataclasses import dataclass
 
 from taucli import table
 from taucli.names import SHELLS  # noqa: F401 (completions.SHELLS: the shells it writes for)
+from taucli.options import COMMANDS
+from taucli.options.tools import ROOT
 from taucli.units import KINDS
 
 FILE_NAMES = {"bash": "taucli.bash", "zsh": "_taucli", "fish": "taucli.fish"}
@@ -42,8 +44,6 @@ class Command:
 
 def spec() -> tuple[tuple[Option, ...], tuple[Command, ...]]:
     """taucli's own options, and each command with its options, read off the commands' tables."""
-    from taucli.options import COMMANDS
-    from taucli.options.tools import ROOT
 
     return _options(ROOT, ROOT.options), tuple(
         Command(

@@ -10,6 +10,8 @@ import re
 from collections.abc import Callable
 from enum import IntEnum
 
+from taucli.table import spelled
+
 
 class ExitStatus(IntEnum):
     """The exit statuses taucli uses, and only these."""
@@ -61,8 +63,6 @@ class InputError(TaucliError, ValueError):
         The option, and each {name} in the texts, is a parameter's name (``pulley_mass``); the
         command line spells it as its flag (--pulley-mass), the Python API and batch as it is.
         """
-        from taucli.table import spelled
-
         def name(text: str) -> str:
             return spelled(text, spell, lambda word: word)
 
@@ -93,7 +93,7 @@ def out_of_range() -> InputError:
 
 def did_you_mean(name: str, choices, cutoff: float = 0.6) -> str | None:
     """'did you mean ...?' for the closest of ``choices`` to a mistyped ``name``, or None."""
-    import difflib
+    import difflib  # deferred: only a mistyped name asks for a did-you-mean
 
     close = difflib.get_close_matches(name, list(choices), n=1, cutoff=cutoff)
     return f"did you mean {close[0]!r}?" if close else None

@@ -20,8 +20,11 @@ import math
 
 from taucli import units
 from taucli.errors import InputError
-from taucli.report import Report, Step, Value, fmt, quantity_text, term
-from taucli.uncertain import Measured, Scene, combine, jacobian, linearity, monte_carlo, numeric, split
+from taucli.report import Measured, Report, Step, Value, fmt, pretty_unit, quantity_text, term
+from taucli.table import spelled
+from taucli.measurement import NUMBER_THEN_UNIT, split
+from taucli.propagate import Scene, combine, jacobian, linearity, monte_carlo, numeric
+from taucli.scenes.assumed import STANDARD_GRAVITY
 
 PER_DECADE = 4
 EPS = 2.0**-52
@@ -52,9 +55,7 @@ def _target(scene: Scene, want: str) -> tuple[str, float, float, str | None]:
 
 
 def _in_si(text: str, si_unit: str, key: str) -> float:
-    from taucli.uncertain import _LEADING
-
-    split_text = _LEADING.fullmatch(text)
+    split_text = NUMBER_THEN_UNIT.fullmatch(text)
     if split_text is None:
         raise InputError("want", f"expected {key} as a number with a unit of {si_unit}", example=f"{{want}} {key}=4{si_unit}", got=repr(text))
     number, unit = float(split_text[1]), split_text[2]
@@ -122,8 +123,6 @@ def brent(f, a: float, b: float, fa: float, fb: float, *, iterations: int = 200)
 
 def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], notes: list[str], mc: int | None) -> Report:
     """The report at the value of input ``name`` that meets ``want``, that value as a result."""
-    from taucli.table import spelled
-
     command = scene.command
     name = str(name).strip().lstrip("-").replace("-", "_")  # pulley_inertia, pulley-inertia or --pulley-inertia
     option = command.option(name)
@@ -266,8 +265,6 @@ def _atwood_inverse(scene: Scene, name: str, target: float):
     si = scene.si
     if any(option in scene.given for option in PLAIN_ATWOOD) or target == 0 or "m1" not in si:
         return None
-    from taucli.scenes.assumed import STANDARD_GRAVITY
-
     m1, m2, g = si["m1"], si.get("m2", 0.0), si.get("g", STANDARD_GRAVITY)
     extra = (m1 - m2) * g / target - m1 - m2  # I/R², or M/2: (m1 − m2) g = (m1 + m2 + I/R²) a
     if name == "pulley_inertia":
@@ -343,8 +340,6 @@ def _meets(v: float, target: float) -> bool:
 
 
 def _unit(unit: str | None) -> str:
-    from taucli.report import pretty_unit
-
     return pretty_unit(unit)
 
 

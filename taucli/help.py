@@ -9,11 +9,15 @@ the value of an option that takes one, before any ``--``.
 
 from __future__ import annotations
 
+import os
 import shutil
+import sys
 import textwrap
 
-from taucli.options import COMMANDS
+from taucli.version import __version__
+from taucli.options import COMMANDS, SCENES
 from taucli.options.tools import EXIT_STATUSES, ROOT
+from taucli.report import pretty_unit
 from taucli.table import Command, Option
 
 HELP_WORDS = ("-h", "--help")
@@ -110,8 +114,6 @@ def answer(args: list[str], stdout, stderr) -> int | None:
 
     ``taucli`` alone prints taucli's help on stderr and is a usage error (exit 2).
     """
-    import os
-
     at = next((i for i, word in enumerate(args) if not word.startswith("-")), len(args))
     command = requested(args)
     if command is None and "--version" not in args[:at]:
@@ -119,8 +121,6 @@ def answer(args: list[str], stdout, stderr) -> int | None:
     stream = stderr if not args else stdout
     try:
         if command is None:
-            from taucli import __version__
-
             stream.write(f"taucli {__version__}\n")
         else:
             stream.write(text(command))
@@ -138,8 +138,6 @@ README_END = "<!-- end of the options of {name} -->"
 
 def markdown(command: Command) -> str:
     """The options and results of a scene as Markdown tables, for the README."""
-    from taucli.report import pretty_unit
-
     lines = ["| option | takes | what it is |", "|---|---|---|"]
     for option in command.options:
         takes = option.kind if option.is_quantity else option.shown_metavar.replace("|", " or ")
@@ -152,8 +150,6 @@ def markdown(command: Command) -> str:
 
 def update_readme(path: str) -> bool:
     """Rewrite the generated sections of the README at ``path``; whether anything changed."""
-    from taucli.options import SCENES
-
     with open(path, encoding="utf-8") as handle:
         old = handle.read()
     new = old
@@ -170,6 +166,4 @@ def update_readme(path: str) -> bool:
 
 
 if __name__ == "__main__":
-    import sys
-
     sys.exit(1 if update_readme(sys.argv[1]) else 0)

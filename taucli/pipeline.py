@@ -41,14 +41,3 @@ def solve(
     report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
     report.inputs = {**inputs.values, **report.inputs}
     return report
-
-
-def plain(given: Mapping[str, object], find=None, want=None, mc=None) -> bool:
-    """Whether ``solve`` alone answers: no input carries an uncertainty, nothing is solved for and
-    no Monte Carlo is asked (else taucli.uncertain does, around ``solve``)."""
-    if find is not None or want is not None or mc:
-        return False
-    for value in given.values():  # inline, not a helper per value: this runs on every batch line
-        if value.__class__ is str and ("±" in value or "+/-" in value or ")" in value):
-            return False
-    return True

@@ -8,7 +8,10 @@ only when a chart is drawn.
 
 from __future__ import annotations
 
+import importlib.util
 import math
+import os
+import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
@@ -139,9 +142,7 @@ def _plotted(series: Series) -> tuple[list[float], list[float]]:
 
 def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> str:
     """The chart as text for a terminal ``columns`` wide: panels one above the other."""
-    import plotille
-
-    import textwrap
+    import plotille  # deferred: plotille (about 25 ms), only when a chart is drawn
 
     width = max(columns - Y_AXIS_WIDTH, 10)
     out = textwrap.wrap(chart.title, columns)
@@ -185,9 +186,6 @@ def check_file(path: str) -> None:
     """--out names an .svg or .png file, and matplotlib is there to draw it."""
     if not path.lower().endswith((".svg", ".png")):
         raise InputError("--out", "expected a file name ending in .svg or .png", example="--out chart.svg", got=repr(path))
-    import importlib.util
-    import os
-
     existed = os.path.exists(path)
     try:  # open it now, so that a file that cannot be written is refused before any answer is printed
         with open(path, "ab"):
@@ -206,10 +204,10 @@ def _unwritable(path: str, err: OSError) -> InputError:
 
 def write_file(chart: Chart, path: str) -> None:
     """The chart as an SVG or PNG file (matplotlib, Agg backend)."""
-    import matplotlib
+    import matplotlib  # deferred: matplotlib (hundreds of ms), only for a file
 
     matplotlib.use("Agg")
-    from matplotlib import pyplot
+    from matplotlib import pyplot  # deferred: matplotlib, as above
 
     figure, axes = pyplot.subplots(len(chart.panels), 1, figsize=(7, 2.6 * len(chart.panels) + 0.6), sharex=True, squeeze=False)
     for row, panel in zip(axes, chart.panels):

@@ -13,6 +13,7 @@ import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
+from taucli import units
 from taucli.errors import InputError
 
 OPTION = "--torque-profile"
@@ -28,8 +29,6 @@ class Profile:
 
 
 def _unit_factor(text: str | None, kind: str, column: str, notes: list[str]) -> float:
-    from taucli import units
-
     if text is None or not text.strip():
         notes.append(f"{OPTION}: no unit for the {column} column in the header: read as SI ({units.KINDS[kind].si_unit})")
         return 1.0

@@ -9,13 +9,16 @@ import io
 import json
 import math
 import os
+import shutil
 from collections.abc import Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import replace
 from typing import NamedTuple, TextIO
 
-from taucli import __version__
+from taucli import plot, units
+from taucli.version import __version__
 from taucli.errors import InputError, did_you_mean
+from taucli.measurement import with_uncertainty
 from taucli.report import DIGITS, Report, Table, Value, fmt, pretty_unit
 
 
@@ -50,8 +53,6 @@ class Output(NamedTuple):
 
 def terminal_style(stream: TextIO) -> tuple[int, bool]:
     """(columns, colour) for text drawn on ``stream``: no colour under NO_COLOR, TERM=dumb or a pipe."""
-    import shutil
-
     columns = shutil.get_terminal_size((100, 24)).columns
     colour = stream.isatty() and not os.environ.get("NO_COLOR") and os.environ.get("TERM") != "dumb"
     return max(columns, 20), colour
@@ -59,8 +60,6 @@ def terminal_style(stream: TextIO) -> tuple[int, bool]:
 
 def chart_units(report: Report, to: Sequence[str]) -> dict[str, tuple[str, float]]:
     """For each curve of the report's motion named in --to: (unit, SI value of one of it)."""
-    from taucli import units
-
     curves = {key: unit for key, unit, _ in report.trajectory().curves} if report.trajectory else {}
     return {name: (unit, 1.0 / units.convert(1.0, curves[name], unit, "--to")) for name, unit in conversions(to) if name in curves}
 
@@ -114,8 +113,6 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
     """Express the results named in --to NAME=UNIT in those units."""
     if not to:
         return report
-    from taucli import units
-
     results = dict(report.results)
     notes = list(report.notes)
     for name, unit in conversions(to):
@@ -273,8 +270,6 @@ def document_steps(steps) -> list[dict]:
 def render(report: Report, output: Output, stream: TextIO) -> None:
     """Write the report in the format the user asked for."""
     report = prepared(report, output)
-    if output.charted:
-        from taucli import plot
     chart = plot.motion_chart([("", report)], chart_units(report, output.to)) if output.drawn else None
     if output.get:
         if output.uncertainty:  # #22: a second column, the result's standard uncertainty
@@ -333,7 +328,7 @@ def drawing(stream: TextIO):
     """A rich Console that draws for ``stream``: in colour on a terminal (or with FORCE_COLOR);
     elsewhere (a file, a pipe) plain, into a buffer whose lines are written without the trailing
     spaces rich pads them with."""
-    from rich.console import Console
+    from rich.console import Console  # deferred: rich (about 30 ms), only for the human view
 
     plain = bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
     console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain else "auto")
@@ -350,7 +345,7 @@ def draw_table(console, headings: Sequence[str], rows: Sequence[Sequence[str]], 
     """A table whose numbers are never split: a column of numbers keeps each cell whole (and its
     heading wraps to it); where even so the table is wider than the terminal, each row is listed
     instead, one "heading = value" to a line."""
-    from rich import box
+    from rich import box  # deferred: rich, as in drawing()
     from rich.measure import Measurement
     from rich.padding import Padding
     from rich.table import Table as RichTable
@@ -396,7 +391,7 @@ def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> 
 
 
 def _draw_report(report: Report, console, show_steps: bool) -> None:
-    from rich.padding import Padding
+    from rich.padding import Padding  # deferred: rich, as in drawing()
     from rich.text import Text
 
     console.print(Text.assemble((f"{report.scene}", "bold"), f": {report.model}"))
@@ -405,8 +400,6 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
     rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items()]
     spreads = getattr(report, "uncertainties", None)
     if spreads:  # #22: 4.90 ± 0.08, digits matched to the uncertainty
-        from taucli.uncertain import with_uncertainty
-
         rows = [(name, with_uncertainty(report.results[name].value, spreads[name]) if name in spreads else value, unit, label) for name, value, unit, label in rows]
     widths = [max((len(row[i]) for row in rows), default=0) for i in range(3)]
     if console.width < NARROW or sum(widths) + LABEL_MIN + 6 > console.width:  # one result to a line, numbers whole

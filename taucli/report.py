@@ -108,6 +108,17 @@ class Report:
     trajectory: Callable[[], Trajectory] | None = None  # built when a plot asks for it (see deferred)
 
 
+@dataclass
+class Measured(Report):
+    """A report whose results carry standard uncertainties (SI, as the values): taucli.propagate
+    and taucli.find make it; a renderer shows "uncertainty" beside "value"."""
+
+    uncertainties: dict[str, float] = field(default_factory=dict)  # result key -> σ
+    input_uncertainties: dict[str, float] = field(default_factory=dict)  # input name -> σ
+    monte_carlo: dict[str, tuple[float, float]] = field(default_factory=dict)  # key -> (mean, σ)
+    draws: int = 0
+
+
 class deferred:
     """``build(*args, **kwargs)``, run when first called and kept: a trajectory's horizon may
     take an integration of its own, which a run that draws no plot must not pay for (or fail on).

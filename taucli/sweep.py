@@ -18,9 +18,13 @@ import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
-from taucli.errors import InputError
+from taucli import plot
+from taucli import render as renderer
+from taucli.errors import InputError, did_you_mean
+from taucli.options import scene
 from taucli.report import Report, pretty_unit
 from taucli.table import Command
+from taucli.units import KINDS
 
 DEFAULT_POINTS = 50
 # Points in all, a range's points times a list's values: enough for any chart (a terminal has
@@ -92,8 +96,6 @@ _THOUSANDS = re.compile(r"\s*[-+]?\d{1,3}(?:,\d{3})+(?:\.\d*)?\s*[^,]*")
 def _list(name: str, text: str, kind: str) -> Swept:
     option = "{" + name + "}"
     if _DECIMAL_COMMA.fullmatch(text) or _THOUSANDS.fullmatch(text):
-        from taucli.units import KINDS
-
         first, second, *_ = text.split(",")
         number, unit = _NUMBER_THEN_UNIT.fullmatch(f"{first.strip()}.{second.strip()}").group("number", "unit")
         unit = unit or KINDS[kind].example.strip("'").partition(" ")[2]  # the unit typed, else the option's kind's
@@ -196,8 +198,6 @@ def _swept_columns(swept: Swept, points: list[Point]) -> tuple[str, list[float]]
 
 def range_chart(points: list[Point], swept_range: Swept, swept_list: Swept | None, names: list[str]):
     """Each result named against the range, one series per value of the list."""
-    from taucli import plot
-
     first = points[0].report
     per_series = len(swept_range.texts)
     groups = [points[i : i + per_series] for i in range(0, len(points), per_series)]
@@ -221,9 +221,6 @@ def range_chart(points: list[Point], swept_range: Swept, swept_list: Swept | Non
 
 def chart_names(points: list[Point], y: list[str]) -> list[str]:
     """The results a range's chart shows: --y, else the scene's headline result."""
-    from taucli.errors import did_you_mean
-    from taucli.options import scene
-
     results = points[0].report.results
     names = y or [scene(points[0].report.scene).headline]
     for name in names:
@@ -234,9 +231,6 @@ def chart_names(points: list[Point], y: list[str]) -> list[str]:
 
 def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | None, output, y: list[str], stream) -> None:
     """The sweep in the format asked for: --get lines, a JSON array or lines, or a table and a chart."""
-    from taucli import plot
-    from taucli import render as renderer
-
     points = [Point(p.range_index, p.list_index, renderer.prepared(p.report, output)) for p in points]
     swept = [s for s in (swept_list, swept_range) if s is not None]
     chart = None
@@ -270,11 +264,9 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
 
 def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
     """One row per point: the swept values, then every result that has a value somewhere."""
-    from rich.text import Text
+    from rich.text import Text  # deferred: rich (about 30 ms), only for the human view
 
-    from taucli.render import draw_table, drawing, shown
-
-    with drawing(stream) as console:
+    with renderer.drawing(stream) as console:
         first = points[0].report
         what = " × ".join(f"--{s.name.replace('_', '-')} {s.given} ({len(s.texts)} values)" for s in reversed(swept))
         console.print(Text.assemble((first.scene, "bold"), f": {what}"))
@@ -288,11 +280,11 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
             headings.append(f"{name} ({unit})" if unit else name)
         rows = []
         for row, point in enumerate(points):
-            cells = [shown(values[row]) for _, values in columns]
-            cells += [shown(point.report.results[name].value if name in point.report.results else None) for name in names]
+            cells = [renderer.shown(values[row]) for _, values in columns]
+            cells += [renderer.shown(point.report.results[name].value if name in point.report.results else None) for name in names]
             rows.append(cells)
         # numbers are never split: a table too wide for the terminal becomes a list, one point at a time
-        draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
+        renderer.draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
         notes = list(dict.fromkeys(n for p in points for n in p.report.notes))
         for note in notes[:MAX_NOTES]:
             console.print(Text.assemble(("note: ", "yellow"), note))

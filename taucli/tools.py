@@ -2,16 +2,17 @@
 
 from __future__ import annotations
 
+import json as encoder
+import shutil
+
+from taucli import bench as workbench
+from taucli import completions as scripts
 from taucli.errors import InputError
+from taucli.names import SHELLS
 
 
 def bench(*, env, scene=None, quick: bool = False, out: str | None = None, json: bool = False) -> int:
     """Time per solve against error for every method, charted; see taucli.bench."""
-    import json as encoder
-    import shutil
-
-    from taucli import bench as workbench
-
     chosen = tuple(scene or workbench.SCENES)
     for name in chosen:
         if name not in workbench.SCENES:
@@ -20,7 +21,7 @@ def bench(*, env, scene=None, quick: bool = False, out: str | None = None, json:
         raise InputError("out", "expected a file name ending in .svg or .png", example="{out} chart.svg", got=repr(out))
     if out is not None:
         try:
-            import matplotlib  # noqa: F401
+            import matplotlib  # noqa: F401  # deferred: matplotlib, only asked whether it is there
         except ImportError:
             raise InputError("out", "needs matplotlib", hint="pip install 'taucli[plot]'") from None
     points = workbench.run(chosen, quick=quick)
@@ -39,9 +40,6 @@ def bench(*, env, scene=None, quick: bool = False, out: str | None = None, json:
 
 def completions(*, env, shell: str | None = None) -> int:
     """The completion script for SHELL, from the commands' tables."""
-    from taucli import completions as scripts
-    from taucli.names import SHELLS
-
     if shell not in SHELLS:
         raise InputError("shell", f"expected one of {', '.join(SHELLS)}", example="taucli completions bash", got=None if shell is None else repr(shell))
     env.stdout.write(scripts.script(shell))

@@ -130,7 +130,7 @@ class Parsed(NamedTuple):
 @lru_cache(maxsize=1)
 def registry():
     """The one pint registry, built on first use, its definitions cached on disk between runs."""
-    import pint
+    import pint  # deferred: pint (about 150 ms with its registry), only for a text the cache has not seen
 
     where = cache.folder()
     try:
@@ -199,7 +199,7 @@ def _expected(kind: Kind) -> str:
 
 def _pint_quantity(cleaned: str, option: str, kind: Kind, shown: str):
     """pint's Quantity for screened text, as pint reads it (a bare number stays without units)."""
-    import pint
+    import pint  # deferred: pint, as in registry()
 
     ureg = registry()
     try:
@@ -250,7 +250,7 @@ def _suggest(name: str, kind: Kind, *, typo: bool = True) -> str | None:
         return "did you mean " + " or ".join(repr(unit) for unit in close[:2]) + "?"
     if not typo:
         return None
-    import difflib
+    import difflib  # deferred: only a mistyped unit asks for a did-you-mean
 
     lowered = {unit.lower(): unit for unit in kind.common_units}
     guess = difflib.get_close_matches(name.lower(), list(lowered), n=1, cutoff=0.5)
@@ -304,7 +304,7 @@ def _number_times_unit(text: str) -> tuple[float, str] | None:
 def _from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, int]:
     """The SI value of ``cleaned`` as pint reads it under taucli's rules, and how it was read
     (AS_GIVEN, REVOLUTIONS, WEIGHT: the value is in newtons, MASS_AS_WEIGHT)."""
-    import pint
+    import pint  # deferred: pint, as in registry()
 
     ureg = registry()
     q = _pint_quantity(cleaned, option, kind, text)
@@ -353,7 +353,7 @@ def _radians(unit) -> int:
 def _mixes_angles(cleaned: str) -> bool:
     """Whether text adds terms with an angle to terms without ("1 rpm + 1 Hz", "30 deg + 1"), which
     pint does by reading the radian as 1: the check gives every angle unit a dimension of its own."""
-    import pint
+    import pint  # deferred: pint, as in registry()
 
     ureg = registry()
     marked = [f"({t.text}*taucli_angle)" if t.kind == "name" and _a_unit(t.text) and _radians(t.text) else t.text for t in spellings.tokens(cleaned)]

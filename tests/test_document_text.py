@@ -42,7 +42,7 @@ def test_every_scene_writes_the_documents_text(name, steps):
 
 
 def test_uncertainties_and_the_monte_carlo_check_are_written_as_the_dict_says():
-    from taucli.uncertain import solve as solve_uncertain
+    from taucli.answer import solve as solve_uncertain
 
     given = {"m1": "4.0+/-0.1 kg", "m2": "1 kg", "pulley_mass": "2kg", "pulley_radius": "0.1m"}
     report = solve_uncertain(COMMANDS["atwood"], given, mc=2000)

@@ -16,7 +16,7 @@ import taucli
 from taucli import cli, pipeline
 from taucli.options import SCENES
 from taucli.render import STRICT_JSON, document
-from taucli.uncertain import split, with_uncertainty
+from taucli.measurement import split, with_uncertainty
 
 MP_DPS = 40  # the references' precision, set for each test by conftest
 with mpmath.workdps(MP_DPS):
@@ -163,9 +163,9 @@ def test_with_uncertainty(value, sigma, shown):
 def test_without_an_uncertainty_the_plain_path_is_untouched(scene):
     command = SCENES[scene]
     options = {"m1": "4kg", "m2": "1kg", "pulley_mass": "2kg"} if scene == "atwood" else {"inertia": "0.1 kg*m^2", "omega0": "30 rad/s", "friction": "0.3 N*m"}
-    from taucli import uncertain
+    from taucli import answer
 
-    through = uncertain.solve(command, options)
+    through = answer.solve(command, options)
     direct = pipeline.solve(command, options)
     assert type(through) is type(direct)
     assert STRICT_JSON.encode(document(through)) == STRICT_JSON.encode(document(direct))

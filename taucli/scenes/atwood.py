@@ -44,6 +44,7 @@ from taucli.scenes.motion import (
     start_rate,
 )
 from taucli.table import Results
+from taucli.scenes.inertia import body_inertia
 
 HANGING = math.pi / 2
 EPSILON = 2.0**-52
@@ -51,7 +52,6 @@ EPSILON = 2.0**-52
 
 class Pulley(NamedTuple):  # NamedTuples, as report.Value: made on every run (a batch line), at a third of a frozen dataclass's cost
     """The pulley: its mass and shape, or its moment of inertia; its radius; axle friction."""
-
     mass: float = 0.0
     radius: float | None = None
     shape: str | None = None  # "disc" or "ring"; None with a mass means a disc, with a note
@@ -79,7 +79,6 @@ class Pulley(NamedTuple):  # NamedTuples, as report.Value: made on every run (a 
 
 class Slope(NamedTuple):
     """Where m2 is: hanging (θ = 90°), on a table (0°) or a slope; its friction coefficients."""
-
     angle: float = HANGING
     mu_k: float | None = 0.0  # None: not given (friction.py's rule: needed only if m2 slides)
     mu_s: float | None = None
@@ -615,8 +614,6 @@ def _on_the_pulley(report: Report, r: float, radius: float | None, v0: float, di
 def _with_parts(pulley: Pulley, parts: Sequence, assumed: Assumed) -> Pulley:
     """The pulley with its parts: I = I of --pulley-inertia or of --pulley-mass (Σ over one axle adds),
     plus each part's moment about the axle (taucli.scenes.inertia, parallel axes included)."""
-    from taucli.scenes.inertia import body_inertia
-
     if pulley.radius is None:
         raise InputError("pulley_radius", "is required with {part} (the pulley adds I/R² to the moving mass)", example="{pulley_radius} 0.1m")
     if pulley.inertia is not None and pulley.mass:

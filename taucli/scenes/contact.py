@@ -17,47 +17,7 @@ from dataclasses import dataclass
 
 from taucli.errors import InputError
 from taucli.report import Step, fmt, quantity_text
-
-PRESSURES = ("uniform", "wear")
-
-
-@dataclass(frozen=True)
-class Brake:
-    """A shoe pressed with ``force`` at ``radius`` (None: the body's radius); μ kinetic and static."""
-
-    source: str
-    force: float
-    mu_k: float
-    mu_s: float | None = None
-    radius: float | None = None
-
-
-@dataclass(frozen=True)
-class Face:
-    """A flat face pressed with ``force`` (None: the body's weight) between the radii (None: the body's)."""
-
-    source: str
-    mu_k: float
-    mu_s: float | None = None
-    force: float | None = None
-    inner_radius: float | None = None
-    outer_radius: float | None = None
-    pressure: str = "uniform"
-    surfaces: int = 1
-
-
-def coefficients(source: str, values: dict) -> tuple[float, float | None]:
-    """μk and μs from mu= (the kinetic value) or mu-k= and mu-s=."""
-    mu, mu_k, mu_s = values.get("mu"), values.get("mu_k"), values.get("mu_s")
-    if mu is not None and mu_k is not None:
-        raise InputError(source, "has mu= and mu-k=: mu= is the kinetic value, give it once")
-    mu_k = mu if mu_k is None else mu_k
-    if mu_k is None:
-        raise InputError(source, "needs mu= (or mu-k=, with mu-s= for the static value)")
-    if mu_s is not None and mu_s < mu_k:
-        raise InputError(source, "has mu-s= below the kinetic μ (static friction is at least kinetic)", got=f"{fmt(mu_s)} < {fmt(mu_k)}")
-    return mu_k, mu_s
-
+from taucli.scenes.given import Brake, Face
 
 def face_radius_factor(inner: float, outer: float, pressure: str) -> float:
     """The effective radius of an annular face per unit μF: τ = μ·F·(this) per surface."""

@@ -33,6 +33,7 @@ from taucli.options.gyro import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
 from taucli.table import Results
+from taucli.scenes.inertia import SHAPES, body
 
 TWO_PI = 2.0 * math.pi
 HALF_PI = 0.5 * math.pi
@@ -102,8 +103,6 @@ def _finite(x: float | None) -> float | None:
 def _perpendicular_centre(shape: str, mass: float, dims: Mapping[str, float]) -> tuple[float, str, Callable[[], str]] | None:
     """(I⊥ about the centre of mass, its equation, what writes its numbers), or None where the
     shape has none here. The numbers are written only when the steps are read."""
-    from taucli.scenes.inertia import SHAPES
-
     def filled(template: str) -> Callable[[], str]:
         def numbers() -> str:
             lengths = {symbol: f"({quantity_text(dims.get(name, 0.0), 'm')})" for name, symbol in _SYMBOLS.items()}
@@ -152,8 +151,6 @@ def gyro(
     """``taucli gyro``: the body (--inertia or --shape ...), its --spin, and the torque on it:
     the weight (--mass at --cm-distance, with --g) or --torque; the axis at --tilt (default
     90°, horizontal) from the upward vertical."""
-    from taucli.scenes.inertia import body
-
     dims = {"radius": radius, "inner_radius": inner_radius, "outer_radius": outer_radius, "length": length, "width": width, "height": height, "depth": depth}
     if part and shape is None:
         raise InputError("part", "goes with {shape}: the parts are added to the shape's body", example='{shape} disc {mass} 1kg {radius} 5cm {part} "ring mass=100g radius=5cm"')
@@ -279,8 +276,6 @@ def _period(rate: float | None, notes: list[str]) -> float | None:
 def _perp_from_shape(shape: str, mass: float, axis: str | None, dims: Mapping[str, float | None], r: float, steps: list, notes: list[str]) -> float | None:
     """I⊥ about the pivot from the shape: I⊥cm about a diameter, plus mr² (parallel axes);
     ``steps`` gets what writes its steps, called when the steps are read."""
-    from taucli.scenes.inertia import SHAPES
-
     found = SHAPES[shape]
     if axis is not None and axis != found.axes[0].name:
         notes.append(f"the spin axis is not the {found.title}'s symmetry axis, so I⊥ is not taken from the shape")

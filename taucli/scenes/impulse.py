@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
 
 from taucli.errors import InputError
 from taucli.numerics import StreamingQuadrature
@@ -26,8 +25,13 @@ from taucli.report import (
     term,
 )
 from taucli.scenes.point import put_point, put_start, rim_radius
+from taucli.scenes.angles import cos_exact
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.given import Couple, Particle
 from taucli.table import Results
+from taucli.scenes.contact import contacts
+from taucli.scenes.inertia import body, part_inertia
+from taucli.scenes.motion import Evolver, Loads, Method, evolve
 
 BRIEF_BLOW = 0.1  # s: a blow this short is remembered by its impulse alone
 SAMPLES_SHOWN = 10_000  # ω at the samples is reported for profiles up to this many rows
@@ -275,50 +279,6 @@ def solve_profile(
     return Report("impulse", model, chosen, results, steps, notes, {}, tables, deferred(Trajectory, CURVES, duration, points=points, note=note))
 
 
-@dataclass(frozen=True)
-class Particle:
-    """A particle that meets the body (--particle): its mass, its signed speed along its line
-    (positive when its angular momentum is in the body's positive sense; None: it rides on the
-    body), the radius where it meets the body and the angle there between its velocity and the
-    radius (90°: its line passes at ``radius`` from the axis), and what it does after."""
-
-    source: str
-    mass: float
-    radius: float
-    speed: float | None = None
-    angle: float | None = None
-    speed_after: float | None = None
-    radius_after: float | None = None
-    e: float | None = None
-
-    @property
-    def sine(self) -> float:
-        return 1.0 if self.angle is None else _sin(self.angle)
-
-    @property
-    def arm(self) -> float:
-        """r⊥ = r sin φ: the distance of its line of motion from the axis."""
-        return self.radius * self.sine
-
-
-@dataclass(frozen=True)
-class Couple:
-    """Another body on the same axis (--couple) that locks to the first: I, or a shape, and its ω₀."""
-
-    source: str
-    inertia: float | None = None
-    part: object = None  # an inertia.Part where a shape is given
-    omega0: float | None = None
-
-
-def _sin(angle: float) -> float:
-    """sin φ, exactly 1 at 90° and 0 at 0° and 180° (π/2 read from 90deg is not exactly π/2)."""
-    quarter = angle / (math.pi / 2)
-    if abs(quarter - round(quarter)) <= 4e-16 * max(1.0, abs(quarter)):
-        return (0.0, 1.0, 0.0, -1.0)[round(quarter) % 4]
-    return math.sin(angle)
-
-
 def _check_particle(p: Particle) -> None:
     example = '{particle} "mass=30kg speed=4m/s radius=2m"'
     if p.angle is not None and not 0 <= p.angle <= math.pi * (1 + 1e-15):
@@ -350,7 +310,6 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     for a particle)."""
     for p in particles:
         _check_particle(p)
-    from taucli.scenes.inertia import part_inertia
 
     notes: list[str] = []
     steps = list(inertia_steps)
@@ -402,7 +361,7 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
             else:
                 joined.append((name, p.mass * p.radius**2, tangential / p.radius))
                 if p.angle is not None:
-                    radial_energy.append(0.5 * p.mass * (p.speed * _cos(p.angle)) ** 2)
+                    radial_energy.append(0.5 * p.mass * (p.speed * cos_exact(p.angle)) ** 2)
             rho = p.radius if p.radius_after is None else p.radius_after
             extra_inertia.append(p.mass * (rho - p.radius) * (rho + p.radius))
     if bounce and (len(particles) > 1 or couples):
@@ -540,13 +499,6 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     return Report("impulse", model, "closed form", results, steps, notes, {}, tables)
 
 
-def _cos(angle: float) -> float:
-    quarter = angle / (math.pi / 2)
-    if abs(quarter - round(quarter)) <= 4e-16 * max(1.0, abs(quarter)):
-        return (1.0, 0.0, -1.0, 0.0)[round(quarter) % 4]
-    return math.cos(angle)
-
-
 def impulse(
     *,
     omega0: float | None = None,
@@ -567,8 +519,6 @@ def impulse(
     """``taucli impulse``: τΔt = IΔω solved for the one left out; or a moment of inertia that
     changes with no torque (--inertia-final); or a sampled torque (--torque-profile); --at r, a
     point of the body before and after."""
-    from taucli.scenes.inertia import body
-
     if at is not None:
         report = impulse(omega0=omega0, omega1=omega1, torque=torque, duration=duration, inertia_final=inertia_final,
                          torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, g=g, **body_options)
@@ -658,9 +608,6 @@ def _braked(moment, body_steps, body_options: dict, omega0, omega1, torque, dura
     torque τ_f against the turning (static μ holding it at rest), so I dω/dt = τ − τ_f·sgn ω:
     it may stop within Δt, stay held, or turn back with the friction reversed (motion.evolve).
     ω₁ follows; the net angular impulse I(ω₁ − ω₀) = τΔt − ∫τ_f sgn ω dt."""
-    from taucli.scenes.contact import contacts
-    from taucli.scenes.motion import Evolver, Loads, Method, evolve
-
     for name, value in others.items():
         if value is not None:
             raise InputError(name, "does not combine with {brake} or {face} here: they act with a constant {torque} over {duration}")

@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, replace
 
 from taucli import units
 from taucli.errors import InputError, did_you_mean
 from taucli.options.inertia import COMMAND as TABLE
 from taucli.report import Report, Step, Table, fmt, quantity_text
+from taucli.scenes.given import Part
 from taucli.table import Results
 
 # Dimension name -> (symbol in equations, placeholder in number templates).
@@ -158,36 +159,6 @@ SHAPES: dict[str, Shape] = {
 
 
 @dataclass(frozen=True)
-class Part:
-    """One part of a body: a shape, its mass and dimensions, its axis and its parallel shift.
-
-    ``source`` names where the part came from in messages ("" for the main options, else
-    "{part} 2": the option's name, spelled by whoever shows the message).
-    """
-
-    shape: str
-    mass: float | None
-    dims: Mapping[str, float] = field(default_factory=dict)
-    axis: str | None = None
-    offset: float | None = None
-    source: str = ""
-    inertia: float | None = None  # its own I (about its centre when an offset moves it)
-    gyration: float | None = None  # its radius of gyration k (I = Mk²)
-    density: float | None = None  # its mass from its shape's volume
-
-    def option(self, name: str) -> str:
-        flag = name.replace("_", "-")
-        return f"{self.source} {flag}=" if self.source else name
-
-    def example(self, name: str, value: str) -> str:
-        flag = name.replace("_", "-")
-        lead = self.shape or ("gyration=0.3m" if self.gyration is not None else "inertia=0.05kg*m^2")
-        if flag == "mass":
-            return f'{{part}} "{lead} mass={value}"' if self.source else f"{{{name}}} {value}"
-        return f'{{part}} "{lead} mass=1kg {flag}={value}"' if self.source else f"{{{name}}} {value}"
-
-
-@dataclass(frozen=True)
 class PartInertia:
     """A part's moment of inertia about its own centre and about the rotation axis.
 
@@ -281,9 +252,7 @@ def _mass_from_density(part: Part, shape: Shape) -> tuple[Part, Step]:
     if shape.name not in VOLUMES:
         raise InputError(part.option("density"), f"needs a solid of known volume ({', '.join(VOLUMES)}), not a {shape.title}")
     equation, volume_of = VOLUMES[shape.name]
-    import inspect
-
-    needed = tuple(inspect.signature(volume_of).parameters)
+    needed = volume_of.__code__.co_varnames[: volume_of.__code__.co_argcount]  # its parameters' names
     for dim in needed:
         if dim not in part.dims:
             raise InputError(part.option(dim), f"is needed for the volume of a {shape.title} ({equation})", example=part.example(dim, "0.05m"))
@@ -292,8 +261,6 @@ def _mass_from_density(part: Part, shape: Shape) -> tuple[Part, Step]:
     step = Step(f"Mass of the {shape.title} from its density", f"M = ρV,  {equation}",
                 f"{quantity_text(part.density, 'kg/m**3')} × {quantity_text(volume, 'm**3')}", quantity_text(mass, "kg"),
                 "a uniform body's mass is its density times its volume")
-    from dataclasses import replace
-
     return replace(part, mass=mass, density=None), step
 
 

@@ -25,6 +25,7 @@ from taucli.options.pendulum import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, Trajectory, deferred, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
 from taucli.table import Results
+from taucli.scenes.inertia import body_inertia, main_part
 
 TWO_PI = 2 * math.pi
 DEFAULT_DT = 1e-3
@@ -37,7 +38,6 @@ WITHHELD_ABOVE = 1e-3  # a stepper's answers are withheld when its period is fur
 @dataclass(frozen=True)
 class Swing:
     """The pendulum: I about the pivot, G = mgd (gravity's torque at 90°), κ, and its start."""
-
     inertia: float
     gravity_torque: float  # G = m g d
     torsion: float  # κ
@@ -73,7 +73,6 @@ def sine(theta: float) -> float:
 
 class Harmonic:
     """θ'' = −Ω²θ: θ = θ₀ cos Ωt + (ω₀/Ω) sin Ωt = A cos(Ωt − δ)."""
-
     def __init__(self, rate: float, theta0: float, omega0: float):
         self.rate, self.theta0, self.omega0 = rate, theta0, omega0
         self.amplitude = math.hypot(theta0, omega0 / rate)
@@ -95,7 +94,6 @@ class Harmonic:
 
 class Libration:
     """Gravity alone, swinging: sin(θ/2) = k sn(u, k), ω = 2kω₀ cn(u, k), u = u₀ + ω₀t."""
-
     def __init__(self, swing: Swing, rate: float, k: float, kc: float):
         self.swing, self.rate, self.k, self.kc = swing, rate, k, kc
         self.quarter = elliptic.complete_k(kc)
@@ -125,7 +123,6 @@ class Libration:
 
 class Circulation:
     """Gravity alone, over the top: sin(θ/2) = sn(v, 1/k), v = ±v₀ + kω₀t, once round in 2K(1/k)/(kω₀)."""
-
     def __init__(self, swing: Swing, rate: float, k: float, kc: float):
         self.swing, self.rate, self.k, self.kc = swing, rate, k, kc  # kc: of the modulus 1/k
         self.sign = 1.0 if swing.omega0 > 0 else -1.0
@@ -152,7 +149,6 @@ class Circulation:
 class Separatrix:
     """Gravity alone with just the energy to reach the top: sin(θ/2) = tanh(v), v = ±v₀ + ω₀t; it
     takes forever to get there (or, balanced at the top, stays)."""
-
     def __init__(self, swing: Swing, rate: float):
         self.swing, self.rate = swing, rate
         self.sign = 1.0 if swing.omega0 > 0 else -1.0
@@ -186,7 +182,6 @@ class BlewUp(Exception):
 class Stepped:
     """θ'' = α(θ) stepped by a method of numerics.integrate_angle, each answer from t = 0, all of
     them within one budget of steps (numerics.MAX_ANGLE_STEPS)."""
-
     def __init__(self, swing: Swing, method: str, dt: float, rtol: float, horizon: float):
         self.swing, self.method, self.dt, self.rtol, self.horizon = swing, method, dt, rtol, horizon
         natural = math.sqrt((swing.gravity_torque + swing.torsion) / swing.inertia)
@@ -248,8 +243,6 @@ class Stepped:
 
 def _body(inertia, shape, mass, axis, offset, part, cm_distance, dims) -> tuple[float, float | None, float | None, Sequence[Step], str]:
     """(I about the pivot, mass, d, the steps, words for the model) from the body's options."""
-    from taucli.scenes.inertia import body_inertia, main_part
-
     if inertia is not None:
         if shape is not None:
             raise InputError("inertia", "conflicts with {shape}: give one of them")
@@ -386,7 +379,6 @@ def _point(report: Report, swing: Swing, r: float, angle: float | None, gravity:
 
 class _Appended(DeferredSteps):
     """A report's steps (written when first read) and more after them."""
-
     def __init__(self, first, more):
         super().__init__(lambda: [*first, *more])
 

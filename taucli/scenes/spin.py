@@ -41,6 +41,11 @@ from taucli.scenes.motion import (
     evolve,
 )
 from taucli.table import Results
+from taucli import numerics
+from taucli.numerics import gauss_legendre
+from taucli.scenes.contact import body_rim, contacts
+from taucli.scenes.inertia import body, body_table
+from taucli.scenes.uniform import Uniform, solve_unknowns
 
 TWO_PI = 2 * math.pi
 Torques = Loads  # for a wheel the loads are torques: drive, friction, viscous b, drag k
@@ -58,7 +63,6 @@ DERIVED = {"revs_stop": "theta_stop", "revs": "theta"}  # results that follow an
 @dataclass(frozen=True)
 class Push:
     """A tangential push that makes the driving torque: τ = F r sin φ."""
-
     force: float
     lever: float
     angle: float = math.pi / 2
@@ -327,7 +331,6 @@ def _phase_sampler(evolver: Evolver, phase: Phase):
 
 
 def numerics_gauss(f, duration: float) -> float:
-    from taucli.numerics import gauss_legendre
 
     return gauss_legendre(f, 0.0, duration)
 
@@ -596,8 +599,6 @@ def spin_down(
     ω₀ = 0 unless --omega0 (or --rim-speed, or --ke0) says. --alpha, or no body at all, is
     rotation at constant α: any three of ω₀, ω₁, α, t, θ give the rest.
     """
-    from taucli.scenes.inertia import body
-
     if power == 0:
         power = None  # a motor of no power is no motor
     if g is not None and not any(plate.force is None for plate in face or ()):
@@ -611,7 +612,6 @@ def spin_down(
     moment, body_steps = body(**body_options) if has_body else (None, ())
     parts = None
     if body_options.get("part"):
-        from taucli.scenes.inertia import body_table
 
         parts = body_table(**body_options)
     results = Results(TABLE)
@@ -791,8 +791,6 @@ def _uniform_report(
     front: tuple[list[Step], list[str], Results],
 ) -> Report:
     """Rotation at constant α: from --alpha, or from the targets (any three of ω₀, ω₁, α, t, θ)."""
-    from taucli.scenes.uniform import Uniform, solve_unknowns
-
     front_steps, notes, results = front
     given_alpha = alpha is not None
     if torques.drive:
@@ -1051,7 +1049,6 @@ class PowerMotion:
     P/u dominates (so the lossless law carries the first ~1e-12 of the energy exactly enough),
     and a load (P < 0) is stopped the same way just before rest.
     """
-
     inertia: float
     power: float
     torques: Torques
@@ -1111,7 +1108,6 @@ class PowerMotion:
         return t, edge, 2 * t * edge / 3
 
     def _run(self, u: float, t_end: float, event: float | None):
-        from taucli import numerics
 
         method = self.method
         name = "rk45" if method.name == "exact" else method.name
@@ -1251,7 +1247,6 @@ def _power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, ti
             results.put("work_friction", friction, by)
         rest = inertia * omega0 * omega0 / 2 - ke + work - friction
         if torques.viscous and torques.drag:
-            from taucli.numerics import gauss_legendre
 
             viscous = torques.viscous * gauss_legendre(lambda t: motion.state(t)[0] ** 2, 0.0, end, panels=16)
             results.put("work_viscous", viscous, by)
@@ -1385,8 +1380,6 @@ def _split_contacts(report: Report, axle: float, contact) -> Report:
 
 def _contacts(brakes, faces, body_options: dict, rim: float | None, assumed: Assumed, g: float | None, results: Results, steps: list[Step], notes: list[str], axle: float):
     """The brakes' and faces' torques (contact.py), put among the results, steps and notes before the motion."""
-    from taucli.scenes.contact import body_rim, contacts
-
     shape_rim = body_rim(body_options)
     options = body_options if shape_rim is not None or rim is None else {**body_options, "shape": "disc", "radius": rim}
     g = assumed.gravity(g) if any(face.force is None for face in faces) else None

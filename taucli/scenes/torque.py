@@ -18,6 +18,7 @@ from collections.abc import Sequence
 from taucli.errors import InputError
 from taucli.options.torque import COMMAND as TABLE
 from taucli.report import Report, Step, Table, fmt, pretty_unit, quantity_text, term
+from taucli.scenes.angles import sin_exact
 from taucli.table import Results
 
 Vector = tuple[float, float, float]
@@ -55,15 +56,6 @@ def cross(u: Sequence[float], v: Sequence[float]) -> Vector:
 def size(v: Sequence[float]) -> float:
     """|v|, without overflow or underflow in the squares."""
     return math.hypot(*v)
-
-
-def sin_exact(angle: float) -> float:
-    """sin θ, exactly 0 or ±1 at whole multiples of 90° (180deg read as π would give 1.2e-16)."""
-    quarter = angle / (math.pi / 2)
-    nearest = round(quarter)
-    if abs(quarter - nearest) <= 4e-16 * max(1.0, abs(quarter)):
-        return (0.0, 1.0, 0.0, -1.0)[nearest % 4]
-    return math.sin(angle)
 
 
 def sense(v: Vector) -> str:

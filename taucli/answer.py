@@ -1,0 +1,90 @@
+"""How a run is answered: plainly, with uncertainties, solving for an input, or by Monte Carlo.
+
+The one layer above the pipeline. Every surface (the command line, a sweep's point, a batch line,
+the Python API) calls ``solve``: with no uncertainty, no ``--find`` and no ``--mc`` it is
+``pipeline.solve`` and nothing else; otherwise taucli.propagate (uncertainties through the
+scene) or taucli.find (an input solved for) works around the pipeline. Neither imports this.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+from taucli import find as finding
+from taucli import pipeline, propagate
+from taucli.errors import InputError
+from taucli.inputs import read
+from taucli.measurement import split
+from taucli.report import Report
+from taucli.table import FILE, Command, spelled
+
+
+def _as_named(name: str) -> str:
+    return name
+
+
+def plain(given: Mapping[str, object], find=None, want=None, mc=None) -> bool:
+    """Whether ``pipeline.solve`` alone answers: no input carries an uncertainty, nothing is
+    solved for and no Monte Carlo is asked."""
+    if find is not None or want is not None or mc:
+        return False
+    for value in given.values():  # inline, not a helper per value: this runs on every batch line
+        if value.__class__ is str and ("±" in value or "+/-" in value or ")" in value):
+            return False
+    return True
+
+
+def solve(
+    command: Command,
+    given: Mapping[str, object],
+    *,
+    find: str | None = None,
+    want: str | None = None,
+    mc: int | None = None,
+    stdin=None,
+    spell: Callable[[str], str] = _as_named,
+) -> Report:
+    """The scene's report, as ``pipeline.solve`` gives it, with uncertainties where any input
+    carries one, solved for the input ``find`` where ``want`` (RESULT=VALUE) says."""
+    if plain(given, find, want, mc):
+        return pipeline.solve(command, given, stdin=stdin, spell=spell)
+    if (find is None) != (want is None):
+        raise InputError("find" if find is None else "want", "goes with {" + ("want" if find is None else "find") + "}",
+                         example="{find} pulley_inertia {want} a=4.0m/s^2")
+    if mc is not None and not 2 <= mc <= propagate.MC_MAX:
+        raise InputError("mc", f"expected a number of draws from 2 to {propagate.MC_MAX}", example="{mc} 2000", got=repr(mc))
+    for name, value in given.items():
+        option = command.option(name)
+        if option is not None and option.kind == FILE and value is not None:
+            raise InputError(name, "does not combine with an uncertainty, {find} or {mc}: the scene is solved many times, and a file is read once")
+    central, spreads, notes = _read(command, given, spell)
+    scene = propagate.Scene(command, central, stdin, spell)
+    if find is not None:
+        return finding.solve_for(scene, find, want, spreads, notes, mc)
+    nominal = scene.report({})
+    if not spreads and not mc:
+        return nominal
+    slopes = propagate.jacobian(scene, {name: scene.si[name] for name in spreads}, spreads)
+    sigma = propagate.combine(slopes, spreads, propagate.numeric(nominal))
+    notes = [*notes, *propagate.linearity(scene, nominal, spreads, slopes)]
+    report = propagate.measured(nominal, sigma, spreads, notes)
+    if mc:
+        propagate.monte_carlo(scene, report, spreads, mc, lambda draw: scene.report(draw))
+    return report
+
+
+def _read(command: Command, given: Mapping[str, object], spell) -> tuple[dict, dict[str, float], list[str]]:
+    """The options with each value's text in place of "value ± σ", and each σ in SI."""
+    _, inputs = read(command, given)
+    spreads: dict[str, float] = {}
+    notes: list[str] = []
+    central = dict(given)
+    for key, sigma in (inputs.uncertainties or {}).items():
+        option = command.option(key)
+        if option is None or not option.is_quantity or option.repeatable:
+            notes.append(spelled(f"the uncertainty given in {key} is not carried through: only a scene's own single quantity options carry one", spell, command.option))
+            continue
+        central[key] = split(given[key])[0]
+        if sigma > 0:
+            spreads[key] = sigma
+    return central, spreads, notes

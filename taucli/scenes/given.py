@@ -1,0 +1,105 @@
+"""What a scene is given in a spec option: a part of a body, a particle that meets it, another
+body on its axis, a brake shoe, a pressed face. Plain records in SI (taucli.specs reads them from
+their "key=value" texts); the scenes that use them hold the physics.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+from taucli.scenes.angles import sin_exact
+
+
+@dataclass(frozen=True)
+class Part:
+    """One part of a body: a shape, its mass and dimensions, its axis and its parallel shift.
+
+    ``source`` names where the part came from in messages ("" for the main options, else
+    "{part} 2": the option's name, spelled by whoever shows the message).
+    """
+
+    shape: str
+    mass: float | None
+    dims: Mapping[str, float] = field(default_factory=dict)
+    axis: str | None = None
+    offset: float | None = None
+    source: str = ""
+    inertia: float | None = None  # its own I (about its centre when an offset moves it)
+    gyration: float | None = None  # its radius of gyration k (I = Mk²)
+    density: float | None = None  # its mass from its shape's volume
+
+    def option(self, name: str) -> str:
+        flag = name.replace("_", "-")
+        return f"{self.source} {flag}=" if self.source else name
+
+    def example(self, name: str, value: str) -> str:
+        flag = name.replace("_", "-")
+        lead = self.shape or ("gyration=0.3m" if self.gyration is not None else "inertia=0.05kg*m^2")
+        if flag == "mass":
+            return f'{{part}} "{lead} mass={value}"' if self.source else f"{{{name}}} {value}"
+        return f'{{part}} "{lead} mass=1kg {flag}={value}"' if self.source else f"{{{name}}} {value}"
+
+
+@dataclass(frozen=True)
+class Particle:
+    """A particle that meets the body (--particle): its mass, its signed speed along its line
+    (positive when its angular momentum is in the body's positive sense; None: it rides on the
+    body), the radius where it meets the body and the angle there between its velocity and the
+    radius (90°: its line passes at ``radius`` from the axis), and what it does after."""
+
+    source: str
+    mass: float
+    radius: float
+    speed: float | None = None
+    angle: float | None = None
+    speed_after: float | None = None
+    radius_after: float | None = None
+    e: float | None = None
+
+    @property
+    def sine(self) -> float:
+        return 1.0 if self.angle is None else sin_exact(self.angle)
+
+    @property
+    def arm(self) -> float:
+        """r⊥ = r sin φ: the distance of its line of motion from the axis."""
+        return self.radius * self.sine
+
+
+@dataclass(frozen=True)
+class Couple:
+    """Another body on the same axis (--couple) that locks to the first: I, or a shape, and its ω₀."""
+
+    source: str
+    inertia: float | None = None
+    part: Part | None = None  # where a shape is given
+    omega0: float | None = None
+
+
+PRESSURES = ("uniform", "wear")
+
+
+@dataclass(frozen=True)
+class Brake:
+    """A shoe pressed with ``force`` at ``radius`` (None: the body's radius); μ kinetic and static."""
+
+    source: str
+    force: float
+    mu_k: float
+    mu_s: float | None = None
+    radius: float | None = None
+
+
+@dataclass(frozen=True)
+class Face:
+    """A flat face pressed with ``force`` (None: the body's weight) between the radii (None: the body's)."""
+
+    source: str
+    mu_k: float
+    mu_s: float | None = None
+    force: float | None = None
+    inner_radius: float | None = None
+    outer_radius: float | None = None
+    pressure: str = "uniform"
+    surfaces: int = 1

@@ -1,0 +1,273 @@
+"""Options given as "key=value" specs, and vectors: a part of a body, a particle, another body on
+the axis, a brake shoe, a pressed face; "x,y,z UNIT". Each spec's keys are quantities read as
+every quantity is (taucli.reading), into the records of taucli.scenes.given.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from taucli import units
+from taucli.errors import InputError
+from taucli.reading import Inputs
+from taucli.report import Value, fmt
+from taucli.scenes.given import PRESSURES, Brake, Couple, Face, Part, Particle
+from taucli.table import Option
+
+
+def word(option: Option, given) -> str:
+    if not isinstance(given, str):
+        raise InputError(option.name, f"expected one of {', '.join(option.choices)}", got=repr(given))
+    return given.strip()
+
+
+def coefficients(source: str, values: dict) -> tuple[float, float | None]:
+    """μk and μs from mu= (the kinetic value) or mu-k= and mu-s=."""
+    mu, mu_k, mu_s = values.get("mu"), values.get("mu_k"), values.get("mu_s")
+    if mu is not None and mu_k is not None:
+        raise InputError(source, "has mu= and mu-k=: mu= is the kinetic value, give it once")
+    mu_k = mu if mu_k is None else mu_k
+    if mu_k is None:
+        raise InputError(source, "needs mu= (or mu-k=, with mu-s= for the static value)")
+    if mu_s is not None and mu_s < mu_k:
+        raise InputError(source, "has mu-s= below the kinetic μ (static friction is at least kinetic)", got=f"{fmt(mu_s)} < {fmt(mu_k)}")
+    return mu_k, mu_s
+
+
+def parts(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    return tuple(parse_part_spec(word(option, spec), number, inputs) for number, spec in enumerate(specs, start=2))
+
+
+_PART_KEY = re.compile(r"\s+(?=[a-z][a-z_-]*=)")
+PART_DIMENSIONS = ("radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")
+
+
+def parse_part_spec(spec: str, number: int, inputs: Inputs):
+    """A ``--part`` value such as "point mass=100g offset=20cm" as an inertia Part.
+
+    A part is a shape with mass= (or density=) and its dimensions, or its own I: inertia=
+    (with mass= and offset=, I_cm moved by the parallel-axis theorem) or gyration= with mass=;
+    those need no shape word. Keys read with - or _ (inner-radius=, inner_radius=).
+    """
+    source = f"{{part}} {number}"
+    words = _PART_KEY.split(spec.strip())
+    shape, *pairs = words
+    if shape and "=" in shape:
+        shape, pairs = "", words
+    if not words or not words[0]:
+        raise InputError(source, "expected a shape then key=value pairs", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
+    fields: dict[str, str] = {}
+    for pair in pairs:
+        key, _, text = pair.partition("=")
+        fields[key.replace("-", "_")] = text.strip()
+    known = {"mass", "axis", "offset", "inertia", "gyration", "density", *PART_DIMENSIONS}
+    for key in fields:
+        if key not in known:
+            raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", got=repr(key.replace("_", "-")))
+    given_inertia = "inertia" in fields or "gyration" in fields
+    if not shape and not given_inertia:
+        raise InputError(source, "expected a shape then key=value pairs (or inertia= or gyration=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
+    if shape and given_inertia:
+        raise InputError(source, "takes a shape or inertia=/gyration=, not both", got=repr(spec))
+    if "mass" not in fields and "density" not in fields and "inertia" not in fields:
+        raise InputError(source, "needs mass= (or density=, or inertia=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
+
+    def read_field(key: str, kind: str, sign: str = "positive") -> float:
+        return inputs.quantity(f"{source} {key.replace('_', '-')}=", fields[key], kind, sign=sign, key=f"part{number}_{key}")
+
+    dims = {key: read_field(key, "length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS if key in fields}
+    offset = read_field("offset", "length", "nonnegative") if "offset" in fields else None
+    mass = read_field("mass", "mass") if "mass" in fields else None
+    inertia = read_field("inertia", "moment of inertia") if "inertia" in fields else None
+    gyration = read_field("gyration", "length") if "gyration" in fields else None
+    density = _read_density(source, fields["density"], inputs, number) if "density" in fields else None
+    return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density)
+
+
+def _read_density(source: str, text: str, inputs: Inputs, number: int) -> float:
+    """A part's density (kg/m³), read as every quantity is."""
+    return inputs.quantity(f"{source} density=", text, "density", key=f"part{number}_density")
+
+
+# Vectors ("0.3,0.4,0 m") and quantities given more than once (--mass 2kg --mass 3kg).
+_NUMBER_THEN_UNIT = re.compile(r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+AXES = ("x", "y", "z")
+
+
+def vectors(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each value of a VECTOR option: "x,y,z UNIT" as its three SI components (a tuple), or a lone
+    "20 N" as one signed SI number (a scene that takes a size alone says so; the others refuse it).
+    Python and batch may give a vector as three SI numbers: [0.3, 0.4, 0]."""
+    items = [given] if isinstance(given, str) or _is_triple(given) else list(given) if isinstance(given, (list, tuple)) else [given]
+    read = []
+    for number, item in enumerate(items, start=1):
+        name = f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "")
+        key = option.name + (str(number) if len(items) > 1 else "")
+        read.append(read_vector(item, name, option.of, inputs, key))
+    return tuple(read)
+
+
+def _text(given, name: str) -> str:
+    """An SI number as the text a bare number is (a bare number means the SI unit)."""
+    if isinstance(given, str):
+        return given
+    if isinstance(given, (int, float)) and not isinstance(given, bool):
+        if isinstance(given, float) and not math.isfinite(given):
+            raise InputError(name, "expected a finite number", got=repr(given))
+        return repr(float(given)) if isinstance(given, float) else str(given)
+    raise InputError(name, "expected a number or a text with a unit", example='"4kg"', got=repr(given))
+
+
+def _is_triple(given) -> bool:
+    return isinstance(given, (list, tuple)) and len(given) == 3 and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in given)
+
+
+def read_vector(given, name: str, kind: str, inputs: Inputs, key: str):
+    """One vector "x,y,z UNIT" (one unit after the last component, or a unit on each) in SI."""
+    si = units.KINDS[kind].si_unit
+    example = f'{name.split()[0]} "0.3,0.4,0 {si or "1"}"'
+    if _is_triple(given):
+        components = [_text(x, name) for x in given]
+    else:
+        text = _text(given, name).strip()
+        if text[:1] + text[-1:] in ("()", "[]", "<>"):
+            text = text[1:-1]
+        components = [part.strip() for part in text.split(",")]
+    if len(components) == 1:
+        return inputs.quantity(name, components[0], kind, sign="any", key=key)
+    if len(components) != 3:
+        raise InputError(name, "expected three components x,y,z with a unit", example=example, got=repr(given))
+    split = [_NUMBER_THEN_UNIT.fullmatch(part) for part in components]
+    bare = [match is not None and not match[2] for match in split]
+    if bare[0] and bare[1] and not bare[2] and split[2] is not None:
+        components = [f"{part} {split[2][2]}" for part in components[:2]] + components[2:]
+    elif any(bare) and not all(bare):
+        raise InputError(name, "expected one unit after the last component, or a unit on each", example=example, got=repr(given))
+    vector = tuple(units.parse(part, f"{name} ({axis})", kind, sign="any") for part, axis in zip(components, AXES))
+    inputs.notes.extend(parsed.note for parsed in vector if parsed.note)
+    inputs.values[key] = Value([parsed.value for parsed in vector], si, "")
+    return tuple(parsed.value for parsed in vector)
+
+
+# --particle and --couple of impulse (#20): "key=value ..." specs like --part's.
+PARTICLE_FIELDS = {  # key: (kind, sign)
+    "mass": ("mass", "positive"),
+    "speed": ("velocity", "any"),
+    "radius": ("length", "nonnegative"),
+    "angle": ("angle", "nonnegative"),
+    "speed_after": ("velocity", "any"),
+    "radius_after": ("length", "nonnegative"),
+    "e": ("dimensionless", "nonnegative"),
+}
+COUPLE_FIELDS = {"inertia": ("moment of inertia", "nonnegative"), "omega0": ("angular velocity", "any"), "mass": ("mass", "positive"),
+                 "offset": ("length", "nonnegative"), **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS}}
+
+
+_SPEC_KEY = re.compile(r"\s+(?=[a-z][a-z0-9_-]*\s*=)")
+
+
+def _spec_fields(spec: str, source: str, known, example: str, *, shape_word: bool) -> tuple[str | None, dict[str, str]]:
+    """A spec's leading word (where it may have one) and its key=value pairs, keys in snake case."""
+    words = _SPEC_KEY.split(" " + spec.strip())
+    first, *pairs = [word for word in words if word.strip()] or [""]
+    shape = None
+    if "=" not in first:
+        if not shape_word or not first:
+            raise InputError(source, "expected key=value pairs", example=example, got=repr(spec))
+        shape = first.strip()
+    else:
+        pairs = [first, *pairs]
+    fields: dict[str, str] = {}
+    for pair in pairs:
+        key, _, text = pair.partition("=")
+        key = key.strip().replace("-", "_")
+        if key not in known:
+            raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", example=example, got=repr(key.replace("_", "-")))
+        if key in fields:
+            raise InputError(source, f"has {key.replace('_', '-')}= twice", example=example, got=repr(spec))
+        fields[key] = text.strip()
+    return shape, fields
+
+
+def _read_fields(fields: dict[str, str], table: dict, source: str, prefix: str, inputs: Inputs) -> dict[str, float]:
+    return {key: inputs.quantity(f"{source} {key.replace('_', '-')}=", text, table[key][0], sign=table[key][1], key=f"{prefix}_{key}")
+            for key, text in fields.items() if key in table}
+
+
+def _specs(option: Option, given):
+    """Each "key=value ..." spec given for a repeatable spec option: (its number, the name its
+    messages use: "{brake}", or "{brake} 2" where several are given, the spec's text)."""
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    for number, spec in enumerate(specs, start=1):
+        source = "{" + option.name + "}" + (f" {number}" if len(specs) > 1 else "")
+        yield number, source, word(option, spec)
+
+
+def particles(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    example = '{particle} "mass=30kg speed=4m/s radius=2m"'
+    particles = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, PARTICLE_FIELDS, example, shape_word=False)
+        for needed in ("mass", "radius"):
+            if needed not in fields:
+                raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
+        values = _read_fields(fields, PARTICLE_FIELDS, source, f"particle{number}", inputs)
+        particles.append(Particle(source=source, **values))
+    return tuple(particles)
+
+
+def couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    example = '{couple} "inertia=3kg*m^2 omega0=0", or {couple} "disc mass=2kg radius=0.1m omega0=100rpm"'
+    couples = []
+    for number, source, spec in _specs(option, given):
+        shape, fields = _spec_fields(spec, source, {*COUPLE_FIELDS, "axis"}, example, shape_word=True)
+        values = _read_fields(fields, COUPLE_FIELDS, source, f"couple{number}", inputs)
+        if (shape is None) == ("inertia" not in values):
+            raise InputError(source, "needs inertia= or a shape with its mass and dimensions (one of them)", example=example, got=repr(spec))
+        dims = {key: values[key] for key in PART_DIMENSIONS if key in values}
+        if shape is None and (dims or "mass" in values or "offset" in values or "axis" in fields):
+            raise InputError(source, "takes a shape's mass and dimensions only after a shape word; with inertia= they are not used", example=example, got=repr(spec))
+        part = None if shape is None else Part(shape, values.get("mass", 0.0), dims, fields.get("axis"), values.get("offset"), source)
+        if part is not None and "mass" not in values:
+            raise InputError(source, "needs mass= with a shape", example=example, got=repr(spec))
+        couples.append(Couple(source=source, inertia=values.get("inertia"), part=part, omega0=values.get("omega0")))
+    return tuple(couples)
+
+
+# --brake and --face of spin-down (#24): "key=value ..." specs like --particle's.
+_MU_FIELDS = {"mu": ("dimensionless", "nonnegative"), "mu_k": ("dimensionless", "nonnegative"), "mu_s": ("dimensionless", "nonnegative")}
+BRAKE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "radius": ("length", "positive")}
+FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
+               "surfaces": ("dimensionless", "positive")}
+
+
+def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    example = '{brake} "force=100N mu=0.4 radius=0.5m"'
+    brakes = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, BRAKE_FIELDS, example, shape_word=False)
+        if "force" not in fields:
+            raise InputError(source, "needs force=", example=example, got=repr(spec))
+        values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs)
+        mu_k, mu_s = coefficients(source, values)
+        brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius")))
+    return tuple(brakes)
+
+
+def faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    example = '{face} "mu=0.2", or {face} "mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm pressure=wear surfaces=2"'
+    faces = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*FACE_FIELDS, "pressure"}, example, shape_word=False)
+        values = _read_fields(fields, FACE_FIELDS, source, f"face{number}", inputs)
+        mu_k, mu_s = coefficients(source, values)
+        pressure = fields.get("pressure", "uniform")
+        if pressure not in PRESSURES:
+            raise InputError(source, f"pressure= is one of {', '.join(PRESSURES)}", example=example, got=repr(pressure))
+        surfaces = values.get("surfaces", 1.0)
+        if surfaces != int(surfaces):
+            raise InputError(source, "surfaces= is a whole number", example=example, got=repr(fields["surfaces"]))
+        faces.append(Face(source, mu_k, mu_s, values.get("force"), values.get("inner_radius"), values.get("outer_radius"), pressure, int(surfaces)))
+    return tuple(faces)
