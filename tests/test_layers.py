@@ -1,131 +1,62 @@
-"""The layers of taucli/: an import graph with no cycle, imports inside functions only to defer a
-heavy module (each says which), and no module over about 500 lines (#30).
-
-The graph is read from the source (``ast``), imports inside functions included: an import
-deferred into a function is still a dependency, and a loop hidden that way is still a loop.
-"""
+"""The layering rules: solvers are pure, --help builds no unit registry."""
 
 from __future__ import annotations
 
-import ast
-from pathlib import Path
+import subprocess
+import sys
 
 import pytest
 
-PACKAGE = Path(__file__).parent.parent / "taucli"
-MOST_LINES = 520  # "about 500"
-DEFERRED = "# deferred"  # the comment an import inside a function carries, saying what it defers
+from taucli.report import Report, Value, fmt, pretty_unit
+from taucli.render import document, finite_only
+
+HEAVY = ("typer", "rich", "pint")
 
 
-def modules(root: Path = PACKAGE) -> dict[str, Path]:
-    found = {}
-    for path in sorted(root.rglob("*.py")):
-        parts = path.relative_to(root.parent).with_suffix("").parts
-        name = ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
-        found[name] = path
-    return found
+def _modules_after(code: str) -> set[str]:
+    done = subprocess.run(
+        [sys.executable, "-c", code + "\nimport sys\nprint(' '.join(sys.modules))"], capture_output=True, text=True, check=True
+    )
+    return set(done.stdout.split()[-1:] and done.stdout.splitlines()[-1].split())
 
 
-def _imported(node: ast.AST, package: str, known: dict[str, Path]) -> set[str]:
-    """The taucli modules one import statement names (``from taucli import units`` names taucli.units)."""
-    if isinstance(node, ast.Import):
-        return {alias.name for alias in node.names if alias.name in known}
-    base = node.module or ""
-    if node.level:
-        parts = package.split(".")[: len(package.split(".")) - node.level + 1]
-        base = ".".join(parts + ([node.module] if node.module else []))
-    if not base.startswith("taucli"):
-        return set()
-    names = {f"{base}.{alias.name}" for alias in node.names}
-    return {name for name in names if name in known} | ({base} if base in known and not names <= set(known) else set())
+def test_solvers_import_no_typer_rich_or_pint():
+    loaded = _modules_after("import taucli.scenes.inertia")
+    assert not {name for name in loaded if name.split(".")[0] in HEAVY}
 
 
-def graph(root: Path = PACKAGE) -> dict[str, set[str]]:
-    """Each module of taucli/ and the taucli modules it imports, anywhere in it."""
-    known = modules(root)
-    edges = {}
-    for name, path in known.items():
-        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
-        found = set()
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if isinstance(node, (ast.Import, ast.ImportFrom)):
-                found |= _imported(node, package, known)
-        edges[name] = found - {name}
-    return edges
+@pytest.mark.parametrize(
+    "x,text",
+    [(0.1, "0.1"), (7.639437268, "7.63944"), (24.0, "24"), (19.6, "19.6"), (10000.0, "10000"), (1.5e-5, "1.5e-5"), (-3.0, "-3"), (0.0, "0"), (2.5e9, "2.5e9"), (9.9999996, "10")],
+)
+def test_numbers_read_as_in_a_worked_solution(x, text):
+    assert fmt(x) == text
 
 
-def cycle(edges: dict[str, set[str]]) -> list[str] | None:
-    """One cycle of the graph (its modules in order, the first repeated at the end), or None."""
-    state: dict[str, int] = {}  # 1: on the path being walked, 2: done
-    path: list[str] = []
-
-    def walk(node: str) -> list[str] | None:
-        state[node] = 1
-        path.append(node)
-        for after in sorted(edges[node]):
-            if state.get(after) == 1:
-                return path[path.index(after):] + [after]
-            if after not in state and (found := walk(after)):
-                return found
-        state[node] = 2
-        path.pop()
-        return None
-
-    for start in sorted(edges):
-        if start not in state and (found := walk(start)):
-            return found
-    return None
+def test_units_read_as_a_person_writes_them():
+    assert pretty_unit("kg*m**2") == "kg·m²"
+    assert pretty_unit("rad/s**2") == "rad/s²"
+    assert pretty_unit("N*m*s") == "N·m·s"
+    assert pretty_unit(None) == ""
 
 
-def test_the_import_graph_of_taucli_has_no_cycle():
-    found = cycle(graph())
-    assert found is None, "import cycle: " + " -> ".join(found)
+def test_a_result_that_does_not_exist_is_null_with_a_note():
+    report = Report("spin-down", "m", "closed form", {"t_stop": Value(float("inf"), "s", "time to stop")})
+    cleaned = finite_only(report)
+    assert cleaned.results["t_stop"].value is None
+    assert any("t_stop" in note for note in cleaned.notes)
+    assert document(cleaned)["results"]["t_stop"]["value"] is None
 
 
-def test_the_cycle_check_finds_a_cycle_hidden_in_a_function(tmp_path):
-    """The check can fail: the loop #30 found (find -> uncertain at the top; uncertain -> find,
-    pipeline and inputs inside functions; inputs -> uncertain inside a function; pipeline ->
-    inputs), written small."""
-    package = tmp_path / "taucli"
-    package.mkdir()
-    (package / "__init__.py").write_text("")
-    (package / "find.py").write_text("from taucli.uncertain import split\n")
-    (package / "uncertain.py").write_text("def solve():\n    from taucli import find, pipeline\n")
-    (package / "pipeline.py").write_text("from taucli.inputs import read\n")
-    (package / "inputs.py").write_text("def quantity():\n    from taucli.uncertain import split\n")
-    found = cycle(graph(package))
-    assert found is not None and found[0] == found[-1]
-    assert set(found) <= {"taucli.find", "taucli.uncertain", "taucli.pipeline", "taucli.inputs"}
+def test_the_names_offered_match_the_tables_they_stand_for():
+    from taucli import bench, names, numerics
+    from taucli.scenes.atwood import Pulley
+    from taucli.scenes.inertia import SHAPES
+    from taucli.scenes.rolling import K2
 
-
-def _imports_inside_functions(path: Path):
-    source = path.read_text(encoding="utf-8")
-    lines = source.splitlines()
-    for function in ast.walk(ast.parse(source)):
-        if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            for node in ast.walk(function):
-                if isinstance(node, (ast.Import, ast.ImportFrom)):
-                    yield node.lineno, lines
-
-
-def _says_why(lineno: int, lines: list[str]) -> bool:
-    """The import's line says what it defers, or the first import of the run of imports it is in does."""
-    at = lineno - 1
-    while True:
-        if DEFERRED in lines[at]:
-            return True
-        if at == 0 or not lines[at - 1].strip().startswith(("import ", "from ")):
-            return False
-        at -= 1
-
-
-def test_an_import_inside_a_function_defers_a_heavy_module_and_says_which():
-    unexplained = [f"{path.relative_to(PACKAGE.parent)}:{lineno}: {lines[lineno - 1].strip()}"
-                   for path in modules().values() for lineno, lines in _imports_inside_functions(path) if not _says_why(lineno, lines)]
-    assert not unexplained, "imports inside functions with no '# deferred: …' comment:\n" + "\n".join(unexplained)
-
-
-@pytest.mark.parametrize("name", sorted(modules()))
-def test_no_module_is_over_about_500_lines(name):
-    lines = len(modules()[name].read_text(encoding="utf-8").splitlines())
-    assert lines <= MOST_LINES, f"{name} has {lines} lines"
+    assert names.SHAPE_AXES == {name: tuple(axis.name for axis in shape.axes) for name, shape in SHAPES.items()}
+    assert names.ROLLING_BODIES == tuple(K2)
+    assert names.METHOD_NAMES == ("auto", "exact", *numerics.METHODS)
+    assert names.QUADRATURE_NAMES == ("auto", *numerics.StreamingQuadrature.RULES)
+    assert names.PULLEY_SHAPES == tuple(Pulley.SHAPE_FACTORS)
+    assert names.BENCH_SCENES == tuple(bench.SCENES)
