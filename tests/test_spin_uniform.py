@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 import taucli
 from taucli.errors import InputError
-from taucli.scenes.uniform import Uniform
+from taucli.scenes.spin.kinematics import Uniform
 
 mp = mpmath.mp
 TWO_PI = 2 * math.pi

@@ -1,0 +1,289 @@
+"""A motor of constant power P: I dω/dt = P/ω − τ_f − bω − kωⁿ (τ = P/ω; P < 0 a load).
+
+With no losses ½Iω² changes at the rate P: a closed form. With losses there is none, and ω is
+stepped by the method from a start just off rest, where P/ω dominates.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from taucli import numerics
+from taucli.errors import InputError
+from taucli.numerics import falling_root, gauss_legendre
+from taucli.options.spin_down import COMMAND as TABLE
+from taucli.report import Report, Step, deferred, fmt, quantity_text, term
+from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Method
+from taucli.scenes.spin.energy import energy_steps
+from taucli.scenes.spin.steps import TWO_PI, Torques, curves
+from taucli.table import Results
+
+
+@dataclass(frozen=True)
+class PowerMotion:
+    """The motion under a constant power P, in the frame where u = |ω| ≥ 0 (``sense`` = ±1).
+
+    Without losses, ½Iu² grows (or, for P < 0, falls) at the rate P: u² = u₀² + 2Pt/I and
+    θ = 2t(u² + uu₀ + u₀²)/(3(u + u₀)), which has no difference of near-equal numbers. With
+    losses there is no closed form: u is stepped by the method, from a start just off rest where
+    P/u dominates (so the lossless law carries the first ~1e-12 of the energy exactly enough),
+    and a load (P < 0) is stopped the same way just before rest.
+    """
+    inertia: float
+    power: float
+    torques: Torques
+    u0: float
+    method: Method
+    sense: float
+
+    @property
+    def lossless(self) -> bool:
+        t = self.torques
+        return not (t.friction or t.viscous or t.drag)
+
+    def rate(self, u: float) -> float:
+        t = self.torques
+        drag = t.drag * u**t.drag_exponent if t.drag and u > 0 else 0.0
+        u = max(u, 1e-300)  # finite below rest, so that a trial step past it is rejected, not accepted as NaN
+        return (self.power / u - t.friction - t.viscous * u - drag) / self.inertia
+
+    def stiffness(self, u: float) -> float:
+        t = self.torques
+        drag = t.drag_exponent * t.drag * u ** (t.drag_exponent - 1) if t.drag else 0.0
+        return (abs(self.power) / (u * u) + t.viscous + drag) / self.inertia
+
+    def _edge(self) -> float:
+        """A speed near rest below which the losses are under 1e-7 of P/u."""
+        t, p = self.torques, abs(self.power)
+        scales = [p / t.friction if t.friction else math.inf, math.sqrt(p / t.viscous) if t.viscous else math.inf,
+                  (p / t.drag) ** (1 / (t.drag_exponent + 1)) if t.drag else math.inf]
+        return 1e-7 * min(scales)
+
+    def lossless_state(self, t: float) -> tuple[float, float]:
+        u0 = self.u0
+        square = u0 * u0 + 2 * self.power * t / self.inertia
+        u = math.sqrt(max(square, 0.0))
+        return u, (2 * t * (u * u + u * u0 + u0 * u0) / (3 * (u + u0)) if u + u0 else 0.0)
+
+    def stop(self) -> tuple[float, float] | None:
+        """(t, θ) where a load brings the wheel to rest (None while P > 0)."""
+        if self.power >= 0 or self.u0 == 0:
+            return None if self.u0 or self.power >= 0 else (0.0, 0.0)
+        if self.lossless:
+            t = self.inertia * self.u0 * self.u0 / (2 * -self.power)
+            return t, 2 * t * self.u0 / 3
+        edge = self._edge()
+        if self.u0 <= 2 * edge:  # already where the losses are under 1e-7 of P/ω: the lossless law
+            return PowerMotion(self.inertia, self.power, Torques(), self.u0, self.method, self.sense).stop()
+        solution = self._run(self.u0, math.inf, edge)
+        tail = self.inertia * edge * edge / (2 * -self.power)
+        return solution.t + tail, solution.theta + 2 * tail * edge / 3
+
+    def _start(self) -> tuple[float, float, float]:
+        """(t, u, θ) to step from: the start, or just off rest on the lossless law."""
+        if self.u0 > 0 or self.power <= 0:
+            return 0.0, self.u0, 0.0
+        edge = self._edge()
+        t = self.inertia * edge * edge / (2 * self.power)
+        return t, edge, 2 * t * edge / 3
+
+    def _run(self, u: float, t_end: float, event: float | None):
+
+        method = self.method
+        name = "rk45" if method.name == "exact" else method.name
+        if t_end == math.inf:  # a bound on the time to the event: the energy to go, over the least net power on the way
+            span = abs(self.inertia * (event - u) * (event + u) / 2)
+            if self.power < 0:
+                net = -self.power  # a load drains at least P; the losses only add to it
+            else:
+                steady = self.steady_speed()
+                if steady is not None and event >= steady:
+                    return None
+                net = event * self.inertia * self.rate(event)  # P − ω·losses(ω), least at the event
+            t_end = 1.01 * span / net
+        try:
+            return numerics.integrate(
+                self.rate, u, t_end, name, dt=method.dt, rtol=method.rtol / 20, event_at=event, stiffness=self.stiffness,
+            )
+        except numerics.TooManySteps:
+            raise InputError("rtol" if name == "rk45" else "dt", f"this run needs more than {numerics.MAX_STEPS[name]:,} {name} steps",
+                             hint="use a looser --rtol, or a larger --dt") from None
+
+    def state(self, t: float) -> tuple[float, float]:
+        """(ω, θ) at t, signed."""
+        if self.lossless:
+            stop = self.stop()
+            if stop is not None and t >= stop[0]:
+                return 0.0, self.sense * stop[1]
+            u, theta = self.lossless_state(t)
+            return self.sense * u, self.sense * theta
+        stop = self.stop()
+        if stop is not None and t >= stop[0]:
+            return 0.0, self.sense * stop[1]
+        t0, u0, theta0 = self._start()
+        if t <= t0:
+            u, theta = PowerMotion(self.inertia, self.power, Torques(), self.u0, self.method, self.sense).lossless_state(t)
+            return self.sense * u, self.sense * theta
+        solution = self._run(u0, t - t0, None)
+        return self.sense * solution.omega, self.sense * (theta0 + solution.theta)
+
+    def time_to(self, target: float) -> tuple[float, float] | None:
+        """(t, θ) when |ω| = target, or None."""
+        u1 = target * self.sense
+        if u1 < 0 or (u1 > self.u0) != (self.power > 0) or u1 == self.u0:
+            return (0.0, 0.0) if u1 == self.u0 else None
+        if self.lossless:
+            t = self.inertia * (u1 - self.u0) * (u1 + self.u0) / (2 * self.power)
+            return t, self.sense * self.lossless_state(t)[1]
+        if u1 == 0:
+            stop = self.stop()
+            return None if stop is None else (stop[0], self.sense * stop[1])
+        t0, u0, theta0 = self._start()
+        solution = self._run(u0, math.inf, u1)
+        if solution is None or not solution.event:
+            return None
+        return t0 + solution.t, self.sense * (theta0 + solution.theta)
+
+    def steady_speed(self) -> float | None:
+        """Where P/u balances the losses (P > 0 with losses), by bisection; None otherwise."""
+        if self.power <= 0 or self.lossless:
+            return None
+        return falling_root(self.rate)
+
+
+def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, time, until_omega, until_angle, method, dt, rtol) -> Report:
+    """spin-down under a motor of constant power."""
+    if torques.drive:
+        raise InputError("power", "conflicts with {torque}: the motor's torque is P/ω")
+    if until_angle is not None and (time is not None or until_omega is not None):
+        raise InputError("until_angle", "conflicts with {time} and {until_omega}: ask for one target at a time (a run each)")
+    lossless = not (torques.friction or torques.viscous or torques.drag)
+    if method == "exact" and not lossless:
+        raise InputError("method", "exact has no closed form for a constant power against losses", hint="use {method} auto or rk45")
+    if method in ("euler", "rk4") or method == "rk45":
+        chosen = Method(method, dt or (DEFAULT_DT if method != "rk45" else None), rtol or DEFAULT_RTOL)
+    else:
+        chosen = Method("exact" if lossless else "rk45", None, rtol or DEFAULT_RTOL)
+    sense = -1.0 if omega0 < 0 else 1.0
+    motion = PowerMotion(inertia, power, torques, abs(omega0), chosen, sense)
+    results, notes = Results(TABLE), []
+    results.put("I", inertia)
+    rate = motion.rate(abs(omega0)) if omega0 else None
+    results.put("alpha0", None if rate is None or not math.isfinite(rate) else sense * rate)
+    if omega0 == 0:
+        notes.append("alpha0 and the torque at the start: none, a constant power from rest asks for an unbounded torque P/ω at ω = 0")
+    if power < 0 and omega0 == 0:
+        notes.append("a load with the wheel at rest: nothing turns")
+    stop = motion.stop()
+    results.put("t_stop", None if stop is None else stop[0])
+    results.put("theta_stop", None if stop is None else sense * stop[1])
+    results.put("revs_stop", None if stop is None else sense * stop[1] / TWO_PI)
+    steady = motion.steady_speed()
+    results.put("omega_inf", 0.0 if power < 0 else None if steady is None else sense * steady)
+    if power > 0 and steady is None:
+        notes.append("omega_inf: no steady speed; with no losses the motor's power all goes into the wheel, so ω grows without bound")
+    omega_at = omega0
+    at = None
+    if time is not None:
+        omega_at, theta = motion.state(time)
+        at = time
+        results.put("omega", omega_at, f" at t = {fmt(time)} s")
+        results.put("theta", theta, f" by t = {fmt(time)} s")
+        results.put("revs", theta / TWO_PI, f" by t = {fmt(time)} s")
+    if until_omega is not None:
+        reached = motion.time_to(until_omega)
+        if reached is None:
+            notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
+        results.put("t_until", None if reached is None else reached[0], f" ω = {fmt(until_omega)} rad/s")
+        results.put("theta_until", None if reached is None else reached[1], f" ω = {fmt(until_omega)} rad/s")
+        if reached is not None:
+            at, omega_at = reached[0], until_omega
+    if until_angle is not None:
+        reached = _power_time_at_angle(motion, until_angle)
+        if reached is None:
+            notes.append(f"the wheel never reaches θ = {fmt(until_angle)} rad")
+        results.put("t_until", None if reached is None else reached[0], f" θ = {fmt(until_angle)} rad")
+        results.put("omega", None if reached is None else reached[1], f" at θ = {fmt(until_angle)} rad")
+        if reached is not None:
+            at, omega_at = reached
+    when = " at the start" if at is None else f" at t = {fmt(at)} s"
+    results.put("torque", power / omega_at if omega_at else None, when)
+    results.put("power", power if omega_at or power > 0 else 0.0, when)
+    results.put("KE0", inertia * omega0 * omega0 / 2)
+    end = at if at is not None else (stop[0] if stop is not None else None)
+    if end is not None:
+        omega_end = motion.state(end)[0] if at is None else omega_at
+        theta_end = motion.state(end)[1]
+        ke = inertia * omega_end * omega_end / 2
+        results.put("KE", ke, f" at t = {fmt(end)} s" if at is not None else " at the stop")
+        driving_time = min(end, stop[0]) if stop is not None else end
+        work = power * driving_time
+        by = f" by t = {fmt(end)} s" if at is not None else " until it stops"
+        results.put("work_drive", work, by)
+        if end > 0:
+            results.put("power_mean", work / end, by)
+        friction = torques.friction * abs(theta_end)
+        if torques.friction:
+            results.put("work_friction", friction, by)
+        rest = inertia * omega0 * omega0 / 2 - ke + work - friction
+        if torques.viscous and torques.drag:
+
+            viscous = torques.viscous * gauss_legendre(lambda t: motion.state(t)[0] ** 2, 0.0, end, panels=16)
+            results.put("work_viscous", viscous, by)
+            results.put("work_drag", max(0.0, rest - viscous), by)
+        elif torques.viscous:
+            results.put("work_viscous", max(0.0, rest), by)
+        elif torques.drag:
+            results.put("work_drag", max(0.0, rest), by)
+    steps = list(inertia_steps)
+    if lossless:
+        steps.append(Step("Energy from a constant power", "½Iω² = ½Iω₀² + Pt  ⇒  t = I(ω₁² − ω₀²)/(2P)", "", "",
+                          "a motor of constant power adds energy at the rate P; with no losses it all goes into the wheel"))
+        if until_omega is not None and results["t_until"].value is not None:
+            steps.append(Step("Time to reach ω₁", "t = I(ω₁ − ω₀)(ω₁ + ω₀)/(2P)",
+                              f"{term(inertia, 'kg*m**2')} × ({term(until_omega, 'rad/s')} − {term(omega0, 'rad/s')}) × ({term(until_omega, 'rad/s')} + {term(omega0, 'rad/s')}) / (2 × {term(power, 'W')})",
+                              quantity_text(results["t_until"].value, "s"), "the energy ½I(ω₁² − ω₀²) delivered at the rate P"))
+        model = "constant power P (τ = P/ω), no losses: ½Iω² grows linearly in time"
+    else:
+        steps.append(Step("Integrate the equation of motion", "I dω/dt = P/ω − τ_f − bω − kωⁿ,  dθ/dt = ω", chosen.name, "",
+                          "no closed form exists for a constant power against these losses"))
+        model = "constant power P (τ = P/ω) against losses: no closed form"
+    described = {"exact": "closed form", "rk45": f"rk45 (Dormand-Prince, adaptive), rtol = {chosen.rtol:g}"}.get(
+        chosen.name, f"{chosen.name}, dt = {fmt(chosen.dt or 0.0)} s"
+    )
+    steps.extend(energy_steps(results, inertia, torques.friction, power=power))
+    return Report("spin-down", model, described, results, steps, notes, trajectory=deferred(curves, motion.state, end, stop))
+
+
+def _power_time_at_angle(motion: PowerMotion, theta: float) -> tuple[float, float] | None:
+    """(t, ω) when the wheel under constant power has turned θ: bisection on the motion."""
+    distance = theta * motion.sense
+    if distance < 0:
+        return None
+    if distance == 0:
+        return 0.0, motion.sense * motion.u0
+    stop = motion.stop()
+    if stop is not None and distance > stop[1]:
+        return None
+    low, high = 0.0, None
+    if stop is not None:
+        high = stop[0]
+    else:
+        guess = max(distance / motion.u0 if motion.u0 else 0.0, math.sqrt(distance * motion.inertia / max(motion.power, 1e-300)), 1e-9)
+        for _ in range(200):
+            if abs(motion.state(guess)[1]) >= distance:
+                high = guess
+                break
+            low, guess = guess, 2 * guess
+        if high is None:
+            return None
+    for _ in range(200):
+        mid = (low + high) / 2
+        if mid in (low, high):
+            break
+        if abs(motion.state(mid)[1]) < distance:
+            low = mid
+        else:
+            high = mid
+    return high, motion.state(high)[0]

@@ -1,0 +1,267 @@
+"""``taucli spin-down``: read the wheel, its start and its torques, pick the model, solve.
+
+The models (one module each): constant α (--alpha, or kinematics with no body), a motor of
+constant power (--power), the drive that meets a target in a time (--in-time), and the torque
+laws (the rest). Before any of them: the body, ω₀ (given, from a rim speed or from the stored
+energy), a target given as an arc at the rim, the push that makes the drive, and the brakes' and
+faces' friction added to the axle's. After: the parts table, the contacts' shares of the work,
+what was assumed, and a point on the body (--at).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from taucli.errors import InputError
+from taucli.options.spin_down import COMMAND as TABLE
+from taucli.report import Report, Step, Table, fmt, quantity_text
+from taucli.scenes.assumed import Assumed
+from taucli.scenes.inertia import body, body_table
+from taucli.scenes.point import RIM, rim_radius
+from taucli.scenes.spin.constant_alpha import constant_alpha_report
+from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_contacts
+from taucli.scenes.spin.point import with_point
+from taucli.scenes.spin.power import power_report
+from taucli.scenes.spin.steps import Push, Torques, push_step
+from taucli.scenes.spin.torque_laws import drive_for_target, solve
+from taucli.table import Results
+
+
+@dataclass
+class Wheel:
+    """The turning body: its moment of inertia (None: no body, kinematics only), the steps that
+    found it, its parts table, and the radius of its rim where one is known."""
+
+    inertia: float | None
+    steps: Sequence[Step]
+    parts: Table | None
+    rim: float | None
+
+
+@dataclass
+class Front:
+    """What is worked out before the motion (ω₀ from a rim speed or KE0, the contacts' torques):
+    its results, steps and notes go first in the report."""
+
+    results: Results = field(default_factory=lambda: Results(TABLE))
+    steps: list[Step] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+
+def spin_down(
+    *,
+    omega0: float | None = None,
+    torque: float | None = None,
+    force: float | None = None,
+    lever: float | None = None,
+    push_angle: float | None = None,
+    friction: float | None = None,
+    brake: Sequence | None = None,
+    face: Sequence | None = None,
+    g: float | None = None,
+    at: float | None = None,
+    viscous: float | None = None,
+    drag: float | None = None,
+    drag_exponent: float | None = None,
+    time: float | None = None,
+    until_omega: float | None = None,
+    until_angle: float | None = None,
+    until_arc: float | None = None,
+    alpha: float | None = None,
+    in_time: float | None = None,
+    power: float | None = None,
+    ke0: float | None = None,
+    rim_speed: float | None = None,
+    energy: bool = False,
+    method: str = "auto",
+    dt: float | None = None,
+    rtol: float | None = None,
+    **body_options,
+) -> Report:
+    """``taucli spin-down``: the body (--inertia or --shape ...), its torques, and what to report.
+
+    The drive is --torque, or the push --force at --lever (at --push-angle, default 90°) that
+    makes it, or a motor of constant --power; the losses left out are zero; the wheel starts at
+    ω₀ = 0 unless --omega0 (or --rim-speed, or --ke0) says. --alpha, or no body at all, is
+    rotation at constant α: any three of ω₀, ω₁, α, t, θ give the rest.
+    """
+    if power == 0:
+        power = None  # a motor of no power is no motor
+    if g is not None and not any(plate.force is None for plate in face or ()):
+        raise InputError("g", "is used only for the weight on a {face} with no force=")
+    wheel = _wheel(body_options, rim_speed, until_arc, at)
+    front = Front()
+    omega0 = _initial_speed(wheel, omega0, rim_speed, ke0, front)
+    if until_arc is not None:
+        until_angle = _angle_of_arc(until_arc, until_angle, wheel.rim, front)
+    push = _push(torque, force, lever, push_angle)
+    drive = push.torque if push is not None else torque or 0.0
+    assumed, axle = Assumed(), friction or 0.0
+    contact = put_contacts(brake or (), face or (), body_options, wheel.rim, assumed, g, front.results, front.steps, front.notes, axle) if brake or face else None
+    friction = axle + contact.kinetic if contact is not None else friction
+    static = None if contact is None or contact.static == contact.kinetic else axle + contact.static
+    torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent, static)
+    if push is not None:
+        front.steps.append(push_step(push))
+    targets = {"time": time, "until_omega": until_omega, "until_angle": until_angle}
+
+    # The model: constant α, a motor of constant power, the drive that meets a target in a time, or the torque laws.
+    if alpha is not None or wheel.inertia is None:
+        report, targets = _at_constant_alpha(wheel, torques, omega0, alpha, power, in_time, targets, front)
+    elif power is not None:
+        if in_time is not None:
+            raise InputError("in_time", "conflicts with {power}: the drive is the motor's")
+        if push is not None:
+            raise InputError("power", "conflicts with {force}: give the motor's power or the push")
+        report = power_report(wheel.inertia, wheel.steps, power, torques, omega0 or 0.0, **targets, method=method, dt=dt, rtol=rtol)
+        report = _with_front(report, front.results, front.notes, front.steps)
+    elif in_time is not None:
+        if torque is not None or push is not None:
+            raise InputError("in_time", "asks for the drive torque that meets the target, so it conflicts with a drive ({torque}, {force}, {power})")
+        report, targets, torques = _in_time(wheel, torques, omega0, in_time, targets, front, method, dt, rtol)
+    else:
+        report = _under_torques(wheel, torques, omega0, targets, front, push, method, dt, rtol, energy or ke0 is not None)
+
+    report = assumed.applied(with_contacts(split_contacts(_with_parts(report, wheel.parts), axle, contact), contact))
+    if at is None:
+        return report
+    r, note = rim_radius(at, wheel.rim if wheel.rim is not None else body_options.get("radius", body_options.get("outer_radius")), "a body with {radius}")
+    report = with_point(report, r, torques, wheel.inertia, power, omega0, **targets)
+    report.notes += [note] if note else []
+    return report
+
+
+def _wheel(body_options: dict, rim_speed: float | None, until_arc: float | None, at) -> Wheel:
+    """The body (--inertia, or --shape and its dimensions, or parts), and its rim: --radius beside
+    --inertia is the rim's (for a rim speed, an arc or a point at the rim), else the shape's radius."""
+    has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
+    rim = None
+    if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
+        if rim_speed is None and until_arc is None and at != RIM:
+            raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed}, {until_arc} or {at} rim")
+        rim = body_options.pop("radius")
+    moment, body_steps = body(**body_options) if has_body else (None, ())
+    parts = body_table(**body_options) if body_options.get("part") else None
+    if rim is None and (rim_speed is not None or until_arc is not None):
+        rim = _rim_radius(body_options, "rim_speed" if rim_speed is not None else "until_arc")
+    return Wheel(moment, body_steps, parts, rim)
+
+
+def _initial_speed(wheel: Wheel, omega0: float | None, rim_speed: float | None, ke0: float | None, front: Front) -> float | None:
+    """ω₀ as given, or from the rim speed (ω₀ = v/R), or from the stored energy (ω₀ = √(2KE/I))."""
+    given = [name for name, value in (("omega0", omega0), ("rim_speed", rim_speed), ("ke0", ke0)) if value is not None]
+    if len(given) > 1:
+        raise InputError(given[1], f"conflicts with {{{given[0]}}}: give the initial speed one way")
+    if rim_speed is not None:
+        rim = wheel.rim
+        omega0 = rim_speed / rim
+        front.steps.append(Step("Angular velocity from the rim speed", "ω₀ = v/R", f"{quantity_text(rim_speed, 'm/s')} / {quantity_text(rim, 'm')}",
+                                quantity_text(omega0, "rad/s"), "a point at radius R moves at v = ωR"))
+        front.notes.append(f"ω₀ = v/R = {quantity_text(omega0, 'rad/s')}: the rim speed {quantity_text(rim_speed, 'm/s')} at R = {quantity_text(rim, 'm')}")
+        front.results.put("omega0", omega0, " (from the rim speed)")
+    if ke0 is not None:
+        if wheel.inertia is None:
+            raise InputError("ke0", "needs a body ({inertia} or {shape}): ω₀ = √(2E/I)")
+        omega0 = math.sqrt(2 * ke0 / wheel.inertia)
+        front.steps.append(Step("Angular velocity from the stored energy", "KE = ½Iω²  ⇒  ω₀ = √(2KE/I)",
+                                f"√(2 × {quantity_text(ke0, 'J')} / {quantity_text(wheel.inertia, 'kg*m**2')})", quantity_text(omega0, "rad/s"),
+                                "all the energy of a wheel on a fixed axle is its rotational kinetic energy"))
+        front.results.put("omega0", omega0, " (from KE0)")
+    return omega0
+
+
+def _angle_of_arc(until_arc: float, until_angle: float | None, rim: float, front: Front) -> float:
+    """The target angle of an arc at the rim: θ = s/R (a cord off a drum)."""
+    if until_angle is not None:
+        raise InputError("until_arc", "conflicts with {until_angle}: give the target one way")
+    until_angle = until_arc / rim
+    front.notes.append(f"θ = s/R = {quantity_text(until_angle, 'rad')}: the arc {quantity_text(until_arc, 'm')} at R = {quantity_text(rim, 'm')}")
+    return until_angle
+
+
+def _push(torque: float | None, force: float | None, lever: float | None, push_angle: float | None) -> Push | None:
+    """The push --force at --lever (--push-angle) that makes the drive, where one is given."""
+    if force is None and lever is None and push_angle is None:
+        return None
+    if torque is not None:
+        raise InputError("torque", "conflicts with {force} and {lever}: give the torque, or the push that makes it")
+    if force is None:
+        raise InputError("force", "is required with {lever}", example="{force} 6N")
+    if lever is None:
+        raise InputError("lever", "is required with {force}", example="{lever} 0.2m")
+    return Push(force, lever) if push_angle is None else Push(force, lever, push_angle)
+
+
+def _at_constant_alpha(wheel: Wheel, torques: Torques, omega0, alpha, power, in_time, targets: dict, front: Front) -> tuple[Report, dict]:
+    """A constant α given (--alpha), or no body: kinematics, and with a body the torque it takes;
+    and the targets it answers (without a body, --in-time is the time)."""
+    if power is not None:
+        raise InputError("power", "conflicts with {alpha}: a constant power gives a changing α" if alpha is not None else "needs a body ({inertia} or {shape})")
+    if in_time is not None:
+        if targets["time"] is not None:
+            raise InputError("in_time", "conflicts with {time}: without a body they say the same")
+        targets = {**targets, "time": in_time}
+    report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, alpha, **targets, front=(front.steps, front.notes, front.results))
+    return _with_front(report, front.results), targets
+
+
+def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: dict, front: Front, method, dt, rtol) -> tuple[Report, dict, Torques]:
+    """The constant drive that brings the wheel to the target (--until-omega or --until-angle) in
+    the time --in-time: at constant α where the losses do not change with ω, else by bisection on
+    the motion, which is then solved as usual (to the time --in-time); the targets answered, and
+    the torques with that drive."""
+    until_omega, until_angle = targets["until_omega"], targets["until_angle"]
+    if (until_omega is None) == (until_angle is None):
+        raise InputError("in_time", "needs one target: {until_omega} or {until_angle}", example="{until_omega} 1000rpm {in_time} 3s")
+    if targets["time"] is not None:
+        raise InputError("time", "conflicts with {in_time}: ask for the target's time one way")
+    if not torques.viscous and not torques.drag:
+        report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, None, time=in_time, until_omega=until_omega,
+                                       until_angle=until_angle, front=(front.steps, front.notes, front.results))
+        return _with_front(report, front.results), targets, torques
+    torques = drive_for_target(wheel.inertia, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
+    front.notes.append(f"the constant drive torque that meets the target in t = {fmt(in_time)} s, found by bisection on the motion: "
+                       f"τ = {quantity_text(torques.drive, 'N*m')}")
+    front.results.put("torque", torques.drive, " that meets the target")
+    targets = {"time": in_time, "until_omega": None, "until_angle": None}
+    return _under_torques(wheel, torques, omega0, targets, front, None, method, dt, rtol, True), targets, torques
+
+
+def _under_torques(wheel: Wheel, torques: Torques, omega0, targets: dict, front: Front, push, method, dt, rtol, energy: bool) -> Report:
+    """The torque laws: the wheel's motion under its drive, friction and drag (torque_laws.solve)."""
+    report = solve(wheel.inertia, torques, omega0 or 0.0, **targets, method=method, dt=dt, rtol=rtol, push=push, inertia_steps=wheel.steps, energy=energy)
+    if "torque" in front.results:
+        front.results.put("torque_net", report.results["alpha0"].value * wheel.inertia, " at the start")
+    return _with_front(report, front.results, front.notes, front.steps)
+
+
+def _with_parts(report: Report, parts: Table | None) -> Report:
+    """The report with the parts table of a body of parts."""
+    if parts is None:
+        return report
+    return Report(report.scene, report.model, report.method, report.results, report.steps, report.notes, report.inputs,
+                  {"parts": parts, **report.tables}, report.trajectory)
+
+
+def _rim_radius(body_options: dict, option: str) -> float:
+    """The radius of the body's rim: its radius, or its outer radius."""
+    for name in ("radius", "outer_radius"):
+        if body_options.get(name) is not None:
+            return body_options[name]
+    raise InputError(option, "needs a radius: the body's ({shape} with {radius}), or {radius} beside {inertia}")
+
+
+def _with_front(report: Report, front: Results, notes: Sequence[str] = (), steps: Sequence[Step] = ()) -> Report:
+    """The report with what was worked out before the motion (ω₀ from a rim speed or KE0) first."""
+    if not front and not notes and not steps:
+        return report
+    results = Results(TABLE)
+    results.update(front)
+    results.update(report.results)
+    merged_steps = list(report.steps)
+    if steps:
+        body_count = next((i for i, step in enumerate(merged_steps) if step.title.startswith(("Torque of the push", "Net torque"))), 0)
+        merged_steps[body_count:body_count] = [s for s in steps if s.title != "Torque of the push"]
+    return Report(report.scene, report.model, report.method, results, merged_steps, [*notes, *report.notes], report.inputs, report.tables, report.trajectory)

@@ -1,0 +1,274 @@
+"""The torque laws: I dω/dt = τ_drive − τ_f·sgn(ω) − bω − k|ω|ⁿ·sgn(ω).
+
+Each stretch of motion in one direction is a phase with ω ≥ 0 in its own frame (taucli.scenes.
+motion). Closed forms (closed_forms.py) serve every combination with n = 2; a power-law drag with
+another exponent has none and is integrated (numerics.py), with the stop located as an event, so
+that Coulomb friction stops the wheel and holds it rather than chattering about ω = 0.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from taucli.errors import InputError
+from taucli.options.spin_down import COMMAND as TABLE
+from taucli.report import (
+    Report,
+    Step,
+    Trajectory,
+    Value,
+    deferred,
+    fmt,
+    quantity_text,
+    term,
+)
+from taucli.scenes.motion import Evolver, Method, Phase, evolve
+from taucli.scenes.spin.energy import energy_steps, put_energy
+from taucli.scenes.spin.methods import choose_method, error_estimate, method_answers
+from taucli.scenes.spin.steps import (
+    TWO_PI,
+    Push,
+    Torques,
+    after_time_steps,
+    net_torque_steps,
+    push_step,
+    put_angles,
+    revolutions_step,
+    stop_steps,
+    turned_back_steps,
+)
+from taucli.table import Results
+
+
+def _model(torques: Torques, method: Method) -> str:
+    if torques.drag and torques.drag_exponent != 2:
+        return f"power-law drag kω^{fmt(torques.drag_exponent)}: no closed form"
+    if torques.drag:
+        extra = " and viscous torque" if torques.viscous else ""
+        constant = " with constant torque (tangent/arctangent solution)" if torques.drive or torques.friction else ""
+        return f"quadratic drag kω²{extra}{constant}"
+    if torques.viscous:
+        return "exponential approach to a steady speed (viscous torque bω)"
+    if torques.drive:
+        return "uniform angular acceleration (constant torques)"
+    return "uniform deceleration (constant friction torque)"
+
+
+def solve(
+    inertia: float,
+    torques: Torques,
+    omega0: float = 0.0,
+    *,
+    time: float | None = None,
+    until_omega: float | None = None,
+    until_angle: float | None = None,
+    method: str = "auto",
+    dt: float | None = None,
+    rtol: float | None = None,
+    push: Push | None = None,
+    inertia_steps: Sequence[Step] = (),
+    estimate_error: bool = True,
+    energy: bool = False,
+) -> Report:
+    """Spin-down or spin-up of a wheel on a fixed axle; see the module docstring for the model.
+
+    A fixed-step method (euler, rk4) has each answer's error estimated against a reference (the
+    ``error_estimate`` table); an answer estimated more than 1e-3 off is withheld, null, with a
+    note. ``estimate_error=False`` leaves that out (the bench times the method alone). ``energy``
+    adds KE, the work of each torque and the power."""
+    if torques.drag and not 1 <= torques.drag_exponent <= 10:
+        raise InputError("drag_exponent", "expected a number from 1 to 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
+    if torques.drag and torques.drag_exponent == 1:
+        torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0, torques.static)
+    if until_angle is not None and (time is not None or until_omega is not None):
+        raise InputError("until_angle", "conflicts with {time} and {until_omega}: ask for one target at a time (a run each)")
+    closed_form = torques.drag == 0 or torques.drag_exponent == 2
+    chosen = choose_method(method, closed_form, dt, rtol)
+    evolver = Evolver(chosen)
+    notes: list[str] = []
+    motion = evolve(inertia, torques, omega0, evolver)
+    first, second, held_from_start, stop = motion.first, motion.second, motion.held_from_start, motion.stop
+    alpha0 = motion.initial_rate
+
+    results = Results(TABLE)
+    results.put("I", inertia)
+    results.put("alpha0", alpha0)
+    if held_from_start and not torques.drive:
+        notes.append("no initial speed and no driving torque: the wheel stays at rest")
+    elif held_from_start:
+        notes.append(
+            f"static friction holds the wheel at rest: |τ_drive| = {quantity_text(abs(torques.drive), 'N*m')} "
+            f"does not exceed τ_f = {quantity_text(torques.holding, 'N*m')}"
+        )
+    elif stop is None and not first.stops:  # (a stop that a stepper blew up before finding is said below)
+        notes.append(_never_stops_note(torques, first))
+    answers = method_answers(motion, time, until_omega, until_angle)
+    results.put("t_stop", answers["t_stop"])
+    results.put("theta_stop", answers["theta_stop"])
+    results.put("revs_stop", None if answers["theta_stop"] is None else answers["theta_stop"] / TWO_PI)
+
+    omega_inf = motion.final_speed()
+    if omega_inf is None:
+        notes.append("omega_inf: no steady speed; the driving torque is not balanced by drag, so ω grows without bound")
+    results.put("omega_inf", omega_inf)
+
+    if time is not None:
+        omega_t, theta_t = answers["omega"], answers["theta"]
+        results.put("omega", omega_t, f" at t = {fmt(time)} s")
+        put_angles(results, theta_t, answers["theta_stop"] if second is not None and stop is not None and time > stop[0] else None, time)
+    if until_omega is not None:
+        if answers["t_until"] is None and not evolver.unstable:
+            notes.append(f"the wheel never reaches ω = {quantity_text(until_omega, 'rad/s')}")
+        results.put("t_until", answers["t_until"], f" ω = {fmt(until_omega)} rad/s")
+        results.put("theta_until", answers["theta_until"], f" ω = {fmt(until_omega)} rad/s")
+    if until_angle is not None:
+        where = f"θ = {fmt(until_angle)} rad ({fmt(until_angle / TWO_PI)} rev)"
+        if answers["t_until"] is None and not evolver.unstable:
+            turned = answers["theta_stop"]
+            notes.append(f"the wheel stops first, after {fmt(turned)} rad ({fmt(turned / TWO_PI)} rev), and never reaches {where}"
+                         if turned is not None and second is None else f"the wheel never reaches {where}")
+        results.put("t_until", answers["t_until"], f" θ = {fmt(until_angle)} rad")
+        results.put("omega", answers["omega"], f" at θ = {fmt(until_angle)} rad")
+
+    tables, described = {}, chosen.describe(evolver.steps)
+    if energy and not evolver.unstable:
+        put_energy(motion, inertia, torques, omega0, time, results, notes)
+    if evolver.unstable:
+        notes.extend(dict.fromkeys(evolver.unstable))
+        for name in results:
+            if name not in ("I", "alpha0"):
+                results[name] = Value(None, results[name].unit, results[name].label)
+    elif chosen.name in ("euler", "rk4") and estimate_error:
+        estimate = error_estimate(inertia, torques, omega0, closed_form, time, until_omega, until_angle, chosen, results, notes)
+        if estimate is not None:
+            tables["error_estimate"], worst = estimate
+            described += f"; estimated error at most {fmt(worst, 2)} relative" if worst is not None else ""
+
+    steps = list(inertia_steps)
+    if push is not None:
+        steps.append(push_step(push))
+    steps.extend(net_torque_steps(torques, omega0, alpha0, inertia, held_from_start))
+    if not held_from_start:
+        steps.extend(_kinematics_steps(torques, first, second, stop, results, time, chosen, omega0))
+        if until_angle is not None and results["t_until"].value is not None:
+            steps.append(Step("Time to turn θ", "θ(t) = θ_target, solved for t", f"θ_target = {quantity_text(until_angle, 'rad')}",
+                              f"t = {quantity_text(results['t_until'].value, 's')}, ω = {quantity_text(results['omega'].value, 'rad/s')}",
+                              "θ grows with t while the wheel turns one way, so the time is bracketed and found by bisection on θ(t)"))
+    steps.extend(energy_steps(results, inertia, torques.friction))
+    if chosen.name != "exact" and method == "auto":
+        notes.append(f"no closed form for drag kω^{fmt(torques.drag_exponent)} with these torques: integrated numerically")
+    model = _model(torques, chosen)
+    if held_from_start or (stop is not None and second is None):
+        model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
+    trajectory = None if evolver.unstable else deferred(_trajectory, motion, time, omega_inf)
+    return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
+
+
+def _trajectory(motion, time: float | None, omega_inf: float | None) -> Trajectory:
+    """ω(t) and θ(t): to --time, else a quarter past the stop, else 99% of the way to the steady speed."""
+    stop, note = motion.stop, ""
+    if time is not None and time > 0:
+        t_end = time
+    elif stop is not None and stop[0] > 0:
+        t_end = (2.0 if motion.second is not None else 1.25) * stop[0]
+    else:
+        omega0 = motion.state_at(0.0)[0]
+        near = None if omega_inf is None or omega_inf == omega0 else motion.reach(omega0 + 0.99 * (omega_inf - omega0))
+        t_end = near[0] if near is not None and near[0] > 0 else 1.0
+        note = "plotted until ω is 99% of the way to its steady speed; --time to change" if near else "plotted for 1 s; --time to change"
+    marks = ((stop[0], "stops"),) if stop is not None and stop[0] > 0 else ()
+    curves = (("omega", "rad/s", "angular velocity ω"), ("theta", "rad", "angle turned θ"))
+    return Trajectory(curves, t_end, motion.sampler(), marks=marks, note=note)
+
+
+def _never_stops_note(torques: Torques, phase: Phase) -> str:
+    if phase.closed.constant > 0:
+        return "t_stop: the driving torque exceeds friction, so the wheel never stops" if torques.friction else "t_stop: the driving torque keeps it turning, so the wheel never stops"
+    if torques.viscous or torques.drag:
+        return "t_stop: drag alone slows the wheel ever more gently and never quite stops it"
+    return "t_stop: no net torque, so ω stays constant and the wheel never stops"
+
+
+def _kinematics_steps(torques, first, second, stop, results, time, method, omega0) -> list[Step]:
+    steps: list[Step] = []
+    closed = first.closed
+    alpha = results["alpha0"].value
+    w0 = abs(omega0)
+    if method.name != "exact":
+        steps.append(
+            Step(
+                "Integrate the equation of motion",
+                "I dω/dt = τ_net(ω),  dθ/dt = ω",
+                method.describe(0).split(",")[0],
+                "",
+                "no closed form exists for this drag law; the stop is located as an event so friction cannot chatter",
+            )
+        )
+    elif closed.uniform:
+        if stop is not None and stop[0] > 0:
+            steps.extend(stop_steps(w0, alpha, stop))
+        back = second is not None and stop is not None and time is not None and time > stop[0]
+        if time is not None and results["theta"].value is not None and not back:
+            steps.extend(after_time_steps(omega0, alpha, time, results))
+        elif back and results["theta"].value is not None:
+            steps.extend(turned_back_steps(torques, results['I'].value, second, stop, results, time))
+        if time is not None and results["theta"].value is not None:
+            steps.append(revolutions_step(results))
+    else:
+        discriminant = closed.viscous**2 + 4 * closed.drag * closed.constant
+        steps.append(
+            Step(
+                "The constants of I dω/dt = A − bω − kω²",
+                f"D = b² + 4kA,  with A = τ_drive − τ_f = {quantity_text(closed.constant, 'N*m')}",
+                f"({term(closed.viscous, 'N*m*s')})² + 4 × {term(closed.drag, 'N*m*s**2')} × {term(closed.constant, 'N*m')}",
+                quantity_text(discriminant, "N**2*m**2*s**2")
+                + (" (D < 0: the tangent form)" if discriminant < 0 else " (D > 0: the tanh form)" if closed.drag else " (k = 0: exponential)"),
+                "the sign of D decides which of the log, arctangent or artanh integrals the separable equation gives",
+            )
+        )
+        steps.append(
+            Step(
+                "Solve it (separable)",
+                "ω(t) = r₊ + (ω₀ − r₊)E/(E + (kω₀ + β)(1 − E)/√D),  E = e^(−√D t/I),  r₊ = 2A/(b + √D),  β = (b + √D)/2",
+                "",
+                "",
+                "r₊ is the steady speed when D > 0 and A > 0; for D < 0 the same form is the tangent solution, "
+                "evaluated so that it stays exact as k -> 0 (exponential decay) and D -> 0",
+            )
+        )
+        if stop is not None and stop[0] > 0:
+            steps.append(Step("Time and angle to stop", "t_stop from ω(t) = 0;  θ_stop = ∫ω dt",
+                              "", f"{quantity_text(stop[0], 's')}, {quantity_text(abs(stop[1]), 'rad')} = {fmt(abs(stop[1]) / TWO_PI)} rev",
+                              "friction keeps a constant torque against the motion, so the wheel stops in a finite time"))
+    return steps
+
+
+def drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, until_angle, method, dt, rtol) -> Torques:
+    """The constant drive with which the wheel is at ω₁ (or has turned θ) at t: ω(t) and θ(t) grow
+    with the drive, so bisection brackets it; to the last bit of a double."""
+    closed_form = torques.drag == 0 or torques.drag_exponent == 2
+    evolver_method = choose_method(method, closed_form, dt, rtol)
+
+    def miss(drive: float) -> float:
+        trial = Torques(drive, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)
+        omega, theta = evolve(inertia, trial, omega0, Evolver(evolver_method)).state_at(in_time)
+        return omega - until_omega if until_omega is not None else theta - until_angle
+
+    target = until_omega if until_omega is not None else until_angle
+    scale = max(abs(target) / in_time, abs(omega0), 1.0)
+    size = inertia * scale / in_time + torques.friction + torques.viscous * scale + torques.drag * scale**torques.drag_exponent
+    low, high = -size, size
+    for _ in range(200):
+        if miss(high) >= 0:
+            break
+        low, high = high, 2 * high
+    for _ in range(200):
+        if miss(low) <= 0:
+            break
+        low, high = 2 * low, low
+    for _ in range(200):
+        mid = (low + high) / 2
+        if mid in (low, high):
+            break
+        low, high = (mid, high) if miss(mid) < 0 else (low, mid)
+    return Torques((low + high) / 2, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)
