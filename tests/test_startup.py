@@ -121,14 +121,14 @@ def test_a_missing_home_still_answers(tmp_path):
 )  # fmt: skip
 def test_a_cached_unit_reads_as_pint_reads_the_whole_text(text, kind, tmp_path, monkeypatch):
     """Number times pint's factor for the unit is what pint makes of the whole text, to 1 ulp."""
-    from taucli import cache, units
+    from taucli import cache, registry, screen, units
 
     store = cache.Store(str(tmp_path), "units", lambda: "this test")
     monkeypatch.setattr(cache, "unit_factors", lambda: store)
     first = units.parse(text, "--x", kind, sign="any")
     again = units.parse(text, "--x", kind, sign="any")  # now from the cache
-    cleaned = units._screen(text, "--x", units.KINDS[kind])
-    whole, _ = units._from_pint(cleaned, text, "--x", units.KINDS[kind])
+    cleaned = screen.screen(text, "--x", units.KINDS[kind])
+    whole, _ = registry.from_pint(cleaned, text, "--x", units.KINDS[kind])
     assert again == first
     assert abs(first.value - whole) <= math.ulp(whole)
 

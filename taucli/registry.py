@@ -1,0 +1,264 @@
+"""The one pint registry, and what it makes of a unit's text under taucli's rules.
+
+pint is imported and its registry built only here, and only for a text taucli has not read before
+(taucli.units keeps each unit's SI factor, taucli.cache keeps it between runs). The rules: 1/time
+for an angular velocity or acceleration is revolutions per unit time (ω = 2πn); an angle needs
+its unit, 0 apart; a sum may not add a unit with an angle to one without; a weight for a mass is
+read in newtons (taucli.units divides by g), a mass for a force is its weight at standard gravity.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+from functools import lru_cache
+
+from taucli import cache, spellings
+from taucli.errors import InputError
+from taucli.kinds import ANGULAR, FORCES, KINDS, STANDARD_GRAVITY, Kind, article
+from taucli.screen import MAX_DIGITS, MAX_TEXT_LENGTH, screen
+
+
+TWO_PI = 2.0 * math.pi
+
+
+# How a unit is read, kept beside its SI factor: as pint reads it; revolutions per unit time
+# (the factor holds the 2*pi); a weight for a mass (the factor gives newtons, parse divides by g);
+# a mass for a force (the factor holds standard gravity).
+AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT = 0, 1, 2, 3
+
+
+# Names for dimensionalities that show up in "got ..." messages, keyed by exponents.
+_DIMENSION_NAMES = {
+    frozenset(dims.items()): name
+    for dims, name in (
+        ({"[mass]": 1}, "a mass"),
+        ({"[length]": 1}, "a length"),
+        ({"[time]": 1}, "a time"),
+        ({}, "a plain number or angle"),
+        ({"[time]": -1}, "an angular velocity or frequency"),
+        ({"[time]": -2}, "an angular acceleration"),
+        ({"[length]": 1, "[time]": -1}, "a velocity"),
+        ({"[length]": 1, "[time]": -2}, "an acceleration"),
+        ({"[mass]": 1, "[length]": 1, "[time]": -2}, "a force"),
+        ({"[mass]": 1, "[length]": 2, "[time]": -2}, "a torque or energy"),
+        ({"[mass]": 1, "[length]": 2}, "a moment of inertia"),
+        ({"[mass]": 1, "[length]": 2, "[time]": -1}, "a viscous coefficient or angular momentum"),
+    )
+}
+
+
+@lru_cache(maxsize=1)
+def registry():
+    """The one pint registry, built on first use, its definitions cached on disk between runs."""
+    import pint  # deferred: pint (about 150 ms with its registry), only for a text the cache has not seen
+
+    where = cache.folder()
+    try:
+        ureg = pint.UnitRegistry(cache_folder=None if where is None else os.path.join(where, "pint"))
+    except Exception:  # an unreadable, unwritable or corrupt cache must not cost the answer
+        ureg = pint.UnitRegistry()
+    ureg.define("rev = revolution")
+    ureg.define("rps = revolution / second")
+    ureg.define("taucli_angle = [taucli_angle]")  # to tell a sum of angled and angle-free units (_mixes_angles)
+    return ureg
+
+
+def _describe(dimensionality) -> str:
+    return _DIMENSION_NAMES.get(frozenset(dict(dimensionality).items()), str(dimensionality))
+
+
+def expected(kind: Kind) -> str:
+    return "expected a plain number" if kind.name == "dimensionless" else f"expected {article(kind.name)}"
+
+
+def _pint_quantity(cleaned: str, option: str, kind: Kind, shown: str):
+    """pint's Quantity for screened text, as pint reads it (a bare number stays without units)."""
+    import pint  # deferred: pint, as in registry()
+
+    ureg = registry()
+    try:
+        q = ureg.Quantity(cleaned)
+    except pint.UndefinedUnitError as err:
+        name = str(getattr(err, "unit_names", [""])[0] if getattr(err, "unit_names", None) else err)
+        raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: unknown unit {name!r}", hint=_suggest(name, kind)) from None
+    except (OverflowError, ZeroDivisionError):
+        raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: out of range") from None
+    except Exception:  # pint's tokenizer and evaluator raise many kinds; none may escape as a traceback
+        raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}, which is not a quantity") from None
+    return q if isinstance(q, ureg.Quantity) else ureg.Quantity(1, q)  # a bare unit name such as "kg"
+
+
+def quantity(text: str, option: str, kind_name: str, *, original: str | None = None):
+    """Read text as a pint Quantity of the given kind (bare numbers take the kind's SI unit).
+
+    ``original`` is the text as the user typed it, for messages, when ``text`` is a part of it.
+    """
+    kind = KINDS[kind_name]
+    q = _pint_quantity(screen(text, option, kind), option, kind, text if original is None else original)
+    if not list(q.unit_items()) and kind.si_unit:
+        q = registry().Quantity(q.magnitude, kind.si_unit)
+    return q, kind
+
+
+def _a_unit(name: str) -> bool:
+    """Whether pint knows ``name`` as a unit. ``name in registry`` raises for some names (it reads
+    "nan" as a number with no unit, looks "__dict__" up as an attribute): those are not units."""
+    try:
+        return name in registry()
+    except Exception:  # noqa: BLE001 - whatever pint raises, the name is not one of its units
+        return False
+
+
+def _suggest(name: str, kind: Kind, *, typo: bool = True) -> str | None:
+    """'did you mean ...?' for a unit name in the wrong case ("KG", "MG", "nm" for a torque), or
+    (``typo``) for a misspelling of one of the kind's common units."""
+    ureg = registry()
+    wanted = ureg.Quantity(1, kind.si_unit).dimensionality
+    folded = name.lower().replace("*", "")
+    close = [unit for unit in (*kind.common_units, *spellings.GLUED.values()) if unit.lower().replace("*", "") == folded and unit != name]
+    for variant in (name.lower(), name.upper(), name.capitalize(), name[:1].lower() + name[1:].upper()):
+        if variant != name and _a_unit(variant):
+            close.append(variant)
+    close = list({spellings.respell(unit): unit for unit in reversed(close) if _fits(unit, wanted)}.values())[::-1]
+    if close:
+        return "did you mean " + " or ".join(repr(unit) for unit in close[:2]) + "?"
+    if not typo:
+        return None
+    import difflib  # deferred: only a mistyped unit asks for a did-you-mean
+
+    lowered = {unit.lower(): unit for unit in kind.common_units}
+    guess = difflib.get_close_matches(name.lower(), list(lowered), n=1, cutoff=0.5)
+    return f"did you mean {lowered[guess[0]]!r}?" if guess else None
+
+
+def _fits(unit: str, wanted) -> bool:
+    try:
+        return registry().Quantity(spellings.respell(unit)).dimensionality == wanted
+    except Exception:
+        return False
+
+
+# "4.5 kg", "300 rpm", "-2 N*m", "1e-3 kg*m^2", "kg", "4", "50 1/s": a number (or none) times a
+# product of unit powers. For such text the value is the number times pint's SI factor for the
+# unit text, and that factor is cached (taucli.cache); anything else ("4 kg + 200 g") goes to
+# pint whole.
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+
+
+# Each part matches one way only: a name ends where its letters end, and the space between two
+# factors is a separator or part of one, never both. Else a failed match ("kkkk...k+") would try
+# every way of cutting the letters into names: 2^n of them, minutes for 30 letters.
+_NAME = r"[A-Za-zµμΩ_][A-Za-z0-9µμΩ_]*(?![A-Za-z0-9µμΩ_])"
+
+
+_POWER_OF = r"(?:\s*(?:\*\*|\^)\s*-?\d{1,2})?"
+
+
+_BETWEEN = r"(?:\s*[*/]\s*|\s+)?"
+
+
+_FACTOR = rf"(?:{_NAME}|\(\s*{_NAME}{_POWER_OF}(?:{_BETWEEN}{_NAME}{_POWER_OF})*\s*\)){_POWER_OF}"
+
+
+_UNIT = rf"(?:(?:1\s*)?/\s*)?{_FACTOR}(?:{_BETWEEN}{_FACTOR})*"
+
+
+_NUMBER_TIMES_UNIT = re.compile(rf"\s*(?P<number>{_NUMBER})?\s*(?P<unit>{_UNIT})?\s*")
+
+
+def number_times_unit(text: str) -> tuple[float, str] | None:
+    """(4.5, "kg") read from "4.5 kg"; (50.0, "1/s") from "50 1/s"; None for any other form of text.
+
+    The unit comes back in one spelling for one meaning (no spaces, "1/s" for "/s"), the key of
+    its cached factor.
+    """
+    if len(text) > 2 * MAX_TEXT_LENGTH:
+        return None
+    split = _NUMBER_TIMES_UNIT.fullmatch(text)
+    if split is None:
+        return None
+    number, unit = split.group("number"), re.sub(r"\s+", "", split.group("unit") or "")
+    if unit.startswith("/"):
+        unit = "1" + unit
+    if number is None:
+        return (1.0, unit) if unit else None
+    if len(number) > MAX_DIGITS + 8:
+        return None
+    return float(number), unit
+
+
+def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, int]:
+    """The SI value of ``cleaned`` as pint reads it under taucli's rules, and how it was read
+    (AS_GIVEN, REVOLUTIONS, WEIGHT: the value is in newtons, MASS_AS_WEIGHT)."""
+    import pint  # deferred: pint, as in registry()
+
+    ureg = registry()
+    q = _pint_quantity(cleaned, option, kind, text)
+    if kind.name in ANGULAR | {"angle", "dimensionless"} and _mixes_angles(cleaned):
+        fix = {"angle": "'30 deg + 1 deg'", "dimensionless": "no angle"}.get(kind.name, "'1 rpm + 60 rpm'")
+        raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: it adds a unit with an angle to one without", hint=f"give every term the same kind of unit: {fix}")
+    if not list(q.unit_items()):  # a number, or numbers with operators: the kind's SI unit
+        try:
+            value = float(q.magnitude)
+        except (OverflowError, TypeError, ValueError):
+            raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
+        if kind.name == "angle" and value != 0:
+            raise bare_angle(option, text)
+        return value, AS_GIVEN
+    how, target = AS_GIVEN, kind.si_unit
+    wanted = ureg.Quantity(1, kind.si_unit).dimensionality
+    try:
+        if kind.name == "mass" and q.dimensionality == ureg.Quantity(1, "N").dimensionality:
+            how, target = WEIGHT, "N"
+        elif kind.name in FORCES and q.dimensionality != wanted and (q * ureg.Quantity(1, "m/s**2")).dimensionality == wanted:
+            how, q = MASS_AS_WEIGHT, q * ureg.Quantity(STANDARD_GRAVITY, "m/s**2")
+        value = float(q.to(target).magnitude)
+    except pint.errors.OffsetUnitCalculusError:  # degC, degF: a temperature, which pint will not multiply
+        raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}, which is a temperature") from None
+    except pint.DimensionalityError:
+        raise InputError(
+            option, expected(kind), example=kind.example, got=f"{text!r}, which is {_describe(q.dimensionality)}", hint=_case_of(cleaned, kind)
+        ) from None
+    except (OverflowError, TypeError, ValueError):
+        raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
+    radians = _radians(q.units)
+    if kind.name in ANGULAR and radians == 0:  # 1/time for a rotation: revolutions per unit time
+        how, value = REVOLUTIONS, value * TWO_PI
+    elif kind.name == "angle" and radians == 0 and value != 0:
+        raise bare_angle(option, text)
+    elif kind.name == "dimensionless" and radians != 0:
+        raise InputError(option, "expected a plain number", example=kind.example, got=f"{text!r}, which is an angle")
+    return value, how
+
+
+def _radians(unit) -> int:
+    """The power of the radian in a unit: 1 in rpm and deg/s, 0 in Hz and 1/s, -1 in N*m/rpm."""
+    return dict(registry().Quantity(1, unit).to_root_units().unit_items()).get("radian", 0)
+
+
+def _mixes_angles(cleaned: str) -> bool:
+    """Whether text adds terms with an angle to terms without ("1 rpm + 1 Hz", "30 deg + 1"), which
+    pint does by reading the radian as 1: the check gives every angle unit a dimension of its own."""
+    import pint  # deferred: pint, as in registry()
+
+    ureg = registry()
+    marked = [f"({t.text}*taucli_angle)" if t.kind == "name" and _a_unit(t.text) and _radians(t.text) else t.text for t in spellings.tokens(cleaned)]
+    try:
+        ureg.Quantity("".join(marked))
+    except pint.DimensionalityError:
+        return True
+    except Exception:  # not pint's to read either way: the reading itself says so
+        return False
+    return False
+
+
+def _case_of(cleaned: str, kind: Kind) -> str | None:
+    """A unit of the kind that ``cleaned``'s unit is in another case of ("nm" for a torque: N*m)."""
+    split = number_times_unit(cleaned)
+    return _suggest(split[1], kind, typo=False) if split and re.fullmatch(r"[A-Za-z]+", split[1]) else None
+
+
+def bare_angle(option: str, text: str) -> InputError:
+    return InputError(option, "expected an angle with its unit", example="60deg or 1.05rad", got=f"{text!r}: a number alone could be degrees or radians")

@@ -1,0 +1,86 @@
+"""The screen every quantity's text passes before pint sees it: typography normalised (· × − ²
+°), engineering spellings rewritten (taucli.spellings), and text refused at once that is
+unreadable or would be slow to evaluate (pint evaluates ``**`` with Python integers, so
+``9**9**9 kg`` would run for hours if it got that far).
+"""
+
+from __future__ import annotations
+
+import re
+
+from taucli import spellings
+from taucli.errors import InputError
+from taucli.kinds import Kind, article
+
+
+MAX_TEXT_LENGTH = 80
+
+
+MAX_DIGITS = 25  # digits in one numeric literal
+
+
+MAX_EXPONENT = 12  # |n| in x**n
+
+
+MAX_POWERS = 6
+
+
+MAX_PAREN_DEPTH = 4
+
+
+_ALLOWED = re.compile(r"[A-Za-z0-9_ .+\-*/^()µμΩ]*")
+
+
+_POWER = re.compile(r"(\*\*|\^)\s*(\(?\s*[-+]?\s*\d+(?:\.\d+)?\s*\)?)?")
+
+
+_DIGIT_RUN = re.compile(r"\d+")
+
+
+_NORMALISE = [
+    ("\u00a0", " "), ("\u202f", " "), ("·", "*"), ("⋅", "*"), ("×", "*"), ("∙", "*"),
+    ("−", "-"), ("–", "-"), ("²", "**2"), ("³", "**3"), ("⁻¹", "**-1"), ("⁻²", "**-2"),
+    ("°", " deg"), ("÷", "/"), ("½", " 1/2"), ("⅓", " 1/3"), ("⅔", " 2/3"), ("¼", " 1/4"), ("¾", " 3/4"),
+]  # fmt: skip
+
+
+def screen(text: str, option: str, kind: Kind) -> str:
+    """Normalise typography and spellings; refuse text that is unreadable or would be slow to evaluate."""
+    cleaned = text.strip()
+    for old, new in _NORMALISE:
+        cleaned = cleaned.replace(old, new)
+    cleaned = cleaned.strip()
+    example = kind.example
+
+    def refuse(why: str) -> InputError:
+        return InputError(option, f"expected {article(kind.name)}", example=example, got=f"{text!r}: {why}")
+
+    if not cleaned:
+        raise refuse("an empty value")
+    if len(cleaned) > MAX_TEXT_LENGTH:
+        raise refuse(f"longer than {MAX_TEXT_LENGTH} characters")
+    if "," in cleaned:
+        raise refuse("a comma (write decimals with a point: 4.5 kg)")
+    if not _ALLOWED.fullmatch(cleaned):
+        bad = next(ch for ch in cleaned if not _ALLOWED.fullmatch(ch))
+        raise refuse(f"the character {bad!r} is not part of a quantity")
+    cleaned = spellings.respell(cleaned)
+    if any(len(run) > MAX_DIGITS for run in _DIGIT_RUN.findall(cleaned)):
+        raise refuse(f"a number longer than {MAX_DIGITS} digits")
+    depth = 0
+    for ch in cleaned:
+        depth += (ch == "(") - (ch == ")")
+        if depth > MAX_PAREN_DEPTH:
+            raise refuse("parentheses nested too deeply")
+    powers = list(_POWER.finditer(cleaned))
+    if len(powers) > MAX_POWERS:
+        raise refuse("too many powers")
+    for power in powers:
+        exponent = power.group(2)
+        if exponent is None:
+            raise refuse("a power must be a plain number, as in m^2")
+        if abs(float(exponent.strip("() ").replace(" ", ""))) > MAX_EXPONENT:
+            raise refuse(f"a power larger than {MAX_EXPONENT}")
+        if re.match(r"\s*(\*\*|\^)", cleaned[power.end() :]):
+            raise refuse("a power of a power")
+    return cleaned
