@@ -33,7 +33,8 @@ from taucli.options.gyro import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
 from taucli.table import Results
-from taucli.scenes.inertia import SHAPES, body
+from taucli.scenes.inertia import body
+from taucli.scenes.shapes import SHAPES
 
 TWO_PI = 2.0 * math.pi
 HALF_PI = 0.5 * math.pi
