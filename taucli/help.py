@@ -106,7 +106,14 @@ def text(command: Command) -> str:
         lines += _definitions(rows, columns)
         lines.append("")
     lines += _paragraph(EXIT_STATUSES, columns)
+    if command.name in SCENES:
+        lines += _paragraph(f"More, with worked examples: {page(command)} in taucli's source (its README lists every page).", columns)
     return "\n".join(lines).rstrip("\n") + "\n"
+
+
+def page(command: Command) -> str:
+    """The path of a scene's reference page in taucli's source."""
+    return f"docs/{command.name}.md"
 
 
 def answer(args: list[str], stdout, stderr) -> int | None:
@@ -130,14 +137,14 @@ def answer(args: list[str], stdout, stderr) -> int | None:
     return 2 if not args else 0
 
 
-# README.md holds each scene's options and results as generated here, between these markers;
-# tests/test_table.py checks them, and ``python -m taucli.help README.md`` rewrites them.
-README_START = "<!-- options of {name}: generated from its table by `python -m taucli.help README.md` -->"
-README_END = "<!-- end of the options of {name} -->"
+# Each scene's page in docs/ holds its options and results as generated here, between these
+# markers; tests/test_table.py checks them, and ``python -m taucli.help docs`` rewrites them.
+TABLE_START = "<!-- options of {name}: generated from its table by `python -m taucli.help docs` -->"
+TABLE_END = "<!-- end of the options of {name} -->"
 
 
 def markdown(command: Command) -> str:
-    """The options and results of a scene as Markdown tables, for the README."""
+    """The options and results of a scene as Markdown tables, for its page in docs/."""
     lines = ["| option | takes | what it is |", "|---|---|---|"]
     for option in command.options:
         takes = option.kind if option.is_quantity else option.shown_metavar.replace("|", " or ")
@@ -148,22 +155,25 @@ def markdown(command: Command) -> str:
     return "\n".join(lines)
 
 
-def update_readme(path: str) -> bool:
-    """Rewrite the generated sections of the README at ``path``; whether anything changed."""
-    with open(path, encoding="utf-8") as handle:
-        old = handle.read()
-    new = old
+def update_pages(folder: str) -> bool:
+    """Rewrite the generated tables of each scene's page in ``folder`` (docs/); whether any changed."""
+    changed = False
     for command in SCENES.values():
-        start, end = README_START.format(name=command.name), README_END.format(name=command.name)
-        if start in new:
-            before, _, rest = new.partition(start)
-            _, _, after = rest.partition(end)
-            new = f"{before}{start}\n{markdown(command)}\n{end}{after}"
-    if new != old:
-        with open(path, "w", encoding="utf-8") as handle:
-            handle.write(new)
-    return new != old
+        path = os.path.join(folder, f"{command.name}.md")
+        with open(path, encoding="utf-8") as handle:
+            old = handle.read()
+        start, end = TABLE_START.format(name=command.name), TABLE_END.format(name=command.name)
+        if start not in old:
+            raise SystemExit(f"{path} has no generated table (the line {start!r})")
+        before, _, rest = old.partition(start)
+        _, _, after = rest.partition(end)
+        new = f"{before}{start}\n{markdown(command)}\n{end}{after}"
+        if new != old:
+            with open(path, "w", encoding="utf-8") as handle:
+                handle.write(new)
+            changed = True
+    return changed
 
 
 if __name__ == "__main__":
-    sys.exit(1 if update_readme(sys.argv[1]) else 0)
+    sys.exit(1 if update_pages(sys.argv[1]) else 0)

@@ -1,7 +1,7 @@
 """The vocabulary of the one table each command is described by: its options and its results.
 
 A command's table is the single description that the command line (typer), ``--help``, the
-batch keys, sweeps, completions, the fuzz grammar, the README's option tables and the Python
+batch keys, sweeps, completions, the fuzz grammar, the option tables of docs/ and the Python
 API all read. Plain data: importing a table imports no solver, no typer, no rich and no pint.
 
 An option's ``name`` is the solver's keyword and the batch key; the flag is derived from it

@@ -6,7 +6,7 @@ remembered there too (taucli.cache), so a run whose units were seen before never
 Text is screened before pint sees it: pint evaluates ``**`` with Python integers, so
 ``9**9**9 kg`` would run for hours if it got that far.
 
-How text is read (README, "Quantities carry units", has the table): engineering spellings are
+How text is read (docs/units.md has the table): engineering spellings are
 rewritten first (taucli.spellings: ``Nm``, ``N-m``, ``ft-lb``, ``kgm^2``, ``RPM``, ``min-1``); a
 whole number then a fraction is a mixed number (``33 1/3 rpm``), and any other numbers side by
 side are refused (pint would multiply them); 1/time for an angular velocity or acceleration

@@ -7,6 +7,7 @@ import os
 import subprocess
 import sys
 from dataclasses import dataclass
+from pathlib import Path
 
 import pytest
 
@@ -25,6 +26,15 @@ class Run:
 
     def json(self) -> dict:
         return strict_json(self.out)
+
+
+ROOT = Path(__file__).resolve().parent.parent
+DOCUMENTS = (ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")))  # README and each page of docs/: their commands are tested
+
+
+def documents_text() -> list[tuple[str, str]]:
+    """(name, text) of README and each page in docs/, e.g. ("docs/atwood.md", "...")."""
+    return [(str(path.relative_to(ROOT)), path.read_text(encoding="utf-8")) for path in DOCUMENTS]
 
 
 def strict_json(text: str):

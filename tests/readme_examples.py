@@ -1,6 +1,6 @@
-"""Rewrite the README's console examples with what taucli prints now (at 80 columns).
+"""Rewrite the console examples of README and docs/ with what taucli prints now (at 80 columns).
 
-    python tests/readme_examples.py README.md
+    python tests/readme_examples.py README.md docs/*.md
 
 The same commands tests/test_readme.py checks (no pipes, redirects or `taucli bench`); files a
 block shows with `$ cat FILE` are written to a scratch folder first. Run it after a change that
@@ -41,5 +41,6 @@ def rewrite(text: str) -> str:
 
 
 if __name__ == "__main__":
-    path = Path(sys.argv[1])
-    path.write_text(rewrite(path.read_text(encoding="utf-8")), encoding="utf-8")
+    for name in sys.argv[1:]:
+        path = Path(name)
+        path.write_text(rewrite(path.read_text(encoding="utf-8")), encoding="utf-8")

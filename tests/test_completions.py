@@ -1,5 +1,5 @@
 """Shell completion: the committed scripts are what the app generates, and they work in real
-bash, zsh and fish, installed as the README says, with TAB pressed in a terminal (a pty).
+bash, zsh and fish, installed as docs/shell.md says, with TAB pressed in a terminal (a pty).
 
 The `taucli` on PATH in these shells is a stub that records being run: TAB must never start it.
 The shells come from Debian's packages (bash-completion, zsh, fish); .ci/run installs them.
@@ -137,7 +137,7 @@ def _stub_taucli(home: Path) -> Path:
 
 
 def _install(shell: str, home: Path) -> tuple[list[str], dict[str, str], list[str], str]:
-    """The shell installed as the README says; its argv, environment, setup lines and ready line."""
+    """The shell installed as docs/shell.md says; its argv, environment, setup lines and ready line."""
     bin_dir = _stub_taucli(home)
     env = {"HOME": str(home), "PATH": f"{bin_dir}:/usr/bin:/bin", "TERM": "xterm", "LANG": "C.UTF-8"}
     script = COMPLETIONS / completions.FILE_NAMES[shell]

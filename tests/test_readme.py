@@ -1,34 +1,38 @@
-"""The README's console examples print what the README shows (at 80 columns).
+"""The console examples of README and of every page in docs/ print what the page shows (at 80 columns).
 
 Each ```console block is a short session: `$ cat FILE` shows a file the next commands read (the
 test writes it), and `$ taucli ...` shows a command and all it printed, stdout then stderr.
-Commands with a pipe or a redirect, and `taucli bench` (its timings differ from run to run),
-are left out; a test below counts what is checked, so that the README cannot drift out of it.
+Commands with a pipe or a redirect run in bash, in a folder holding the block's files (jq, which
+some pipe into, is installed by .ci/run); `taucli bench` is left out (its timings differ from run
+to run). A test below counts what is checked, so that no page can drift out of it.
 """
 
 from __future__ import annotations
 
+import os
 import re
 import shlex
-from pathlib import Path
+import shutil
+import subprocess
+import sys
 
 import pytest
 
-from conftest import run_taucli
-
-README = Path(__file__).parent.parent / "README.md"
+from conftest import documents_text, run_taucli
 
 
 def sessions() -> list[tuple[str, str, dict[str, str]]]:
-    """(command, what it printed, files shown before it in its block) for each checkable command."""
+    """(command, what it printed, files shown before it in its block) for each checkable command
+    of README and of every page in docs/."""
     found = []
-    for block in re.findall(r"```console\n(.*?)```", README.read_text(encoding="utf-8"), re.S):
+    blocks = [block for _, text in documents_text() for block in re.findall(r"```console\n(.*?)```", text, re.S)]
+    for block in blocks:
         files: dict[str, str] = {}
         for entry in re.split(r"^\$ ", block, flags=re.M)[1:]:
             command, _, printed = entry.partition("\n")
             if command.startswith("cat ") and " " not in command[4:]:
                 files[command[4:]] = printed
-            elif command.startswith("taucli ") and not re.search(r"[|<>]", command) and not command.startswith("taucli bench"):
+            elif command.startswith("taucli ") and not command.startswith("taucli bench"):
                 found.append((command, printed, dict(files)))
     return found
 
@@ -37,43 +41,66 @@ def _lines(text: str) -> list[str]:
     return [line.rstrip() for line in text.strip("\n").splitlines()]
 
 
-def test_the_readme_has_examples_to_check():
-    assert len(sessions()) >= 15
+def _piped(command: str) -> bool:
+    return bool(re.search(r"[|<>]", command))
+
+
+def _shell_env(tmp_path) -> dict[str, str]:
+    """The environment of a shell whose `taucli` is this checkout's, at 80 columns."""
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir(exist_ok=True)
+    (bin_dir / "taucli").write_text(f"#!/bin/sh\nexec {sys.executable} -m taucli \"$@\"\n")
+    (bin_dir / "taucli").chmod(0o755)
+    return {**os.environ, "PATH": f"{bin_dir}:{os.environ['PATH']}", "COLUMNS": "80"}
+
+
+def _needs(program: str) -> None:
+    if shutil.which(program) is None:
+        if os.environ.get("CI"):
+            pytest.fail(f"{program} is not installed: .ci/run installs it")
+        pytest.skip(f"{program} is not installed (apt-get install {program})")
+
+
+def test_the_pages_have_examples_to_check():
+    assert len(sessions()) >= 80
+    assert sum(_piped(command) for command, _, _ in sessions()) >= 2
 
 
 @pytest.mark.parametrize("command,printed,files", sessions(), ids=[command[:70] for command, _, _ in sessions()])
-def test_a_readme_example_prints_what_the_readme_shows(command, printed, files, tmp_path, monkeypatch):
+def test_an_example_prints_what_its_page_shows(command, printed, files, tmp_path, monkeypatch):
     for name, text in files.items():
         (tmp_path / name).write_text(text, encoding="utf-8")
     monkeypatch.chdir(tmp_path)
-    result = run_taucli(*shlex.split(command)[1:], env={"COLUMNS": "80"})
-    assert _lines(result.out + result.err) == _lines(printed)
+    if _piped(command):
+        if "jq" in command:
+            _needs("jq")
+        done = subprocess.run(["bash", "-c", command], capture_output=True, text=True, env=_shell_env(tmp_path), cwd=tmp_path, timeout=60)
+        out, err = done.stdout, done.stderr
+    else:
+        result = run_taucli(*shlex.split(command)[1:], env={"COLUMNS": "80"})
+        out, err = result.out, result.err
+    assert _lines(out + err) == _lines(printed)
 
 
 @pytest.mark.parametrize("shell", ["zsh", "fish"])
-def test_every_readme_command_works_as_typed_in_zsh_and_fish(shell, tmp_path):
+def test_every_readme_and_docs_command_works_as_typed_in_zsh_and_fish(shell, tmp_path):
     """#16 item 17: `--friction 0.3N*m` unquoted is a glob, and zsh stops at 'no matches found'.
-    Each README command, run by the shell itself, exits as it does when bash runs it."""
-    import os
-    import shutil
-    import subprocess
-    import sys
-
+    Each command of README and docs/, run by the shell itself (in a folder with its block's files),
+    exits and prints as it does when bash runs it."""
+    _needs(shell)
     found = shutil.which(shell)
-    if found is None:
-        if os.environ.get("CI"):
-            pytest.fail(f"{shell} is not installed: .ci/run installs it")
-        pytest.skip(f"{shell} is not installed (apt-get install {shell})")
-    bin_dir = tmp_path / "bin"
-    bin_dir.mkdir()
-    (bin_dir / "taucli").write_text(f"#!/bin/sh\nexec {sys.executable} -m taucli \"$@\"\n")
-    (bin_dir / "taucli").chmod(0o755)
-    env = {**os.environ, "PATH": f"{bin_dir}:{os.environ['PATH']}", "COLUMNS": "80"}
-    commands = [command for command, _, files in sessions() if not files]
-    assert len(commands) > 30
-    for command in commands:
-        in_bash = subprocess.run(["bash", "-c", command], capture_output=True, text=True, env=env, cwd=tmp_path, timeout=60)
-        in_shell = subprocess.run([found, "-c", command], capture_output=True, text=True, env=env, cwd=tmp_path, timeout=60)
+    env = _shell_env(tmp_path)
+    commands = sessions()
+    assert len(commands) >= 80
+    for number, (command, _, files) in enumerate(commands):
+        if "jq" in command and shutil.which("jq") is None:
+            continue  # (the test above says so)
+        folder = tmp_path / str(number)
+        folder.mkdir()
+        for name, text in files.items():
+            (folder / name).write_text(text, encoding="utf-8")
+        in_bash = subprocess.run(["bash", "-c", command], capture_output=True, text=True, env=env, cwd=folder, timeout=60)
+        in_shell = subprocess.run([found, "-c", command], capture_output=True, text=True, env=env, cwd=folder, timeout=60)
         assert "no matches found" not in in_shell.stderr and "No matches for wildcard" not in in_shell.stderr, (command, in_shell.stderr)
         assert in_shell.returncode == in_bash.returncode, (command, in_shell.stderr)
         assert in_shell.stdout == in_bash.stdout, command

@@ -1,6 +1,6 @@
 """Worked steps read as the article writes them (#16 item 14).
 
-Over every command in README (and each scene's working example): a numbers line that
+Over every command in README and docs/ (and each scene's working example): a numbers line that
 substitutes numbers carries their units; a negative number after an operator is in parentheses
 with a true minus (never "+ -3" or "× -1.5"); a step's result shows the figures the results
 table shows for the same quantity (one rule for both).
@@ -14,27 +14,26 @@ import shlex
 import subprocess
 import sys
 from functools import cache
-from pathlib import Path
 
 import mpmath
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from conftest import documents_text
 from taucli.render import shown
 from taucli.report import pretty_unit
 from test_table import WORKING
 
-README = Path(__file__).parent.parent / "README.md"
 NUMBER = re.compile(r"(?<![\w.^])[-−]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 UNIT_AFTER = re.compile(r"\s*(?:[a-zA-Zµ°Ω]|rad|rev)")
 MP_DPS = 40  # the references' precision, set for each test by conftest
 
 
 def _commands() -> list[list[str]]:
-    """Each README command (and working example) that answers a single scene, as --json."""
+    """Each command of README and docs/ (and working example) that answers a single scene, as --json."""
     found = []
-    for line in README.read_text(encoding="utf-8").splitlines():
+    for line in (line for _, text in documents_text() for line in text.splitlines()):
         text = line.removeprefix("$ ").strip()
         if not text.startswith("taucli ") or any(mark in text for mark in ("|", "<", "--batch", "completions", " bench", "--help")):
             continue

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import assert_usage_error, run_taucli
+from conftest import assert_usage_error, documents_text, run_taucli
 
 GOLDEN = Path(__file__).parent / "golden"
 G = 9.80665
@@ -243,13 +243,12 @@ def test_out_writes_a_valid_svg_and_png(tmp_path):
     assert (width, height) == (700, 580)  # 7 in × (2.6 in per panel × 2 + 0.6 in) at matplotlib's 100 dpi
 
 
-README = Path(__file__).parent.parent / "README.md"
 
 
 def _readme_charts() -> list[tuple[str, str]]:
-    """(command, output) of each chart block in the README: ```text, then $ taucli ... --plot."""
-    blocks = re.findall(r"```text\n\$ taucli ([^\n]*--plot)\n(.*?)```", README.read_text(encoding="utf-8"), re.S)
-    assert len(blocks) >= 3, "the README's article figures are missing"
+    """(command, output) of each chart block in README and docs/: ```text, then $ taucli ... --plot."""
+    blocks = [block for _, text in documents_text() for block in re.findall(r"```text\n\$ taucli ([^\n]*--plot)\n(.*?)```", text, re.S)]
+    assert len(blocks) >= 3, "the article's figures are missing from docs/output.md"
     return blocks
 
 

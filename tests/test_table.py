@@ -15,7 +15,7 @@ from taucli import help as helptext
 from taucli.options import COMMANDS, SCENES
 from taucli.table import FLAG, FILLED
 
-README = Path(__file__).resolve().parent.parent / "README.md"
+ROOT = Path(__file__).resolve().parent.parent
 SCENE_NAMES = list(SCENES)
 
 # One scene of each command that works, to see what its library returns.
@@ -158,14 +158,23 @@ def test_the_fuzz_grammar_reads_the_table(name):
     ]
 
 
-def test_the_readme_shows_each_scenes_options_and_results_as_its_table_has_them():
-    text = README.read_text(encoding="utf-8")
+def test_each_scenes_page_shows_its_options_and_results_as_its_table_has_them():
     for command in SCENES.values():
-        start = helptext.README_START.format(name=command.name)
-        end = helptext.README_END.format(name=command.name)
-        assert start in text and end in text, f"README has no generated table for {command.name}"
+        page = ROOT / helptext.page(command)
+        text = page.read_text(encoding="utf-8")
+        start = helptext.TABLE_START.format(name=command.name)
+        end = helptext.TABLE_END.format(name=command.name)
+        assert start in text and end in text, f"{page.name} has no generated table for {command.name}"
         shown = text.split(start, 1)[1].split(end, 1)[0].strip()
-        assert shown == helptext.markdown(command), f"README's table of {command.name} is stale: python -m taucli.help README.md"
+        assert shown == helptext.markdown(command), f"{page.name}'s table of {command.name} is stale: python -m taucli.help docs"
+
+
+def test_each_scenes_help_ends_with_its_page_which_readme_links_to():
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    for command in SCENES.values():
+        assert helptext.text(command).rstrip().endswith("lists every page).")
+        assert helptext.page(command) in helptext.text(command).replace("\n  ", " ")
+        assert f"({helptext.page(command)})" in readme
 
 
 @pytest.mark.parametrize("name", SCENE_NAMES)

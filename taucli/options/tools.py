@@ -25,7 +25,7 @@ BENCH = Command(
 COMPLETIONS = Command(
     name="completions",
     summary="Print the completion script for SHELL: commands, options, shapes, methods, and units after a number.",
-    description="The scripts are static: pressing TAB never starts Python. The README says where each goes.",
+    description="The scripts are static: pressing TAB never starts Python. docs/shell.md says where each goes.",
     example="taucli completions bash > ~/.local/share/bash-completion/completions/taucli",
     options=(Option("shell", CHOICE, "bash, zsh or fish.", choices=SHELLS, positional=True, metavar="SHELL"),),
     handler="taucli.tools:completions",
