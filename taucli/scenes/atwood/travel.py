@@ -1,0 +1,79 @@
+"""The motion that follows: m1's time and speed after --distance, its speed and displacement at
+--time, and the trajectory to plot. The masses move under constant forces, in uniform phases
+(motion.evolve's: a stop, static friction, a second phase the other way), each one
+
+    x = u t + ½ a t²,   v = u + a t,   so the time to a path length d: t = 2d / (u + √(u² + 2ad))
+"""
+
+from __future__ import annotations
+
+import math
+
+from taucli.report import Trajectory, Value, fmt, quantity_text
+from taucli.scenes.motion import Evolver, Loads, Method, Motion, evolve
+from taucli.table import Results
+
+
+def evolve_exact(mass: float, loads: Loads, v0: float) -> Motion:
+    """The motion of ``mass`` under ``loads`` from speed v0, in closed form."""
+    return evolve(mass, loads, v0, Evolver(Method("exact")))
+
+
+def put_motion(results: Results, motion, distance: float | None, time: float | None, notes: list[str]) -> None:
+    """t and v after --distance, v and the displacement at --time: m1's, as solve gives them."""
+    if distance is not None:
+        reached = time_to_travel(motion, distance)
+        if reached is None:
+            notes.append(f"the masses never travel {quantity_text(distance, 'm')}")
+        results.put("t", reached, f" {fmt(distance)} m")
+        results.put("v", None if reached is None else motion.state_at(reached)[0], f" after {fmt(distance)} m")
+    if time is not None:
+        speed, displacement = motion.state_at(time)
+        if "v" not in results:
+            results.put("v", speed, f" at t = {fmt(time)} s")
+        results.put("distance", displacement, f" at t = {fmt(time)} s")
+        if distance is not None:
+            notes.append("v is given at the distance; distance at the time")
+
+
+def time_to_travel(motion, distance: float) -> float | None:
+    """The time at which the masses have moved a path length ``distance`` (uniform phases)."""
+    if motion.held_from_start:
+        return 0.0 if distance == 0 else None
+    first, stop = motion.first.closed, motion.stop
+    if stop is None or distance <= stop[1]:
+        return _uniform_time(first.omega0, first.constant / first.inertia, distance)
+    if motion.second is None:
+        return None
+    second = motion.second.closed
+    return stop[0] + _uniform_time(0.0, second.constant / second.inertia, distance - stop[1])
+
+
+def _uniform_time(speed: float, acceleration: float, distance: float) -> float:
+    """The first t ≥ 0 with speed·t + ½at² = distance: 2d/(u + √(u² + 2ad)), free of cancellation."""
+    if distance == 0:
+        return 0.0
+    return 2 * distance / (speed + math.sqrt(max(speed * speed + 2 * acceleration * distance, 0.0)))
+
+
+def trajectory(motion, distance: float | None, time: float | None, results: dict[str, Value]) -> Trajectory:
+    """Position and velocity of m1 (down positive): to --time, or to --distance, or past the stop.
+    ``motion`` is the Motion, or (mass, loads, v0) to evolve it from."""
+    if not isinstance(motion, Motion):
+        motion = evolve_exact(*motion)
+    stop, note, marks = motion.stop, "", []
+    reached = results["t"].value if distance is not None else None
+    if time is not None and time > 0:
+        t_end = time
+    elif reached:
+        t_end = reached
+    elif stop is not None and stop[0] > 0:
+        t_end = 1.25 * stop[0]
+    else:
+        t_end, note = 1.0, "plotted for 1 s; --time or --distance to change"
+    if reached:
+        marks.append((reached, f"has moved {fmt(distance)} m"))
+    if stop is not None and stop[0] > 0:
+        marks.append((stop[0], "stops"))
+    curves = (("x", "m", "position of m1, down positive"), ("v", "m/s", "velocity of m1"))
+    return Trajectory(curves, t_end, lambda t: motion.state_at(t)[::-1], marks=tuple(marks), note=note)
