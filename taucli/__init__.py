@@ -15,7 +15,7 @@ from __future__ import annotations
 from taucli.errors import InputError
 from taucli.options import SCENES  # plain data: no solver, typer, rich or pint
 from taucli.report import Report
-from taucli.version import __version__
+from taucli.version import __version__ as __version__  # taucli.__version__
 
 __all__ = ["InputError", "Report", *(command.function_name for command in SCENES.values())]
 

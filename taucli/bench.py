@@ -196,10 +196,10 @@ def _pendulum_points(name: str, ladder: dict, repeats: int) -> list[Point]:
     for rtol in ladder["rk45"]:
         runs.append(("rk45", f"rtol={rtol:g}", lambda rtol=rtol: Stepped(swing, "rk45", 1e-2, rtol, horizon).period(False)))
     points = []
-    for method, setting, solve in runs:
-        def run_once(solve=solve):
+    for method, setting, find_period in runs:
+        def run_once(find_period=find_period):
             try:
-                return solve()
+                return find_period()
             except (TooManySteps, BlewUp):  # a diverged point, timed as far as it went
                 return None
 
