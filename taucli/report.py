@@ -164,13 +164,20 @@ def fmt(x: float, digits: int = DIGITS) -> str:
 _SUPERSCRIPTS = {"**2": "²", "**3": "³", "**-1": "⁻¹", "**-2": "⁻²", "^2": "²", "^3": "³", "^-1": "⁻¹", "^-2": "⁻²"}
 
 
+_PRETTY: dict[str, str] = {}  # a unit string -> as shown: the same few dozen units are shown over and over
+
+
 def pretty_unit(unit: str | None) -> str:
     """A unit string as a person reads it: kg*m**2 -> kg·m², rad/s**2 -> rad/s²."""
     if not unit:
         return ""
-    for power, superscript in _SUPERSCRIPTS.items():
-        unit = unit.replace(power, superscript)
-    return unit.replace("*", "·")
+    shown = _PRETTY.get(unit)
+    if shown is None:
+        shown = unit
+        for power, superscript in _SUPERSCRIPTS.items():
+            shown = shown.replace(power, superscript)
+        shown = _PRETTY[unit] = shown.replace("*", "·") if len(_PRETTY) < 4096 else shown.replace("*", "·")
+    return shown
 
 
 def quantity_text(x: float, unit: str, digits: int = DIGITS) -> str:

@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from taucli.errors import InputError
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import (
+    DeferredSteps,
     Report,
     Step,
     Trajectory,
@@ -144,17 +145,7 @@ def solve(
             tables["error_estimate"], worst = estimate
             described += f"; estimated error at most {fmt(worst, 2)} relative" if worst is not None else ""
 
-    steps = list(inertia_steps)
-    if push is not None:
-        steps.append(push_step(push))
-    steps.extend(net_torque_steps(torques, omega0, alpha0, inertia, held_from_start))
-    if not held_from_start:
-        steps.extend(_kinematics_steps(torques, first, second, stop, results, time, chosen, omega0))
-        if until_angle is not None and results["t_until"].value is not None:
-            steps.append(Step("Time to turn θ", "θ(t) = θ_target, solved for t", f"θ_target = {quantity_text(until_angle, 'rad')}",
-                              f"t = {quantity_text(results['t_until'].value, 's')}, ω = {quantity_text(results['omega'].value, 'rad/s')}",
-                              "θ grows with t while the wheel turns one way, so the time is bracketed and found by bisection on θ(t)"))
-    steps.extend(energy_steps(results, inertia, torques.friction))
+    steps = DeferredSteps(_steps, inertia_steps, push, torques, omega0, alpha0, inertia, motion, dict(results), time, until_angle, chosen)
     if chosen.name != "exact" and method == "auto":
         notes.append(f"no closed form for drag kω^{fmt(torques.drag_exponent)} with these torques: integrated numerically")
     model = _model(torques, chosen)
@@ -162,6 +153,24 @@ def solve(
         model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
     trajectory = None if evolver.unstable else deferred(_trajectory, motion, time, omega_inf)
     return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
+
+
+def _steps(inertia_steps, push: Push | None, torques: Torques, omega0: float, alpha0: float, inertia: float, motion, results: dict,
+           time: float | None, until_angle: float | None, chosen: Method) -> list[Step]:
+    """The worked solution: the body, the push, τ_net and α at the start, then the motion's
+    kinematics (the stop, ω and θ at t, the time to an angle) and the energy."""
+    steps = list(inertia_steps)
+    if push is not None:
+        steps.append(push_step(push))
+    steps.extend(net_torque_steps(torques, omega0, alpha0, inertia, motion.held_from_start))
+    if not motion.held_from_start:
+        steps.extend(_kinematics_steps(torques, motion.first, motion.second, motion.stop, results, time, chosen, omega0))
+        if until_angle is not None and results["t_until"].value is not None:
+            steps.append(Step("Time to turn θ", "θ(t) = θ_target, solved for t", f"θ_target = {quantity_text(until_angle, 'rad')}",
+                              f"t = {quantity_text(results['t_until'].value, 's')}, ω = {quantity_text(results['omega'].value, 'rad/s')}",
+                              "θ grows with t while the wheel turns one way, so the time is bracketed and found by bisection on θ(t)"))
+    steps.extend(energy_steps(results, inertia, torques.friction))
+    return steps
 
 
 def _trajectory(motion, time: float | None, omega_inf: float | None) -> Trajectory:
