@@ -41,13 +41,13 @@ def solve_balance(
         return _partial_balance(given, missing, notes, inertia_steps)
     unknown = missing[0] if missing else None
     i, w0, w1, tau, dt = inertia, omega0, omega1, torque, duration
-    change = None  # Δω where it is known before ω₀ or ω₁ is rounded
+    delta_omega = None  # Δω = τΔt/I where ω₀ or ω₁ is solved for: kept before that ω is rounded
     if unknown == "omega1":
-        change = tau * dt / i
-        w1 = w0 + change
+        delta_omega = tau * dt / i
+        w1 = w0 + delta_omega
     elif unknown == "omega0":
-        change = tau * dt / i
-        w0 = w1 - change
+        delta_omega = tau * dt / i
+        w0 = w1 - delta_omega
     elif unknown == "torque":
         tau = i * (w1 - w0) / dt
     elif unknown == "duration":
@@ -63,16 +63,16 @@ def solve_balance(
         if i <= 0:
             raise InputError("torque", "must act in the sense of the change ω₁ − ω₀ for a positive inertia", got=f"τΔt = {fmt(tau * dt)} N·m·s, Δω = {fmt(w1 - w0)} rad/s")
     else:
-        impulse, change = tau * dt, i * (w1 - w0)
-        if abs(impulse - change) > AGREEMENT * max(abs(impulse), abs(i * w0), abs(i * w1), 1e-300):
+        impulse, momentum_change = tau * dt, i * (w1 - w0)
+        if abs(impulse - momentum_change) > AGREEMENT * max(abs(impulse), abs(i * w0), abs(i * w1), 1e-300):
             raise InputError("omega1",
-                f"and the other four disagree: τΔt = {fmt(impulse, 6)} N·m·s but I(ω₁ − ω₀) = {fmt(change, 6)} N·m·s",
+                f"and the other four disagree: τΔt = {fmt(impulse, 6)} N·m·s but I(ω₁ − ω₀) = {fmt(momentum_change, 6)} N·m·s",
                 hint="leave out the one to solve for",
             )
     impulse = tau * dt
     results = Results(TABLE)
     results.put("J", impulse, " τΔt")
-    results.put("delta_omega", w1 - w0 if change is None else change)
+    results.put("delta_omega", w1 - w0 if delta_omega is None else delta_omega)
     for name, value in (("inertia", i), ("omega0", w0), ("omega1", w1), ("torque", tau)):
         results.put(name, value, SOLVED if unknown == name else "")
     results.put("duration", dt, " the torque acts" + (SOLVED if unknown == "duration" else ""))
