@@ -208,6 +208,24 @@ def test_delta_omega_keeps_its_digits_when_an_angular_velocity_is_solved_for(ine
         assert abs(mpmath.mpf(got) - exact) <= 2 * abs(exact) * mpmath.mpf(2) ** -53
 
 
+@settings(max_examples=100, deadline=None)
+@given(inertia=st.floats(1e-3, 1e3), omega0=finite, torque=finite, duration=st.floats(1e-3, 1e3))
+@example(inertia=2.0, omega0=0.0, torque=10.0, duration=1.0)
+def test_delta_omega_is_omega1_minus_omega0_when_all_five_are_given(inertia, omega0, torque, duration):
+    """All five given: delta_omega was I(ω₁ − ω₀), the angular impulse in N·m·s, where the name
+    it was read from held Δω in the other branches (10 for I = 2 kg·m², ω₁ − ω₀ = 5 rad/s).
+    It is ω₁ − ω₀ in rad/s, taken here from the two given."""
+    omega1 = omega0 + torque * duration / inertia
+    assert values(solve_balance(inertia, omega0, omega1, torque, duration))["delta_omega"] == omega1 - omega0
+
+
+def test_delta_omega_with_all_five_given_at_the_command_line(taucli):
+    done = taucli("impulse", "--inertia", "2kg*m^2", "--omega0", "0rad/s", "--omega1", "5rad/s", "--torque", "10N*m",
+                  "--duration", "1s", "--get", "delta_omega")
+    assert done.code == 0, done.err
+    assert float(done.out) == 5.0
+
+
 # What the inputs determine (#16, item 13) ------------------------------------------------------
 
 

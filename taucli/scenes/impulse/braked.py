@@ -1,0 +1,92 @@
+"""A constant torque on a body that brakes or faces rub (#24): I dω/dt = τ − τ_f·sgn ω.
+
+The friction torque τ_f is constant and against the turning (static μ holds the body at rest), so
+within Δt the body may stop, stay held, or turn back with the friction reversed (motion.evolve
+follows it in closed form). The net angular impulse I(ω₁ − ω₀) = τΔt − ∫τ_f sgn ω dt.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from taucli.options.impulse import COMMAND as TABLE
+from taucli.report import Report, Step, quantity_text, term
+from taucli.scenes.contact import contacts
+from taucli.scenes.given import Brake, Face
+from taucli.scenes.motion import Evolver, Loads, Method, evolve
+from taucli.table import Results
+
+
+def solve_braked(
+    inertia: float,
+    omega0: float,
+    torque: float,
+    duration: float,
+    brakes: Sequence[Brake],
+    faces: Sequence[Face],
+    gravity: float | None,
+    body_options: dict,
+    *,
+    inertia_steps: Sequence[Step] = (),
+) -> Report:
+    """A constant torque τ over Δt against a constant Coulomb torque τ_f of the brakes and faces
+    (static μ holding the body at rest): I dω/dt = τ − τ_f·sgn ω in each stretch of motion one
+    way; ω₁ at Δt, J = τΔt applied, J_net = I(ω₁ − ω₀), and each friction's torque, work over the
+    angle swept both ways, and power at the start. ``gravity`` gives the weight on a face with no
+    force= (None where every face has one); ``body_options`` give the radii the contacts take."""
+    contact = contacts(brakes, faces, body_options, body_options.get("mass"), gravity)
+    loads = Loads(drive=torque, friction=contact.kinetic, static=contact.static)
+    motion = evolve(inertia, loads, omega0, Evolver(Method("exact")))
+    omega_end, theta = motion.state_at(duration)
+    stop = motion.stop if motion.stop is not None and motion.stop[0] < duration else None
+    # the angle swept both ways: to the stop, then (turned back) from there
+    swept = abs(theta) if stop is None else abs(stop[1]) + abs(theta - motion.signed_stop[1])
+    results = Results(TABLE)
+    impulse = torque * duration
+    results.put("omega1", omega_end, " Δt")
+    results.put("delta_omega", omega_end - omega0)
+    results.put("J", impulse, " of the applied torque, τΔt")
+    results.put("J_net", inertia * (omega_end - omega0))
+    results.put("L0", inertia * omega0)
+    results.put("L1", inertia * omega_end, " Δt")
+    energy0, energy1 = inertia * omega0 * omega0 / 2, inertia * omega_end * omega_end / 2
+    results.put("KE0", energy0, "")
+    results.put("KE1", energy1, " Δt")
+    results.put("work", energy1 - energy0)
+    speed0 = abs(omega0)
+    for name, share in (("brake", contact.brake), ("face", contact.face)):
+        if (name == "brake" and brakes) or (name == "face" and faces):
+            results.put(f"torque_{name}", share)
+            results.put(f"work_{name}", share * swept, " during Δt")
+            results.put(f"power_{name}", share * speed0, " at the start")
+    notes = list(contact.notes)
+    if motion.held_from_start:
+        notes.append(f"static friction holds the body: |τ| = {quantity_text(abs(torque), 'N*m')} does not exceed {quantity_text(contact.static, 'N*m')}")
+    elif stop is not None:
+        notes.append(f"the body stops at t = {quantity_text(stop[0], 's')} within Δt"
+                     + (", and the torque turns it back, friction reversed" if motion.second is not None else ", and static friction holds it"))
+    steps = [*inertia_steps, *contact.steps]
+    steps.append(Step("Friction torques add", "τ_f = " + " + ".join(s for s, v in (("τ_b", contact.brake), ("τ_face", contact.face)) if v),
+                      " + ".join(term(v, "N*m") for v in (contact.brake, contact.face) if v), quantity_text(contact.kinetic, "N*m"),
+                      "each is a constant torque against the motion: together one friction torque τ_f"))
+    if not motion.held_from_start:
+        alpha = motion.initial_rate
+        steps.append(Step("Angular acceleration while it turns", "α = (τ − τ_f·sgn ω)/I",
+                          f"({term(torque, 'N*m')} {'−' if motion.direction > 0 else '+'} {term(contact.kinetic, 'N*m')}) / {term(inertia, 'kg*m**2')}",
+                          quantity_text(alpha, "rad/s**2"), "Newton's second law for rotation, friction against the motion"))
+    if stop is None:
+        how = f"{term(omega0, 'rad/s')} + {term(motion.initial_rate, 'rad/s**2')} × {term(duration, 's')}"
+    else:
+        then = ("static friction holds it" if motion.second is None else
+                f"then α₂ = {term(motion.second.direction * motion.second.rate(0.0), 'rad/s**2')} for {term(duration - stop[0], 's')}")
+        how = f"stops at t = |ω₀/α| = {term(stop[0], 's')}; {then}"
+    steps.append(Step("Angular velocity after Δt", "ω₁ = ω₀ + αΔt (to the stop, if it comes first; then held, or turned back)", how,
+                      quantity_text(omega_end, "rad/s"), "constant α within each stretch of motion one way"))
+    steps.append(Step("Angular impulse: applied and net", "J = τΔt;  J_net = IΔω = J − ∫τ_f sgn ω dt",
+                      f"{term(torque, 'N*m')} × {term(duration, 's')};  {term(inertia, 'kg*m**2')} × ({term(omega_end, 'rad/s')} − {term(omega0, 'rad/s')})",
+                      f"{quantity_text(impulse, 'N*m*s')};  {quantity_text(inertia * (omega_end - omega0), 'N*m*s')}",
+                      "the friction's angular impulse is the difference: what the brakes and faces took from the torque's"))
+    steps.append(Step("Energy the friction takes", "W_f = τ_f × angle swept", f"{term(contact.kinetic, 'N*m')} × {term(swept, 'rad')}",
+                      quantity_text(contact.kinetic * swept, "J"), "a constant friction torque takes its torque for every radian swept, either way"))
+    model = "constant torque with " + ", ".join(contact.models) + ": I dω/dt = τ − τ_f sgn ω (static μ holding at rest)"
+    return Report("impulse", model, "closed form", results, steps, notes)

@@ -1,0 +1,131 @@
+"""``taucli impulse``: what is given picks the model, and that model's module solves it."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+
+from taucli.errors import InputError
+from taucli.report import Report, Step
+from taucli.scenes.assumed import Assumed
+from taucli.scenes.given import Brake, Couple, Face, Particle
+from taucli.scenes.impulse.balance import solve_balance
+from taucli.scenes.impulse.braked import solve_braked
+from taucli.scenes.impulse.changing_inertia import solve_changing_inertia
+from taucli.scenes.impulse.meeting import solve_meeting
+from taucli.scenes.impulse.point import point_after
+from taucli.scenes.impulse.sampled import solve_profile
+from taucli.scenes.inertia import body
+
+
+def impulse(
+    *,
+    omega0: float | None = None,
+    omega1: float | None = None,
+    torque: float | None = None,
+    duration: float | None = None,
+    inertia_final: float | None = None,
+    torque_profile: Iterable[tuple[float, float]] | None = None,
+    method: str = "auto",
+    particle: Sequence[Particle] = (),
+    couple: Sequence[Couple] = (),
+    at: float | str | None = None,
+    brake: Sequence[Brake] = (),
+    face: Sequence[Face] = (),
+    g: float | None = None,
+    **body_options,
+) -> Report:
+    """``taucli impulse``: τΔt = IΔω solved for the one left out; or a moment of inertia that
+    changes with no torque (--inertia-final); or a sampled torque (--torque-profile); --at r, a
+    point of the body before and after.
+
+    The model, by what is given: --brake or --face, a constant torque against friction
+    (braked); --particle or --couple, L conserved as they meet the body (meeting);
+    --inertia-final, I₀ω₀ = I₁ω₁ (changing_inertia); --torque-profile, J = ∫τ dt (sampled);
+    else τΔt = I(ω₁ − ω₀) (balance). Each refuses what does not belong to it, then solves."""
+    if at is not None:
+        report = impulse(omega0=omega0, omega1=omega1, torque=torque, duration=duration, inertia_final=inertia_final,
+                         torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, g=g, **body_options)
+        given = {"omega0": omega0, "omega1": omega1, "torque": torque, "duration": duration, "inertia": _body(body_options)[0]}
+        return point_after(report, at, body_options.get("radius", body_options.get("outer_radius")), given)
+
+    inertia, inertia_steps = _body(body_options)
+    if brake or face:
+        _check_braked(method, g, face, inertia, omega1, torque, duration,
+                      {"inertia_final": inertia_final, "torque_profile": torque_profile, "particle": particle or None, "couple": couple or None})
+        assumed = Assumed()
+        omega0 = _at_rest_unless_given(omega0, assumed)
+        gravity = assumed.gravity(g) if any(plate.force is None for plate in face) else None
+        return assumed.applied(solve_braked(inertia, omega0, torque, duration, tuple(brake), tuple(face), gravity, body_options, inertia_steps=inertia_steps))
+    if g is not None:
+        raise InputError("g", "is used only for the weight on a {face} with no force=")
+    if particle or couple:
+        _check_meeting("particle" if particle else "couple", method, inertia,
+                       {"omega1": omega1, "torque": torque, "duration": duration, "inertia_final": inertia_final, "torque_profile": torque_profile})
+        assumed = Assumed()
+        omega0 = _at_rest_unless_given(omega0, assumed)
+        return assumed.applied(solve_meeting(inertia, omega0, tuple(particle), tuple(couple), inertia_steps=inertia_steps))
+    if inertia_final is None and torque_profile is None:
+        if method != "auto":
+            raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); constant torque has a closed form")
+        return solve_balance(inertia, omega0, omega1, torque, duration, inertia_steps=inertia_steps)
+    mode = "inertia_final" if inertia_final is not None else "torque_profile"
+    _check_changing_or_sampled(mode, inertia, {"omega1": omega1, "torque": torque, "duration": duration,
+                                       "inertia_final": inertia_final if mode != "inertia_final" else None})
+    if mode == "inertia_final":
+        return solve_changing_inertia(inertia, inertia_final, omega0 or 0.0, inertia_steps=inertia_steps)
+    assumed = Assumed()
+    omega0 = _at_rest_unless_given(omega0, assumed)
+    return assumed.applied(solve_profile(inertia, omega0, torque_profile, rule=method, inertia_steps=inertia_steps))
+
+
+def _body(body_options: dict) -> tuple[float | None, Sequence[Step]]:
+    """The body's moment of inertia and the steps that found it, or (None, ()) where no body is given."""
+    given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
+    return body(**body_options) if given else (None, ())
+
+
+def _at_rest_unless_given(omega0: float | None, assumed: Assumed) -> float:
+    """ω₀ as given, or 0 (the body starts at rest), assumed with a note."""
+    if omega0 is None:
+        return assumed.value("omega0", 0.0, "rad/s", "no --omega0: the body starts at rest")
+    return omega0
+
+
+def _check_braked(method: str, g: float | None, faces: Sequence[Face], inertia: float | None, omega1: float | None,
+                  torque: float | None, duration: float | None, others: dict) -> None:
+    """A braked impulse has a closed form, takes --g only for a face's weight, solves for ω₁ and
+    needs I, τ and Δt; it takes none of ``others``."""
+    if method != "auto":
+        raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); a braked impulse has a closed form")
+    if g is not None and not any(plate.force is None for plate in faces):
+        raise InputError("g", "is used only for the weight on a {face} with no force=")
+    for name, value in others.items():
+        if value is not None:
+            raise InputError(name, "does not combine with {brake} or {face} here: they act with a constant {torque} over {duration}")
+    if omega1 is not None:
+        raise InputError("omega1", "is what {brake} and {face} let this solve for: leave it out")
+    for name, value in (("inertia", inertia), ("torque", torque), ("duration", duration)):
+        if value is None:
+            raise InputError(name, "is required with {brake} or {face}: the friction's share is worked out over the motion, from the start",
+                             example={"inertia": "{inertia} 0.5kg*m^2", "torque": "{torque} 5N*m", "duration": "{duration} 2s"}[name])
+
+
+def _check_meeting(mode: str, method: str, inertia: float | None, conflicting: dict) -> None:
+    """While particles or couples (``mode``) meet the body no external torque acts: none of
+    ``conflicting``, no quadrature, and a body to meet."""
+    for name, value in conflicting.items():
+        if value is not None:
+            raise InputError(name, f"conflicts with {{{mode}}}: while they meet, no external torque acts and L is conserved")
+    if method != "auto":
+        raise InputError("method", "applies to {torque_profile} (trapezoid or simpson)")
+    if inertia is None:
+        raise InputError("inertia", f"or {{shape}} is required with {{{mode}}}: the body they meet", example="{inertia} 500kg*m^2")
+
+
+def _check_changing_or_sampled(mode: str, inertia: float | None, conflicting: dict) -> None:
+    """--inertia-final or --torque-profile (``mode``) takes none of ``conflicting`` and needs a body."""
+    for name, value in conflicting.items():
+        if value is not None:
+            raise InputError(name, f"conflicts with {{{mode}}}")
+    if inertia is None:
+        raise InputError("inertia", f"or {{shape}} is required with {{{mode}}}", example="{inertia} 2kg*m^2")
