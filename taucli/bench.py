@@ -21,7 +21,7 @@ from decimal import Decimal, localcontext
 from taucli.version import __version__
 from taucli.numerics import TooManySteps
 from taucli.scenes.impulse import solve_profile
-from taucli.scenes.pendulum import BlewUp, Harmonic, Stepped, Swing, _exact_model
+from taucli.scenes.pendulum import BlewUp, Harmonic, Stepped, Swing, exact_model
 from taucli.scenes.spin import Torques, solve
 
 # name -> (inertia, torques, ω₀, (t_stop, θ_stop) to 50 digits for these double inputs)
@@ -187,7 +187,7 @@ def _pendulum_points(name: str, ladder: dict, repeats: int) -> list[Point]:
     swing = Swing(1.0, 1.0, 0.0, math.radians(degrees), 0.0)
     horizon = 3 * float(reference)
     runs: list[tuple[str, str, Callable]] = [
-        ("exact", "elliptic K", lambda: _exact_model(swing).period),
+        ("exact", "elliptic K", lambda: exact_model(swing).period),
         ("small-angle", "2π√(I/mgd)", lambda: Harmonic(1.0, swing.theta0, 0.0).period),
     ]
     for method, key in (("euler", "pendulum euler"), ("rk4", "pendulum rk4"), ("verlet", "verlet")):

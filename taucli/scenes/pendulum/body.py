@@ -1,0 +1,86 @@
+"""The body on its pivot, from the options: I about the pivot, the mass m and the distance d from
+the pivot to the centre of mass (--inertia with --mass and --cm-distance, or --shape and its
+parts), and what swings it: gravity's torque mgd and a torsion spring's κθ.
+
+    d = Σmᵢdᵢ / M   (the parts' centres on one line, on the same side of the pivot)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import NamedTuple
+
+from taucli.errors import InputError
+from taucli.report import Step, fmt, quantity_text
+from taucli.scenes.assumed import Assumed
+from taucli.scenes.inertia import body_inertia, main_part
+from taucli.scenes.pendulum.swing import Swing
+
+
+class Body(NamedTuple):
+    """I about the pivot, the mass (None where not given), d, the steps that found them, and words for the model."""
+    inertia: float
+    mass: float | None
+    cm_distance: float
+    steps: Sequence[Step]
+    words: str
+
+
+def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion: float | None, assumed: Assumed) -> Body:
+    """The body from its options; with --inertia and a spring but no --cm-distance, d = 0 (a
+    torsion pendulum on a vertical wire), with a note."""
+    if inertia is not None:
+        if shape is not None:
+            raise InputError("inertia", "conflicts with {shape}: give one of them")
+        given = [name for name, value in (("axis", axis), ("offset", offset), *dims.items()) if value is not None]
+        if given or part:
+            raise InputError(given[0] if given else "part", "goes with {shape}; with {inertia} give {cm_distance} and {mass}")
+        if cm_distance is None:
+            if not torsion:
+                raise InputError("cm_distance", "is required with {inertia} (gravity's torque is mgd)", example="{cm_distance} 0.5m")
+            cm_distance = 0.0
+            assumed.notes.append("no --cm-distance: d = 0, gravity turns nothing (a torsion pendulum on a vertical wire)")
+        return Body(inertia, mass, cm_distance, (), "a body of given I")
+    if shape is None:
+        raise InputError("inertia", "or {shape} is required", example="{shape} rod {length} 1m {mass} 2kg {axis} end, or {inertia} 0.5kg*m^2 {mass} 2kg {cm_distance} 0.5m")
+    found = body_inertia([main_part(shape, mass, axis, offset, dims), *part])
+    steps = list(found.steps)
+    total = found.mass
+    if cm_distance is None:
+        cm_distance = math.fsum(p.part.mass * p.offset for p in found.parts) / total
+        if len(found.parts) > 1:
+            steps.append(
+                Step(
+                    "Distance from the pivot to the centre of mass",
+                    "d = Σmᵢdᵢ / M",
+                    " + ".join(f"{fmt(p.part.mass)} kg × {fmt(p.offset)} m" for p in found.parts) + f" / {quantity_text(total, 'kg')}",
+                    quantity_text(cm_distance, "m"),
+                    "the parts' centres are taken on one line, on the same side of the pivot",
+                )
+            )
+    return Body(found.inertia, total, cm_distance, steps, found.description)
+
+
+def on_pivot(body: Body, torsion: float | None, g: float | None, angle0: float | None, omega0: float | None, angle: float | None,
+             assumed: Assumed) -> tuple[Swing, float]:
+    """The pendulum, I θ'' = −mgd sin θ − κθ from θ₀ and ω₀, and g (standard gravity where the body
+    has a mass or d > 0 and --g is not given): refused where nothing swings it, and under gravity
+    alone for angles beyond ±180°."""
+    kappa = torsion or 0.0
+    if body.cm_distance > 0 and body.mass is None:
+        raise InputError("mass", "is required with {inertia} and {cm_distance} (gravity's torque is mgd)", example="{mass} 2kg")
+    gravity = assumed.gravity(g) if body.cm_distance > 0 or body.mass is not None else (g or 0.0)
+    gravity_torque = (body.mass or 0.0) * gravity * body.cm_distance
+    if gravity_torque == 0 and kappa == 0:
+        raise InputError(
+            "cm_distance" if body.cm_distance == 0 else "g",
+            "leaves nothing to swing the body: its centre of mass is on the pivot and there is no {torsion}" if body.cm_distance == 0
+            else "is zero and there is no {torsion}: nothing swings the body",
+        )
+    theta0 = angle0 or 0.0
+    if not kappa and abs(theta0) > math.pi:
+        raise InputError("angle0", "expected an angle from −180 to 180 deg under gravity alone", got=f"{fmt(math.degrees(theta0))} deg")
+    if angle is not None and not kappa and abs(angle) > math.pi:
+        raise InputError("angle", "expected an angle from −180 to 180 deg under gravity alone", got=f"{fmt(math.degrees(angle))} deg")
+    return Swing(body.inertia, gravity_torque, kappa, theta0, omega0 or 0.0), gravity
