@@ -10,8 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
-from taucli import find as finding
-from taucli import pipeline, propagate
+from taucli import pipeline
 from taucli.errors import InputError
 from taucli.inputs import read
 from taucli.measurement import split
@@ -48,6 +47,8 @@ def solve(
     carries one, solved for the input ``find`` where ``want`` (RESULT=VALUE) says."""
     if plain(given, find, want, mc):
         return pipeline.solve(command, given, stdin=stdin, spell=spell)
+    from taucli import find as finding  # deferred: find and propagate, with what they import, only for these runs
+    from taucli import propagate
     if (find is None) != (want is None):
         raise InputError("find" if find is None else "want", "goes with {" + ("want" if find is None else "find") + "}",
                          example="{find} pulley_inertia {want} a=4.0m/s^2")

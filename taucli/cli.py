@@ -18,7 +18,7 @@ from typing import Annotated, Optional, TextIO
 
 import typer
 
-from taucli import answer, batch, help, pipeline, plot, render, sweep
+from taucli import answer, help, pipeline, render
 from taucli.errors import ExitStatus, InputError, TaucliError, out_of_range
 from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
@@ -143,6 +143,8 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     points = _whole_number(command, asked["points"])
     swept_range = swept_list = None
     if points is not None or any(isinstance(value, str) and (".." in value or "," in value) for value in scene_given.values()):
+        from taucli import sweep  # deferred: sweeps and the charts they draw (3 ms), only for a range or a list
+
         swept_range, swept_list = sweep.find(command, scene_given, points)
     if asked["batch"]:
         for name in ("plot", "out", "points", "y", "jsonl", "get"):
@@ -151,6 +153,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
                 raise InputError(name, f"does not combine with {{batch}}, which {why}", example="{batch} {no_steps}" if name == "get" else None)
         if swept_range or swept_list:
             raise InputError((swept_range or swept_list).name, "cannot be a range or a list with {batch}: give one scene per line")
+        from taucli import batch  # deferred: only --batch
         return batch.run(command, {**scene_given, **_finding(asked, batch=True)}, render.Output(to=tuple(asked["to"] or ()), steps=not asked["no_steps"]), env)
     output = render.Output(
         json=bool(asked["json"] or asked["jsonl"]),
@@ -168,6 +171,8 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     if asked["y"] and swept_range is None:
         raise InputError("y", "names what a range's chart shows; give a range FROM..TO", example="{inertia} 0.5..4kg*m^2 {y} alpha0")
     if output.out is not None:
+        from taucli import plot  # deferred: charts (2 ms), only for --out
+
         plot.check_file(output.out)
     finding = {**_finding(asked), "mc": _whole_number(command, asked["mc"], "mc")}
 
@@ -177,6 +182,8 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     if swept_range is None and swept_list is None:
         render.render(solve(scene_given), output, env.stdout)
         return int(ExitStatus.OK)
+    from taucli import sweep  # deferred: as above
+
     solved = sweep.solve_all(command, swept_range, swept_list, scene_given, solve)
     sweep.render(solved, swept_range, swept_list, output, list(asked["y"] or ()), env.stdout)
     return int(ExitStatus.OK)

@@ -10,10 +10,9 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import TextIO
 
-from taucli import specs, units
+from taucli import units
 from taucli.errors import InputError, did_you_mean
-from taucli.profile import read_profile
-from taucli.reading import Inputs
+from taucli.reading import Inputs, word
 from taucli.report import Value
 from taucli.table import BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, TEXT, VECTOR, Command, Option
 
@@ -47,8 +46,9 @@ def _quantity(option: Option, given, inputs: Inputs, stdin) -> float | None:
 
 def _choice(option: Option, given, inputs: Inputs, stdin):
     if option.repeatable:
-        return tuple(specs.word(option, item) for item in (given if isinstance(given, (list, tuple)) else [given]))
-    return specs.word(option, given)
+        return tuple(word(option, item) for item in (given if isinstance(given, (list, tuple)) else [given]))
+    return word(option, given)
+
 
 
 def _flag(option: Option, given, inputs: Inputs, stdin) -> bool:
@@ -59,7 +59,9 @@ def _flag(option: Option, given, inputs: Inputs, stdin) -> bool:
 
 def _file(option: Option, given, inputs: Inputs, stdin):
     """A torque profile from its CSV file (or stdin for -), streamed: its samples as they are read."""
-    source = specs.word(option, given)
+    from taucli.profile import read_profile  # deferred: the CSV reader, only for a torque profile
+
+    source = word(option, given)
     if source == "-":
         if stdin is None:
             raise InputError(option.name, "cannot be - here: no stdin to read it from", example='"torque_profile": "pulse.csv"')
@@ -108,6 +110,17 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
     return tuple(inputs.quantity(name, item, option.kind, sign=option.sign, key=key) for name, item, key in zip(names, items, keys))
 
 
-READERS = {FLAG: _flag, CHOICE: _choice, PART: specs.parts, FILE: _file, COUNT: _count, TEXT: _as_given}
+def _spec(name: str):
+    """The reader of a "key=value" spec option (or a vector), in taucli.specs."""
+
+    def read(option: Option, given, inputs: Inputs, stdin):
+        from taucli import specs  # deferred: the spec readers and the records they read into (4 ms), only for a spec option
+
+        return getattr(specs, name)(option, given, inputs, stdin)
+
+    return read
+
+
+READERS = {FLAG: _flag, CHOICE: _choice, FILE: _file, COUNT: _count, TEXT: _as_given}
 READERS.update({kind: _repeated for kind in units.KINDS})
-READERS.update({VECTOR: specs.vectors, PARTICLE: specs.particles, COUPLE: specs.couples, BRAKE: specs.brakes, FACE: specs.faces})
+READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec("particles"), COUPLE: _spec("couples"), BRAKE: _spec("brakes"), FACE: _spec("faces")})

@@ -13,6 +13,7 @@ from taucli import units
 from taucli.errors import InputError
 from taucli.measurement import split
 from taucli.report import Value
+from taucli.table import Option
 
 
 @dataclass
@@ -54,3 +55,9 @@ class Inputs:
         spread = units.parse(parts[1], option + " (its uncertainty)", kind, sign="nonnegative", gravity=self.gravity).value
         self.uncertainties = {**(self.uncertainties or {}), key: spread}
         return parts[0]
+
+
+def word(option: Option, given) -> str:
+    if not isinstance(given, str):
+        raise InputError(option.name, f"expected one of {', '.join(option.choices)}", got=repr(given))
+    return given.strip()

@@ -15,7 +15,7 @@ from contextlib import contextmanager
 from dataclasses import replace
 from typing import NamedTuple, TextIO
 
-from taucli import plot, units
+from taucli import units
 from taucli.version import __version__
 from taucli.errors import InputError, did_you_mean
 from taucli.measurement import with_uncertainty
@@ -270,6 +270,8 @@ def document_steps(steps) -> list[dict]:
 def render(report: Report, output: Output, stream: TextIO) -> None:
     """Write the report in the format the user asked for."""
     report = prepared(report, output)
+    if output.charted:
+        from taucli import plot  # deferred: charts (2 ms, and plotille or matplotlib when drawn), only for --plot or --out
     chart = plot.motion_chart([("", report)], chart_units(report, output.to)) if output.drawn else None
     if output.get:
         if output.uncertainty:  # #22: a second column, the result's standard uncertainty

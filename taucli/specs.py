@@ -10,16 +10,10 @@ import re
 
 from taucli import units
 from taucli.errors import InputError
-from taucli.reading import Inputs
+from taucli.reading import Inputs, word
 from taucli.report import Value, fmt
 from taucli.scenes.given import PRESSURES, Brake, Couple, Face, Part, Particle
 from taucli.table import Option
-
-
-def word(option: Option, given) -> str:
-    if not isinstance(given, str):
-        raise InputError(option.name, f"expected one of {', '.join(option.choices)}", got=repr(given))
-    return given.strip()
 
 
 def coefficients(source: str, values: dict) -> tuple[float, float | None]:

@@ -15,7 +15,6 @@ from typing import NamedTuple
 from taucli.errors import InputError
 from taucli.report import fmt
 from taucli.scenes.assumed import Assumed
-from taucli.scenes.inertia import body_inertia
 
 DISC_NOTE = "pulley taken as a uniform solid disc (I = ½MR²); --pulley-shape ring for a thin ring"
 
@@ -78,6 +77,8 @@ def with_parts(pulley: Pulley, parts: Sequence, assumed: Assumed) -> Pulley:
     if pulley.inertia is not None and pulley.mass:
         raise InputError("pulley_inertia", "conflicts with {pulley_mass} and {pulley_shape}: give one description of the pulley")
     own_inertia = pulley.inertia if pulley.inertia is not None else Pulley.SHAPE_FACTORS[pulley.shape or "disc"] * pulley.mass * pulley.radius**2
+    from taucli.scenes.inertia import body_inertia  # deferred: bodies and the shapes' table (6 ms), only for a pulley of parts
+
     added = body_inertia(parts)
     assumed.notes.append(f"pulley: I = {fmt(own_inertia + added.inertia)} kg·m², {'the given pulley and ' if own_inertia else ''}{added.description}")
     return Pulley(0.0, pulley.radius, None, own_inertia + added.inertia, pulley.axle_friction)
