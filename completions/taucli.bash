@@ -186,6 +186,9 @@ _taucli() {
             --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --omega1) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --force) _taucli_units N kN lbf; return 0 ;;
+            --lever) _taucli_units m cm mm km in ft; return 0 ;;
+            --push-angle) _taucli_units deg rad rev; return 0 ;;
             --duration) _taucli_units s ms min h; return 0 ;;
             --brake) :; return 0 ;;
             --face) :; return 0 ;;
@@ -205,7 +208,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --duration --brake --face --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in

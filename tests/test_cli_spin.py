@@ -67,7 +67,6 @@ def test_power_law_drag_uses_rk45_under_auto(taucli):
         (("--omega0", "30"), ("--inertia", "--shape")),
         (("--inertia", "0.1", "--shape", "disc"), ("--inertia", "conflicts")),
         (("--inertia", "0.1", "--mass", "3kg"), ("--mass", "--shape")),
-        (("--inertia", "0.1", "--torque", "1", "--force", "3N", "--lever", "1m"), ("--torque", "conflicts")),
         (("--inertia", "0.1", "--force", "3N"), ("--lever", "required")),
         (("--inertia", "0.1", "--method", "midpoint"), ("--method", "rk45")),
         (("--inertia", "0.1", "--drag", "0.1", "--drag-exponent", "1.5", "--method", "exact", "--friction", "0.3", "--omega0", "3"), ("--method", "exact")),

@@ -63,6 +63,13 @@ BODY_OPTIONS = (
     PARTS,
 )
 
+# A push that makes (or adds to) the torque: spin-down and impulse. taucli.scenes.spin.steps.Push
+PUSH = (
+    Option("force", "force", "A push at --lever whose torque F·r·sin φ adds to --torque's (or is the torque), e.g. 6N.", sign="any"),
+    Option("lever", "length", "Distance of the push from the axle, e.g. 0.25m."),
+    Option("push_angle", "angle", "Angle between lever arm and force.", sign="any", default="90deg"),
+)
+
 GRAVITY = Option("g", "acceleration", "Gravity.", default="9.80665 m/s^2")
 
 METHOD = Option("method", CHOICE, " | ".join(METHOD_NAMES) + ".", panel=MOTION, choices=METHOD_NAMES, default="auto", metavar="METHOD")

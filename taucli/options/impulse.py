@@ -1,7 +1,7 @@
 """taucli impulse: angular impulse and momentum, τΔt = IΔω."""
 
 from taucli.names import QUADRATURE_NAMES
-from taucli.options.common import ANSWER, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, point_option
+from taucli.options.common import ANSWER, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
 from taucli.table import CHOICE, COUPLE, FILE, PARTICLE, Command, Option, Result
 
 MEETS = "Particles and bodies that meet it (L conserved)"
@@ -15,6 +15,7 @@ COMMAND = Command(
         Option("omega0", "angular velocity", "Angular velocity before.", sign="any"),
         Option("omega1", "angular velocity", "Angular velocity after.", sign="any"),
         Option("torque", "torque", "Constant torque while it acts.", sign="any"),
+        *PUSH,
         Option("duration", "time", "How long the torque acts."),
         BRAKE_OPTION,
         FACE_OPTION,

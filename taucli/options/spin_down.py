@@ -1,6 +1,6 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
-from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, METHOD, MOTION, RTOL, POINT_RESULTS, point_option, BRAKE_OPTION, FACE_OPTION, CONTACT_RESULTS
+from taucli.options.common import ANSWER, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
 from taucli.table import FLAG, Command, Option, Result
 
 COMMAND = Command(
@@ -11,9 +11,7 @@ COMMAND = Command(
         *BODY_OPTIONS,
         Option("omega0", "angular velocity", "Initial angular velocity, e.g. 300rpm.", sign="any", default="0", panel=MOTION),
         Option("torque", "torque", "Driving torque along +ω (negative: against it), e.g. 1.5N*m.", sign="any"),
-        Option("force", "force", "A push at --lever that makes the driving torque, e.g. 6N.", sign="any"),
-        Option("lever", "length", "Distance of the push from the axle, e.g. 0.25m."),
-        Option("push_angle", "angle", "Angle between lever arm and force.", sign="any", default="90deg"),
+        *PUSH,
         Option("friction", "torque", "Constant friction torque at the axle (also holds it at rest), e.g. 0.3N*m.", sign="nonnegative"),
         BRAKE_OPTION,
         FACE_OPTION,

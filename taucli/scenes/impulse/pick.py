@@ -15,6 +15,7 @@ from taucli.scenes.impulse.meeting import solve_meeting
 from taucli.scenes.impulse.point import point_after
 from taucli.scenes.impulse.sampled import solve_profile
 from taucli.scenes.inertia import body
+from taucli.scenes.push import Push, drive_steps
 
 
 def impulse(
@@ -22,6 +23,9 @@ def impulse(
     omega0: float | None = None,
     omega1: float | None = None,
     torque: float | None = None,
+    force: float | None = None,
+    lever: float | None = None,
+    push_angle: float | None = None,
     duration: float | None = None,
     inertia_final: float | None = None,
     torque_profile: Iterable[tuple[float, float]] | None = None,
@@ -41,14 +45,17 @@ def impulse(
     The model, by what is given: --brake or --face, a constant torque against friction
     (braked); --particle or --couple, L conserved as they meet the body (meeting);
     --inertia-final, I₀ω₀ = I₁ω₁ (changing_inertia); --torque-profile, J = ∫τ dt (sampled);
-    else τΔt = I(ω₁ − ω₀) (balance). Each refuses what does not belong to it, then solves."""
+    else τΔt = I(ω₁ − ω₀) (balance). Each refuses what does not belong to it, then solves.
+    A push (--force at --lever) adds its torque F r sin φ to --torque's."""
     if at is not None:
-        report = impulse(omega0=omega0, omega1=omega1, torque=torque, duration=duration, inertia_final=inertia_final,
+        report = impulse(omega0=omega0, omega1=omega1, torque=torque, force=force, lever=lever, push_angle=push_angle, duration=duration, inertia_final=inertia_final,
                          torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, g=g, **body_options)
-        given = {"omega0": omega0, "omega1": omega1, "torque": torque, "duration": duration, "inertia": _body(body_options)[0]}
+        given = {"omega0": omega0, "omega1": omega1, "torque": _with_push(torque, force, lever, push_angle)[0], "duration": duration, "inertia": _body(body_options)[0]}
         return point_after(report, at, body_options.get("radius", body_options.get("outer_radius")), given)
 
     inertia, inertia_steps = _body(body_options)
+    torque, formed = _with_push(torque, force, lever, push_angle)
+    inertia_steps = (*inertia_steps, *formed)
     if brake or face:
         _check_braked(method, g, face, inertia, omega1, torque, duration,
                       {"inertia_final": inertia_final, "torque_profile": torque_profile, "particle": particle or None, "couple": couple or None})
@@ -82,6 +89,18 @@ def _body(body_options: dict) -> tuple[float | None, Sequence[Step]]:
     """The body's moment of inertia and the steps that found it, or (None, ()) where no body is given."""
     given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     return body(**body_options) if given else (None, ())
+
+
+def _with_push(torque: float | None, force: float | None, lever: float | None, push_angle: float | None) -> tuple[float | None, list[Step]]:
+    """The torque with a push's added (--force at --lever, at --push-angle), and the steps that form it."""
+    if force is None and lever is None and push_angle is None:
+        return torque, []
+    if force is None:
+        raise InputError("force", "is required with {lever}", example="{force} 6N")
+    if lever is None:
+        raise InputError("lever", "is required with {force}", example="{lever} 0.2m")
+    push = Push(force, lever) if push_angle is None else Push(force, lever, push_angle)
+    return (torque or 0.0) + push.torque, drive_steps(push, torque)
 
 
 def _at_rest_unless_given(omega0: float | None, assumed: Assumed) -> float:

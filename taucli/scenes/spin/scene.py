@@ -24,7 +24,8 @@ from taucli.scenes.spin.constant_alpha import constant_alpha_report
 from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_contacts
 from taucli.scenes.spin.point import with_point
 from taucli.scenes.spin.power import power_report
-from taucli.scenes.spin.steps import Push, Torques, push_step
+from taucli.scenes.push import Push, drive_steps
+from taucli.scenes.spin.steps import Torques
 from taucli.scenes.spin.torque_laws import drive_for_target, solve
 from taucli.table import Results
 
@@ -96,15 +97,13 @@ def spin_down(
     omega0 = _initial_speed(wheel, omega0, rim_speed, ke0, front)
     if until_arc is not None:
         until_angle = _angle_of_arc(until_arc, until_angle, wheel.rim, front)
-    push = _push(torque, force, lever, push_angle)
-    drive = push.torque if push is not None else torque or 0.0
+    push = _push(force, lever, push_angle)
+    drive = (torque or 0.0) + (push.torque if push is not None else 0.0)
     assumed, axle = Assumed(), friction or 0.0
     contact = put_contacts(brake or (), face or (), body_options, wheel.rim, assumed, g, front.results, front.steps, front.notes, axle) if brake or face else None
     friction = axle + contact.kinetic if contact is not None else friction
     static = None if contact is None or contact.static == contact.kinetic else axle + contact.static
     torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent, static)
-    if push is not None:
-        front.steps.append(push_step(push))
     targets = {"time": time, "until_omega": until_omega, "until_angle": until_angle}
 
     # The model: constant α, a motor of constant power, the drive that meets a target in a time, or the torque laws.
@@ -122,7 +121,7 @@ def spin_down(
             raise InputError("in_time", "asks for the drive torque that meets the target, so it conflicts with a drive ({torque}, {force}, {power})")
         report, targets, torques = _in_time(wheel, torques, omega0, in_time, targets, front, method, dt, rtol)
     else:
-        report = _under_torques(wheel, torques, omega0, targets, front, push, method, dt, rtol, energy or ke0 is not None)
+        report = _under_torques(wheel, torques, omega0, targets, front, drive_steps(push, torque), method, dt, rtol, energy or ke0 is not None)
 
     report = assumed.applied(with_contacts(split_contacts(_with_parts(report, wheel.parts), axle, contact), contact))
     if at is None:
@@ -181,12 +180,10 @@ def _angle_of_arc(until_arc: float, until_angle: float | None, rim: float, front
     return until_angle
 
 
-def _push(torque: float | None, force: float | None, lever: float | None, push_angle: float | None) -> Push | None:
-    """The push --force at --lever (--push-angle) that makes the drive, where one is given."""
+def _push(force: float | None, lever: float | None, push_angle: float | None) -> Push | None:
+    """The push --force at --lever (--push-angle), where one is given: its torque adds to --torque's."""
     if force is None and lever is None and push_angle is None:
         return None
-    if torque is not None:
-        raise InputError("torque", "conflicts with {force} and {lever}: give the torque, or the push that makes it")
     if force is None:
         raise InputError("force", "is required with {lever}", example="{force} 6N")
     if lever is None:
@@ -226,12 +223,13 @@ def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: di
                        f"τ = {quantity_text(torques.drive, 'N*m')}")
     front.results.put("torque", torques.drive, " that meets the target")
     targets = {"time": in_time, "until_omega": None, "until_angle": None}
-    return _under_torques(wheel, torques, omega0, targets, front, None, method, dt, rtol, True), targets, torques
+    return _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), targets, torques
 
 
-def _under_torques(wheel: Wheel, torques: Torques, omega0, targets: dict, front: Front, push, method, dt, rtol, energy: bool) -> Report:
-    """The torque laws: the wheel's motion under its drive, friction and drag (torque_laws.solve)."""
-    report = solve(wheel.inertia, torques, omega0 or 0.0, **targets, method=method, dt=dt, rtol=rtol, push=push, inertia_steps=wheel.steps, energy=energy)
+def _under_torques(wheel: Wheel, torques: Torques, omega0, targets: dict, front: Front, formed: list, method, dt, rtol, energy: bool) -> Report:
+    """The torque laws: the wheel's motion under its drive (``formed``: the steps that formed it),
+    friction and drag (torque_laws.solve)."""
+    report = solve(wheel.inertia, torques, omega0 or 0.0, **targets, method=method, dt=dt, rtol=rtol, drive_steps=formed, inertia_steps=wheel.steps, energy=energy)
     if "torque" in front.results:
         front.results.put("torque_net", report.results["alpha0"].value * wheel.inertia, " at the start")
     return _with_front(report, front.results, front.notes, front.steps)
@@ -263,5 +261,5 @@ def _with_front(report: Report, front: Results, notes: Sequence[str] = (), steps
     merged_steps = list(report.steps)
     if steps:
         body_count = next((i for i, step in enumerate(merged_steps) if step.title.startswith(("Torque of the push", "Net torque"))), 0)
-        merged_steps[body_count:body_count] = [s for s in steps if s.title != "Torque of the push"]
+        merged_steps[body_count:body_count] = steps
     return Report(report.scene, report.model, report.method, results, merged_steps, [*notes, *report.notes], report.inputs, report.tables, report.trajectory)

@@ -1,4 +1,4 @@
-"""What the models of spin-down share: the torques, the push that makes a drive, and the worked
+"""What the models of spin-down share: the torques, and the worked
 steps of constant-α kinematics (the stop, ω and θ at t, the turn back after a stop).
 
     τ_net = τ_drive − τ_f − bω − kωⁿ,  α = τ_net/I,  t_stop = ω₀/|α|,  θ = ω₀t + ½αt²
@@ -7,7 +7,6 @@ steps of constant-α kinematics (the stop, ω and θ at t, the turn back after a
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from taucli.report import Step, Trajectory, fmt, quantity_text, term
 from taucli.scenes.motion import Loads
@@ -15,18 +14,6 @@ from taucli.table import Results
 
 Torques = Loads  # for a wheel the loads are torques: drive, friction, viscous b, drag k
 TWO_PI = 2 * math.pi
-
-
-@dataclass(frozen=True)
-class Push:
-    """A tangential push that makes the driving torque: τ = F r sin φ."""
-    force: float
-    lever: float
-    angle: float = math.pi / 2
-
-    @property
-    def torque(self) -> float:
-        return self.force * self.lever * math.sin(self.angle)
 
 
 def net_torque_steps(torques: Torques, omega0: float, alpha0: float, inertia: float, held: bool) -> tuple[Step, Step]:
@@ -81,20 +68,6 @@ def put_angles(results: Results, theta: float, turned_back_at: float | None, tim
         total = abs(turned_back_at) + abs(theta - turned_back_at)
         results.put("theta_total", total, label)
         results.put("revs_total", total / TWO_PI, label)
-
-
-def push_step(push: Push) -> Step:
-    at_right_angle = math.isclose(push.angle, math.pi / 2)
-    return Step(
-        "Torque of the push",
-        "τ = F r" if at_right_angle else "τ = F r sin φ",
-        f"{quantity_text(push.force, 'N')} × {quantity_text(push.lever, 'm')}"
-        + ("" if at_right_angle else f" × sin {fmt(math.degrees(push.angle))}°"),
-        quantity_text(push.torque, "N*m"),
-        "the force is tangential, perpendicular to the radius, so all of it turns the wheel"
-        if at_right_angle
-        else "only the part of the force perpendicular to the lever arm makes torque",
-    )
 
 
 def stop_steps(w0: float, alpha: float, stop: tuple[float, float]) -> list[Step]:

@@ -28,11 +28,9 @@ from taucli.scenes.spin.energy import energy_steps, put_energy
 from taucli.scenes.spin.methods import choose_method, error_estimate, method_answers
 from taucli.scenes.spin.steps import (
     TWO_PI,
-    Push,
     Torques,
     after_time_steps,
     net_torque_steps,
-    push_step,
     put_angles,
     revolutions_step,
     stop_steps,
@@ -66,7 +64,7 @@ def solve(
     method: str = "auto",
     dt: float | None = None,
     rtol: float | None = None,
-    push: Push | None = None,
+    drive_steps: Sequence[Step] = (),
     inertia_steps: Sequence[Step] = (),
     estimate_error: bool = True,
     energy: bool = False,
@@ -145,7 +143,7 @@ def solve(
             tables["error_estimate"], worst = estimate
             described += f"; estimated error at most {fmt(worst, 2)} relative" if worst is not None else ""
 
-    steps = DeferredSteps(_steps, inertia_steps, push, torques, omega0, alpha0, inertia, motion, dict(results), time, until_angle, chosen)
+    steps = DeferredSteps(_steps, inertia_steps, drive_steps, torques, omega0, alpha0, inertia, motion, dict(results), time, until_angle, chosen)
     if chosen.name != "exact" and method == "auto":
         notes.append(f"no closed form for drag kω^{fmt(torques.drag_exponent)} with these torques: integrated numerically")
     model = _model(torques, chosen)
@@ -155,13 +153,11 @@ def solve(
     return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
 
 
-def _steps(inertia_steps, push: Push | None, torques: Torques, omega0: float, alpha0: float, inertia: float, motion, results: dict,
+def _steps(inertia_steps, drive_steps: Sequence[Step], torques: Torques, omega0: float, alpha0: float, inertia: float, motion, results: dict,
            time: float | None, until_angle: float | None, chosen: Method) -> list[Step]:
-    """The worked solution: the body, the push, τ_net and α at the start, then the motion's
+    """The worked solution: the body, the drive (a push), τ_net and α at the start, then the motion's
     kinematics (the stop, ω and θ at t, the time to an angle) and the energy."""
-    steps = list(inertia_steps)
-    if push is not None:
-        steps.append(push_step(push))
+    steps = [*inertia_steps, *drive_steps]
     steps.extend(net_torque_steps(torques, omega0, alpha0, inertia, motion.held_from_start))
     if not motion.held_from_start:
         steps.extend(_kinematics_steps(torques, motion.first, motion.second, motion.stop, results, time, chosen, omega0))
