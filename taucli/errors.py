@@ -82,6 +82,12 @@ class InputError(TaucliError, ValueError):
 _PARAMETER = re.compile(r"[a-z][a-z0-9_]*")
 
 
+class Unused(InputError):
+    """An option the scene has no use for with these inputs (--g with no weight to hold up). The
+    pipeline passes it over instead where the reading of another input used it (a weight given
+    for a mass, read with --g)."""
+
+
 def out_of_range() -> InputError:
     """What an OverflowError from a solver means: inputs so large (or small) that a result passes
     the largest double. Float ``**`` and math functions raise where ``*`` would give inf."""

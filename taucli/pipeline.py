@@ -11,6 +11,7 @@ from collections.abc import Callable, Mapping
 from functools import lru_cache
 from typing import TextIO
 
+from taucli.errors import Unused
 from taucli.inputs import read
 from taucli.report import Report
 from taucli.table import Command, spelled
@@ -36,7 +37,13 @@ def solve(
     command line: its flag; Python and batch: the name).
     """
     arguments, inputs = read(command, given, stdin=stdin)
-    report = library(command.library)(**arguments)
+    solver = library(command.library)
+    try:
+        report = solver(**arguments)
+    except Unused as unused:
+        if unused.option != "g" or not inputs.gravity_used:
+            raise
+        report = solver(**{name: value for name, value in arguments.items() if name != "g"})  # --g read a weight as a mass: it is used
     # the library's report is made for this call alone: completed in place (a batch line makes one per line)
     report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
     report.inputs = {**inputs.values, **report.inputs}

@@ -23,6 +23,7 @@ class Inputs:
     values: dict[str, Value] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
     gravity: float | None = None  # the scene's --g, for a weight given as a mass
+    gravity_used: bool = False  # a weight was read as a mass with the scene's --g
     uncertainties: dict[str, float] | None = None  # "4.0+/-0.1 kg": each σ in SI (taucli.measurement)
 
     def quantity(self, name: str, given, kind: str, *, sign: str = "positive", key: str | None = None) -> float | None:
@@ -38,6 +39,7 @@ class Inputs:
                 given = self._uncertain(given, option, kind, key or name)
             parsed = units.parse(given, option, kind, sign=sign, gravity=self.gravity)
             value, note = parsed.value, parsed.note
+            self.gravity_used = self.gravity_used or (parsed.weight and self.gravity is not None)
         elif isinstance(given, (int, float)) and not isinstance(given, bool):
             value, note = units.si_number(given, option, kind, sign=sign), None
         else:

@@ -121,7 +121,7 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
             if value.value is None:
                 continue
             raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to I=g*cm^2")
-        converted, note = units.converted(float(value.value), value.unit, unit, "--to")
+        converted, note = units.converted(float(value.value), value.unit, unit, "--to")[:2]
         results[name] = value._replace(value=converted, unit=unit)
         spreads = getattr(report, "uncertainties", None)
         if spreads and name in spreads:  # #22: the uncertainty in the same unit (units scale, none is offset)

@@ -35,6 +35,7 @@ class Parsed(NamedTuple):
 
     value: float
     note: str | None = None
+    weight: bool = False  # a weight read as a mass, W/g: the reading used gravity
 
 
 def _factor_key(unit: str, kind: Kind) -> str:
@@ -176,7 +177,7 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive", gra
             raise InputError(option, "is a weight, which needs a positive gravity to give a mass", example="--g 9.81", got=f"g = {g!r}")
         value /= g
     _check(value, text, option, kind, sign)
-    return Parsed(value, _note(option, text.strip(), reading, value, gravity, kind))
+    return Parsed(value, _note(option, text.strip(), reading, value, gravity, kind), reading.how == WEIGHT)
 
 
 def _check(value: float, text: str, option: str, kind: Kind, sign: str) -> None:

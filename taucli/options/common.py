@@ -71,6 +71,7 @@ PUSH = (
 )
 
 GRAVITY = Option("g", "acceleration", "Gravity.", default="9.80665 m/s^2")
+GRAVITY_FOR_WEIGHTS = Option("g", "acceleration", "Gravity, to read a weight given for a mass (--mass 490N).", default="9.80665 m/s^2")
 
 METHOD = Option("method", CHOICE, " | ".join(METHOD_NAMES) + ".", panel=MOTION, choices=METHOD_NAMES, default="auto", metavar="METHOD")
 DT = Option("dt", "time", "Fixed step for euler and rk4.", panel=MOTION, default="1 ms")

@@ -1,6 +1,6 @@
 """taucli inertia: the moment of inertia of a shape, shifted, or of a body of several parts."""
 
-from taucli.options.common import ANSWER, AXIS, DIMENSIONS, MASS, OFFSET, PARTS, SHAPE_WORDS
+from taucli.options.common import ANSWER, AXIS, DIMENSIONS, GRAVITY_FOR_WEIGHTS, MASS, OFFSET, PARTS, SHAPE_WORDS
 from taucli.table import CHOICE, Command, Option, Result
 from taucli.names import SHAPE_NAMES
 
@@ -15,6 +15,7 @@ COMMAND = Command(
         AXIS,
         OFFSET,
         PARTS,
+        GRAVITY_FOR_WEIGHTS,
     ),
     results=(
         Result("I", "kg*m**2", "moment of inertia about the rotation axis"),

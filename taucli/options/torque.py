@@ -1,6 +1,6 @@
 """taucli torque: torque τ = r × F and angular momentum L = r × p as vectors about a point."""
 
-from taucli.options.common import ANSWER
+from taucli.options.common import ANSWER, GRAVITY_FOR_WEIGHTS
 from taucli.table import VECTOR, Command, Option, Result
 
 FORCES = "Forces (τ = r × F)"
@@ -28,6 +28,7 @@ COMMAND = Command(
         Option("mass", "mass", "A particle's mass (repeatable, one for each --velocity).", repeatable=True, panel=PARTICLES),
         Option("velocity", VECTOR, 'A particle\'s velocity, e.g. "0,2,0 m/s" (repeatable).',
                repeatable=True, of="velocity", metavar='"X,Y,Z UNIT"', sign="any", panel=PARTICLES),
+        GRAVITY_FOR_WEIGHTS,
     ),
     results=(
         Result("tau_x", "N*m", "torque, x component…"),

@@ -13,7 +13,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from taucli import units
-from taucli.errors import InputError
+from taucli.errors import InputError, Unused
 from taucli.options.inertia import COMMAND as TABLE
 from taucli.report import Report, Step, Table, fmt, quantity_text
 from taucli.scenes.given import Part
@@ -296,8 +296,12 @@ def main_part(shape: str | None, mass: float | None, axis: str | None, offset: f
     return Part(found.name, mass, {name: value for name, value in dims.items() if value is not None}, axis, offset)
 
 
-def inertia(*, shape: str | None = None, mass: float | None = None, axis: str | None = None, offset: float | None = None, part: Sequence[Part] = (), **dims: float | None) -> Report:
-    """``taucli inertia``: a shape's moment of inertia (shifted by --offset), or a body of parts."""
+def inertia(*, shape: str | None = None, mass: float | None = None, axis: str | None = None, offset: float | None = None, part: Sequence[Part] = (),
+            g: float | None = None, **dims: float | None) -> Report:
+    """``taucli inertia``: a shape's moment of inertia (shifted by --offset), or a body of parts.
+    --g serves only to read a weight given for a mass (--mass 490N)."""
+    if g is not None:
+        raise Unused("g", "is used only to read a weight given for a mass", example="{mass} 490N {g} 9.8m/s^2")
     return solve([main_part(shape, mass, axis, offset, dims), *part])
 
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.errors import InputError, Unused
 from taucli.options.torque import COMMAND as TABLE
 from taucli.report import Report, Step, Table, fmt, pretty_unit, quantity_text, term
 from taucli.scenes.angles import sin_exact
@@ -113,9 +113,12 @@ def torque(
     angle: tuple | None = None,
     mass: tuple | None = None,
     velocity: tuple | None = None,
+    g: float | None = None,
 ) -> Report:
     """``taucli torque``: τ = r × F for each force and their sum; L = r × mv for each particle and
-    their sum; or τ = r F sin θ in the plane."""
+    their sum; or τ = r F sin θ in the plane. --g serves only to read a weight given for a mass."""
+    if g is not None:
+        raise Unused("g", "is used only to read a weight given for a mass", example="{mass} 10N {g} 9.8m/s^2")
     r, force, lever, angle, mass, velocity = (tuple(x or ()) for x in (r, force, lever, angle, mass, velocity))
     if not force and not velocity:
         if mass:

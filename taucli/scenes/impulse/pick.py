@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 
-from taucli.errors import InputError
+from taucli.errors import InputError, Unused
 from taucli.report import Report, Step
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.given import Brake, Couple, Face, Particle
@@ -64,7 +64,7 @@ def impulse(
         gravity = assumed.gravity(g) if any(plate.force is None for plate in face) else None
         return assumed.applied(solve_braked(inertia, omega0, torque, duration, tuple(brake), tuple(face), gravity, body_options, inertia_steps=inertia_steps))
     if g is not None:
-        raise InputError("g", "is used only for the weight on a {face} with no force=")
+        raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     if particle or couple:
         _check_meeting("particle" if particle else "couple", method, inertia,
                        {"omega1": omega1, "torque": torque, "duration": duration, "inertia_final": inertia_final, "torque_profile": torque_profile})
@@ -117,7 +117,7 @@ def _check_braked(method: str, g: float | None, faces: Sequence[Face], inertia: 
     if method != "auto":
         raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); a braked impulse has a closed form")
     if g is not None and not any(plate.force is None for plate in faces):
-        raise InputError("g", "is used only for the weight on a {face} with no force=")
+        raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     for name, value in others.items():
         if value is not None:
             raise InputError(name, "does not combine with {brake} or {face} here: they act with a constant {torque} over {duration}")

@@ -14,7 +14,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
-from taucli.errors import InputError
+from taucli.errors import InputError, Unused
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, Table, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
@@ -91,7 +91,7 @@ def spin_down(
     if power == 0:
         power = None  # a motor of no power is no motor
     if g is not None and not any(plate.force is None for plate in face or ()):
-        raise InputError("g", "is used only for the weight on a {face} with no force=")
+        raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     wheel = _wheel(body_options, rim_speed, until_arc, at)
     front = Front()
     omega0 = _initial_speed(wheel, omega0, rim_speed, ke0, front)
