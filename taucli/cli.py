@@ -165,7 +165,9 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         json_lines=bool(asked["jsonl"]),
         uncertainty=bool(asked["uncertainty"]),
     )
-    _point_at_the_rim(command, scene_given, {*output.get, *(asked["y"] or ()), *(to.partition("=")[0].strip() for to in output.to)})
+    named = {*output.get, *(asked["y"] or ()), *(to.partition("=")[0].strip() for to in output.to)}
+    _point_at_the_rim(command, scene_given, named)
+    _turn_on_what_makes(command, scene_given, named)
     if output.plot and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
     if asked["y"] and swept_range is None:
@@ -180,7 +182,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         return answer.solve(command, options, stdin=env.stdin, spell=command.flag, **finding)
 
     if swept_range is None and swept_list is None:
-        render.render(solve(scene_given), output, env.stdout)
+        render.render(solve(scene_given), output, env.stdout, env.stderr)
         return int(ExitStatus.OK)
     from taucli import sweep  # deferred: as above
 
@@ -194,6 +196,14 @@ def _point_at_the_rim(command: Command, given: dict, asked: set) -> None:
     the scene finds, or refuses where the body has no one radius."""
     if command.option("at") is not None and given.get("at") is None and asked & {result.key for result in POINT_RESULTS}:
         given["at"] = "rim"
+
+
+def _turn_on_what_makes(command: Command, given: dict, asked: set) -> None:
+    """A result named in --get, --y or --to is made: the flag that makes it (--energy for KE0) is
+    turned on, as if given."""
+    for option in command.options:
+        if option.makes and not given.get(option.name) and asked & set(option.makes):
+            given[option.name] = True
 
 
 def _whole_number(command: Command, text: Optional[str], name: str = "points") -> Optional[int]:

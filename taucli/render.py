@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import io
 import json
+import re
 import math
 import os
 import shutil
@@ -267,8 +268,9 @@ def document_steps(steps) -> list[dict]:
     return [{"title": s.title, "equation": s.equation, "numbers": s.numbers, "result": s.result, "why": s.why} for s in steps]
 
 
-def render(report: Report, output: Output, stream: TextIO) -> None:
-    """Write the report in the format the user asked for."""
+def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | None = None) -> None:
+    """Write the report in the format the user asked for. A result --get prints as null has its
+    reason (the notes that name it, else every note) written to ``notes_to``."""
     report = prepared(report, output)
     if output.charted:
         from taucli import plot  # deferred: charts (2 ms, and plotille or matplotlib when drawn), only for --plot or --out
@@ -279,6 +281,8 @@ def render(report: Report, output: Output, stream: TextIO) -> None:
             stream.write("".join(bare(named_result(report, name, "--get").value) + " " + _spread(report, name, spreads) + "\n" for name in output.get))
         else:
             stream.write("".join(bare(named_result(report, name, "--get").value) + "\n" for name in output.get))
+        if notes_to is not None:
+            _why_null(report, output.get, notes_to)
     elif output.json:
         stream.write(document_text(report, steps=output.steps, plot=plot.plot_document(report) if output.charted else None) + "\n")
     else:
@@ -289,6 +293,19 @@ def render(report: Report, output: Output, stream: TextIO) -> None:
     if output.out is not None:
         plot.write_file(chart, output.out)
     stream.flush()
+
+
+def _why_null(report: Report, names, stream: TextIO) -> None:
+    """For each result --get printed as null, the notes that say why: those that name it, else all."""
+    missing = [name for name in dict.fromkeys(names) if report.results[name].value is None]
+    said: list[str] = []
+    for name in missing:
+        naming = [note for note in report.notes if re.search(rf"(?<![\w.]){re.escape(name)}(?![\w])", note)]
+        said += [note for note in (naming or report.notes) if note not in said]
+        if not naming and not report.notes:
+            said.append(f"{name}: no value with these inputs")
+    if said:
+        stream.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in said))
 
 
 def _spread(report: Report, name: str, spreads: Mapping[str, float]) -> str:

@@ -40,8 +40,10 @@ COMMAND = Command(
         Option(
             "energy", FLAG,
             "Also report the kinetic energy, the work of the drive and of each loss (to --time or the stop) and their power "
-            "(always with --alpha, --in-time, --power or --ke0).",
+            "(always with --alpha, --in-time, --power or --ke0; --get KE and the like turn it on).",
             panel=MOTION,
+            makes=("KE0", "KE", "work_drive", "work_friction", "work_viscous", "work_drag", "work_brake", "work_face",
+                   "power", "power_mean", "power_friction", "power_viscous", "power_drag", "power_brake", "power_face"),
         ),
         METHOD,
         DT,

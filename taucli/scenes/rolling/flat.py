@@ -96,25 +96,29 @@ def _skid_trajectory(v0: float, v_roll: float, t_roll: float) -> Trajectory:
 
 
 def solve_rolling_flat(roller: Roller, v0: float) -> Report:
-    """A body rolling without slipping on the flat at v0: KE = ½ m v² (1 + k²), nothing changes."""
+    """A body rolling without slipping on the flat at v0: nothing changes (a = 0, α = 0, no friction
+    needed), ω = v/R, KE = ½ m v² (1 + k²) where the mass is given."""
     k2, mass, radius = roller.k2, roller.mass, roller.radius
-    if mass is None:
-        raise InputError("mass", "is required: on the flat, {v0} alone is a body rolling at v0, and its kinetic energy needs the mass "
-                         "(a ball skidding from no spin: give {mu_k})", example="{mass} 2kg")
     results = Results(TABLE)
+    results.put("a", 0.0)
+    results.put("alpha", 0.0)
     results.put("omega", None if radius is None else v0 / radius, ", rolling")
-    ke_trans = 0.5 * mass * v0 * v0
+    ke_trans = None if mass is None else 0.5 * mass * v0 * v0
     results.put("KE_trans", ke_trans, ", rolling")
-    results.put("KE_rot", k2 * ke_trans, ", rolling")
-    results.put("KE", (1 + k2) * ke_trans, ", rolling")
+    results.put("KE_rot", None if mass is None else k2 * ke_trans, ", rolling")
+    results.put("KE", None if mass is None else (1 + k2) * ke_trans, ", rolling")
     notes = ["on the flat, {v0} alone: rolling without slipping (ω = v/R); with {mu_k} it skids from no spin ({omega0} for a spin)"]
     if radius is None:
         notes.append("omega: give --radius (the energies do not need it)")
+    if mass is None:
+        notes.append("KE_trans, KE_rot, KE: give --mass (the motion does not need it)")
     steps = [
+        Step("Rolling steadily", "a = 0,  α = a/R = 0", "", "a = 0 m/s², α = 0 rad/s²", "on the flat nothing pushes the body along: it rolls at a steady speed, and friction has nothing to do"),
         Step("Rolling without slipping", "ω = v / R", "", "" if radius is None else quantity_text(v0 / radius, "rad/s"), "the contact point is at rest"),
-        Step("Kinetic energy", "KE = ½ m v² + ½ I ω² = ½ m v² (1 + k²)", f"½ × {term(mass, 'kg')} × ({term(v0, 'm/s')})² × (1 + {fmt(k2)})", quantity_text((1 + k2) * ke_trans, "J"),
-             f"I ω² = k² m R² (v/R)² = k² m v²: a share k²/(1 + k²) = {fmt(100 * k2 / (1 + k2), 3)}% is rotation"),
     ]
+    if mass is not None:
+        steps.append(Step("Kinetic energy", "KE = ½ m v² + ½ I ω² = ½ m v² (1 + k²)", f"½ × {term(mass, 'kg')} × ({term(v0, 'm/s')})² × (1 + {fmt(k2)})",
+                          quantity_text((1 + k2) * ke_trans, "J"), f"I ω² = k² m R² (v/R)² = k² m v²: a share k²/(1 + k²) = {fmt(100 * k2 / (1 + k2), 3)}% is rotation"))
     model = f"{roller.description} (k² = {fmt(k2)}) rolling without slipping on the flat"
     return Report("rolling", model, "closed form", results, steps, notes)
 

@@ -109,6 +109,8 @@ def constant_alpha_report(
                 notes.append(f"ω = {quantity_text(until_omega, 'rad/s')} is reached only after the wheel has stopped and turned back")
             results.put("t_until", t, f" ω = {fmt(until_omega)} rad/s")
             results.put("theta_until", None if t is None else motion.theta(t), f" ω = {fmt(until_omega)} rad/s")
+            if time is None:
+                end = t  # the energy, power and work at the target
         if until_angle is not None:
             t = _first_time_at_angle(motion, until_angle, notes)
             part = f" θ = {fmt(until_angle)} rad"

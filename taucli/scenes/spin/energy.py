@@ -15,9 +15,11 @@ from taucli.scenes.spin.steps import Torques
 from taucli.table import Results
 
 
-def put_energy(motion, inertia: float, torques: Torques, omega0: float, time: float | None, results: Results, notes: list[str]) -> None:
-    """KE0, and KE with the work of the drive and of each loss up to --time (or the stop), and
-    the power of each at --time (or the start).
+def put_energy(motion, inertia: float, torques: Torques, omega0: float, time: float | None, results: Results, notes: list[str],
+               target: tuple[float | None, float | None, str] | None = None) -> None:
+    """KE0, and KE with the work of the drive and of each loss up to --time, else up to the target
+    (--until-omega, --until-angle), else to the stop; and the power of each then (else at the start).
+    ``target`` is (the time it is reached, or None; ω there where it is given exactly; its words).
 
     In each stretch of motion one way (a phase, ω ≥ 0 in its frame) I dω/dt = A − bω − kωⁿ with
     A = ±τ_drive − τ_f; times ω and integrated, ½I(ω_b² − ω_a²) = A·d − W_viscous − W_drag over
@@ -28,13 +30,21 @@ def put_energy(motion, inertia: float, torques: Torques, omega0: float, time: fl
     n = torques.drag_exponent
     results.put("KE0", inertia * omega0 * omega0 / 2)
     stop = motion.stop
+    if time is None and target is not None:
+        reached, omega_there, words = target
+        if reached is None:
+            notes.append(f"KE, work and power at the target: the wheel never reaches {words}")
+            return
+        time, at_words, by_words = reached, f" at {words}", f" until {words}"
+    else:
+        omega_there, at_words, by_words = None, (None if time is None else f" at t = {fmt(time)} s"), (None if time is None else f" by t = {fmt(time)} s")
     end = time if time is not None else (stop[0] if stop is not None and not motion.held_from_start else None)
     if end is not None:
-        omega_end = motion.state_at(end)[0] if time is not None else 0.0
-        results.put("KE", inertia * omega_end * omega_end / 2, " at the stop" if time is None else f" at t = {fmt(end)} s")
+        omega_end = (omega_there if omega_there is not None else motion.state_at(end)[0]) if time is not None else 0.0
+        results.put("KE", inertia * omega_end * omega_end / 2, " at the stop" if time is None else at_words)
     at = 0.0 if time is None else time
-    omega_at = motion.state_at(at)[0]
-    when = " at the start" if time is None else f" at t = {fmt(at)} s"
+    omega_at = omega_there if omega_there is not None else motion.state_at(at)[0]
+    when = " at the start" if time is None else at_words
     if torques.drive:
         results.put("power", torques.drive * omega_at, when)
     if torques.friction:
@@ -47,7 +57,7 @@ def put_energy(motion, inertia: float, torques: Torques, omega0: float, time: fl
         if not motion.held_from_start:
             notes.append("KE and work: the wheel never stops, so give {time} to say up to when")
         return
-    by = f" by t = {fmt(end)} s" if time is not None else " until it stops"
+    by = by_words if time is not None else " until it stops"
     work = {"drive": 0.0, "friction": 0.0, "viscous": 0.0, "drag": 0.0}
     segments = []
     if not motion.held_from_start:

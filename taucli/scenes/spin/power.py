@@ -209,7 +209,9 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
             at, omega_at = reached
     when = " at the start" if at is None else f" at t = {fmt(at)} s"
     results.put("torque", power / omega_at if omega_at else None, when)
-    results.put("power", power if omega_at or power > 0 else 0.0, when)
+    # the load drains P right up to the stop; once the wheel is at rest nothing turns and nothing is drained
+    resting = power < 0 and (omega0 == 0 or (stop is not None and at is not None and at > stop[0]))
+    results.put("power", 0.0 if resting else power, when)
     results.put("KE0", inertia * omega0 * omega0 / 2)
     end = at if at is not None else (stop[0] if stop is not None else None)
     if end is not None:
@@ -244,7 +246,8 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
             steps.append(Step("Time to reach ω₁", "t = I(ω₁ − ω₀)(ω₁ + ω₀)/(2P)",
                               f"{term(inertia, 'kg*m**2')} × ({term(until_omega, 'rad/s')} − {term(omega0, 'rad/s')}) × ({term(until_omega, 'rad/s')} + {term(omega0, 'rad/s')}) / (2 × {term(power, 'W')})",
                               quantity_text(results["t_until"].value, "s"), "the energy ½I(ω₁² − ω₀²) delivered at the rate P"))
-        model = "constant power P (τ = P/ω), no losses: ½Iω² grows linearly in time"
+        model = ("constant power P (τ = P/ω), no losses: ½Iω² grows linearly in time" if power > 0
+                 else "a load of constant power P < 0 (τ = P/ω), no losses: ½Iω² falls linearly in time, to rest")
     else:
         steps.append(Step("Integrate the equation of motion", "I dω/dt = P/ω − τ_f − bω − kωⁿ,  dθ/dt = ω", chosen.name, "",
                           "no closed form exists for a constant power against these losses"))

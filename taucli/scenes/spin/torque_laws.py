@@ -50,7 +50,9 @@ def _model(torques: Torques, method: Method) -> str:
         return "exponential approach to a steady speed (viscous torque bω)"
     if torques.drive:
         return "uniform angular acceleration (constant torques)"
-    return "uniform deceleration (constant friction torque)"
+    if torques.friction:
+        return "uniform deceleration (constant friction torque)"
+    return "no torque: the wheel keeps its angular velocity (τ_net = 0, α = 0)"
 
 
 def solve(
@@ -131,7 +133,12 @@ def solve(
 
     tables, described = {}, chosen.describe(evolver.steps)
     if energy and not evolver.unstable:
-        put_energy(motion, inertia, torques, omega0, time, results, notes)
+        target = None
+        if until_omega is not None:
+            target = (answers["t_until"], until_omega, f"ω = {fmt(until_omega)} rad/s")
+        elif until_angle is not None:
+            target = (answers["t_until"], None, f"θ = {fmt(until_angle)} rad")
+        put_energy(motion, inertia, torques, omega0, time, results, notes, target)
     if evolver.unstable:
         notes.extend(dict.fromkeys(evolver.unstable))
         for name in results:
