@@ -86,7 +86,7 @@ complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l power -x -a '(_
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l ke0 -x -a '(__taucli_units J kJ MJ "kW*h" Wh)' -d 'Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l rim-speed -x -a '(__taucli_units m/s km/h ft/s mph)' -d 'Initial speed of the rim, giving ω₀ = v/R (R the body\'s radius, or --radius with --inertia).'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l at -x -a '(__taucli_units m cm mm km in ft)' -d 'A point at this radius (at --time or the target, else the start): its speed v_t, accelerations a_t, a_c, a_total, a_angle and arc s, e.g. 0.5m, or rim (the body\'s radius; taken when a point\'s result is asked for with no --at).'
-complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l energy -d 'Also report the kinetic energy, the work of the drive and of each loss (to --time or the stop) and their power (always with --alpha, --in-time, --power or --ke0).'
+complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l energy -d 'Also report the kinetic energy, the work of the drive and of each loss (to --time or the stop) and their power (always with --alpha, --in-time, --power or --ke0; --get KE and the like turn it on).'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l method -x -a 'auto exact euler rk4 rk45' -d 'auto | exact | euler | rk4 | rk45 (default auto).'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l dt -x -a '(__taucli_units s ms min h)' -d 'Fixed step for euler and rk4 (default 1 ms).'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l rtol -x -d 'Relative tolerance for rk45 (default 1e-10).'
