@@ -39,7 +39,7 @@ COMMAND = Command(
         point_option("(at --time or the target, else the start)"),
         Option(
             "energy", FLAG,
-            "Also report the kinetic energy, the work of the drive and of each loss (to --time or the stop) and their power "
+            "Also report the kinetic energy, the work of the drive and of each loss (to --time, else the target, else the stop) and their power "
             "(always with --alpha, --in-time, --power or --ke0; --get KE and the like turn it on).",
             panel=MOTION,
             makes=("KE0", "KE", "work_drive", "work_friction", "work_viscous", "work_drag", "work_brake", "work_face",
