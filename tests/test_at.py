@@ -95,3 +95,31 @@ def test_a_target_never_reached_gives_no_instant():
     assert report.results["v_t"].value is None and report.results["s"].value is None
     assert report.results["v_t0"].value == pytest.approx(10, rel=1e-15)
     assert any("does not reach" in note for note in report.notes)
+
+
+def test_a_point_at_the_target_reached_in_a_given_time():
+    """#32 item 3: --in-time with --until-omega and --at gave null ("the wheel does not reach the
+    target"), though it does: α = (ω₁ − ω₀)/t = 5 rad/s², v_t = ω₁r at the target."""
+    result = values(taucli.spin_down(inertia=1, friction="1 N*m", until_omega="10 rad/s", in_time="2 s", at="1 m"))
+    assert result["v_t"] == pytest.approx(10.0, rel=1e-15)
+    assert result["a_t"] == pytest.approx(5.0, rel=1e-15)
+    assert result["a_c"] == pytest.approx(100.0, rel=1e-15)
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+def test_a_point_from_rest_speeds_up_either_way(sign):
+    """#32 item 3: from rest under a negative torque a_t was −1 and a_angle −π/2, where the wheel
+    speeds up in the negative sense: a_t is along the motion, +1, at +π/2, as for a positive torque."""
+    result = values(taucli.spin_down(inertia=1, torque=sign * 1.0, at="1 m"))
+    assert result["a_t"] == 1.0
+    assert result["a_angle"] == pytest.approx(math.pi / 2, rel=1e-15)
+
+
+@pytest.mark.parametrize("t", [1.0, 10.0, 40.0, 200.0, 700.0])
+def test_the_tangential_acceleration_near_a_steady_speed_keeps_its_digits(t):
+    """#32 item 3: I = 1, τ = 1 N·m, b = 1 N·m·s: ω(t) = 1 − e^(−t), α(t) = e^(−t). a_t was
+    (τ − bω(t))/I from a rounded ω(t): 0 at 40 s where it is e^(−40) = 4.25e-18, and of either sign
+    later. Now within a few ulp of e^(−t) at r = 1 m."""
+    got = values(taucli.spin_down(inertia=1, torque="1 N*m", viscous="1 N*m*s", time=t, at="1 m"))["a_t"]
+    exact = mpmath.exp(-mpmath.mpf(t))
+    assert got == pytest.approx(float(exact), rel=1e-14, abs=0)

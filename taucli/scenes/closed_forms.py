@@ -132,6 +132,25 @@ class ClosedFormPhase(NamedTuple):  # NamedTuples, as report.Value: made on ever
         beta = (self.viscous + root) / 2
         return _real((w0 * e + (self.constant + k * steady * w0) * g) / (e + (k * w0 + beta) * g))
 
+    def rate(self, t: float) -> float:
+        """dω/dt at t, from the phase variable rather than from ω(t), which near the steady speed
+        would leave A − bω − kω² a difference of near-equal numbers:
+
+            dω/dt = −(ω₀ − r₊) c E / (E + c G)²,   c = (kω₀ + β)/I,
+
+        the derivative of ω(t) = r₊ + (ω₀ − r₊) E/(E + cG), with dE/dt = −λE and dG/dt = E.
+        """
+        if self.uniform:
+            return self.constant / self.inertia
+        root, steady = self._roots()
+        k, w0, inertia = self.drag, self.omega0, self.inertia
+        decay = root * t / inertia
+        e = cmath.exp(-decay) if isinstance(decay, complex) else math.exp(-decay)
+        g = t * exp_fraction(decay) / inertia  # G/I
+        c = k * w0 + (self.viscous + root) / 2  # c·I
+        denominator = e + c * g
+        return _real(-(w0 - steady) * c * e / (inertia * denominator * denominator))
+
     def theta(self, t: float) -> float:
         """θ(t) = ω₀ G L(x) + r₊√D t² g2(λt)/I + t g1(λt) M(x) k r₊(ω₀ − r₊) G/I, x = k(ω₀ − r₊)G/I.
 

@@ -324,6 +324,20 @@ class Motion(NamedTuple):
             return direction * speed, direction * distance
         return second.direction * speed, direction * stop[1] + second.direction * distance
 
+    def rate_at(self, t: float) -> float | None:
+        """dω/dt at time t, signed, from the closed form's phase variable (see ClosedFormPhase.rate);
+        None where the motion is stepped (the caller takes it from the torques at ω(t))."""
+        if self.evolver.method.name != "exact":
+            return None
+        if self.held_from_start:
+            return 0.0
+        stop, second = self.stop, self.second
+        if stop is None or t < stop[0]:
+            return self.direction * self.first.closed.rate(t)
+        if second is None:
+            return 0.0  # held by static friction once stopped
+        return second.direction * second.closed.rate(t - stop[0])
+
     def sampler(self) -> Callable[[float], tuple[float, float]]:
         """``state_at`` for times asked in increasing order, as a plot asks them: a stepping method
         steps on from the last time asked instead of from 0, so 201 samples cost one run, not 201.

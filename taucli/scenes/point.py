@@ -30,13 +30,19 @@ def rim_radius(at: float | str, radius: float | None, what: str) -> tuple[float,
     return radius, f"{{at}} rim: the point is on the rim, r = {quantity_text(radius, 'm')}"
 
 
+def along(alpha: float, omega: float) -> float:
+    """α taken along the motion: positive while the body speeds up, negative while it slows; from
+    rest, along the motion α starts (a body set turning either way speeds up)."""
+    return alpha if omega > 0 else -alpha if omega < 0 else abs(alpha)
+
+
 def point_set(r: float, omega: float, alpha: float | None) -> tuple[float, float | None, float, float | None, float | None]:
     """v_t, a_t (along the motion: negative while slowing), a_c, a_total and a_angle of a point at r."""
     v = abs(omega) * r
     a_c = omega * omega * r
     if alpha is None:
         return v, None, a_c, None, None
-    a_t = (alpha if omega >= 0 else -alpha) * r
+    a_t = along(alpha, omega) * r
     total = math.hypot(a_t, a_c)
     angle = math.atan2(a_t, a_c) if total else None
     return v, a_t, a_c, total, angle
@@ -83,7 +89,7 @@ def point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when) -> list
              "the velocity turns at rate ω, so the point accelerates toward the axis by ωv = ω²r"),
     ]
     if alpha is not None:
-        steps.append(Step(f"Tangential acceleration{when}", "a_t = αr", f"{term(alpha if omega >= 0 else -alpha, 'rad/s**2')} × {radius}",
+        steps.append(Step(f"Tangential acceleration{when}", "a_t = αr", f"{term(along(alpha, omega), 'rad/s**2')} × {radius}",
                           quantity_text(a_t, "m/s**2"), "the speed ωr changes at αr; taken along the motion, negative while the body slows"))
         steps.append(Step(f"Total acceleration{when}", "a = √(a_t² + a_c²), φ = atan2(a_t, a_c)",
                           f"√(({term(a_t, 'm/s**2').strip('()')})² + ({term(a_c, 'm/s**2')})²)",

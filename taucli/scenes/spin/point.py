@@ -8,6 +8,7 @@ import math
 
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, fmt
+from taucli.scenes.motion import Evolver, Method, evolve
 from taucli.scenes.point import KEYS, put_point, put_start
 from taucli.scenes.spin.steps import Torques
 from taucli.table import Results
@@ -35,6 +36,14 @@ def _alpha_at(report: Report, torques: Torques, inertia: float | None, power: fl
     return (drive - losses) / inertia
 
 
+def _alpha_at_time(report: Report, torques: Torques, inertia: float | None, power: float | None, omega0: float, t: float) -> float | None:
+    """α at time t under the torque laws from the closed form's phase variable, exact to its last
+    digits near a steady speed (where τ − bω(t) − kω(t)² would cancel); None elsewhere."""
+    if inertia is None or power is not None or "alpha" in report.results or (torques.drag and torques.drag_exponent != 2):
+        return None
+    return evolve(inertia, torques, omega0, Evolver(Method("exact"))).rate_at(t)
+
+
 def with_point(report: Report, r: float, torques: Torques, inertia, power, omega0, *, time, until_omega, until_angle) -> Report:
     """The report with the results of a point at radius r, at --time or the target, else the start."""
     values = {key: value.value for key, value in report.results.items()}
@@ -51,7 +60,9 @@ def with_point(report: Report, r: float, torques: Torques, inertia, power, omega
     elif until_angle is not None:
         when, omega, theta = " at the target angle", values.get("omega"), until_angle if values.get("omega") is not None else None
     elif until_omega is not None:
-        when, omega, theta = " at the target speed", until_omega if values.get("theta_until") is not None else None, values.get("theta_until")
+        reached = values.get("t_until") is not None
+        theta = values.get("theta_until") if values.get("theta_until") is not None else values.get("theta")
+        when, omega = " at the target speed", until_omega if reached else None
     else:
         when, omega, theta = " at the start", w0, 0.0
     later = when != " at the start"
@@ -60,7 +71,9 @@ def with_point(report: Report, r: float, torques: Torques, inertia, power, omega
         steps += put_point(results, r, None, None, None, when, notes)
         notes[-1] = f"{', '.join(KEYS)}: the wheel does not reach the target, so there is no such instant"
     else:
-        alpha = _alpha_at(report, torques, inertia, power, omega) if later else alpha0
+        alpha = _alpha_at_time(report, torques, inertia, power, w0, time) if time is not None else None
+        if alpha is None:
+            alpha = _alpha_at(report, torques, inertia, power, omega) if later else alpha0
         steps += put_point(results, r, omega, alpha, theta, when, notes)
         if alpha is None:
             notes[-1] = "a_t, a_total, a_angle: α is not defined at this instant (a constant power at rest)"

@@ -217,7 +217,7 @@ def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: di
     if not torques.viscous and not torques.drag:
         report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, None, time=in_time, until_omega=until_omega,
                                        until_angle=until_angle, front=(front.steps, front.notes, front.results))
-        return _with_front(report, front.results), targets, torques
+        return _with_front(report, front.results), {"time": in_time, "until_omega": None, "until_angle": None}, torques
     torques = drive_for_target(wheel.inertia, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
     front.notes.append(f"the constant drive torque that meets the target in t = {fmt(in_time)} s, found by bisection on the motion: "
                        f"τ = {quantity_text(torques.drive, 'N*m')}")
