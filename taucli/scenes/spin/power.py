@@ -16,6 +16,7 @@ from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, deferred, fmt, quantity_text, term
 from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Method
 from taucli.scenes.spin.energy import energy_steps
+from taucli.scenes.spin.methods import REFERENCE_RTOL, error_estimate
 from taucli.scenes.spin.steps import TWO_PI, Torques, curves
 from taucli.table import Results
 
@@ -161,13 +162,17 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
     lossless = not (torques.friction or torques.viscous or torques.drag)
     if method == "exact" and not lossless:
         raise InputError("method", "exact has no closed form for a constant power against losses", hint="use {method} auto or rk45")
-    if method in ("euler", "rk4") or method == "rk45":
+    results, notes = Results(TABLE), []
+    if lossless:
+        chosen = Method("exact")
+        if method not in ("auto", "exact"):
+            notes.append(f"{{method}} {method}: a constant power with no losses has a closed form, ½Iω² = ½Iω₀² + Pt, which is used instead")
+    elif method in ("euler", "rk4") or method == "rk45":
         chosen = Method(method, dt or (DEFAULT_DT if method != "rk45" else None), rtol or DEFAULT_RTOL)
     else:
-        chosen = Method("exact" if lossless else "rk45", None, rtol or DEFAULT_RTOL)
+        chosen = Method("rk45", None, rtol or DEFAULT_RTOL)
     sense = -1.0 if omega0 < 0 else 1.0
     motion = PowerMotion(inertia, power, torques, abs(omega0), chosen, sense)
-    results, notes = Results(TABLE), []
     results.put("I", inertia)
     rate = motion.rate(abs(omega0)) if omega0 else None
     results.put("alpha0", None if rate is None or not math.isfinite(rate) else sense * rate)
@@ -238,6 +243,18 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
             results.put("work_viscous", max(0.0, rest), by)
         elif torques.drag:
             results.put("work_drag", max(0.0, rest), by)
+    tables, checked = {}, ""
+    if chosen.name in ("euler", "rk4"):
+        against = f"rk45 at rtol {REFERENCE_RTOL:g}"
+        try:
+            reference = power_report(inertia, (), power, torques, omega0, time=time, until_omega=until_omega, until_angle=until_angle,
+                                     method="rk45", dt=None, rtol=REFERENCE_RTOL).results
+        except InputError:
+            reference = None
+        estimate = error_estimate(results, reference, against, chosen, notes)
+        if estimate is not None:
+            tables["error_estimate"], worst = estimate
+            checked = f"; estimated error at most {fmt(worst, 2)} relative" if worst is not None else ""
     steps = list(inertia_steps)
     if lossless:
         steps.append(Step("Energy from a constant power", "½Iω² = ½Iω₀² + Pt  ⇒  t = I(ω₁² − ω₀²)/(2P)", "", "",
@@ -254,9 +271,9 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
         model = "constant power P (τ = P/ω) against losses: no closed form"
     described = {"exact": "closed form", "rk45": f"rk45 (Dormand-Prince, adaptive), rtol = {chosen.rtol:g}"}.get(
         chosen.name, f"{chosen.name}, dt = {fmt(chosen.dt or 0.0)} s"
-    )
+    ) + checked
     steps.extend(energy_steps(results, inertia, torques.friction, power=power))
-    return Report("spin-down", model, described, results, steps, notes, trajectory=deferred(curves, motion.state, end, stop))
+    return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=deferred(curves, motion.state, end, stop))
 
 
 def _power_time_at_angle(motion: PowerMotion, theta: float) -> tuple[float, float] | None:

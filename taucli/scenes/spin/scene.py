@@ -20,11 +20,11 @@ from taucli.report import Report, Step, Table, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.inertia import body, body_table
 from taucli.scenes.point import RIM, rim_radius
+from taucli.scenes.push import Push, drive_steps
 from taucli.scenes.spin.constant_alpha import constant_alpha_report
 from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_contacts
 from taucli.scenes.spin.point import with_point
 from taucli.scenes.spin.power import power_report
-from taucli.scenes.push import Push, drive_steps
 from taucli.scenes.spin.steps import Torques
 from taucli.scenes.spin.torque_laws import drive_for_target, solve
 from taucli.table import Results

@@ -25,7 +25,12 @@ from taucli.report import (
 )
 from taucli.scenes.motion import Evolver, Method, Phase, evolve
 from taucli.scenes.spin.energy import energy_steps, put_energy
-from taucli.scenes.spin.methods import choose_method, error_estimate, method_answers
+from taucli.scenes.spin.methods import (
+    REFERENCE_RTOL,
+    choose_method,
+    error_estimate,
+    method_answers,
+)
 from taucli.scenes.spin.steps import (
     TWO_PI,
     Torques,
@@ -145,7 +150,13 @@ def solve(
             if name not in ("I", "alpha0"):
                 results[name] = Value(None, results[name].unit, results[name].label)
     elif chosen.name in ("euler", "rk4") and estimate_error:
-        estimate = error_estimate(inertia, torques, omega0, closed_form, time, until_omega, until_angle, chosen, results, notes)
+        against = "the closed form" if closed_form else f"rk45 at rtol {REFERENCE_RTOL:g}"
+        try:
+            reference = solve(inertia, torques, omega0, time=time, until_omega=until_omega, until_angle=until_angle, method="exact" if closed_form else "rk45",
+                              rtol=REFERENCE_RTOL, estimate_error=False, energy=energy).results
+        except InputError:
+            reference = None
+        estimate = error_estimate(results, reference, against, chosen, notes)
         if estimate is not None:
             tables["error_estimate"], worst = estimate
             described += f"; estimated error at most {fmt(worst, 2)} relative" if worst is not None else ""
