@@ -231,6 +231,8 @@ class StreamingQuadrature:
         self._paired = 0.0  # Simpson over the even number of intervals closed so far
         self._window: deque[tuple[float, float]] = deque(maxlen=3)
         self.peak = (0.0, 0.0)  # (t, f) where |f| is largest
+        self.low = self.high = 0.0  # the least and the largest f
+        self.uneven = 1.0  # the largest ratio of two neighbouring intervals Simpson takes together
 
     def add(self, t: float, f: float) -> None:
         if self._window:
@@ -240,9 +242,12 @@ class StreamingQuadrature:
         self.count += 1
         if self.count == 1 or abs(f) > abs(self.peak[1]):
             self.peak = (t, f)
-        if self.count >= 3 and (self.count - 1) % 2 == 0:
+        self.low, self.high = (f, f) if self.count == 1 else (min(self.low, f), max(self.high, f))
+        if self.count >= 3:
             (t0, f0), (t1, f1), (t2, f2) = self._window
             h0, h1 = t1 - t0, t2 - t1
+            self.uneven = max(self.uneven, h1 / h0, h0 / h1)
+        if self.count >= 3 and (self.count - 1) % 2 == 0:
             self._paired += (h0 + h1) / 6 * ((2 - h1 / h0) * f0 + (h0 + h1) ** 2 / (h0 * h1) * f1 + (2 - h0 / h1) * f2)
 
     def simpson(self) -> float:

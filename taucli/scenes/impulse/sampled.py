@@ -17,6 +17,7 @@ from taucli.table import Results
 
 SAMPLES_SHOWN = 10_000  # ω at the samples is reported for profiles up to this many rows
 PLOTTED = 500  # a profile's plot keeps between this many and twice as many of its samples
+UNEVEN = 2.0  # auto takes Simpson where no interval is more than this many times its neighbour
 
 
 def solve_profile(
@@ -45,18 +46,28 @@ def solve_profile(
             start = t
         quadrature.add(t, torque)
         if quadrature.count <= SAMPLES_SHOWN:
-            shown.append((t, torque, omega0 + quadrature.result(chosen) / inertia))
+            shown.append((t, torque, omega0 + quadrature.trapezoid / inertia, omega0 + quadrature.simpson() / inertia))
         if (quadrature.count - 1) % stride == 0:
-            plotted.append((t, torque, omega0 + quadrature.result(chosen) / inertia))
+            plotted.append((t, torque, omega0 + quadrature.trapezoid / inertia, omega0 + quadrature.simpson() / inertia))
             if len(plotted) == 2 * PLOTTED:
                 plotted, stride = plotted[::2], 2 * stride
     count = quadrature.count
     if count < 2:
         raise InputError("torque_profile", "needs at least two samples for an integral")
+    duration = t - start
     if rule == "auto" and count < 3:
         chosen = "trapezoid"
-    impulse = quadrature.result(chosen)
-    duration = t - start
+    trapezoid, simpson = quadrature.trapezoid, quadrature.simpson()
+    slack = 1e-12 * max(abs(quadrature.low), abs(quadrature.high)) * duration
+    within = quadrature.low * duration - slack <= simpson <= quadrature.high * duration + slack  # the mean torque lies between its least and largest
+    if rule == "auto" and chosen == "simpson" and (quadrature.uneven > UNEVEN or not within):
+        chosen = "trapezoid"
+        why = ("the samples are unevenly spaced (neighbouring intervals up to "
+               f"{fmt(quadrature.uneven, 3)} times each other), where Simpson's parabolas through three samples can overshoot" if quadrature.uneven > UNEVEN
+               else f"Simpson's rule gives J = {fmt(simpson)} N·m·s, outside what these samples allow")
+        notes.append(f"method: trapezoid, not Simpson: {why}; the trapezoid rule takes τ straight between samples")
+    impulse = trapezoid if chosen == "trapezoid" else simpson
+    withheld = chosen == "simpson" and not within
     omega1 = omega0 + impulse / inertia
     results = Results(TABLE)
     results.put("J", impulse, f" ∫τ dt ({chosen})")
@@ -65,18 +76,27 @@ def solve_profile(
     results.put("duration", duration, " from the first sample to the last")
     results.put("peak_torque", quadrature.peak[1], f", at t = {fmt(quadrature.peak[0])} s")
     put_momentum(results, inertia, omega0, omega1)
-    if rule == "auto":
-        notes.append(
-            f"method: {chosen} ("
-            + ("composite Simpson, exact for quadratics, O(h⁴) on smooth data" if chosen == "simpson" else "two samples: only the trapezoid rule applies")
-            + "; --method trapezoid for data with corners, where Simpson's higher order does not hold)"
-        )
+    if rule == "auto" and chosen == "simpson":
+        notes.append("method: simpson (composite Simpson, exact for quadratics, O(h⁴) on smooth data; --method trapezoid for data with corners, "
+                     "where Simpson's higher order does not hold)")
+    elif rule == "auto" and count < 3:
+        notes.append("method: trapezoid (two samples: only the trapezoid rule applies)")
+    if count >= 3 and trapezoid != simpson:
+        other, value = ("Simpson's rule", simpson) if chosen == "trapezoid" else ("the trapezoid rule", trapezoid)
+        notes.append(f"J: {other} gives {fmt(value)} N·m·s, {fmt(abs(simpson - trapezoid))} N·m·s from this; how far the two rules differ "
+                     "is how far the samples leave J open")
+    if withheld:
+        for key in ("J", "delta_omega", "omega1", "L1", "KE1"):
+            results[key] = results[key]._replace(value=None)
+        notes.append(f"J withheld: Simpson's rule over these samples gives {fmt(simpson)} N·m·s, outside the least and largest torque times Δt "
+                     f"({fmt(quadrature.low * duration)} to {fmt(quadrature.high * duration)} N·m·s); --method trapezoid reads them as straight lines")
     if duration <= BRIEF_BLOW:
         notes.append(f"a brief blow ({fmt(duration)} s): the motion remembers only the impulse J, not the shape of τ(t)")
     tables = {}
+    pick = 2 if chosen == "trapezoid" else 3
     if count <= SAMPLES_SHOWN:
         columns = (("t", "s", "t"), ("torque", "N*m", "τ"), ("omega", "rad/s", "ω"))
-        tables["samples"] = Table(columns, tuple(shown))
+        tables["samples"] = Table(columns, tuple((row[0], row[1], None if withheld else row[pick]) for row in shown))
     else:
         notes.append(f"ω at the samples is reported for up to {SAMPLES_SHOWN:,} rows; this profile has {count:,}")
     steps = [
@@ -88,7 +108,7 @@ def solve_profile(
     ]
     model = f"sampled torque profile ({count} samples), J by the {chosen} rule"
     if plotted[-1][0] != t:
-        plotted.append((t, torque, omega1))
-    points = tuple((sample - start, torque_at, omega_at) for sample, torque_at, omega_at in plotted)
+        plotted.append((t, torque, omega1, omega1))
+    points = tuple((row[0] - start, row[1], row[pick]) for row in plotted)
     note = "" if stride == 1 else f"plotted at every {stride}th sample"
     return Report("impulse", model, chosen, results, steps, notes, {}, tables, deferred(Trajectory, CURVES, duration, points=points, note=note))
