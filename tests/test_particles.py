@@ -215,3 +215,25 @@ def test_command_line():
     assert document["results"]["omega1"]["value"] == pytest.approx(240 / 620, rel=1e-15)
     assert [row["part"] for row in document["parts"]] == ["body", "particle"]
     assert_usage_error(run_taucli("impulse", "--inertia", "1", "--particle", "mass=1kg speed=4m/s radius=1m e=2"), "--particle", "e=")
+
+
+def test_a_small_exchange_beside_a_large_spin_keeps_its_digits():
+    """#32 item 3: J and Δω were formed from ω₁ − ω₀, losing up to 0.3 % where they are small
+    beside ω. A particle rebounding (e = 0.5) off a body spinning at 1000 rad/s, approaching it at
+    0.5 m/s relative: Δω = m r⊥ (1 + e)(v − ω₀ r⊥)/(I + m r⊥²), in mpmath from the same doubles."""
+    report = taucli.impulse(inertia=1.0, omega0=1000.0, particle=("mass=1g speed=1000.5m/s radius=1m e=0.5",))
+    m, r, e, v, w0, i = (mpmath.mpf(x) for x in (0.001, 1.0, 0.5, 1000.5, 1000.0, 1.0))
+    delta = m * r * (1 + e) * (v - w0 * r) / (i + m * r * r)
+    assert report.results["delta_omega"].value == pytest.approx(float(delta), rel=1e-15, abs=0)
+    assert report.results["J"].value == pytest.approx(float(i * delta), rel=1e-15, abs=0)
+
+
+def test_the_energy_a_leaving_particle_takes_beside_a_heavy_couple_keeps_its_digits():
+    """#32 item 3: KE_lost was the difference of two totals of ~5e7 J (1.25e-7 off). Here it is
+    KE0 − KE1 worked in mpmath at 50 digits."""
+    report = taucli.impulse(inertia=1.0, omega0=0.0, couple=("inertia=1e6kg*m^2 omega0=10rad/s",),
+                            particle=("mass=1kg speed=5m/s radius=1m speed-after=2m/s",))
+    i, ic, wc, m, v, v1, r = (mpmath.mpf(x) for x in (1.0, 1e6, 10.0, 1.0, 5.0, 2.0, 1.0))
+    omega1 = (ic * wc + m * v * r - m * v1 * r) / (i + ic)
+    lost = ic * wc**2 / 2 + m * v**2 / 2 - (i + ic) * omega1**2 / 2 - m * v1**2 / 2
+    assert report.results["KE_lost"].value == pytest.approx(float(lost), rel=1e-13, abs=0)

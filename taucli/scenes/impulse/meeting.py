@@ -125,6 +125,17 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     if i_effective <= 0:
         raise InputError("inertia", "must be more than zero here", example="{inertia} 2kg*m^2")
     omega1 = numerator / i_effective
+    # Δω from what each exchanges with the body, not ω₁ − ω₀, which loses the digits of a small change
+    # beside a large ω: (numerator − i_effective ω₀) written term by term.
+    exchange = math.fsum([
+        *(i_c * (w_c - omega0) for _, i_c, w_c in couple_rows),
+        *(p.mass * (p.speed * p.arm - (p.radius if p.radius_after is None else p.radius_after) ** 2 * omega0) for _, p in stick),
+        *(-p.mass * ((p.radius if p.radius_after is None else p.radius_after) - p.radius) * ((p.radius if p.radius_after is None else p.radius_after) + p.radius) * omega0
+          for _, p in ride),
+        *(p.mass * p.arm * (p.speed - p.speed_after) for _, p in leave),
+        *(p.mass * p.arm * (1 + p.e) * (p.speed - omega0 * p.arm) for _, p in bounce),
+    ])
+    delta_omega = exchange / i_effective
     after = {name: p.speed_after for name, p in leave}
     after.update({name: omega1 * p.arm - p.e * (p.speed - omega0 * p.arm) for name, p in bounce})
     # Energies.
@@ -141,16 +152,24 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         lost = (0.5 * spread / i_before if i_before else 0.0) + (0.5 * momentum_joined**2 / i_before * math.fsum(extra_inertia) / i_after if i_before else 0.0)
         lost += math.fsum(radial_energy)
     else:
-        lost = math.fsum([*energy0_terms, *(-0.5 * i_after * omega1 * omega1,), *(-0.5 * p.mass * after[name] ** 2 for name, p in (*leave, *bounce))])
+        # as above, with what each leaving particle takes: ½m(v − v′)[(v − r⊥ω_a) + (v′ − r⊥ω₁)], ω_a = L_joined/I₁, a sum
+        # of exchanges rather than the difference of two totals (which a heavy couple makes large)
+        spread = math.fsum(i_j * i_k * (w_j - w_k) ** 2 for n, (_, i_j, w_j) in enumerate(joined) for (_, i_k, w_k) in joined[n + 1:])
+        omega_a = momentum_joined / i_after
+        lost = math.fsum([
+            0.5 * spread / i_before if i_before else 0.0,
+            0.5 * momentum_joined**2 / i_before * math.fsum(extra_inertia) / i_after if i_before else 0.0,
+            *(0.5 * p.mass * (p.speed - p.speed_after) * ((p.speed - p.arm * omega_a) + (p.speed_after - p.arm * omega1)) for _, p in leave),
+            *radial_energy,
+        ])
     results = Results(TABLE)
     results.put("omega1", omega1, " (the body and all that stays on it)" if len(joined) > 1 else "")
-    results.put("delta_omega", omega1 - omega0)
+    results.put("delta_omega", delta_omega)
     results.put("inertia", inertia)
     results.put("omega0", omega0)
-    results.put("J", inertia * (omega1 - omega0), " the body receives, I(ω₁ − ω₀)")
+    results.put("J", inertia * delta_omega, " the body receives, IΔω")
     results.put("L0", momentum0)
-    momentum1 = math.fsum([i_after * omega1] + [p.mass * after[name] * p.arm for name, p in (*leave, *bounce)])
-    results.put("L1", momentum1, " (the same: no external torque about the axis)")
+    results.put("L1", momentum0, " (the same: no external torque about the axis)")
     system = ", particles' ½mv² included" if particles else (", both bodies" if len(couples) == 1 else ", all the bodies")
     results.put("KE0", energy0, system)
     results.put("KE1", energy1, system)
@@ -159,7 +178,7 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     if energy0 == 0:
         notes.append("KE_lost_fraction: nothing moved before, so no fraction of it can be lost")
     # Each one's part: L before and after, the angular impulse it receives, its speed after.
-    rows = [("body", inertia * omega0, inertia * omega1, inertia * (omega1 - omega0), None)]
+    rows = [("body", inertia * omega0, inertia * omega1, inertia * delta_omega, None)]
     for name, i_c, w_c in couple_rows:
         rows.append((name, i_c * w_c, i_c * omega1, i_c * (omega1 - w_c), None))
     for name, p in (*stick, *ride):
