@@ -31,14 +31,15 @@ def coefficients(source: str, values: dict) -> tuple[float, float | None]:
 
 def parts(option: Option, given, inputs: Inputs, stdin) -> tuple:
     specs = given if isinstance(given, (list, tuple)) else [given]
-    return tuple(parse_part_spec(word(option, spec), number, inputs) for number, spec in enumerate(specs, start=2))
+    signed = option.sign == "any"  # (pendulum: a part on the other side of the pivot has a negative offset=)
+    return tuple(parse_part_spec(word(option, spec), number, inputs, signed_offset=signed) for number, spec in enumerate(specs, start=2))
 
 
 _PART_KEY = re.compile(r"\s+(?=[a-z][a-z_-]*=)")
 PART_DIMENSIONS = ("radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")
 
 
-def parse_part_spec(spec: str, number: int, inputs: Inputs):
+def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bool = False):
     """A ``--part`` value such as "point mass=100g offset=20cm" as an inertia Part.
 
     A part is a shape with mass= (or density=) and its dimensions, or its own I: inertia=
@@ -72,7 +73,7 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs):
         return inputs.quantity(f"{source} {key.replace('_', '-')}=", fields[key], kind, sign=sign, key=f"part{number}_{key}")
 
     dims = {key: read_field(key, "length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS if key in fields}
-    offset = read_field("offset", "length", "nonnegative") if "offset" in fields else None
+    offset = read_field("offset", "length", "any" if signed_offset else "nonnegative") if "offset" in fields else None
     mass = read_field("mass", "mass") if "mass" in fields else None
     inertia = read_field("inertia", "moment of inertia") if "inertia" in fields else None
     gyration = read_field("gyration", "length") if "gyration" in fields else None

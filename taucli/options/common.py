@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 from taucli.names import METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
+from dataclasses import replace
+
 from taucli.table import BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
 
 BODY = "Body (shape and dimensions)"
@@ -51,6 +53,8 @@ PARTS = Option(
     metavar='"SHAPE key=value ..."',
 )
 SHAPE_WORDS = ", ".join(SHAPE_NAMES)
+# pendulum: a part may sit on the other side of the pivot, its offset= negative (d = Σmᵢdᵢ/M, signed)
+SIGNED_PARTS = replace(PARTS, sign="any", help=PARTS.help.replace("(repeatable)", "offset= negative on the other side of the pivot (repeatable)"))
 
 # A body on an axle: its moment of inertia, or a shape with its mass and dimensions.
 BODY_OPTIONS = (

@@ -1,6 +1,6 @@
 """taucli pendulum: a body on a pivot under gravity or a torsion spring."""
 
-from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, MOTION, RTOL
+from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, MOTION, PARTS, RTOL, SIGNED_PARTS
 from taucli.table import CHOICE, Command, Option, Result
 
 METHODS = ("auto", "exact", "small-angle", "euler", "rk4", "rk45", "verlet")
@@ -10,7 +10,7 @@ COMMAND = Command(
     summary="A body on a pivot under gravity or a torsion spring: I d²θ/dt² = −mgd sin θ − κθ.",
     example="taucli pendulum --shape rod --length 1m --mass 2kg --axis end --angle0 90deg",
     options=(
-        *BODY_OPTIONS,
+        *(SIGNED_PARTS if option is PARTS else option for option in BODY_OPTIONS),
         Option("cm_distance", "length", "Distance d from the pivot to the centre of mass (else from the shape and --offset).", sign="nonnegative"),
         Option("angle0", "angle", "Starting angle from the downward vertical (90deg: horizontal).", sign="any", default="0", panel=MOTION),
         Option("omega0", "angular velocity", "Starting angular velocity, positive toward larger angles.", sign="any", default="0", panel=MOTION),

@@ -10,8 +10,10 @@ Energy gives the speeds and the pivot's forces at any angle, exactly, for every 
   (taucli/elliptic.py, every function from k' = cos(θ_max/2) so that 179.999° keeps its digits)
   (exact.py);
 - torsion alone (d = 0): exact, harmonic, period 2π√(I/κ) (harmonic.py);
-- both: no closed form; rk45 (or the method asked for) steps θ'' = α(θ), events located
-  (stepped.py, with the steppers' error checks);
+- both: no closed form, but the energy integral t = ∫dθ/ω between the turning angles, by
+  tanh-sinh quadrature (by_energy.py);
+- euler, rk4, rk45, verlet on request: θ'' = α(θ) stepped, events located, each checked against
+  the exact model (stepped.py);
 - small-angle: the harmonic model sin θ ≈ θ at any amplitude, its period error stated
   (small_angle.py).
 
@@ -72,9 +74,8 @@ def pendulum(
     results = Results(TABLE)
     notes: list[str] = []
 
-    put_energy(results, notes, swing, body.cm_distance, angle)  # energy alone: the same for every method
-
-    exact = None if (swing.gravity_torque and swing.torsion) else exact_model(swing)  # gravity and a spring: no closed form
+    exact = exact_model(swing)
+    put_energy(results, notes, swing, body.cm_distance, angle, exact)  # energy and the exact motion: the same for every method
     model = pick_model(swing, method, exact, dt, rtol)
     motion = solve(model, exact, method, angle, time, notes)
 

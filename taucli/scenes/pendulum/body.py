@@ -2,7 +2,8 @@
 the pivot to the centre of mass (--inertia with --mass and --cm-distance, or --shape and its
 parts), and what swings it: gravity's torque mgd and a torsion spring's κθ.
 
-    d = Σmᵢdᵢ / M   (the parts' centres on one line, on the same side of the pivot)
+    d = |Σmᵢdᵢ| / M   (the parts' centres on one line through the pivot, offset= negative on the
+                      other side; θ is measured to the centre of mass)
 """
 
 from __future__ import annotations
@@ -41,6 +42,10 @@ def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsi
                 raise InputError("cm_distance", "is required with {inertia} (gravity's torque is mgd)", example="{cm_distance} 0.5m")
             cm_distance = 0.0
             assumed.notes.append("no --cm-distance: d = 0, gravity turns nothing (a torsion pendulum on a vertical wire)")
+        if mass is not None and inertia < mass * cm_distance * cm_distance * (1 - 1e-12):
+            raise InputError("inertia", f"expected at least M d² = {fmt(mass * cm_distance * cm_distance)} kg·m² about the pivot: "
+                             "I = I_cm + Md², and I_cm is never negative", example="{inertia} 0.5kg*m^2 {mass} 1kg {cm_distance} 0.5m",
+                             got=f"{fmt(inertia)} kg·m²")
         return Body(inertia, mass, cm_distance, (), "a body of given I")
     if shape is None:
         raise InputError("inertia", "or {shape} is required", example="{shape} rod {length} 1m {mass} 2kg {axis} end, or {inertia} 0.5kg*m^2 {mass} 2kg {cm_distance} 0.5m")
@@ -48,7 +53,10 @@ def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsi
     steps = list(found.steps)
     total = found.mass
     if cm_distance is None:
-        cm_distance = math.fsum(p.part.mass * p.offset for p in found.parts) / total
+        moment = math.fsum(p.part.mass * p.offset for p in found.parts)  # offsets signed: the other side of the pivot negative
+        cm_distance = abs(moment) / total
+        if moment < 0:
+            assumed.notes.append("the centre of mass is on the side of the parts with negative offset=: θ is measured to it")
         if len(found.parts) > 1:
             steps.append(
                 Step(
@@ -56,7 +64,7 @@ def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsi
                     "d = Σmᵢdᵢ / M",
                     " + ".join(f"{fmt(p.part.mass)} kg × {fmt(p.offset)} m" for p in found.parts) + f" / {quantity_text(total, 'kg')}",
                     quantity_text(cm_distance, "m"),
-                    "the parts' centres are taken on one line, on the same side of the pivot",
+                    "the parts' centres are taken on one line through the pivot, an offset= on the other side negative",
                 )
             )
     return Body(found.inertia, total, cm_distance, steps, found.description)

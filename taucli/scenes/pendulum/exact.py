@@ -16,12 +16,16 @@ from __future__ import annotations
 import math
 
 from taucli import elliptic
+from taucli.scenes.pendulum.by_energy import ByEnergy
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.swing import TWO_PI, Swing
 
 
 def exact_model(swing: Swing):
-    """The closed-form motion: harmonic under torsion alone, elliptic under gravity alone."""
+    """The exact motion: harmonic under torsion alone, elliptic under gravity alone, the energy
+    integral by quadrature under both (by_energy.py)."""
+    if swing.gravity_torque and swing.torsion:
+        return ByEnergy(swing)
     if swing.gravity_torque == 0:
         return Harmonic(math.sqrt(swing.torsion / swing.inertia), swing.theta0, swing.omega0)
     rate = math.sqrt(swing.gravity_torque / swing.inertia)

@@ -3,10 +3,10 @@ period, the times to the bottom and to --angle, (θ, ω) at --time) and the plot
 
 Each model gives state(t) = (θ, ω), time_to(θ) (the first time it reaches an angle) and its period:
 
-- exact: under gravity alone elliptic (exact.py), under a torsion spring alone harmonic;
+- exact: under gravity alone elliptic (exact.py), under a torsion spring alone harmonic, under both
+  the energy integral t = ∫dθ/ω by quadrature (by_energy.py);
 - small-angle: harmonic, sin θ ≈ θ (small_angle.py);
-- euler, rk4, rk45, verlet: stepped (stepped.py); rk45 by default with both gravity and a spring,
-  which have no closed form together.
+- euler, rk4, rk45, verlet: stepped (stepped.py), each checked against the exact model.
 """
 
 from __future__ import annotations
@@ -26,12 +26,10 @@ from taucli.table import Results
 
 
 def choose(method: str, gravity: bool, torsion: bool) -> str:
-    """--method, with auto read as exact where there is a closed form (gravity or a spring alone)
-    and rk45 where there is none (both)."""
+    """--method, with auto read as exact: a closed form under gravity or a spring alone, the energy
+    integral by quadrature under both."""
     if method == "auto":
-        return "rk45" if gravity and torsion else "exact"
-    if method == "exact" and gravity and torsion:
-        raise InputError("method", "exact has no closed form with both gravity and {torsion}", hint="use {method} auto (rk45) or small-angle")
+        return "exact"
     if method not in ("exact", "small-angle", *STEPPERS):
         raise InputError("method", f"expected one of {', '.join(TABLE.option('method').choices)}", got=repr(method))
     return method
@@ -44,7 +42,7 @@ def pick_model(swing: Swing, method: str, exact, dt: float, rtol: float):
         return small_angle_model(swing)
     if method == "exact":
         return exact
-    horizon = 20 * swing.small_period() if exact is None or exact.period is None else 3 * exact.period
+    horizon = 20 * swing.small_period() if exact.period is None else 3 * exact.period
     return Stepped(swing, method, dt, rtol, horizon)
 
 

@@ -1,8 +1,10 @@
 """A point at r from the pivot: every point of a rigid body has the same α and ω, so
 
-    a_t = rα,   v_t = rω,   a_c = rω²
+    a_t = rα,   v_t = r|ω|,   a_c = rω²
 
-at the start and at --angle (ω from energy there, α from the torque there).
+at the start and at --angle (ω from energy there, with the sign it has when the body first gets
+there; α from the torque there). a_t is taken along the motion, as everywhere
+(taucli.scenes.point.along): negative while the body slows; from rest, the size of rα.
 """
 
 from __future__ import annotations
@@ -12,15 +14,16 @@ import math
 from taucli.options.pendulum import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text
 from taucli.scenes.pendulum.swing import Swing, sine
+from taucli.scenes.point import along
 from taucli.table import Results
 
 
 def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravity: float) -> None:
-    """A point at r from the pivot: a_t = rα (sizes), v_t = rω, a_c = rω², at the start and at
-    --angle; with a step that says why a rod's far end falls faster than g."""
+    """A point at r from the pivot: a_t = rα along the motion, v_t = r|ω|, a_c = rω², at the start
+    and at --angle; with a step that says why a rod's far end falls faster than g."""
     results = Results(TABLE)
     where = f" {fmt(r)} m from the pivot"
-    alpha0 = abs(swing.accel(swing.theta0))
+    alpha0 = along(swing.accel(swing.theta0), swing.omega0)
     results.put("a_t0", r * alpha0, where)
     steps = [
         Step(
@@ -38,20 +41,20 @@ def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravi
         )
     ]
     if angle is not None:
-        speed = swing.speed_at(angle)
+        omega = report.results["omega"].value  # signed: as the body first gets there; None where it never does
         where_at_angle = f"{where} at θ = {fmt(math.degrees(angle))}°"
-        alpha = abs(swing.accel(angle))
-        results.put("v_t", None if speed is None else r * speed, where_at_angle)
-        results.put("a_t", None if speed is None else r * alpha, where_at_angle)
-        results.put("a_c", None if speed is None else r * speed * speed, where_at_angle)
-        if speed is not None:
+        alpha = None if omega is None else along(swing.accel(angle), omega)
+        results.put("v_t", None if omega is None else r * abs(omega), where_at_angle)
+        results.put("a_t", None if omega is None else r * alpha, where_at_angle)
+        results.put("a_c", None if omega is None else r * omega * omega, where_at_angle)
+        if omega is not None:
             steps.append(
                 Step(
                     f"The point{where_at_angle}",
-                    "v_t = rω, a_t = rα, a_c = rω²",
-                    f"{quantity_text(r, 'm')} × {quantity_text(speed, 'rad/s')}; α = {quantity_text(alpha, 'rad/s**2')}",
-                    f"v_t = {quantity_text(r * speed, 'm/s')}, a_t = {quantity_text(r * alpha, 'm/s**2')}, a_c = {quantity_text(r * speed * speed, 'm/s**2')}",
-                    "ω from energy at that angle, α from the torque there",
+                    "v_t = r|ω|, a_t = rα (along the motion), a_c = rω²",
+                    f"{quantity_text(r, 'm')} × {quantity_text(abs(omega), 'rad/s')}; α = {quantity_text(alpha, 'rad/s**2')}",
+                    f"v_t = {quantity_text(r * abs(omega), 'm/s')}, a_t = {quantity_text(r * alpha, 'm/s**2')}, a_c = {quantity_text(r * omega * omega, 'm/s**2')}",
+                    "ω from energy at that angle, α from the torque there, taken along the motion (negative: it slows)",
                 )
             )
     report.results.update(results)

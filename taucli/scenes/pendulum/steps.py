@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from taucli.report import Step, fmt, quantity_text
+from taucli.scenes.pendulum.by_energy import ByEnergy
 from taucli.scenes.pendulum.exact import Circulation, Libration, Separatrix
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.stepped import STEPPERS
@@ -25,7 +26,7 @@ def model_words(swing: Swing, method: str, exact, body_words: str) -> str:
         drive = "gravity"
     else:
         drive = "a torsion spring"
-    kind = {Circulation: "goes over the top", Separatrix: "just reaches the top", Libration: "swings", Harmonic: "swings"}.get(type(exact), "swings or goes over")
+    kind = {Circulation: "goes over the top", Separatrix: "just reaches the top", Libration: "swings", Harmonic: "swings", ByEnergy: "swings"}.get(type(exact), "swings or goes over")
     if method == "small-angle":
         return f"{body_words} on a pivot under {drive}: small-angle model (harmonic, sin θ ≈ θ)"
     return f"{body_words} on a pivot under {drive}; it {kind}"
@@ -33,7 +34,9 @@ def model_words(swing: Swing, method: str, exact, body_words: str) -> str:
 
 def method_words(swing: Swing, method: str, dt: float, rtol: float) -> str:
     """The method as the report names it: the closed form, or the stepper with its dt (rk45: its rtol)."""
-    return {"exact": "closed form (elliptic integrals)" if swing.gravity_torque else "closed form (harmonic)", "small-angle": "closed form (harmonic, small-angle)"}.get(
+    exact = ("the energy integral t = ∫dθ/ω (tanh-sinh quadrature)" if swing.gravity_torque and swing.torsion
+             else "closed form (elliptic integrals)" if swing.gravity_torque else "closed form (harmonic)")
+    return {"exact": exact, "small-angle": "closed form (harmonic, small-angle)"}.get(
         method, f"{method} (dt = {fmt(dt)} s)" if method != "rk45" else f"rk45 (rtol = {fmt(rtol)})"
     )
 

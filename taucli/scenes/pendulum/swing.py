@@ -50,14 +50,28 @@ class Swing:
         return TWO_PI * math.sqrt(self.inertia / (self.gravity_torque + self.torsion))
 
 
+def first_sense(exact, angle: float, arrives: float) -> float:
+    """+1 or −1: the sign of ω when the body first reaches ``angle`` (at time ``arrives``), in the
+    sense of --omega0 (toward larger angles)."""
+    if hasattr(exact, "sense_at_first"):
+        return exact.sense_at_first(angle)
+    omega = exact.state(arrives)[1]
+    if omega == 0:  # a turning point: ω is 0 either way; the sense it had on the way there
+        omega = exact.state(max(arrives * (1 - 1e-9), 0.0))[1]
+    return -1.0 if omega < 0 else 1.0
+
+
 def sine(theta: float) -> float:
     """sin θ, with the double nearest 180° (math.pi) read as 180° itself: 0, not 1.2e-16."""
     return 0.0 if abs(theta) == math.pi else math.sin(theta)
 
 
-def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: float, angle: float | None) -> None:
-    """I (and d under gravity); α₀ = |τ₀|/I; ω at the bottom and at --angle from energy; T₀; and
-    under gravity the starting speed that just reaches the top, ½Iω₀,over² = U(180°) − U(θ₀),
+def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: float, angle: float | None, exact) -> None:
+    """I (and d under gravity); α₀ = |τ₀|/I; ω at the bottom from energy, and at --angle from
+    energy with the sign it has when the body first gets there (from the exact motion, which also
+    says whether it gets there: energy at the angle is not enough where a top lies between); T₀;
+    under gravity the starting speed that just reaches the top, ½Iω₀,over² = U(180°) − U(θ₀) =
+    2G cos²(θ₀/2) + ½κ(π − |θ₀|)(π + |θ₀|) (no difference of near-equal energies near the top),
     and whether it goes over (under gravity alone: |ω₀| > ω₀,over; with a spring: ω ≠ 0 at ±180°)."""
     results.put("I", swing.inertia)
     if swing.gravity_torque:
@@ -66,13 +80,24 @@ def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: fl
     results.put("omega_bottom", swing.speed_at(0.0))
     if angle is not None:
         speed_at_angle = swing.speed_at(angle)
-        results.put("omega", speed_at_angle, f" at θ = {fmt(math.degrees(angle))}°")
-        if speed_at_angle is None:
+        balanced = getattr(exact, "balanced", False)  # at rest on the top: the speeds of a body that has just left it, either way
+        arrives = exact.time_to(angle) if speed_at_angle is not None and not balanced else None
+        if balanced:
+            pass
+        elif speed_at_angle is not None and arrives is None:
+            speed_at_angle = None
+            notes.append(f"the body never reaches θ = {fmt(math.degrees(angle))}°: a top it cannot pass lies between")
+        elif speed_at_angle is None:
             notes.append(f"the body never reaches θ = {fmt(math.degrees(angle))}°: it has too little energy")
+        else:
+            speed_at_angle *= first_sense(exact, angle, arrives)
+        results.put("omega", speed_at_angle, f" at θ = {fmt(math.degrees(angle))}°, when it first gets there")
     results.put("period_small", swing.small_period())
     if swing.gravity_torque:
         theta0, omega0 = swing.theta0, swing.omega0
-        omega0_over = math.sqrt(2 * max(swing.potential(math.pi) - swing.potential(theta0), 0.0) / swing.inertia)
+        half = math.cos(theta0 / 2)  # correctly rounded for the double θ₀, near the top too
+        rise = 2 * swing.gravity_torque * half * half + swing.torsion * (math.pi - abs(theta0)) * (math.pi + abs(theta0)) / 2
+        omega0_over = math.sqrt(2 * max(rise, 0.0) / swing.inertia)
         if swing.torsion == 0:
             goes_over = abs(omega0) > omega0_over
         else:
