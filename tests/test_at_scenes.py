@@ -49,6 +49,24 @@ def test_a_point_on_atwoods_pulley(m1, m2, pulley_mass, radius, at, t):
     assert found["v_t0"] == 0 and found["a_total0"] == pytest.approx(float(abs(a) / radius * at), rel=1e-12)
 
 
+def test_a_point_on_atwoods_pulley_after_the_masses_stop():
+    """Past the stop the pulley's α is the motion's then, not the one the masses started with:
+    0 where static friction holds them, the other phase's (the machine's from rest) where they
+    turn back. Worked here: m1 4 kg, m2 1 kg, a 2 kg disc (M/2 = 1 kg) of radius 0.1 m, 0.5 N·m
+    of axle friction (5 N at the rim); m1 thrown up at 1 m/s decelerates at (3g + 5 N)/6 kg, stops,
+    and comes down at (3g − 5 N)/6 kg."""
+    g = mpmath.mpf("9.80665")
+    first, second = (3 * g + 5) / 6, (3 * g - 5) / 6
+    stop = 1 / first
+    t = 1
+    found = _values(taucli.atwood(m1="4kg", m2="1kg", pulley_mass="2kg", pulley_radius="0.1m", axle_friction="0.5N*m", v0="-1m/s", time="1s", at="0.05m"))
+    radius = mpmath.mpf("0.1")
+    _expect_point(found, "0.05", second * (t - stop) / radius, second / radius, None)
+    # m2 on a slope with μs 0.6 holds the masses once they stop: no tangential acceleration
+    held = _values(taucli.atwood(m1="0.5kg", m2="5kg", pulley_radius="0.1m", incline="0.2rad", mu_k=0.5, mu_s=0.6, v0="1m/s", time="2s", at="0.1m"))
+    assert held["v"] == 0 and held["v_t"] == 0 and held["a_t"] == 0 and held["a_total"] == 0 and held["a_angle"] is None
+
+
 def test_atwoods_rim_moves_with_the_string_and_winds_what_the_masses_travel():
     found = _values(taucli.atwood(m1="4kg", m2="1kg", pulley_mass="2kg", pulley_radius="10cm", distance="1.5m", at="10cm"))
     assert found["v_t"] == pytest.approx(found["v"], rel=1e-14)

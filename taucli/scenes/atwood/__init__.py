@@ -59,10 +59,14 @@ def atwood(
     if at is not None:  # the machine, then the point on its pulley
         if rim_mu is not None:
             raise InputError("at", "does not apply with {rim_mu}: where the string slides the pulley's own turning is not followed in time")
-        report = atwood(m1=m1, m2=m2, pulley_mass=pulley_mass, pulley_radius=pulley_radius, pulley_shape=pulley_shape, pulley_inertia=pulley_inertia,
-                        axle_friction=axle_friction, incline=incline, mu_k=mu_k, mu_s=mu_s, g=g, v0=v0, distance=distance, time=time,
-                        radius1=radius1, radius2=radius2, part=part)
-        return on_the_pulley(report, at, pulley_radius, radius1, radius2, v0 or 0.0, distance, time)
+        machine = dict(m1=m1, m2=m2, pulley_mass=pulley_mass, pulley_radius=pulley_radius, pulley_shape=pulley_shape, pulley_inertia=pulley_inertia,
+                       axle_friction=axle_friction, incline=incline, mu_k=mu_k, mu_s=mu_s, g=g, radius1=radius1, radius2=radius2, part=part)
+        report = atwood(**machine, v0=v0, distance=distance, time=time)
+
+        def from_rest() -> float | None:  # once the masses have stopped: held (α = 0), or the other way at the machine's α from rest
+            return atwood(**machine).results["alpha"].value
+
+        return on_the_pulley(report, at, pulley_radius, radius1, radius2, v0 or 0.0, distance, time, from_rest)
 
     if m1 is None:
         raise InputError("m1", "is required", example="{m1} 4kg")

@@ -1,0 +1,210 @@
+"""Every result agrees with its definition, in every scene and every way of giving its inputs.
+
+A silent wrong number once came out of ``impulse``: with all five of I, ω₀, ω₁, τ, Δt given,
+``delta_omega`` was I(ω₁ − ω₀). This is the check that catches that class of defect. For each
+scene, seeded random draws build keyword sets (a model's base that works, then random subsets of
+the scene's other options, values over several orders of magnitude with both signs where a sign
+means something, one value in five written as a text in another unit); each is solved through
+the Python API; the draws the scene refuses with taucli.InputError are counted, and a fair share
+must be accepted and every model and branch reached, so that the check is not vacuous. On each
+accepted report every definition whose results are present and not null must hold:
+
+    |got − want| ≤ 1e-12 · max(|got|, |want|, scale)
+
+scale is 0 for a product or a quotient (agreement relative to the result); for a sum or a
+difference it is the size of its largest term, because the terms themselves carry a rounding of
+~1e-16 of their size, and a solver rightly computes a difference of near-equal numbers without
+the cancellation (KE_lost, a stop's ω₀ + αt): it and the difference of the two rounded results
+then agree to ulps of the terms, not of the difference; for an angle it is 1 rad (atan2 of two
+rounded sides is good to ulps of a radian). One definition is not an identity of the rounded
+numbers alone: spin-down's energy balance, KE0 − KE = Σ losses − work_drive, ties an ω and a θ
+found by stepping where there is no closed form (a motor against losses); there it is held to
+1e-9, rk45's accuracy at its default rtol 1e-10, and not at all for euler and rk4 (good to 1e-3
+by design).
+
+The definitions (tests/definitions/, one module per scene; conventions from docs/SCENE.md and
+DESIGN.md's "Names and signs"):
+
+- a point at r (--at; scenes/point.py): v_t = |ω|r (a speed), a_c = ω²r, a_t = αr along the
+  motion (−αr while ω < 0), a_total = √(a_t² + a_c²), a_angle = atan2(a_t, a_c) (signed,
+  positive toward the motion), s = rθ with θ the angle the scene reports (net, in spin-down);
+  v_t0, a_c0, a_total0, a_angle0 at the start; α that of the instant (after a stop: held or
+  turned back). The pendulum's v_t, a_t are sizes: rω, r|α|.
+- spin-down: KE0 = ½Iω₀², KE = ½Iω² at the end, the balance above, work_drive = τθ (constant
+  drive) or Pt (motor), the friction's work τ_f × the angle swept and each contact's its torque ×
+  that angle, the power of the drive (τω, P = τω for a motor) and of each loss (τ_f|ω|, bω²,
+  k|ω|ⁿ⁺¹, brakes' and faces' τ|ω|) at one instant, power_mean = work_drive/t, torque_net = Iα₀,
+  Iα₀ = the net torque at ω₀, the steady speed where the torques balance, revs = θ/2π (_stop,
+  _total), θ_total = |θ_stop| + |θ − θ_stop|, a constant α's drive and kinematics (ω = ω₀ + αt,
+  θ = ω₀t + ½αt², ω² = ω₀² + 2αθ, the stop), --in-time meeting its target, ω₀ from --ke0
+  (√(2E/I)) and --rim-speed (v/R), μNr and (2/3)μF(Ro³ − Ri³)/(Ro² − Ri²) or μF(Ro + Ri)/2
+  (pressed by the body's weight).
+- impulse: Δω = ω₁ − ω₀; J = τΔt, = ΔL = L1 − L0 (τΔt = IΔω), = I(ω₁ − ω₀) the body's own where
+  particles and couples meet it, = 0 for the skater, = ∫τ dt for a profile (trapezoid; Simpson
+  exact for a quadratic); J_net = IΔω; L0 = Iω₀ and L1 = I₁ω₁ (+ what meets or leaves the body),
+  L0 = L1 where no torque acts; KE = ½Iω² (+ ½mv²); work = KE1 − KE0; KE_lost = KE0 − KE1;
+  KE_lost_fraction = KE_lost/KE0; a rebound's v′ − ω₁r⊥ = −e(v − ω₀r⊥); each part's J = L₁ − L₀,
+  adding to zero; under a brake ω₁ from constant α in each stretch (held at rest), each
+  contact's τ|ω₀| and τ × angle swept, KE1 − KE0 = τθ − their work; peak_torque the largest in
+  size.
+- atwood: T1 = m1(g − a), T2 = m2(g + a2) hanging or m2(a + g sin θ) + μk N sgn v on a slope,
+  (T1 − T2)R − τ_a sgn v = Iα (stepped: T1r1 − T2r2), α = a/R, a2 = a r2/r1, a_massless, the
+  capstan ratio e^{μβ} sliding and e^{μ_min β} at the limit, grips ⇔ μ ≥ rim_mu_min, a_rim = αR,
+  uniform motion before a stop (v = v₀ + at, x = v₀t + ½at², v² = v₀² + 2ax).
+- rolling: ma = ΣF and Iα = Στ (I = k²mR²), α = a/R rolling, mu_min = |f|/N, |f| = μk N
+  slipping, rolls ⇔ μs ≥ mu_min, v² = 2aL, t = 2L/v, the climb (v₀²/2a, d sin θ, v₀/a), KE_trans
+  = ½mv², KE_rot = ½Iω², KE = their sum; a skid's v_roll (μk g and L about the contact), d_roll,
+  ω_roll = v_roll/R, energy_lost; a yo-yo's T = m(g − a), Iα = Tr, v² = v₀² + 2ah, ΔKE = mgh;
+  a spool's critical angle (a = 0 there).
+- pendulum: period_small = 2π√(I/(mgd + κ)), equivalent_length = centre_of_percussion = I/(md),
+  alpha0 = |mgd sin θ₀ + κθ₀|/I, ½Iω² + mgd(1 − cos θ) + ½κθ² the same at the start, the
+  bottom, --angle and (exact models) --time, omega0_over, goes_over, the pivot's force
+  m√((dω² + g cos θ)² + (dα + g sin θ)²), a torsion pendulum's 2π√(I/κ).
+- torque: τ = Σ r × F (rF sin θ in the plane), tau = |τ|, lever_arm = |r × F|/|F|;
+  L = Σ m r × v, L = |L|. gyro: L = Iω_s, Ω = mgr/L (τ/(L sin θ)), period_p = 2π/|Ω_slow|
+  (2π/|Ω| without exact rates), the roots of I⊥Ω²cos θ − LΩ + mgr = 0 (residual, sum and
+  product), spin_min = √(4I⊥ mgr cos θ)/I. inertia: the shapes' closed forms, I = I_cm + Md²,
+  k = √(I/M), a body's I and mass the sums of its parts'.
+
+A defect found in code this branch leaves to others (taucli/scenes/spin/, taucli/scenes/impulse/)
+is an xfail(strict=True) test below with its minimal call; the draws it touches are left out of
+the property test by a narrow predicate (the scene's KNOWN), so the rest stays checked. Take a
+predicate out with its fix.
+"""
+
+from __future__ import annotations
+
+import pytest
+from definitions import atwood, impulse, inertia, pendulum, rolling, spin, vectors
+from definitions.check import G0, run_scene, values
+
+import taucli
+
+
+def _face_weight_with_parts(kw: dict) -> bool:
+    """A face pressed by the body's weight, the body of parts: see test_face_weight_includes_the_parts."""
+    return bool(kw.get("part")) and any("force=" not in face for face in kw.get("face") or ())
+
+
+def _linear_drag(kw: dict) -> bool:
+    """--drag with --drag-exponent 1: see test_spin_linear_drag_is_reported_as_drag."""
+    return bool(kw.get("drag")) and kw.get("drag_exponent") == 1.0
+
+
+SPIN_KNOWN = (_face_weight_with_parts, _linear_drag)
+
+
+def _profile_beside_inertia_final(kw: dict) -> bool:
+    """See test_impulse_profile_with_inertia_final_is_not_ignored."""
+    return kw.get("torque_profile") is not None and kw.get("inertia_final") is not None
+
+
+def _point_under_friction(kw: dict) -> bool:
+    """--at with a brake or a face: see test_impulse_point_under_a_brake_*."""
+    return kw.get("at") is not None and bool(kw.get("brake") or kw.get("face"))
+
+
+IMPULSE_KNOWN = (_profile_beside_inertia_final, _point_under_friction, _face_weight_with_parts)
+
+
+def test_spin_down_results_agree_with_their_definitions():
+    branches = {"laws": 150, "alpha": 40, "kinematics": 40, "power": 40, "in_time": 40, "closed": 15, "bisection": 10, "friction": 80,
+                "viscous": 60, "drag": 50, "drag_exponent": 5, "torque": 60, "push": 8, "brake": 30, "face": 8, "face weight": 8,
+                "time": 100, "until_omega": 50, "until_angle": 30, "until_arc": 4, "energy": 100, "at": 60, "ke0": 8, "rim_speed": 8,
+                "stepper": 5, "held": 3, "units": 200}
+    _, checker = run_scene("spin_down", spin.draw_spin, spin.check_spin, 2600, 31, 0.5, branches, known=SPIN_KNOWN)
+    assert checker.checked["KE0 − KE = Σ losses − work_drive"] > 100
+
+
+def test_impulse_results_agree_with_their_definitions(tmp_path):
+    branches = {"balance": 150, "all five": 15, "solve inertia": 15, "solve omega0": 15, "solve omega1": 15, "solve torque": 15,
+                "solve duration": 15, "partial": 15, "skater": 30, "meeting": 60, "particle stick": 20, "particle angle": 10, "particle ride": 10,
+                "particle leave": 10, "particle rebound": 5, "couple": 20, "braked": 30, "brake": 20, "face": 10, "face weight": 4, "profile": 30,
+                "quadratic": 10, "samples": 10, "at": 60, "units": 100}
+    run_scene("impulse", lambda rng: impulse.draw_impulse(rng, tmp_path), impulse.check_impulse, 1600, 20, 0.5, branches, known=IMPULSE_KNOWN)
+
+
+def test_atwood_results_agree_with_their_definitions():
+    branches = {"hanging": 100, "incline": 60, "stepped": 50, "rim": 50, "pulley mass": 80, "pulley inertia": 50, "part": 15,
+                "axle friction": 40, "mu_k": 30, "mu_s": 20, "v0": 50, "distance": 60, "time": 60, "at": 50, "units": 60}
+    run_scene("atwood", atwood.draw_atwood, atwood.check_atwood, 1000, 11, 0.5, branches)
+
+
+def test_rolling_results_agree_with_their_definitions():
+    branches = {"incline": 100, "flat": 50, "pull": 100, "yoyo": 40, "k2": 40, "inertia": 40, "mu_s": 30, "mu_k": 30, "length": 50,
+                "height": 15, "climb": 15, "skid": 20, "rolls along": 15, "pull up a slope": 20, "spool": 25, "pull height": 20,
+                "yoyo by I": 4, "axle": 10, "drop": 20, "at": 60, "units": 60}
+    run_scene("rolling", rolling.draw_rolling, rolling.check_rolling, 1000, 5, 0.4, branches)
+
+
+def test_pendulum_results_agree_with_their_definitions():
+    branches = {"inertia": 60, "rod": 40, "disc": 30, "point": 30, "plate": 20, "torsion": 50, "at the top": 20, "angle": 60, "time": 60,
+                "at": 40, "method small-angle": 4, "method rk45": 4, "method verlet": 4, "method exact": 4, "units": 50}
+    run_scene("pendulum", pendulum.draw_pendulum, pendulum.check_pendulum, 700, 7, 0.5, branches)
+
+
+def test_torque_results_agree_with_their_definitions():
+    run_scene("torque", vectors.draw_torque, vectors.check_torque, 600, 3, 0.8, {"vectors": 60, "plane": 30, "particles": 30, "both": 20, "nearly parallel": 10})
+
+
+def test_gyro_results_agree_with_their_definitions():
+    run_scene("gyro", vectors.draw_gyro, vectors.check_gyro, 600, 13, 0.6, {"inertia": 60, "shape": 80, "torque": 30, "inertia_perp": 40, "units": 50})
+
+
+def test_inertia_results_agree_with_their_definitions():
+    branches = {"offset": 30, "part point": 15, "part disc": 15, "part inertia": 15, "part gyration": 15, "part density": 15, "units": 60,
+                **{shape: 10 for shape in inertia.SHAPE_DIMENSIONS}}
+    run_scene("inertia", inertia.draw_inertia, inertia.check_inertia, 800, 17, 0.8, branches)
+
+
+@pytest.mark.xfail(strict=True, reason="a face with no force= is pressed by the main shape's mass alone, not by the whole body's with its "
+                   "--part masses: spin/scene.py and impulse/pick.py pass body_options['mass'] to contact.contacts as the weight's mass")
+@pytest.mark.parametrize("scene", ["spin_down", "impulse"])
+def test_face_weight_includes_the_parts(scene):
+    # a 2 kg disc of radius 0.1 m with a 1 kg point on it, lying on its face, μ = 0.5 under uniform pressure:
+    # τ = μ (3 kg) g (2/3) R
+    extra = {"torque": 0.0, "duration": 1.0} if scene == "impulse" else {}
+    report = getattr(taucli, scene)(shape="disc", mass=2, radius=0.1, part=["point mass=1kg offset=0.05m"], omega0=10.0, face=["mu=0.5"], **extra)
+    assert report.results["torque_face"].value == pytest.approx(0.5 * 3 * G0 * 2 * 0.1 / 3, rel=1e-12)
+
+
+@pytest.mark.xfail(strict=True, reason="spin-down --drag k --drag-exponent 1 is merged into the viscous torque (torque_laws.solve): its work "
+                   "and power come out as work_viscous and power_viscous, 'the energy the viscous torque takes' with no --viscous given, "
+                   "and work_drag, power_drag are missing")
+def test_spin_linear_drag_is_reported_as_drag():
+    found = values(taucli.spin_down(inertia=1, omega0=10.0, drag=0.1, drag_exponent=1, energy=True, time=1))
+    omega = found["omega"]
+    assert found.get("power_viscous") is None and found.get("work_viscous") is None
+    assert found["power_drag"] == pytest.approx(0.1 * omega * omega, rel=1e-12)
+
+
+@pytest.mark.xfail(strict=True, reason="impulse with --inertia-final and --torque-profile drops the profile without a word (impulse/pick.py "
+                   "checks neither against the other): J = 0 and L conserved, though the profile's torque acts")
+def test_impulse_profile_with_inertia_final_is_not_ignored(tmp_path):
+    profile = tmp_path / "blow.csv"
+    profile.write_text("t [s], torque [N*m]\n0, 1\n1, 1\n")  # J = 1 N·m·s
+    try:
+        report = taucli.impulse(inertia=2, inertia_final=1, omega0=1.0, torque_profile=str(profile))
+    except taucli.InputError:
+        return  # refused: as good as taking the profile in
+    assert report.results["J"].value == pytest.approx(1.0, rel=1e-12)
+
+
+@pytest.mark.xfail(strict=True, reason="impulse --at with a brake or a face takes α = τ/I at the end and at the start (impulse/point.py), "
+                   "leaving the friction out: a_t, a_total, a_angle and a_total0, a_angle0 are of the torque alone")
+def test_impulse_point_under_a_brake_has_the_net_alpha():
+    # I = 2.5 kg·m², τ = 5 N·m against a brake of 0.4 × 100 N × 0.5 m = 20 N·m: α = (5 − 20)/2.5 = −6 rad/s²; ω 10 -> 4 rad/s in 1 s
+    found = values(taucli.impulse(inertia=2.5, omega0=10.0, torque=5, duration=1, brake=["force=100N mu=0.4 radius=0.5m"], at=0.5))
+    assert found["omega1"] == pytest.approx(4.0, rel=1e-12)
+    assert found["a_t"] == pytest.approx(-6 * 0.5, rel=1e-12)
+
+
+@pytest.mark.xfail(strict=True, reason="impulse --at with a brake that stops the body within Δt takes its angle as ½(ω₀ + ω₁)Δt "
+                   "(impulse/point.py), as if α were constant all along: s = 7.5 m where the body turned 8.33 rad to its stop and was "
+                   "held there, s = 4.17 m")
+def test_impulse_point_under_a_brake_travels_to_the_stop():
+    # α = −6 rad/s² (above): the body stops at t = 10/6 s after θ = 10²/12 rad; the brake's 20 N·m then holds it against 5 N·m
+    found = values(taucli.impulse(inertia=2.5, omega0=10.0, torque=5, duration=3, brake=["force=100N mu=0.4 radius=0.5m"], at=0.5))
+    assert found["omega1"] == 0
+    assert found["s"] == pytest.approx(0.5 * 100 / 12, rel=1e-12)
+
