@@ -129,6 +129,12 @@ def spec(**fields) -> str:
             out.append(f"{key}={value}")
     return " ".join(out)
 
+def _along(alpha: float, omega: float) -> float:
+    """α along the motion: as is while ω > 0, reversed while ω < 0; from rest the body sets off
+    along α, so it speeds up: |α| (#32: a_t was −1, a_angle −π/2, under a negative torque from rest)."""
+    return alpha if omega > 0 else -alpha if omega < 0 else abs(alpha)
+
+
 def point_checks(c: Checker, res: dict, r: float, omega, alpha, theta, *, start=None, prefix: str = "") -> None:
     """v_t = |ω|r, a_c = ω²r, a_t = ±αr along the motion, a_total, a_angle, s = rθ; and at the start
     (``start`` = (ω₀, α₀)) v_t0, a_c0, a_total0, a_angle0."""
@@ -136,7 +142,7 @@ def point_checks(c: Checker, res: dict, r: float, omega, alpha, theta, *, start=
         c.eq(prefix + "v_t = |ω| r", res.get("v_t"), abs(omega) * r)
         c.eq(prefix + "a_c = ω² r", res.get("a_c"), omega * omega * r)
         if alpha is not None:
-            a_t = (alpha if omega >= 0 else -alpha) * r
+            a_t = _along(alpha, omega) * r
             c.eq(prefix + "a_t = ±α r along the motion", res.get("a_t"), a_t)
     if res.get("a_t") is not None and res.get("a_c") is not None:
         c.eq(prefix + "a_total = √(a_t² + a_c²)", res.get("a_total"), math.hypot(res["a_t"], res["a_c"]))
@@ -149,7 +155,7 @@ def point_checks(c: Checker, res: dict, r: float, omega, alpha, theta, *, start=
         c.eq(prefix + "v_t0 = |ω₀| r", res.get("v_t0"), abs(omega0) * r)
         c.eq(prefix + "a_c0 = ω₀² r", res.get("a_c0"), omega0 * omega0 * r)
         if alpha0 is not None:
-            a_t0 = (alpha0 if omega0 >= 0 else -alpha0) * r
+            a_t0 = _along(alpha0, omega0) * r
             c.eq(prefix + "a_total0 = √(a_t0² + a_c0²)", res.get("a_total0"), math.hypot(a_t0, omega0 * omega0 * r))
             if res.get("a_angle0") is not None:
                 c.eq(prefix + "a_angle0 = atan2(a_t0, a_c0)", res["a_angle0"], math.atan2(a_t0, omega0 * omega0 * r), 1.0)

@@ -233,7 +233,8 @@ def check_impulse(kw: dict, report, c: Checker) -> None:
             exact = [scale * (a * u + b * u * u / 2 + q * u ** 3 / 3) for u in ((samples[0][0] - start) / scale, (samples[-1][0] - start) / scale)]
             c.eq("J = ∫τ dt (Simpson, exact for a quadratic)", res.get("J"), exact[1] - exact[0], size, *exact)
         c.eq("duration = t_last − t_first", res.get("duration"), samples[-1][0] - samples[0][0], samples[-1][0])
-        c.eq("delta_omega = J/I", res.get("delta_omega"), res["J"] / inertia)
+        if res.get("J") is not None:  # (withheld where Simpson's rule asked for leaves what the samples allow)
+            c.eq("delta_omega = J/I", res.get("delta_omega"), res["J"] / inertia)
         largest = max(samples, key=lambda s: abs(s[1]))
         c.true("peak_torque is the sample largest in size", abs(res["peak_torque"]) == abs(largest[1]), f"{res['peak_torque']} against {largest[1]}")
         for t, torque, omega in rows:

@@ -126,8 +126,13 @@ def check_pendulum(kw: dict, report, c: Checker) -> None:
         c.eq("small-angle period = period_small", res["period"], res["period_small"])
     if inp.get("at") is not None:
         r = inp["at"]
-        c.eq("a_t0 = r α₀", res.get("a_t0"), r * abs(accel(theta0)))
-        if inp.get("angle") is not None and res.get("omega") is not None:
-            c.eq("v_t = r ω at --angle", res.get("v_t"), r * res["omega"])
-            c.eq("a_t = r |α| at --angle", res.get("a_t"), r * abs(accel(inp["angle"])))
+        c.eq("a_t0 = r α₀ along the motion", res.get("a_t0"), r * _along(accel(theta0), omega0))
+        if inp.get("angle") is not None and res.get("omega") is not None:  # ω at --angle signed, as the body first gets there
+            c.eq("v_t = r |ω| at --angle", res.get("v_t"), r * abs(res["omega"]))
+            c.eq("a_t = r α along the motion at --angle", res.get("a_t"), r * _along(accel(inp["angle"]), res["omega"]))
             c.eq("a_c = r ω² at --angle", res.get("a_c"), r * res["omega"] ** 2)
+
+
+def _along(alpha: float, omega: float) -> float:
+    """α along the motion (taucli.scenes.point): negative while the body slows; from rest, |α|."""
+    return alpha if omega > 0 else -alpha if omega < 0 else abs(alpha)

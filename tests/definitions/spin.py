@@ -239,9 +239,15 @@ def check_spin(kw: dict, report, c: Checker) -> None:
         c.eq("torque_net = I α₀", res.get("torque_net"), inertia * res["alpha0"])
 
     # the instants: the drive's and the losses' power (ω_at), the energy's end (t_end, ω_end)
-    if mode in ("laws", "bisection"):
-        omega_at = res.get("omega") if time is not None else w0
-        t_end, omega_end = (time, res.get("omega")) if time is not None else (res.get("t_stop"), 0.0)
+    if mode in ("laws", "bisection"):  # --time, else the target (DESIGN: energy at a target), else the stop
+        if time is not None:
+            omega_at, t_end, omega_end = res.get("omega"), time, res.get("omega")
+        elif until_omega is not None or until_angle is not None:
+            reached = res.get("t_until")
+            omega_there = until_omega if until_omega is not None else res.get("omega")
+            omega_at, t_end, omega_end = (omega_there, reached, omega_there) if reached is not None else (None, None, None)
+        else:
+            omega_at, t_end, omega_end = w0, res.get("t_stop"), 0.0
     elif mode == "power":  # a target reached is the instant, else --time (power_report: the last given wins)
         at = None
         if until_omega is not None and res.get("t_until") is not None:
@@ -256,6 +262,8 @@ def check_spin(kw: dict, report, c: Checker) -> None:
         omega_at = res["omega"] if res.get("omega") is not None else w0
         t_end = time if time is not None else res.get("t_until")
         omega_end = res.get("omega")
+        if time is None and until_omega is not None and res.get("t_until") is not None and res.get("omega") is None:
+            omega_at = omega_end = until_omega  # a given α to a target speed: the energy at the target
 
     # energy: KE = ½Iω² at the start and at the end, the balance, the power at one instant
     if inertia is not None:
@@ -282,6 +290,12 @@ def check_spin(kw: dict, report, c: Checker) -> None:
     if mode in ("laws", "bisection", "alpha", "closed"):
         if time is not None and res.get("theta") is not None:
             net, swept = res["theta"], res["theta_total"] if res.get("theta_total") is not None else abs(res["theta"])
+        elif time is None and mode in ("laws", "bisection") and (until_omega is not None or until_angle is not None):
+            reached, stop = res.get("t_until"), res.get("t_stop")
+            net = (res.get("theta_until") if until_omega is not None else until_angle) if reached is not None else None
+            turned_back = stop is not None and reached is not None and reached > stop
+            swept = None if net is None or turned_back else abs(net)
+            net = None if turned_back else net
         elif time is None and mode in ("laws", "bisection") and res.get("theta_stop") is not None:
             net, swept = res["theta_stop"], abs(res["theta_stop"])
         else:

@@ -39,7 +39,7 @@ def _alpha_at(report: Report, torques: Torques, inertia: float | None, power: fl
 def _alpha_at_time(report: Report, torques: Torques, inertia: float | None, power: float | None, omega0: float, t: float) -> float | None:
     """α at time t under the torque laws from the closed form's phase variable, exact to its last
     digits near a steady speed (where τ − bω(t) − kω(t)² would cancel); None elsewhere."""
-    if inertia is None or power is not None or "alpha" in report.results or (torques.drag and torques.drag_exponent != 2):
+    if inertia is None or power is not None or "alpha" in report.results or report.method != "closed form":
         return None
     return evolve(inertia, torques, omega0, Evolver(Method("exact"))).rate_at(t)
 
