@@ -29,8 +29,9 @@ DESIGN.md's "Names and signs"):
   motion (−αr while ω < 0), a_total = √(a_t² + a_c²), a_angle = atan2(a_t, a_c) (signed,
   positive toward the motion), s = rθ with θ the angle the scene reports (net, in spin-down);
   v_t0, a_c0, a_total0, a_angle0 at the start; α that of the instant (after a stop: held or
-  turned back). The pendulum's v_t, a_t are sizes: rω, r|α|.
-- spin-down: KE0 = ½Iω₀², KE = ½Iω² at the end, the balance above, work_drive = τθ (constant
+  turned back); from rest a_t = |α|r (it sets off along α). The pendulum's ω at --angle is signed
+  as it first gets there, its a_t along the motion.
+- spin-down: KE0 = ½Iω₀², KE = ½Iω² at the end (--time, else the target, else the stop), the balance above, work_drive = τθ (constant
   drive) or Pt (motor), the friction's work τ_f × the angle swept and each contact's its torque ×
   that angle, the power of the drive (τω, P = τω for a motor) and of each loss (τ_f|ω|, bω²,
   k|ω|ⁿ⁺¹, brakes' and faces' τ|ω|) at one instant, power_mean = work_drive/t, torque_net = Iα₀,
@@ -66,10 +67,9 @@ DESIGN.md's "Names and signs"):
   product), spin_min = √(4I⊥ mgr cos θ)/I. inertia: the shapes' closed forms, I = I_cm + Md²,
   k = √(I/M), a body's I and mass the sums of its parts'.
 
-A defect found in code this branch leaves to others (taucli/scenes/spin/, taucli/scenes/impulse/)
-is an xfail(strict=True) test below with its minimal call; the draws it touches are left out of
-the property test by a narrow predicate (the scene's KNOWN), so the rest stays checked. Take a
-predicate out with its fix.
+Each defect this check found has a test below with its minimal call: a face pressed by a body
+of parts, a linear drag reported as viscous, a profile beside --inertia-final, a point under a
+brake (α without the friction, the angle past the stop).
 """
 
 from __future__ import annotations
@@ -81,38 +81,12 @@ from definitions.check import G0, run_scene, values
 import taucli
 
 
-def _face_weight_with_parts(kw: dict) -> bool:
-    """A face pressed by the body's weight, the body of parts: see test_face_weight_includes_the_parts."""
-    return bool(kw.get("part")) and any("force=" not in face for face in kw.get("face") or ())
-
-
-def _linear_drag(kw: dict) -> bool:
-    """--drag with --drag-exponent 1: see test_spin_linear_drag_is_reported_as_drag."""
-    return bool(kw.get("drag")) and kw.get("drag_exponent") == 1.0
-
-
-SPIN_KNOWN = (_face_weight_with_parts, _linear_drag)
-
-
-def _profile_beside_inertia_final(kw: dict) -> bool:
-    """See test_impulse_profile_with_inertia_final_is_not_ignored."""
-    return kw.get("torque_profile") is not None and kw.get("inertia_final") is not None
-
-
-def _point_under_friction(kw: dict) -> bool:
-    """--at with a brake or a face: see test_impulse_point_under_a_brake_*."""
-    return kw.get("at") is not None and bool(kw.get("brake") or kw.get("face"))
-
-
-IMPULSE_KNOWN = (_profile_beside_inertia_final, _point_under_friction, _face_weight_with_parts)
-
-
 def test_spin_down_results_agree_with_their_definitions():
     branches = {"laws": 150, "alpha": 40, "kinematics": 40, "power": 40, "in_time": 40, "closed": 15, "bisection": 10, "friction": 80,
                 "viscous": 60, "drag": 50, "drag_exponent": 5, "torque": 60, "push": 8, "brake": 30, "face": 8, "face weight": 8,
                 "time": 100, "until_omega": 50, "until_angle": 30, "until_arc": 4, "energy": 100, "at": 60, "ke0": 8, "rim_speed": 8,
                 "stepper": 5, "held": 3, "units": 200}
-    _, checker = run_scene("spin_down", spin.draw_spin, spin.check_spin, 2600, 31, 0.5, branches, known=SPIN_KNOWN)
+    _, checker = run_scene("spin_down", spin.draw_spin, spin.check_spin, 2600, 31, 0.5, branches)
     assert checker.checked["KE0 − KE = Σ losses − work_drive"] > 100
 
 
@@ -121,7 +95,7 @@ def test_impulse_results_agree_with_their_definitions(tmp_path):
                 "solve duration": 15, "partial": 15, "skater": 30, "meeting": 60, "particle stick": 20, "particle angle": 10, "particle ride": 10,
                 "particle leave": 10, "particle rebound": 5, "couple": 20, "braked": 30, "brake": 20, "face": 10, "face weight": 4, "profile": 30,
                 "quadratic": 10, "samples": 10, "at": 60, "units": 100}
-    run_scene("impulse", lambda rng: impulse.draw_impulse(rng, tmp_path), impulse.check_impulse, 1600, 20, 0.5, branches, known=IMPULSE_KNOWN)
+    run_scene("impulse", lambda rng: impulse.draw_impulse(rng, tmp_path), impulse.check_impulse, 1600, 20, 0.5, branches)
 
 
 def test_atwood_results_agree_with_their_definitions():
@@ -157,8 +131,6 @@ def test_inertia_results_agree_with_their_definitions():
     run_scene("inertia", inertia.draw_inertia, inertia.check_inertia, 800, 17, 0.8, branches)
 
 
-@pytest.mark.xfail(strict=True, reason="a face with no force= is pressed by the main shape's mass alone, not by the whole body's with its "
-                   "--part masses: spin/scene.py and impulse/pick.py pass body_options['mass'] to contact.contacts as the weight's mass")
 @pytest.mark.parametrize("scene", ["spin_down", "impulse"])
 def test_face_weight_includes_the_parts(scene):
     # a 2 kg disc of radius 0.1 m with a 1 kg point on it, lying on its face, μ = 0.5 under uniform pressure:
@@ -168,9 +140,6 @@ def test_face_weight_includes_the_parts(scene):
     assert report.results["torque_face"].value == pytest.approx(0.5 * 3 * G0 * 2 * 0.1 / 3, rel=1e-12)
 
 
-@pytest.mark.xfail(strict=True, reason="spin-down --drag k --drag-exponent 1 is merged into the viscous torque (torque_laws.solve): its work "
-                   "and power come out as work_viscous and power_viscous, 'the energy the viscous torque takes' with no --viscous given, "
-                   "and work_drag, power_drag are missing")
 def test_spin_linear_drag_is_reported_as_drag():
     found = values(taucli.spin_down(inertia=1, omega0=10.0, drag=0.1, drag_exponent=1, energy=True, time=1))
     omega = found["omega"]
@@ -178,8 +147,6 @@ def test_spin_linear_drag_is_reported_as_drag():
     assert found["power_drag"] == pytest.approx(0.1 * omega * omega, rel=1e-12)
 
 
-@pytest.mark.xfail(strict=True, reason="impulse with --inertia-final and --torque-profile drops the profile without a word (impulse/pick.py "
-                   "checks neither against the other): J = 0 and L conserved, though the profile's torque acts")
 def test_impulse_profile_with_inertia_final_is_not_ignored(tmp_path):
     profile = tmp_path / "blow.csv"
     profile.write_text("t [s], torque [N*m]\n0, 1\n1, 1\n")  # J = 1 N·m·s
@@ -190,8 +157,6 @@ def test_impulse_profile_with_inertia_final_is_not_ignored(tmp_path):
     assert report.results["J"].value == pytest.approx(1.0, rel=1e-12)
 
 
-@pytest.mark.xfail(strict=True, reason="impulse --at with a brake or a face takes α = τ/I at the end and at the start (impulse/point.py), "
-                   "leaving the friction out: a_t, a_total, a_angle and a_total0, a_angle0 are of the torque alone")
 def test_impulse_point_under_a_brake_has_the_net_alpha():
     # I = 2.5 kg·m², τ = 5 N·m against a brake of 0.4 × 100 N × 0.5 m = 20 N·m: α = (5 − 20)/2.5 = −6 rad/s²; ω 10 -> 4 rad/s in 1 s
     found = values(taucli.impulse(inertia=2.5, omega0=10.0, torque=5, duration=1, brake=["force=100N mu=0.4 radius=0.5m"], at=0.5))
@@ -199,9 +164,6 @@ def test_impulse_point_under_a_brake_has_the_net_alpha():
     assert found["a_t"] == pytest.approx(-6 * 0.5, rel=1e-12)
 
 
-@pytest.mark.xfail(strict=True, reason="impulse --at with a brake that stops the body within Δt takes its angle as ½(ω₀ + ω₁)Δt "
-                   "(impulse/point.py), as if α were constant all along: s = 7.5 m where the body turned 8.33 rad to its stop and was "
-                   "held there, s = 4.17 m")
 def test_impulse_point_under_a_brake_travels_to_the_stop():
     # α = −6 rad/s² (above): the body stops at t = 10/6 s after θ = 10²/12 rad; the brake's 20 N·m then holds it against 5 N·m
     found = values(taucli.impulse(inertia=2.5, omega0=10.0, torque=5, duration=3, brake=["force=100N mu=0.4 radius=0.5m"], at=0.5))

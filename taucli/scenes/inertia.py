@@ -321,6 +321,19 @@ def body_table(
     return parts_table(body_inertia(pieces)) if len(pieces) > 1 else None
 
 
+def body_mass(
+    *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
+    offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,
+) -> float | None:
+    """The whole body's mass where its pieces give it (the shape's with every part's, a part of
+    density= by its volume); None where a piece has none (--inertia, a part of inertia= alone)."""
+    pieces = ([main_part(shape, mass, axis, offset, dims)] if shape is not None else []) + list(part)
+    if inertia is not None or not pieces:
+        return mass
+    found = body_inertia(pieces)
+    return found.mass if all(p.part.mass is not None for p in found.parts) else None
+
+
 def body(
     *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
     offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,

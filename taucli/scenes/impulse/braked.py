@@ -11,10 +11,25 @@ from collections.abc import Sequence
 
 from taucli.options.impulse import COMMAND as TABLE
 from taucli.report import Report, Step, quantity_text, term
+from taucli.scenes.inertia import body_mass
 from taucli.scenes.contact import contacts
 from taucli.scenes.given import Brake, Face
 from taucli.scenes.motion import Evolver, Loads, Method, evolve
 from taucli.table import Results
+
+
+def _motion(inertia: float, omega0: float, torque: float, brakes, faces, gravity, body_options: dict):
+    """The contacts' torques, and the motion under the torque against them (closed form)."""
+    contact = contacts(brakes, faces, body_options, body_mass(**body_options) if faces else body_options.get("mass"), gravity)
+    loads = Loads(drive=torque, friction=contact.kinetic, static=contact.static)
+    return contact, evolve(inertia, loads, omega0, Evolver(Method("exact")))
+
+
+def braked_kinematics(inertia: float, omega0: float, torque: float, duration: float, brakes, faces, gravity, body_options: dict) -> dict:
+    """α at the start and at the end of Δt (friction against the motion; held: 0), and the net
+    angle turned, for a point on the body (--at)."""
+    _, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options)
+    return {"alpha0": motion.initial_rate, "alpha": motion.rate_at(duration), "theta": motion.state_at(duration)[1]}
 
 
 def solve_braked(
@@ -34,9 +49,7 @@ def solve_braked(
     way; ω₁ at Δt, J = τΔt applied, J_net = I(ω₁ − ω₀), and each friction's torque, work over the
     angle swept both ways, and power at the start. ``gravity`` gives the weight on a face with no
     force= (None where every face has one); ``body_options`` give the radii the contacts take."""
-    contact = contacts(brakes, faces, body_options, body_options.get("mass"), gravity)
-    loads = Loads(drive=torque, friction=contact.kinetic, static=contact.static)
-    motion = evolve(inertia, loads, omega0, Evolver(Method("exact")))
+    contact, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options)
     omega_end, theta = motion.state_at(duration)
     stop = motion.stop if motion.stop is not None and motion.stop[0] < duration else None
     # the angle swept both ways: to the stop, then (turned back) from there

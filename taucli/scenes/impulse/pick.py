@@ -9,7 +9,7 @@ from taucli.report import Report, Step
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.given import Brake, Couple, Face, Particle
 from taucli.scenes.impulse.balance import solve_balance
-from taucli.scenes.impulse.braked import solve_braked
+from taucli.scenes.impulse.braked import braked_kinematics, solve_braked
 from taucli.scenes.impulse.changing_inertia import solve_changing_inertia
 from taucli.scenes.impulse.meeting import solve_meeting
 from taucli.scenes.impulse.point import point_after
@@ -51,6 +51,10 @@ def impulse(
         report = impulse(omega0=omega0, omega1=omega1, torque=torque, force=force, lever=lever, push_angle=push_angle, duration=duration, inertia_final=inertia_final,
                          torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, g=g, **body_options)
         given = {"omega0": omega0, "omega1": omega1, "torque": _with_push(torque, force, lever, push_angle)[0], "duration": duration, "inertia": _body(body_options)[0]}
+        if brake or face:  # friction acts too: α and the angle from the braked motion (it may stop, or turn back)
+            w0 = report.inputs["omega0"].value if "omega0" in report.inputs else omega0
+            g_face = g if g is not None else (report.inputs["g"].value if "g" in report.inputs else None)
+            given.update(braked_kinematics(given["inertia"], w0, given["torque"], duration, tuple(brake), tuple(face), g_face, body_options))
         return point_after(report, at, body_options.get("radius", body_options.get("outer_radius")), given)
 
     inertia, inertia_steps = _body(body_options)
@@ -77,7 +81,8 @@ def impulse(
         return solve_balance(inertia, omega0, omega1, torque, duration, inertia_steps=inertia_steps)
     mode = "inertia_final" if inertia_final is not None else "torque_profile"
     _check_changing_or_sampled(mode, inertia, {"omega1": omega1, "torque": torque, "duration": duration,
-                                       "inertia_final": inertia_final if mode != "inertia_final" else None})
+                                       "inertia_final": inertia_final if mode != "inertia_final" else None,
+                                       "torque_profile": torque_profile if mode != "torque_profile" else None})
     if mode == "inertia_final":
         return solve_changing_inertia(inertia, inertia_final, omega0 or 0.0, inertia_steps=inertia_steps)
     assumed = Assumed()

@@ -31,7 +31,9 @@ def _point_after(report: Report, r: float, given: dict) -> Report:
     results = Results(TABLE)
     results.update(report.results)
     notes, steps = list(report.notes), list(report.steps)
-    if torque is not None and inertia:
+    if "alpha" in given:  # a braked impulse: α and the net angle from its motion (friction against it; it may stop)
+        alpha, alpha0, theta, when = given["alpha"], given["alpha0"], given["theta"], " at the end of the impulse"
+    elif torque is not None and inertia:
         alpha, theta = torque / inertia, None if duration is None or omega0 is None or omega1 is None else (omega0 + omega1) * duration / 2
         alpha0, when = alpha, " at the end of the impulse"
     elif report.model.startswith("sampled"):

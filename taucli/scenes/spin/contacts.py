@@ -9,6 +9,7 @@ from dataclasses import replace
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, quantity_text
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.inertia import body_mass
 from taucli.scenes.contact import body_rim, contacts
 from taucli.table import Results
 
@@ -52,7 +53,7 @@ def put_contacts(brakes, faces, body_options: dict, rim: float | None, assumed: 
     shape_rim = body_rim(body_options)
     options = body_options if shape_rim is not None or rim is None else {**body_options, "shape": "disc", "radius": rim}
     g = assumed.gravity(g) if any(face.force is None for face in faces) else None
-    contact = contacts(brakes, faces, options, body_options.get("mass"), g)
+    contact = contacts(brakes, faces, options, body_mass(**body_options) if faces else body_options.get("mass"), g)
     if brakes:
         results.put("torque_brake", contact.brake)
     if faces:

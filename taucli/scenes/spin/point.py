@@ -41,6 +41,8 @@ def _alpha_at_time(report: Report, torques: Torques, inertia: float | None, powe
     digits near a steady speed (where τ − bω(t) − kω(t)² would cancel); None elsewhere."""
     if inertia is None or power is not None or "alpha" in report.results or report.method != "closed form":
         return None
+    if torques.drag and torques.drag_exponent == 1:  # kω is a viscous torque, as the torque laws take it
+        torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0, torques.static)
     return evolve(inertia, torques, omega0, Evolver(Method("exact"))).rate_at(t)
 
 

@@ -84,8 +84,9 @@ def solve(
     adds KE, the work of each torque and the power."""
     if torques.drag and not 1 <= torques.drag_exponent <= 10:
         raise InputError("drag_exponent", "expected a number from 1 to 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
-    if torques.drag and torques.drag_exponent == 1:
-        torques = Torques(torques.drive, torques.friction, torques.viscous + torques.drag, 0.0, 2.0, torques.static)
+    linear_drag = torques.drag if torques.drag and torques.drag_exponent == 1 else 0.0
+    if linear_drag:  # kω is a viscous torque: the motion takes b + k together; the energy is shared back out below
+        torques = Torques(torques.drive, torques.friction, torques.viscous + linear_drag, 0.0, 2.0, torques.static)
     if until_angle is not None and (time is not None or until_omega is not None):
         raise InputError("until_angle", "conflicts with {time} and {until_omega}: ask for one target at a time (a run each)")
     closed_form = torques.drag == 0 or torques.drag_exponent == 2
@@ -144,6 +145,8 @@ def solve(
         elif until_angle is not None:
             target = (answers["t_until"], None, f"θ = {fmt(until_angle)} rad")
         put_energy(motion, inertia, torques, omega0, time, results, notes, target)
+        if linear_drag:
+            _share_linear_drag(results, torques.viscous - linear_drag, linear_drag)
     if evolver.unstable:
         notes.extend(dict.fromkeys(evolver.unstable))
         for name in results:
@@ -169,6 +172,20 @@ def solve(
         model += "; static friction holds it once stopped" if not held_from_start else "; held at rest by static friction"
     trajectory = None if evolver.unstable else deferred(_trajectory, motion, time, omega_inf)
     return Report("spin-down", model, described, results, steps, notes, tables=tables, trajectory=trajectory)
+
+
+def _share_linear_drag(results: Results, viscous: float, drag: float) -> None:
+    """The work and power of b + k together (a drag kω with n = 1 is a viscous torque) shared out
+    between them by coefficient: both are the same ∫ω² dt and ω², times b or k."""
+    for kind in ("work", "power"):
+        joint = results.pop(f"{kind}_viscous", None)
+        if joint is None:
+            continue
+        part = joint.label.partition("takes")[2]
+        share = None if joint.value is None else joint.value / (viscous + drag)
+        if viscous:
+            results.put(f"{kind}_viscous", None if share is None else viscous * share, part)
+        results.put(f"{kind}_drag", None if share is None else drag * share, part)
 
 
 def _steps(inertia_steps, drive_steps: Sequence[Step], torques: Torques, omega0: float, alpha0: float, inertia: float, motion, results: dict,
