@@ -149,7 +149,7 @@ def linearity(scene: Scene, nominal: Report, spreads: Mapping[str, float], slope
     base = numeric(nominal)
     notes = []
     for name, sigma in spreads.items():
-        flag = "{" + name + "}"
+        flag = scene.unknowns[name].spelled if name in scene.unknowns else "{" + name + "}"  # "{particle} 2 speed="
         changes, bent = [], []
         for step in (-sigma, sigma):
             x = point[name] + step
