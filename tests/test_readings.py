@@ -26,6 +26,41 @@ from taucli.errors import InputError
 PI = math.pi
 
 
+# 4. ranges
+
+
+@pytest.mark.parametrize("text", ["1...5kg", "1....5kg", "1..5..9kg", "1..5...9kg"])
+def test_a_range_is_two_dots_exactly(text):
+    assert_usage_error(
+        run_taucli("inertia", "disc", "--mass", text, "--radius", "0.2m", "--get", "I"),
+        "--mass: expected a range FROM..TO (two dots) or a list A,B (e.g. --mass 1..5kg or --mass 1,5kg)", f"got '{text}'",
+    )
+
+
+def test_a_range_example_is_quoted_where_a_shell_needs_it():
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--torque", "1...2N*m"), "(e.g. --torque '1..5N*m' or --torque '1,5N*m')")
+
+
+@pytest.mark.parametrize("text,fix", [("1-5kg", "1..5kg"), ("1 - 5 kg", "1..5kg"), ("1–5kg", "1..5kg"), ("0.5-4 kg m^2", "'0.5..4kg*m^2'")])
+def test_a_dash_between_two_numbers_is_refused_naming_the_range(text, fix):
+    kind = "moment of inertia" if "m^2" in text else "mass"
+    with pytest.raises(InputError) as refused:
+        units.parse(text, "--x", kind)
+    assert f"got {text!r}: a dash between two numbers; a range is written {fix}" in str(refused.value)
+
+
+def test_a_subtraction_and_an_exponent_are_no_dash_between_numbers():
+    assert units.parse("4kg-200g", "--x", "mass").value == pytest.approx(3.8, rel=1e-15)
+    assert units.parse("1e-5kg", "--x", "mass").value == 1e-5
+    assert units.parse("-5 N*m", "--x", "torque", sign="any").value == -5.0
+
+
+def test_two_dots_still_sweep_from_one_end_to_the_other():
+    done = run_taucli("inertia", "disc", "--mass", "1..5kg", "--radius", "1m", "--points", "3", "--get", "I")
+    assert done.code == 0, done.err
+    assert [line.split("\t") for line in done.out.splitlines()] == [["1.0", "0.5"], ["3.0", "1.5"], ["5.0", "2.5"]]
+
+
 # 9. a parenthesis is not an uncertainty
 
 
