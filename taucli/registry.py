@@ -4,7 +4,8 @@ pint is imported and its registry built only here, and only for a text taucli ha
 (taucli.units keeps each unit's SI factor, taucli.cache keeps it between runs). The rules: 1/time
 for an angular velocity or acceleration is revolutions per unit time (ω = 2πn); an angle needs
 its unit, 0 apart; a sum may not add a unit with an angle to one without; a weight for a mass is
-read in newtons (taucli.units divides by g), a mass for a force is its weight at standard gravity.
+read in newtons (taucli.units divides by g), a mass for a force is its weight at standard gravity;
+a prefix's name glued to a unit's symbol (``kilos``: pint's kilosecond) is no unit.
 """
 
 from __future__ import annotations
@@ -78,9 +79,15 @@ def _pint_quantity(cleaned: str, option: str, kind: Kind, shown: str):
     import pint  # deferred: pint, as in registry()
 
     ureg = registry()
+    for token in spellings.tokens(cleaned):
+        if token.kind == "name" and (mixed := _prefix_name_on_symbol(token.text)) is not None:
+            meant = _unmixed(mixed, kind)
+            raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: unknown unit {token.text!r}",
+                             hint=f"did you mean {meant!r}?" if meant else None)
     try:
         q = ureg.Quantity(cleaned)
     except pint.UndefinedUnitError as err:
+
         name = str(getattr(err, "unit_names", [""])[0] if getattr(err, "unit_names", None) else err)
         raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: unknown unit {name!r}", hint=_suggest(name, kind)) from None
     except (OverflowError, ZeroDivisionError):
@@ -103,12 +110,49 @@ def quantity(text: str, option: str, kind_name: str, *, original: str | None = N
 
 
 def _a_unit(name: str) -> bool:
-    """Whether pint knows ``name`` as a unit. ``name in registry`` raises for some names (it reads
-    "nan" as a number with no unit, looks "__dict__" up as an attribute): those are not units."""
+    """Whether pint knows ``name`` as a unit (and taucli takes it: not "kilos"). ``name in
+    registry`` raises for some names (it reads "nan" as a number with no unit, looks "__dict__" up
+    as an attribute): those are not units."""
     try:
-        return name in registry()
+        return name in registry() and _prefix_name_on_symbol(name) is None
     except Exception:  # noqa: BLE001 - whatever pint raises, the name is not one of its units
         return False
+
+
+def _prefix_name_on_symbol(name: str) -> tuple[str, str] | None:
+    """(the prefix's symbol, the unit's symbol) where pint would read ``name`` as a prefix written
+    as its name glued to a unit written as its symbol ("kilos": kilo + s, a kilosecond; "megas",
+    "millim", "kiloN"), else None. SI writes a prefix's name with a unit's name (kilogram) and its
+    symbol with a symbol (kg): the mixed word is no unit a person means ("kilos" are kilograms),
+    so it is refused as unknown rather than read as pint reads it. A prefix's symbol on a unit's
+    name ("kmeter", "mbar") reads as meant and is left to pint. The first reading found is
+    pint's own (PlainRegistry._yield_unit_triplets, same order)."""
+    ureg = registry()
+    units = ureg._units
+    if name in units:
+        return None
+    for suffix, prefix in ((suffix, prefix) for suffix in ureg._suffixes for prefix in ureg._prefixes):
+        if not (name.startswith(prefix) and name.endswith(suffix)):
+            continue
+        rest = name[len(prefix) : len(name) - len(suffix)]
+        if suffix and len(rest) == 1 or rest not in units:
+            continue
+        if not prefix:
+            return None  # a unit with a plural s ("mins"): pint's first reading has no prefix
+        definition, prefixed = units[rest], ureg._prefixes[prefix]
+        named = prefix == prefixed.name or (prefix in prefixed.aliases and len(prefix) >= 4)  # "kilo", "deka"; not "mu"
+        symbol = rest != definition.name and not (rest in definition.aliases and len(rest) >= 4)  # "s", "min", "sec"; not "litre"
+        return (prefixed.symbol, definition.symbol) if named and symbol else None
+    return None
+
+
+def _unmixed(mixed: tuple[str, str], kind: Kind) -> str | None:
+    """What a prefix's name on a unit's symbol may have meant, as a unit of ``kind``: the prefix's
+    symbol on it ("ks" for "kilos" given as a time), or on one of the kind's units ("kg" for
+    "kilos" given as a mass); None where neither is of the kind."""
+    prefix, symbol = mixed
+    wanted = registry().Quantity(1, kind.si_unit).dimensionality
+    return next((unit for unit in (prefix + symbol, *(prefix + common for common in kind.common_units)) if _a_unit(unit) and _fits(unit, wanted)), None)
 
 
 def _suggest(name: str, kind: Kind, *, typo: bool = True) -> str | None:
@@ -121,6 +165,8 @@ def _suggest(name: str, kind: Kind, *, typo: bool = True) -> str | None:
     for variant in (name.lower(), name.upper(), name.capitalize(), name[:1].lower() + name[1:].upper()):
         if variant != name and _a_unit(variant):
             close.append(variant)
+        elif variant != name and (mixed := _prefix_name_on_symbol(variant)) is not None and (meant := _unmixed(mixed, kind)):
+            close.append(meant)  # "Kilos" for a mass: "kilos", no unit, meant "kg"
     close = list({spellings.respell(unit): unit for unit in reversed(close) if _fits(unit, wanted)}.values())[::-1]
     if close:
         return "did you mean " + " or ".join(repr(unit) for unit in close[:2]) + "?"

@@ -84,3 +84,34 @@ def test_a_torque_profile_takes_an_inertia_with_parentheses(tmp_path):
     assert float(done.out) == pytest.approx(0.1, rel=1e-12)
     refused = run_taucli("impulse", "--inertia", "90(1) kg*m^2", "--torque-profile", str(tmp_path / "pulse.csv"), "--omega0", "0")
     assert_usage_error(refused, "does not combine with an uncertainty")
+
+
+# 14. a prefix's name glued to a unit's symbol
+
+
+@pytest.mark.parametrize(
+    "text,kind,suggestion",
+    [
+        ("5kilos", "mass", "unknown unit 'kilos'; did you mean 'kg'?"),
+        ("5 Kilos", "mass", "unknown unit 'Kilos'; did you mean 'kg'?"),
+        ("5 kilos", "time", "unknown unit 'kilos'; did you mean 'ks'?"),
+        ("5 megas", "mass", "unknown unit 'megas'; did you mean 'Mg'?"),
+        ("5 millim", "length", "unknown unit 'millim'; did you mean 'mm'?"),
+        ("5 kiloN", "force", "unknown unit 'kiloN'; did you mean 'kN'?"),
+        ("5 micros", "time", "unknown unit 'micros'"),
+        ("5 kilos + 2 kg", "mass", "unknown unit 'kilos'; did you mean 'kg'?"),
+    ],
+)
+def test_a_prefix_name_glued_to_a_unit_symbol_is_an_unknown_unit(text, kind, suggestion):
+    with pytest.raises(InputError) as refused:
+        units.parse(text, "--x", kind)
+    assert suggestion in str(refused.value)
+
+
+@pytest.mark.parametrize(
+    "text,kind,si",
+    [("5 kilograms", "mass", 5.0), ("5 kg", "mass", 5.0), ("5 kilometres", "length", 5000.0), ("5 kmeter", "length", 5000.0),
+     ("5 mins", "time", 300.0), ("5 hrs", "time", 18000.0), ("5 microns", "length", 5e-6), ("5 Ms", "time", 5e6), ("1 kWh", "energy", 3.6e6)],
+)  # fmt: skip
+def test_names_with_names_and_symbols_with_symbols_still_read(text, kind, si):
+    assert units.parse(text, "--x", kind).value == pytest.approx(si, rel=1e-14)
