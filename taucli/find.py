@@ -30,8 +30,8 @@ PER_DECADE = 4
 EPS = 2.0**-52
 
 
-def _target(scene: Scene, want: str) -> tuple[str, float, float, str | None]:
-    """(result key, target in SI, its σ, its unit) from "a=4.0+/-0.1m/s^2"."""
+def _target(scene: Scene, want: str) -> tuple[str, float, float, str | None, str | None]:
+    """(result key, target in SI, its σ, its unit, a note on how the value was read) from "a=4.0+/-0.1m/s^2"."""
     command = scene.command
     key, sep, text = str(want).partition("=")
     key, text = key.strip(), text.strip()
@@ -48,10 +48,10 @@ def _target(scene: Scene, want: str) -> tuple[str, float, float, str | None]:
     value_text, spread_text = parts if parts else (text, None)
     option = "{want} " + key
     if kind is None:  # a unit no option takes (J, W): the number times the unit's SI factor
-        return key, _in_si(value_text, result.unit, key), _in_si(spread_text, result.unit, key) if spread_text else 0.0, result.unit
-    value = units.parse(value_text, option, kind, sign="any", gravity=scene.si.get("g")).value
+        return key, _in_si(value_text, result.unit, key), _in_si(spread_text, result.unit, key) if spread_text else 0.0, result.unit, None
+    value = units.parse(value_text, option, kind, sign="any", gravity=scene.si.get("g"))
     spread = units.parse(spread_text, option + " (its uncertainty)", kind, sign="nonnegative").value if spread_text else 0.0
-    return key, value, spread, result.unit
+    return key, value.value, spread, result.unit, value.note
 
 
 def _in_si(text: str, si_unit: str, key: str) -> float:
@@ -131,7 +131,7 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
         raise InputError("find", f"expected a quantity option of {command.name}: {quantities}", got=repr(name))
     if scene.given.get(name) is not None:
         raise InputError(name, "is what {find} solves for: leave it out", example=f"{{find}} {name}")
-    key, target, target_spread, unit = _target(scene, want)
+    key, target, target_spread, unit, read_as = _target(scene, want)
     si_unit = units.KINDS[option.kind].si_unit
 
     def f(x: float) -> float | None:
@@ -168,7 +168,7 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
     if len(roots) > 1:
         results["roots"] = Value(list(roots), si_unit, f"every {name} that gives {key} = {fmt(target, 6)} {_unit(unit)}".rstrip())
     results.update(nominal.results)
-    extra = list(notes)
+    extra = [*notes, *([read_as] if read_as else [])]
     if len(roots) > 1:
         extra.append(f"{len(roots)} values of {{{name}}} give {key} = {fmt(target, 6)}: " + ", ".join(quantity_text(r, si_unit, 6) for r in roots) + "; the smallest in size is the result")
     if jumps:

@@ -1,11 +1,14 @@
 """The one pint registry, and what it makes of a unit's text under taucli's rules.
 
 pint is imported and its registry built only here, and only for a text taucli has not read before
-(taucli.units keeps each unit's SI factor, taucli.cache keeps it between runs). The rules: 1/time
-for an angular velocity or acceleration is revolutions per unit time (ω = 2πn); an angle needs
-its unit, 0 apart; a sum may not add a unit with an angle to one without; a weight for a mass is
-read in newtons (taucli.units divides by g), a mass for a force is its weight at standard gravity;
-a prefix's name glued to a unit's symbol (``kilos``: pint's kilosecond) is no unit.
+(taucli.units keeps each unit's SI factor, taucli.cache keeps it between runs). The rules: for an
+angular velocity or acceleration, a 1/time with no angle in it is revolutions where it says so
+(``Hz``, ``min^-1``: ω = 2πn), radians where it is a speed over a length (``(90 km/h)/(60 m)``:
+ω = v/R), and refused as ambiguous otherwise (``1/s``, ``s^-2``); an angle, an angular velocity
+and an angular acceleration need their unit, 0 apart; a sum may not add a unit with an angle to
+one without; a weight for a mass is read in newtons (taucli.units divides by g), a mass for a force
+is its weight at standard gravity; a prefix's name glued to a unit's symbol (``kilos``: pint's
+kilosecond) is no unit.
 """
 
 from __future__ import annotations
@@ -26,8 +29,10 @@ TWO_PI = 2.0 * math.pi
 
 # How a unit is read, kept beside its SI factor: as pint reads it; revolutions per unit time
 # (the factor holds the 2*pi); a weight for a mass (the factor gives newtons, parse divides by g);
-# a mass for a force (the factor holds standard gravity).
-AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT = 0, 1, 2, 3
+# a mass for a force (the factor holds standard gravity); a speed (or a tangential acceleration)
+# over a length, ω = v/R, in radians.
+AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS = 0, 1, 2, 3, 4
+HOWS = (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS)
 
 
 # Names for dimensionalities that show up in "got ..." messages, keyed by exponents.
@@ -87,7 +92,6 @@ def _pint_quantity(cleaned: str, option: str, kind: Kind, shown: str):
     try:
         q = ureg.Quantity(cleaned)
     except pint.UndefinedUnitError as err:
-
         name = str(getattr(err, "unit_names", [""])[0] if getattr(err, "unit_names", None) else err)
         raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: unknown unit {name!r}", hint=_suggest(name, kind)) from None
     except (OverflowError, ZeroDivisionError):
@@ -250,8 +254,8 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
             value = float(q.magnitude)
         except (OverflowError, TypeError, ValueError):
             raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
-        if kind.name == "angle" and value != 0:
-            raise bare_angle(option, text)
+        if kind.name in NEEDS_ITS_UNIT and value != 0:
+            raise bare_number(option, text, kind, value)
         return value, AS_GIVEN
     how, target = AS_GIVEN, kind.si_unit
     wanted = ureg.Quantity(1, kind.si_unit).dimensionality
@@ -270,8 +274,9 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     except (OverflowError, TypeError, ValueError):
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
     radians = _radians(q.units)
-    if kind.name in ANGULAR and radians == 0:  # 1/time for a rotation: revolutions per unit time
-        how, value = REVOLUTIONS, value * TWO_PI
+    if kind.name in ANGULAR and radians == 0:  # 1/time for a rotation: revolutions, v/R in radians, or ambiguous
+        how = _per_time(cleaned, q, text, option, kind)
+        value *= TWO_PI if how == REVOLUTIONS else 1.0
     elif kind.name == "angle" and radians == 0 and value != 0:
         raise bare_angle(option, text)
     elif kind.name == "dimensionless" and radians != 0:
@@ -304,6 +309,99 @@ def _case_of(cleaned: str, kind: Kind) -> str | None:
     """A unit of the kind that ``cleaned``'s unit is in another case of ("nm" for a torque: N*m)."""
     split = number_times_unit(cleaned)
     return _suggest(split[1], kind, typo=False) if split and re.fullmatch(r"[A-Za-z]+", split[1]) else None
+
+
+def _per_time(cleaned: str, q, text: str, option: str, kind: Kind) -> int:
+    """How a 1/time with no angle in it is read for an angular velocity or acceleration: Hz and
+    min^-1 (1/min, min-1) name a rotational frequency n, revolutions per unit time (ISO 80000-3:
+    ω = 2πn); a speed over a length (or a tangential acceleration over one) is ω = v/R, in radians;
+    any other (1/s, s^-1, /s, s^-2, 1/h) could be either, and is refused."""
+    powers = dict(q.unit_items())
+    if any(unit.endswith("hertz") and power for unit, power in powers.items()):
+        return REVOLUTIONS
+    if _over_a_length(cleaned, kind):
+        return OVER_RADIUS
+    if powers.get("minute", 0) < 0:
+        return REVOLUTIONS
+    raise _ambiguous(cleaned, q, text, option, kind)
+
+
+def _over_a_length(cleaned: str, kind: Kind) -> bool:
+    """Whether ``cleaned`` is a speed (for an angular acceleration, an acceleration) divided by a
+    length: "(90 km/h)/(60 m)", "m/s/m", "(6 m/s^2)/(0.3 m)". It is cut at its last "/" outside
+    parentheses, and each side read alone."""
+    found = spellings.tokens(cleaned)
+    depth, cut = 0, None
+    for i, token in enumerate(found):
+        depth += (token.text == "(") - (token.text == ")")
+        if token.text == "/" and depth == 0:
+            cut = i
+    if cut is None:
+        return False
+    ureg = registry()
+    try:
+        top = ureg.Quantity("".join(token.text for token in found[:cut]))
+        bottom = ureg.Quantity("".join(token.text for token in found[cut + 1 :]))
+        squared = kind.name == "angular acceleration"
+        return top.dimensionality == ureg.Quantity(1, "m/s**2" if squared else "m/s").dimensionality and bottom.dimensionality == ureg.Quantity(1, "m").dimensionality
+    except Exception:  # noqa: BLE001 - a side pint cannot read alone is no speed or length
+        return False
+
+
+class Ambiguous(InputError):
+    """A 1/time given for an angular velocity or acceleration that could be radians or revolutions."""
+
+    def __init__(self, option: str, kind: Kind, *, got: str, example: str, why: str, per: str) -> None:
+        super().__init__(option, f"expected {article(kind.name)} with its angle unit", example=example, got=f"{got}: {why}")
+        self.why, self.per = why, per  # "1/s could be radians or revolutions per second", "s"
+
+
+def _ambiguous(cleaned: str, q, text: str, option: str, kind: Kind) -> Ambiguous:
+    """The refusal of a 1/time that names no angle: both readings, in the unit and number typed
+    ("80 1/s": 80rad/s or 80rev/s) where that is one time unit to a power, else per second."""
+    squared = kind.name == "angular acceleration"
+    power = -2 if squared else -1
+    items = [(unit, p) for unit, p in q.unit_items() if p]
+    whole = screen(text, option, kind)
+    split = number_times_unit(whole)
+    typed = split is not None and split[1] == cleaned  # number × this unit, as "80 1/s" is
+    if len(items) == 1 and items[0][1] == power:
+        per, magnitude = items[0][0], float(q.magnitude)
+    else:
+        per, magnitude = "second", float(q.to(f"1/s**{-power}").magnitude)
+    number = re.match(rf"\s*({_NUMBER})", whole)
+    if typed and magnitude == 1 and number is not None:
+        count = number[1]  # as typed
+    else:
+        count = f"{(split[0] if typed else 1.0) * magnitude:.6g}"
+    symbol = registry().get_symbol(per)
+    shown = cleaned.replace("**", "^") if typed else f"1/{symbol}" + ("^2" if squared else "")
+    why = f"{shown} could be radians or revolutions per {per}{' squared' if squared else ''}"
+    example = f"'{count} rad/{symbol}^2' or '{count} rev/{symbol}^2'" if squared else f"{count}rad/{symbol} or {count}rev/{symbol}"
+    return Ambiguous(option, kind, got=repr(text), example=example, why=why, per=symbol)
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+# Kinds whose bare number is refused, 0 aside: it could be degrees or radians, rpm or rad/s.
+NEEDS_ITS_UNIT = frozenset({"angle", *ANGULAR})
+
+
+def bare_number(option: str, text: str, kind: Kind, value: float) -> InputError:
+    """The refusal of a bare number for an angle, an angular velocity or an angular acceleration."""
+    if kind.name == "angle":
+        return bare_angle(option, text)
+    number = text.strip() if _is_number(text.strip()) else f"{value:.6g}"
+    if kind.name == "angular acceleration":
+        return InputError(option, "expected an angular acceleration with its unit", example=f"{number}rpm/s or '{number} rad/s^2'",
+                          got=f"{text!r}: a number alone could be rpm/s or rad/s²")
+    return InputError(option, "expected an angular velocity with its unit", example=f"{number}rpm or {number}rad/s", got=f"{text!r}: a number alone could be rpm or rad/s")
 
 
 def bare_angle(option: str, text: str) -> InputError:
