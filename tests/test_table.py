@@ -21,7 +21,7 @@ SCENE_NAMES = list(SCENES)
 # One scene of each command that works, to see what its library returns.
 WORKING = {
     "inertia": ["disc", "--mass", "5kg", "--radius", "0.2m", "--offset", "0.1m"],
-    "spin-down": ["--inertia", "0.1", "--omega0", "30", "--friction", "0.3", "--time", "4s", "--until-omega", "10"],
+    "spin-down": ["--inertia", "0.1", "--omega0", "30rad/s", "--friction", "0.3", "--time", "4s", "--until-omega", "10rad/s"],
     "atwood": ["--m1", "4kg", "--m2", "1kg", "--pulley-mass", "2kg", "--pulley-radius", "0.1m", "--distance", "1m"],
     "rolling": ["sphere", "--angle", "30deg", "--length", "2m", "--mass", "1kg", "--radius", "0.1m"],
     "impulse": ["--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "0.5s"],
@@ -215,7 +215,7 @@ def test_the_python_api_raises_input_error_naming_the_parameter():
 
 
 def test_the_command_line_spells_the_same_error_with_flags():
-    done = run_taucli("spin-down", "--inertia", "1", "--shape", "disc", "--omega0", "3")
+    done = run_taucli("spin-down", "--inertia", "1", "--shape", "disc", "--omega0", "3rad/s")
     assert done.code == 2
     assert done.err.strip() == "taucli: error: --inertia conflicts with --shape: give one of them"
 
