@@ -177,6 +177,8 @@ def check_time(kw, ref, extra, time=None):
     t = time if time is not None else as_float(clock) * extra.get("cycles", 1.7)
     kw["time"] = t
     report = taucli.pendulum(**kw)
+    if value(report, "theta") is None and any("would take more than" in note for note in report.notes):
+        return []  # past rk45's step budget its answers are left out, with a note: by design
     theta, omega = ref.at_time(t)
     with mp.workdps(DPS):
         tol = STEPPED if extra["stepped"] else CLOSED * _gravity_scale(ref)
