@@ -93,11 +93,17 @@ def test_skidding_ball_on_the_flat(taucli):
         (("--angle", "30deg"), ("SHAPE", "--k2")),
         (("--inertia", "0.01", "--angle", "30deg"), ("--mass is required",)),
         (("sphere", "--k2", "0.4", "--angle", "30deg"), ("--k2", "conflicts")),
-        (("sphere", "--v0", "3m/s"), ("--mass is required", "rolling at v0", "--mu-k")),  # #21: --v0 alone rolls
     ],
 )
 def test_rolling_bad_input(taucli, args, fragments):
     assert_usage_error(taucli("rolling", *args), *fragments)
+
+
+def test_rolling_at_v0_alone_needs_no_mass(taucli):
+    """#21: --v0 alone rolls along; since 246630e its energies alone need the mass (null, with a note)."""
+    doc = taucli("rolling", "sphere", "--v0", "3m/s", "--json").json()
+    assert doc["results"]["a"]["value"] == 0 and doc["results"]["KE"]["value"] is None
+    assert any("KE_trans, KE_rot, KE: give --mass" in note for note in doc["notes"])
 
 
 def test_an_incline_with_no_coefficient_given_is_smooth(taucli):

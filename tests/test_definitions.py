@@ -107,8 +107,12 @@ def test_atwood_results_agree_with_their_definitions():
 def test_rolling_results_agree_with_their_definitions():
     branches = {"incline": 100, "flat": 50, "pull": 100, "yoyo": 40, "k2": 40, "inertia": 40, "mu_s": 30, "mu_k": 30, "length": 50,
                 "height": 15, "climb": 15, "skid": 20, "rolls along": 15, "pull up a slope": 20, "spool": 25, "pull height": 20,
-                "yoyo by I": 4, "axle": 10, "drop": 20, "at": 60, "units": 60}
-    run_scene("rolling", rolling.draw_rolling, rolling.check_rolling, 1000, 5, 0.4, branches)
+                "yoyo by I": 4, "axle": 10, "drop": 20, "at": 60, "units": 60, "hanging": 100, "string top": 40, "pulley mass": 40,
+                "hanging slope": 30, "in place": 40, "in place by I": 8, "string pulled": 20, "on the rim": 60, "climb and back": 20}
+    _, checker = run_scene("rolling", rolling.draw_rolling, rolling.check_rolling, 1400, 5, 0.4, branches)
+    for name in ("v_ground = |v + ω × r|", "a_ground = |a + α × r − ω² r|", "v_ground = 0 at the bottom while it rolls", "T₂ − T = ½ m_p a_h (the pulley)",
+                 "I α = f R + c T R", "|f| = μk N (slipping)", "I α = T r", "½ I (ω² − ω₀²) = T L", "v = −v₀ + at at the bottom"):
+        assert checker.checked[name] >= 5, (name, checker.checked[name])
 
 
 def test_pendulum_results_agree_with_their_definitions():
