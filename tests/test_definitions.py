@@ -53,10 +53,14 @@ DESIGN.md's "Names and signs"):
   capstan ratio e^{μβ} sliding and e^{μ_min β} at the limit, grips ⇔ μ ≥ rim_mu_min, a_rim = αR,
   uniform motion before a stop (v = v₀ + at, x = v₀t + ½at², v² = v₀² + 2ax).
 - rolling: ma = ΣF and Iα = Στ (I = k²mR²), α = a/R rolling, mu_min = |f|/N, |f| = μk N
-  slipping, rolls ⇔ μs ≥ mu_min, v² = 2aL, t = 2L/v, the climb (v₀²/2a, d sin θ, v₀/a), KE_trans
-  = ½mv², KE_rot = ½Iω², KE = their sum; a skid's v_roll (μk g and L about the contact), d_roll,
-  ω_roll = v_roll/R, energy_lost; a yo-yo's T = m(g − a), Iα = Tr, v² = v₀² + 2ah, ΔKE = mgh;
-  a spool's critical angle (a = 0 there).
+  slipping, rolls ⇔ μs ≥ mu_min, v² = v₀² + 2aL and L = −v₀t + ½at² (v₀ up the slope), the climb
+  (v₀²/2a, d sin θ, v₀/a), KE_trans = ½mv², KE_rot = ½Iω², KE = their sum; a skid's v_roll (μk g
+  and L about the contact), d_roll, ω_roll = v_roll/R, energy_lost; a yo-yo's T = m(g − a),
+  Iα = Tr, v² = v₀² + 2ah, ΔKE = mgh; a spool's critical angle (a = 0 there); a body and a
+  hanging mass: Ma = T − Mg sin θ − f, Iα = fR + cTR, m a_h = mg − T₂, T₂ − T = ½m_p a_h,
+  a_h = a + cRα, T and T₂ ≥ 0; a yo-yo spun in place: T = mg, Iα = Tr, a_hand = rα,
+  ½I(ω² − ω₀²) = TL; a rim point from the ground: |v + ω × r| and |a + α × r − ω²r| and their
+  directions, the bottom at rest while it rolls.
 - pendulum: period_small = 2π√(I/(mgd + κ)), equivalent_length = centre_of_percussion = I/(md),
   alpha0 = |mgd sin θ₀ + κθ₀|/I, ½Iω² + mgd(1 − cos θ) + ½κθ² the same at the start, the
   bottom, --angle and (exact models) --time, omega0_over, goes_over, the pivot's force

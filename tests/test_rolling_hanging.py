@@ -283,6 +283,13 @@ def test_what_a_yo_yo_spun_in_place_cannot_take_is_refused(options, name):
     assert caught.value.option == name
 
 
+@pytest.mark.parametrize("body,name", [(dict(k2=0, radius="3cm"), "k2"), (dict(inertia=0, mass="1kg", axle_radius="1cm"), "inertia")])
+def test_no_rotational_inertia_cannot_be_spun_in_place(body, name):
+    with pytest.raises(InputError) as caught:
+        taucli.rolling(in_place=True, **body)
+    assert caught.value.option == name
+
+
 def test_spun_in_place_from_the_command_line(taucli):
     out = taucli("rolling", "disc", "--in-place", "--mass", "0.5kg", "--radius", "4cm", "--get", "a_hand", "--get", "T")
     assert [float(line) for line in out.out.split()] == pytest.approx([2 * G, 0.5 * G], rel=1e-15)

@@ -124,11 +124,16 @@ def _spun_body(
     if radius is not None and axle_radius is not None and axle_radius > radius:
         raise InputError("axle_radius", "must lie within the body's radius", example="{axle_radius} 0.005m", got=f"{axle_radius:g} m > R = {radius:g} m")
     if inertia is not None and mass is not None and radius is None and shape is None and k2 is None:
-        return "body", inertia / mass, axle_radius
-    body = roller(shape, k2, inertia, mass, radius)
-    if body.radius is None:
-        raise InputError("radius", "is required with {in_place} and a shape or {k2} (I/m = k² R²)", example="{radius} 0.03m")
-    return body.description, body.k2 * body.radius**2, axle_radius if axle_radius is not None else radius
+        body, per_mass, axle = "body", inertia / mass, axle_radius
+    else:
+        found = roller(shape, k2, inertia, mass, radius)
+        if found.radius is None:
+            raise InputError("radius", "is required with {in_place} and a shape or {k2} (I/m = k² R²)", example="{radius} 0.03m")
+        body, per_mass, axle = found.description, found.k2 * found.radius**2, axle_radius if axle_radius is not None else radius
+    if per_mass == 0:
+        raise InputError("k2" if k2 is not None else "inertia", "must be positive with {in_place}: with no rotational inertia the string "
+                         "would spin the body up without limit (α = m g r/I)", example="{k2} 0.5")
+    return body, per_mass, axle
 
 
 def _yoyo_body(

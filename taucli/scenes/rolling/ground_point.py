@@ -70,7 +70,7 @@ def put_ground_point(
             notes.append(f"{key}, {key}_angle: the {what} of the body is not known at this instant")
         elif not size:
             notes.append(f"{key}_angle: the point has no {what} relative to the ground{when}, so no direction")
-    shown = at if not isinstance(at, Value) else quantity_text(at.value, "rad")
+    shown = at if not isinstance(at, Value) else f"{fmt(math.degrees(at.value))}deg"
     notes.append(f"{{at}} {shown}: the point on the rim at {name}, seen from the ground (angles from the top, forward positive; forward: {forward})")
     return _ground_steps(name, radius, v, a, rim_speed, rim_accel, inward, cos_p, sin_p, velocity, accel, when, instant.rolls)
 
