@@ -73,6 +73,7 @@ class Option:
     metavar: str | None = None  # else the kind's
     of: str | None = None  # VECTOR: the quantity kind of its components ("force")
     words: tuple[str, ...] = ()  # words a quantity option takes as well ("rim" for --at)
+    also: str | None = None  # another quantity kind it takes, passed on as a Value (rolling's --at 30deg: an angle on the rim)
     makes: tuple[str, ...] = ()  # FLAG: the results it turns on; naming one in --get, --y or --to turns it on
 
     @property

@@ -53,10 +53,14 @@ DESIGN.md's "Names and signs"):
   capstan ratio e^{μβ} sliding and e^{μ_min β} at the limit, grips ⇔ μ ≥ rim_mu_min, a_rim = αR,
   uniform motion before a stop (v = v₀ + at, x = v₀t + ½at², v² = v₀² + 2ax).
 - rolling: ma = ΣF and Iα = Στ (I = k²mR²), α = a/R rolling, mu_min = |f|/N, |f| = μk N
-  slipping, rolls ⇔ μs ≥ mu_min, v² = 2aL, t = 2L/v, the climb (v₀²/2a, d sin θ, v₀/a), KE_trans
-  = ½mv², KE_rot = ½Iω², KE = their sum; a skid's v_roll (μk g and L about the contact), d_roll,
-  ω_roll = v_roll/R, energy_lost; a yo-yo's T = m(g − a), Iα = Tr, v² = v₀² + 2ah, ΔKE = mgh;
-  a spool's critical angle (a = 0 there).
+  slipping, rolls ⇔ μs ≥ mu_min, v² = v₀² + 2aL and L = −v₀t + ½at² (v₀ up the slope), the climb
+  (v₀²/2a, d sin θ, v₀/a), KE_trans = ½mv², KE_rot = ½Iω², KE = their sum; a skid's v_roll (μk g
+  and L about the contact), d_roll, ω_roll = v_roll/R, energy_lost; a yo-yo's T = m(g − a),
+  Iα = Tr, v² = v₀² + 2ah, ΔKE = mgh; a spool's critical angle (a = 0 there); a body and a
+  hanging mass: Ma = T − Mg sin θ − f, Iα = fR + cTR, m a_h = mg − T₂, T₂ − T = ½m_p a_h,
+  a_h = a + cRα, T and T₂ ≥ 0; a yo-yo spun in place: T = mg, Iα = Tr, a_hand = rα,
+  ½I(ω² − ω₀²) = TL; a rim point from the ground: |v + ω × r| and |a + α × r − ω²r| and their
+  directions, the bottom at rest while it rolls.
 - pendulum: period_small = 2π√(I/(mgd + κ)), equivalent_length = centre_of_percussion = I/(md),
   alpha0 = |mgd sin θ₀ + κθ₀|/I, ½Iω² + mgd(1 − cos θ) + ½κθ² the same at the start, the
   bottom, --angle and (exact models) --time, omega0_over, goes_over, the pivot's force
@@ -107,8 +111,12 @@ def test_atwood_results_agree_with_their_definitions():
 def test_rolling_results_agree_with_their_definitions():
     branches = {"incline": 100, "flat": 50, "pull": 100, "yoyo": 40, "k2": 40, "inertia": 40, "mu_s": 30, "mu_k": 30, "length": 50,
                 "height": 15, "climb": 15, "skid": 20, "rolls along": 15, "pull up a slope": 20, "spool": 25, "pull height": 20,
-                "yoyo by I": 4, "axle": 10, "drop": 20, "at": 60, "units": 60}
-    run_scene("rolling", rolling.draw_rolling, rolling.check_rolling, 1000, 5, 0.4, branches)
+                "yoyo by I": 4, "axle": 10, "drop": 20, "at": 60, "units": 60, "hanging": 100, "string top": 40, "pulley mass": 40,
+                "hanging slope": 30, "in place": 40, "in place by I": 8, "string pulled": 20, "on the rim": 60, "climb and back": 20}
+    _, checker = run_scene("rolling", rolling.draw_rolling, rolling.check_rolling, 1400, 5, 0.4, branches)
+    for name in ("v_ground = |v + ω × r|", "a_ground = |a + α × r − ω² r|", "v_ground = 0 at the bottom while it rolls", "T₂ − T = ½ m_p a_h (the pulley)",
+                 "I α = f R + c T R", "|f| = μk N (slipping)", "I α = T r", "½ I (ω² − ω₀²) = T L", "v = −v₀ + at at the bottom"):
+        assert checker.checked[name] >= 5, (name, checker.checked[name])
 
 
 def test_pendulum_results_agree_with_their_definitions():
