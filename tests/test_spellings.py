@@ -112,7 +112,7 @@ SPELLINGS = {
     "lead": (0.2 * IN, [
         "0.2 in/rev", "0.2in/rev", "0.2 in", "0.2in", "5.08 mm", "5.08mm/rev", "5.08 mm/turn", f"{5.08 / 360!r} mm/deg",
         f"{0.2 * IN / (2 * PI)!r} m/rad", f"{0.2 * IN!r}", f"{0.2 * IN!r} m/rev", "1/5 in",
-    ], None, None),
+    ], ("drive", "--load-mass", "10kg"), "--lead"),
     # density (a part's density=): 1 lb/ft³ = 0.45359237 kg / 0.3048³ m³
     "density": (7800.0, ["7800 kg/m^3", "7800 kg/m3", "7.8 g/cm^3", "7.8 g/cm3", "7.8 g/mL", "7800 kg*m^-3",
                          f"{7800 / (0.45359237 / 0.3048**3)!r} lb/ft^3", "7.8 tonne/m^3", "7800"], None, None),
