@@ -58,10 +58,11 @@ def solve(
         option = command.option(name)
         if option is not None and option.kind == FILE and value is not None:
             raise InputError(name, "does not combine with an uncertainty, {find} or {mc}: the scene is solved many times, and a file is read once")
-    central, spreads, notes = _read(command, given, spell)
-    scene = propagate.Scene(command, central, stdin, spell)
-    if find is not None:
-        return finding.solve_for(scene, find, want, spreads, notes, mc)
+    unknown = finding.unknown(command, find, given) if find is not None else None
+    central, spreads, notes = _read(command, given, spell, propagate.readable(command, given, unknown))
+    scene = propagate.Scene(command, central, stdin, spell, unknown)
+    if unknown is not None:
+        return finding.solve_for(scene, unknown, want, spreads, notes, mc)
     nominal = scene.report({})
     if not spreads and not mc:
         return nominal
@@ -74,9 +75,10 @@ def solve(
     return report
 
 
-def _read(command: Command, given: Mapping[str, object], spell) -> tuple[dict, dict[str, float], list[str]]:
-    """The options with each value's text in place of "value ± σ", and each σ in SI."""
-    _, inputs = read(command, given)
+def _read(command: Command, given: Mapping[str, object], spell, readable: Mapping[str, object]) -> tuple[dict, dict[str, float], list[str]]:
+    """The options with each value's text in place of "value ± σ", and each σ in SI (read from
+    ``readable``: the options with a stand-in where --find solves for a key of a spec)."""
+    _, inputs = read(command, readable)
     spreads: dict[str, float] = {}
     notes: list[str] = []
     central = dict(given)

@@ -3,7 +3,8 @@
 The scripts are static: pressing TAB runs the shell's own code and never starts Python. What
 each option takes comes from its table entry: a quantity's kind (after a number, TAB offers
 that number with each of the kind's common units, units.KINDS: ``--m1 4`` TAB gives 4kg 4g 4lb
-4oz 4tonne), a choice's words, a file, or the command's result names (after --get and --y).
+4oz 4tonne), a choice's words, a file, the command's result names (after --get and --y), or
+what --find may solve for (its inputs, and the keys of its specs: particle.speed, brake.mu).
 completions/ holds the output, and tests/test_completions.py fails when it differs from a fresh
 generation.
 """
@@ -12,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from taucli import table
+from taucli import table, unknowns
 from taucli.names import SHELLS  # noqa: F401 (completions.SHELLS: the shells it writes for)
 from taucli.options import COMMANDS
 from taucli.options.tools import ROOT
@@ -20,6 +21,7 @@ from taucli.units import KINDS
 
 FILE_NAMES = {"bash": "taucli.bash", "zsh": "_taucli", "fish": "taucli.fish"}
 RESULT_NAMES = ("get", "y")  # options whose value is one of the command's results
+FIND = "find"  # its value is an input of the command, or a key of a spec (taucli.unknowns: particle.speed)
 
 
 @dataclass(frozen=True)
@@ -67,6 +69,8 @@ def _options(command: table.Command, options) -> tuple[Option, ...]:
         choices = option.choices
         if option.name in RESULT_NAMES and command.results:
             choices = tuple(result.key for result in command.results)
+        if option.name == FIND and command.results:
+            choices = unknowns.names(command)
         found.append(
             Option(
                 option.flag,

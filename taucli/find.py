@@ -1,13 +1,15 @@
-"""``--find NAME --want RESULT=VALUE``: solve a scene for one of its inputs (#22).
+"""``--find NAME --want RESULT=VALUE``: solve a scene for one of its inputs (#22, #31).
 
-The scene is solved forward (``pipeline.solve``, the input given as an SI number) over the
-input's physical range, from its sign and its kind's bounds in taucli.units: a grid of a few
-values a decade (and 0, and the negative side where the sign allows). Each cell of the grid where
-the result crosses the target is a bracket, and Brent's method finds the root in it to full
-precision; a crossing that is a jump, not a root, is left out. Every root is reported (``roots``)
-and the smallest in size is the result. Where no value reaches the target the run is refused with
-the range of the result that is reachable; where the target holds over an interval (a = 0 while
-friction holds) it is refused, naming the interval.
+NAME is a quantity option, one more value of a repeated one, or a key inside a spec
+(taucli.unknowns). Where the scene's model has an easy inverse it is used, checked by the forward
+solve; otherwise the scene is solved forward (``pipeline.solve``, the input as an SI number) over
+the input's whole range and every root is found (taucli.roots: a grid, each edge of where the
+result has a value bisected, each turn toward the target refined, Brent's method in each
+bracket). Every root is reported (``roots``) and the smallest in size is the result; where the
+search cannot promise it saw every root, a note says which range it searched and that it may hold
+more. Where no value reaches the target the run is refused with the range of the result that is
+reachable (or with the scene's own refusal, where it refuses every value); where the target holds
+over an interval (a = 0 while friction holds) it is refused, naming the interval.
 
 With uncertain inputs, or an uncertain target, the solved input's uncertainty follows from the
 implicit function theorem: f(x, p) = y, so δx = (δy − Σ ∂f/∂p δp) / (∂f/∂x), and every other
@@ -18,20 +20,18 @@ from __future__ import annotations
 
 import math
 
-from taucli import units
+from taucli import roots, units, unknowns
 from taucli.errors import InputError
 from taucli.report import Measured, Report, Step, Value, fmt, pretty_unit, quantity_text, term
 from taucli.table import spelled
 from taucli.measurement import NUMBER_THEN_UNIT, split
 from taucli.propagate import Scene, combine, jacobian, linearity, monte_carlo, numeric
+from taucli.roots import brent
 from taucli.scenes.assumed import STANDARD_GRAVITY
 
-PER_DECADE = 4
-EPS = 2.0**-52
 
-
-def _target(scene: Scene, want: str) -> tuple[str, float, float, str | None]:
-    """(result key, target in SI, its σ, its unit) from "a=4.0+/-0.1m/s^2"."""
+def _target(scene: Scene, want: str) -> tuple[str, float, float, str | None, list[str]]:
+    """(result key, target in SI, its σ, its unit, the notes its reading raised) from "a=4.0+/-0.1m/s^2"."""
     command = scene.command
     key, sep, text = str(want).partition("=")
     key, text = key.strip(), text.strip()
@@ -48,131 +48,87 @@ def _target(scene: Scene, want: str) -> tuple[str, float, float, str | None]:
     value_text, spread_text = parts if parts else (text, None)
     option = "{want} " + key
     if kind is None:  # a unit no option takes (J, W): the number times the unit's SI factor
-        return key, _in_si(value_text, result.unit, key), _in_si(spread_text, result.unit, key) if spread_text else 0.0, result.unit
-    value = units.parse(value_text, option, kind, sign="any", gravity=scene.si.get("g")).value
-    spread = units.parse(spread_text, option + " (its uncertainty)", kind, sign="nonnegative").value if spread_text else 0.0
-    return key, value, spread, result.unit
+        value, notes = _in_si(value_text, result.unit, key)
+        spread, spread_notes = _in_si(spread_text, result.unit, key) if spread_text else (0.0, [])
+        return key, value, spread, result.unit, [*notes, *spread_notes]
+    value = units.parse(value_text, option, kind, sign="any", gravity=scene.si.get("g"))
+    spread = units.parse(spread_text, option + " (its uncertainty)", kind, sign="nonnegative", gravity=scene.si.get("g")) if spread_text else None
+    notes = [parsed.note for parsed in (value, spread) if parsed is not None and parsed.note]
+    return key, value.value, spread.value if spread else 0.0, result.unit, notes
 
 
-def _in_si(text: str, si_unit: str, key: str) -> float:
+def _in_si(text: str, si_unit: str, key: str) -> tuple[float, list[str]]:
     split_text = NUMBER_THEN_UNIT.fullmatch(text)
     if split_text is None:
         raise InputError("want", f"expected {key} as a number with a unit of {si_unit}", example=f"{{want}} {key}=4{si_unit}", got=repr(text))
     number, unit = float(split_text[1]), split_text[2]
-    value = number / units.convert(1.0, si_unit, unit, "{want}") if unit else number
+    notes = []
+    value = number
+    if unit:
+        one = units.converted(1.0, si_unit, unit, "{want} " + key)
+        value = number / one.value
+        notes = [one.note] if one.note else []
     if not math.isfinite(value):
         raise InputError("want", f"expected a finite {key}", got=repr(text))
-    return value
+    return value, notes
 
 
-def _grid(scene: Scene, name: str) -> list[float]:
-    option = scene.command.option(name)
-    low, high = units.KINDS[option.kind].bounds
-    first, last = math.floor(math.log10(low) * PER_DECADE), math.ceil(math.log10(high) * PER_DECADE)
-    sizes = [10.0 ** (k / PER_DECADE) for k in range(first, last + 1)]
-    if option.sign == "positive":
-        return sizes
-    if option.sign == "nonnegative":
-        return [0.0, *sizes]
-    return [-s for s in reversed(sizes)] + [0.0] + sizes
+def unknown(command, name: str, given) -> unknowns.Unknown:
+    """What ``--find NAME`` solves for, with the options ``given`` (a usage error where it cannot)."""
+    return unknowns.resolve(command, name, given)
 
 
-def brent(f, a: float, b: float, fa: float, fb: float, *, iterations: int = 200) -> tuple[float, int]:
-    """A root of f in [a, b] (fa, fb of opposite signs) by Brent's method, to a few ulp of x."""
-    if fa == 0:
-        return a, 0
-    if fb == 0:
-        return b, 0
-    c, fc, d = a, fa, b - a
-    e = d
-    for count in range(1, iterations + 1):
-        if fb * fc > 0:
-            c, fc = a, fa
-            d = e = b - a
-        if abs(fc) < abs(fb):
-            a, b, c = b, c, b
-            fa, fb, fc = fb, fc, fb
-        tol = 2 * EPS * abs(b) + 1e-300
-        m = (c - b) / 2
-        if abs(m) <= tol or fb == 0:
-            return b, count
-        if abs(e) >= tol and abs(fa) > abs(fb):
-            s = fb / fa
-            if a == c:
-                p, q = 2 * m * s, 1 - s
-            else:
-                q, r = fa / fc, fb / fc
-                p = s * (2 * m * q * (q - r) - (b - a) * (r - 1))
-                q = (q - 1) * (r - 1) * (s - 1)
-            if p > 0:
-                q = -q
-            p = abs(p)
-            if 2 * p < min(3 * m * q - abs(tol * q), abs(e * q)):
-                e, d = d, p / q
-            else:
-                d = e = m
-        else:
-            d = e = m
-        a, fa = b, fb
-        b += d if abs(d) > tol else math.copysign(tol, m)
-        fb = f(b)
-        if fb is None:
-            raise ArithmeticError("the scene has no value inside the bracket")
-    return b, iterations
-
-
-def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], notes: list[str], mc: int | None) -> Report:
-    """The report at the value of input ``name`` that meets ``want``, that value as a result."""
+def solve_for(scene: Scene, unknown: unknowns.Unknown, want: str, spreads: dict[str, float], notes: list[str], mc: int | None) -> Report:
+    """The report at the value of the input ``unknown`` that meets ``want``, that value as a result."""
     command = scene.command
-    name = str(name).strip().lstrip("-").replace("-", "_")  # pulley_inertia, pulley-inertia or --pulley-inertia
-    option = command.option(name)
-    if option is None or name not in command.input_names or not option.is_quantity or option.repeatable:
-        quantities = ", ".join(o.name for o in command.options if o.is_quantity and not o.repeatable)
-        raise InputError("find", f"expected a quantity option of {command.name}: {quantities}", got=repr(name))
-    if scene.given.get(name) is not None:
-        raise InputError(name, "is what {find} solves for: leave it out", example=f"{{find}} {name}")
-    key, target, target_spread, unit = _target(scene, want)
-    si_unit = units.KINDS[option.kind].si_unit
+    name = unknown.name
+    key, target, target_spread, unit, want_notes = _target(scene, want)
+    si_unit = units.KINDS[unknown.kind].si_unit
+    refusals: dict[str, Exception] = {}
 
     def f(x: float) -> float | None:
         values = scene.results({name: x})
+        if values is None:
+            refusals.setdefault(str(scene.refusal), scene.refusal)
         return None if values is None or key not in values else values[key] - target
 
-    closed = _closed_form(scene, name, key, target, f)
+    closed = _closed_form(scene, name, key, target, f) if unknown.key is None and not unknown.option.repeatable else None
+    extra = [*notes, *want_notes]
     if closed is not None:
         x, equation, numbers = closed
-        roots, jumps = [x], 0
+        found = [x]
         solution = Step(f"Solve for {name}: the inverse in closed form", equation, numbers, quantity_text(x, si_unit),
                         f"{key} is monotonic in {name} in this model, so this is the only root; the forward solve at it gives {key} = {fmt(target, 10)}")
         how = f"{name} by its closed-form inverse"
+        complete = True
     else:
-        roots, brackets, jumps = _roots(scene, name, key, target, unit, f)
-        best = min(range(len(roots)), key=lambda i: abs(roots[i]))
-        x = roots[best]
-        low, high, iterations = brackets[best]
-        solution = Step(
-            f"Solve for {name}",
-            f"{name} = the root of {key}({name}) − {fmt(target, 6)} in [{fmt(low, 6)}, {fmt(high, 6)}] {_unit(si_unit)}".rstrip(),
-            "",
-            f"{quantity_text(x, si_unit, 10)} (Brent's method, {iterations} steps)",
-            f"the bracket is where {key} crosses the target on a grid of {PER_DECADE} values a decade over the range {name} may take"
-            + (f"; {len(roots)} roots in all" if len(roots) > 1 else "; the only root"),
-        )
-        how = f"{name} by a bracketed root-finder (Brent's method) to full precision"
+        search = roots.search(f, roots.grid(units.KINDS[unknown.kind].bounds, unknown.sign, angle=unknown.kind == "angle"), target,
+                              angle=unknown.kind == "angle", say=lambda value: quantity_text(value, si_unit, 6))
+        search.doubts = [doubt.replace("the result", key) for doubt in search.doubts]
+        if search.interval is not None:
+            _refuse_interval(unknown, key, target, unit, si_unit, search.interval)
+        if not search.roots:
+            _refuse_unreachable(unknown, key, target, unit, si_unit, search, refusals, scene.given.get(unknown.option.name) is not None)
+        found = search.roots
+        best = min(range(len(found)), key=lambda i: abs(found[i]))
+        x = found[best]
+        solution = _search_step(name, key, target, si_unit, unit, search, best)
+        extra.extend(_search_notes(unknown, key, target, unit, si_unit, search, f))
+        how = f"{name} by a search of its range and a bracketed root-finder (Brent's method) to full precision"
+        complete = search.complete
     nominal = scene.report({name: x})
     point = {name: x, **{p: scene.si[p] for p in spreads}}
     scales = {**spreads, name: max(abs(x) * 1e-3, 1e-300)}
     slopes = jacobian(scene, point, scales)
     fx = slopes[name].get(key)
-    results = {name: Value(x, si_unit, f"{option.help.split('(')[0].split(',')[0].rstrip('. ')}, solved for {key} = {fmt(target, 6)} {_unit(unit)}".rstrip())}
-    if len(roots) > 1:
-        results["roots"] = Value(list(roots), si_unit, f"every {name} that gives {key} = {fmt(target, 6)} {_unit(unit)}".rstrip())
+    results = {name: Value(x, si_unit, f"{unknown.label}, solved for {key} = {fmt(target, 6)} {_unit(unit)}".rstrip())}
+    if len(found) > 1:
+        every = "every" if complete else "each found"
+        results["roots"] = Value(list(found), si_unit, f"{every} {name} that gives {key} = {fmt(target, 6)} {_unit(unit)}".rstrip())
     results.update(nominal.results)
-    extra = list(notes)
-    if len(roots) > 1:
-        extra.append(f"{len(roots)} values of {{{name}}} give {key} = {fmt(target, 6)}: " + ", ".join(quantity_text(r, si_unit, 6) for r in roots) + "; the smallest in size is the result")
-    if jumps:
-        extra.append(f"{key} jumps across the target at {jumps} place{'s' if jumps > 1 else ''} in the range of {{{name}}}; a jump is not a root")
+    if len(found) > 1:
+        extra.append(f"{len(found)} values of {unknown.spelled} {'give' if complete else 'found give'} {key} = {fmt(target, 6)}: "
+                     + ", ".join(quantity_text(r, si_unit, 6) for r in found) + "; the smallest in size is the result")
     steps = [
         Step(
             f"The forward equation: {key} as a function of {name}",
@@ -211,7 +167,7 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
             f"∂{key}/∂{name} = {fmt(fx, 6)} by differences; independent changes add in quadrature",
         ))
     elif (spreads or target_spread) and not fx:
-        extra.append(f"{key} does not change with {{{name}}} at the root, so no uncertainty follows for it")
+        extra.append(f"{key} does not change with {unknown.spelled} at the root, so no uncertainty follows for it")
     report = Measured(
         nominal.scene, nominal.model, method, results, [*steps, *nominal.steps],
         [spelled(n, scene.spell, command.option) if "{" in n else n for n in (*nominal.notes, *extra)],
@@ -223,36 +179,54 @@ def solve_for(scene: Scene, name: str, want: str, spreads: dict[str, float], not
     return report
 
 
-def _roots(scene: Scene, name: str, key: str, target: float, unit, f) -> tuple[list[float], list[tuple], int]:
-    """Every root of f over the input's range: (roots, their brackets and Brent's steps, jumps)."""
-    grid = _grid(scene, name)
-    values = [f(x) for x in grid]
-    roots, brackets, jumps = [], [], 0
-    holds = [i for i, v in enumerate(values) if v is not None and _meets(v, target)]
-    if len(holds) >= 2 and any(j == i + 1 for i, j in zip(holds, holds[1:])):
-        _refuse_interval(scene, name, key, target, unit, grid, values, holds, f)
-    for i in range(len(grid) - 1):
-        fa, fb = values[i], values[i + 1]
-        if fa is None or fb is None:
-            continue
-        if fa == 0 and i > 0:
-            continue  # counted as the right end of the cell before
-        if fa * fb > 0:
-            continue
-        try:
-            x, count = brent(f, grid[i], grid[i + 1], fa, fb)
-        except ArithmeticError:
-            continue
-        fx = f(x)
-        if fx is None or abs(fx) > 1e-9 * max(abs(target), abs(fx + target), 1e-300) and abs(fx) > 1e-12:
-            jumps += 1  # a jump across the target, not a root
-            continue
-        if not roots or not math.isclose(x, roots[-1], rel_tol=1e-12, abs_tol=1e-300):
-            roots.append(x)
-            brackets.append((grid[i], grid[i + 1], count))
-    if not roots:
-        _refuse_unreachable(scene, name, key, target, unit, grid, values, jumps)
-    return roots, brackets, jumps
+def _span(search: roots.Search, si_unit: str) -> str:
+    """The range the search covered, in words."""
+    if search.period:
+        return f"one turn, {fmt(math.degrees(search.low))}° to {fmt(math.degrees(search.high))}°"
+    return f"{quantity_text(search.low, si_unit, 3)} to {quantity_text(search.high, si_unit, 3)}"
+
+
+def _search_step(name: str, key: str, target: float, si_unit: str, unit, search: roots.Search, best: int) -> Step:
+    x, (low, high), how = search.roots[best], search.brackets[best], search.found[best]
+    samples = f"{roots.PER_DECADE} values a decade" + (f" and {roots.PER_TURN} a turn" if si_unit == "rad" else "")
+    refined = [f"{len(search.edges)} edge{'s' if len(search.edges) != 1 else ''} of where {key} has a value bisected"] if search.edges else []
+    refined += [f"{search.turns} place{'s' if search.turns != 1 else ''} where {key} turns toward the target refined"] if search.turns else []
+    count = len(search.roots)
+    if search.complete:
+        outcome = (f"{count} roots in all" if count > 1 else "the only root") + f", as far as the samples resolve {key}: they show it turning at most once between neighbours"
+    else:
+        outcome = f"{count} root{'s' if count != 1 else ''} found; the range may hold more (a note says where)"
+    where = f"in [{fmt(low, 6)}, {fmt(high, 6)}] {_unit(si_unit)}".rstrip() if low != high else f"at {fmt(x, 6)} {_unit(si_unit)}".rstrip()
+    valued = [x for x, v in search.samples if v is not None]
+    if valued and not search.period and (valued[0] > search.low or valued[-1] < search.high):
+        refined.append(f"{key} has values only from {quantity_text(valued[0], si_unit, 6)} to {quantity_text(valued[-1], si_unit, 6)}")
+    return Step(
+        f"Solve for {name}",
+        f"{name} = the root of {key}({name}) − {fmt(target, 6)} {where}",
+        "",
+        f"{quantity_text(x, si_unit, 10)} ({how.replace('the result', key)})",
+        f"the search: {search.solves} forward solves over {name} from {_span(search, si_unit)} ({samples}"
+        + "".join(f"; {part}" for part in refined) + f"); {outcome}",
+    )
+
+
+def _search_notes(unknown, key: str, target: float, unit, si_unit: str, search: roots.Search, f) -> list[str]:
+    notes = []
+    if search.period:
+        notes.append(f"{key} repeats every turn of {unknown.spelled}: each root plus or minus whole turns (360°) gives it too; "
+                     f"the roots listed are those of one turn")
+    for x in search.at_edge:
+        if x in search.roots:
+            value = f(x)
+            notes.append(f"{key} = {fmt(target, 6)} {_unit(unit)} is met at an edge of where {key} has a value: at {unknown.spelled} "
+                         f"= {quantity_text(x, si_unit, 10)} ({key} there is {fmt(value + target, 3) if value is not None else 'none'}, "
+                         f"reaching the target in the limit; just past it, {key} has no value)".replace("  ", " "))
+    if search.jumps:
+        notes.append(f"{key} jumps across the target at {search.jumps} place{'s' if search.jumps > 1 else ''} in the range of {unknown.spelled}; a jump is not a root")
+    if not search.complete:
+        notes.append(f"the search of {unknown.spelled} from {_span(search, si_unit)} may have missed roots: "
+                     + "; ".join(search.doubts) + " (it may hold more roots than those found)")
+    return notes
 
 
 # Closed-form inverses, where one is easy: (scene, input, result) -> the inverse. Each is used only
@@ -335,50 +309,33 @@ def _per(unit: str, by: str) -> str:
     return f"{unit}/({by})" if any(sign in by for sign in "*/") else f"{unit}/{by}"
 
 
-def _meets(v: float, target: float) -> bool:
-    return v == 0 or abs(v) <= 1e-13 * abs(target)
-
-
 def _unit(unit: str | None) -> str:
     return pretty_unit(unit)
 
 
-def _edge(f, inside: float, outside: float, target: float) -> float:
-    """Where "the target holds" ends between ``inside`` (holds) and ``outside`` (does not)."""
-    for _ in range(200):
-        middle = (inside + outside) / 2
-        if middle in (inside, outside):
-            break
-        v = f(middle)
-        if v is not None and _meets(v, target):
-            inside = middle
-        else:
-            outside = middle
-    return inside
-
-
-def _refuse_interval(scene, name, key, target, unit, grid, values, holds, f):
-    first = holds[0]
-    last = first
-    while last + 1 < len(grid) and values[last + 1] is not None and _meets(values[last + 1], target):
-        last += 1
-    low = _edge(f, grid[first], grid[first - 1], target) if first > 0 else grid[first]
-    high = _edge(f, grid[last], grid[last + 1], target) if last + 1 < len(grid) else None
-    si_unit = units.KINDS[scene.command.option(name).kind].si_unit
+def _refuse_interval(unknown, key, target, unit, si_unit, interval):
+    low, high = interval
     where = f"from {quantity_text(low, si_unit, 6)} " + (f"to {quantity_text(high, si_unit, 6)}" if high is not None else "upward")
-    raise InputError("want", f"holds for every {{{name}}} {where} ({key} = {fmt(target, 6)} {_unit(unit)} over an interval), so it picks no one value".replace("  ", " "),
+    raise InputError("want", f"holds for every {unknown.spelled} {where} ({key} = {fmt(target, 6)} {_unit(unit)} over an interval), so it picks no one value".replace("  ", " "),
                      hint="give a target outside that interval")
 
 
-def _refuse_unreachable(scene, name, key, target, unit, grid, values, jumps):
-    reached = [v + target for v in values if v is not None]
-    si_unit = units.KINDS[scene.command.option(name).kind].si_unit
-    if not reached:
-        raise InputError("find", f"gives no {key} anywhere in the range {{{name}}} may take with these options")
-    where = [x for x, v in zip(grid, values) if v is not None]
+def _refuse_unreachable(unknown, key, target, unit, si_unit, search: roots.Search, refusals: dict, given: bool):
+    values = [(x, v) for x, v in search.samples if v is not None]
+    if not values:
+        refusal = next(iter(refusals.values()), None)
+        if len(refusals) == 1 and isinstance(refusal, InputError):  # the scene refuses the options given, whatever the value: its reason
+            if unknown.option.repeatable and given:
+                hint = f"{{find}} {unknown.name} solves for one more {{{unknown.option.name}}} after those given: leave that one out"
+                raise InputError(refusal.option, refusal.expected, got=refusal.got, example=refusal.example,
+                                 hint=f"{refusal.hint}; {hint}" if refusal.hint else hint)
+            raise refusal
+        raise InputError("find", f"gives no {key} anywhere in the range {unknown.spelled} may take with these options")
+    reached = [v + target for _, v in values]
     raise InputError(
         "want",
-        f"cannot be met: no {{{name}}} gives {key} = {fmt(target, 6)} {_unit(unit)}".rstrip()
-        + f"; over {{{name}}} from {quantity_text(where[0], si_unit, 3)} to {quantity_text(where[-1], si_unit, 3)}, {key} reaches about {fmt(min(reached), 6)} to {fmt(max(reached), 6)} {_unit(unit)}".rstrip()
-        + (f" (it jumps across the target {jumps} time{'s' if jumps > 1 else ''})" if jumps else ""),
+        f"cannot be met: no {unknown.spelled} gives {key} = {fmt(target, 6)} {_unit(unit)}".rstrip()
+        + f"; over {unknown.spelled} from {quantity_text(values[0][0], si_unit, 6)} to {quantity_text(values[-1][0], si_unit, 6)}, "
+        + f"{key} reaches about {fmt(min(reached), 6)} to {fmt(max(reached), 6)} {_unit(unit)}".rstrip()
+        + (f" (it jumps across the target {search.jumps} time{'s' if search.jumps > 1 else ''})" if search.jumps else ""),
     )

@@ -33,31 +33,62 @@ MC_MAX = 100_000
 class Scene:
     """The scene with its options fixed but for the SI values a caller moves."""
 
-    def __init__(self, command: Command, given: dict, stdin, spell):
+    def __init__(self, command: Command, given: dict, stdin, spell, unknown=None):
         self.command, self.given, self.stdin, self.spell = command, given, stdin, spell
-        arguments, _ = read(command, given)
+        arguments, _ = read(command, readable(command, given, unknown))
         self.si = {name: value for name, value in arguments.items() if isinstance(value, float)}
         self.solves = 0
+        # What --find solves for: name -> an object whose given_with(given, x) puts x in its place
+        # (an option, one more value of a repeated one, a key of a spec), and whose sign is the sign
+        # x may take (taucli.unknowns.Unknown).
+        self.unknowns: dict[str, object] = {unknown.name: unknown} if unknown is not None else {}
+        self.refusal: Exception | None = None  # why the scene last refused the inputs moved (results)
 
     def report(self, moved: Mapping[str, float]) -> Report:
         self.solves += 1
-        return pipeline.solve(self.command, {**self.given, **moved}, stdin=self.stdin, spell=self.spell)
+        if self.unknowns:
+            given = {**self.given, **{name: x for name, x in moved.items() if name not in self.unknowns}}
+            for name in self.unknowns.keys() & moved.keys():
+                given = self.unknowns[name].given_with(given, moved[name])
+        else:
+            given = {**self.given, **moved}
+        return pipeline.solve(self.command, given, stdin=self.stdin, spell=self.spell)
 
     def results(self, moved: Mapping[str, float]) -> dict[str, float] | None:
-        """The numeric results with these inputs moved, or None where the scene refuses them."""
+        """The numeric results with these inputs moved, or None where the scene refuses them
+        (the reason kept in ``refusal``)."""
         try:
             return numeric(self.report(moved))
-        except (InputError, OverflowError, ZeroDivisionError, ValueError):
+        except (InputError, OverflowError, ZeroDivisionError, ValueError) as err:
+            self.refusal = err
             return None
+
+    def sign(self, name: str) -> str:
+        unknown = self.unknowns.get(name)
+        return unknown.sign if unknown is not None else self.command.option(name).sign
 
     def domain(self, name: str) -> tuple[float, float]:
         """The values option ``name`` may take, from its sign."""
-        sign = self.command.option(name).sign
-        return (-math.inf if sign == "any" else 0.0, math.inf)
+        return (-math.inf if self.sign(name) == "any" else 0.0, math.inf)
 
     def allowed(self, name: str, x: float) -> bool:
         low, high = self.domain(name)
-        return low < x < high if self.command.option(name).sign == "positive" else low <= x < high
+        return low < x < high if self.sign(name) == "positive" else low <= x < high
+
+
+def readable(command: Command, given: Mapping[str, object], unknown=None) -> dict:
+    """The options ``given`` as they can be read with ``unknown`` left out: a spec whose key is
+    the unknown with a stand-in value there (0, or 1 where it must be positive), so that the
+    spec's other keys are read (a spec without a key it needs is refused), or without that spec
+    where even that is refused."""
+    if unknown is None or unknown.key is None:
+        return dict(given)
+    probe = unknown.given_with(given, 1.0 if unknown.sign == "positive" else 0.0)
+    try:
+        read(command, probe)
+    except InputError:
+        return {name: value for name, value in given.items() if name != unknown.option.name}
+    return probe
 
 
 def numeric(report: Report) -> dict[str, float]:
@@ -118,7 +149,7 @@ def linearity(scene: Scene, nominal: Report, spreads: Mapping[str, float], slope
     base = numeric(nominal)
     notes = []
     for name, sigma in spreads.items():
-        flag = "{" + name + "}"
+        flag = scene.unknowns[name].spelled if name in scene.unknowns else "{" + name + "}"  # "{particle} 2 speed="
         changes, bent = [], []
         for step in (-sigma, sigma):
             x = point[name] + step

@@ -37,6 +37,14 @@ def parts(option: Option, given, inputs: Inputs, stdin) -> tuple:
 
 _PART_KEY = re.compile(r"\s+(?=[a-z][a-z_-]*=)")
 PART_DIMENSIONS = ("radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")
+PART_FIELDS = {  # key: (kind, sign), as parse_part_spec reads each
+    **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS},
+    "offset": ("length", "nonnegative"),
+    "mass": ("mass", "positive"),
+    "inertia": ("moment of inertia", "positive"),
+    "gyration": ("length", "positive"),
+    "density": ("density", "positive"),
+}
 
 
 def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bool = False):
@@ -69,14 +77,17 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
     if "mass" not in fields and "density" not in fields and "inertia" not in fields:
         raise InputError(source, "needs mass= (or density=, or inertia=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
 
-    def read_field(key: str, kind: str, sign: str = "positive") -> float:
+    def read_field(key: str) -> float:
+        kind, sign = PART_FIELDS[key]
+        if key == "offset" and signed_offset:
+            sign = "any"  # (pendulum: a part on the other side of the pivot)
         return inputs.quantity(f"{source} {key.replace('_', '-')}=", fields[key], kind, sign=sign, key=f"part{number}_{key}")
 
-    dims = {key: read_field(key, "length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS if key in fields}
-    offset = read_field("offset", "length", "any" if signed_offset else "nonnegative") if "offset" in fields else None
-    mass = read_field("mass", "mass") if "mass" in fields else None
-    inertia = read_field("inertia", "moment of inertia") if "inertia" in fields else None
-    gyration = read_field("gyration", "length") if "gyration" in fields else None
+    dims = {key: read_field(key) for key in PART_DIMENSIONS if key in fields}
+    offset = read_field("offset") if "offset" in fields else None
+    mass = read_field("mass") if "mass" in fields else None
+    inertia = read_field("inertia") if "inertia" in fields else None
+    gyration = read_field("gyration") if "gyration" in fields else None
     density = _read_density(source, fields["density"], inputs, number) if "density" in fields else None
     return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density)
 

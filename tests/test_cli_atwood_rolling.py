@@ -93,7 +93,6 @@ def test_skidding_ball_on_the_flat(taucli):
         (("--angle", "30deg"), ("SHAPE", "--k2")),
         (("--inertia", "0.01", "--angle", "30deg"), ("--mass is required",)),
         (("sphere", "--k2", "0.4", "--angle", "30deg"), ("--k2", "conflicts")),
-        (("sphere", "--v0", "3m/s"), ("--mass is required", "rolling at v0", "--mu-k")),  # #21: --v0 alone rolls
     ],
 )
 def test_rolling_bad_input(taucli, args, fragments):

@@ -84,7 +84,7 @@ RTOL = Option("rtol", "dimensionless", "Relative tolerance for rk45.", panel=MOT
 # Solving for an input, and uncertainty (#22; taucli.find, taucli.uncertain).
 FIND = "Solve for an input, and uncertainty (any quantity may be given as 4.0+/-0.1kg)"
 UNCERTAIN = (
-    Option("find", TEXT, "Solve for this input (its option name, e.g. pulley_inertia) so that --want holds.", panel=FIND, metavar="NAME"),
+    Option("find", TEXT, "Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.", panel=FIND, metavar="NAME"),
     Option("want", TEXT, "The target of --find, e.g. --want a=4.0m/s^2 (may carry an uncertainty).", panel=FIND, metavar="RESULT=VALUE"),
     Option("uncertainty", FLAG, "With --get: each result's standard uncertainty in a second column.", panel=FIND),
     Option("mc", COUNT, "Check the uncertainties by Monte Carlo with N draws.", panel=FIND, metavar="N"),
