@@ -348,7 +348,7 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean rms_to_rated within_rating" -- "$cur")); return 0 ;;
-            --find) :; return 0 ;;
+            --find) COMPREPLY=($(compgen -W "motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency gear_inertia load_inertia mass radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
