@@ -257,3 +257,23 @@ def test_within_rating_against_the_peak_torque_and_the_motors_line():
     assert over.results["within_rating"].value is False and any("over the motor's peak" in n for n in over.notes)
     weak = taucli.drive(**base, stall_torque=peak, no_load_speed="3500 rpm")
     assert weak.results["within_rating"].value is False and any("cannot follow the move" in n for n in weak.notes)
+
+
+def test_an_uncertainty_on_a_stage_is_said_not_to_be_carried_through():
+    """--ratio is repeatable, and only single quantity options carry an uncertainty: the note says
+    so (it was dropped silently, the run answered as if none had been given)."""
+    alone = taucli.drive(load_mass="250 kg", lead="10 mm", motor_inertia=3e-5, ratio=["2+/-0.1"])
+    assert any("uncertainty given in ratio is not carried through" in note for note in alone.notes)
+    beside = taucli.drive(load_mass="250+/-1 kg", lead="10 mm", motor_inertia=3e-5, ratio=["2+/-0.1"])
+    assert any("uncertainty given in ratio is not carried through" in note for note in beside.notes)
+    assert beside.uncertainties["reflected_inertia"] == pytest.approx(beside.results["reflected_inertia"].value / 250, rel=1e-6)
+    done = run_taucli("drive", "--load-mass", "250kg", "--lead", "10mm", "--motor-inertia", "3e-5", "--ratio", "2+/-0.1", "--no-steps")
+    assert done.code == 0 and "not carried through" in done.out
+
+
+def test_find_solves_for_the_ratio():
+    """--find ratio with no stage given: the one stage that meets the target."""
+    single = taucli.drive(load_mass="250 kg", lead="10 mm", motor_inertia=3e-5, find="ratio", want="inertia_ratio=5")
+    j = 250 * (0.01 / (2 * math.pi)) ** 2
+    assert single.results["ratio"].value == pytest.approx(math.sqrt(j / (5 * 3e-5)), rel=1e-9)
+    assert single.results["inertia_ratio"].value == pytest.approx(5, rel=1e-9)
