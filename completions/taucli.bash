@@ -18,7 +18,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro bench completions --version --debug --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive bench completions --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in
@@ -304,6 +304,60 @@ _taucli() {
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        ;;
+    drive)
+        case "$prev" in
+            --motor-inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --stall-torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --no-load-speed) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --motor-torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --rated-torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --peak-torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --ratio) :; return 0 ;;
+            --efficiency) :; return 0 ;;
+            --gear-inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --load-inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
+            --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --length) _taucli_units m cm mm km in ft; return 0 ;;
+            --width) _taucli_units m cm mm km in ft; return 0 ;;
+            --height) _taucli_units m cm mm km in ft; return 0 ;;
+            --depth) _taucli_units m cm mm km in ft; return 0 ;;
+            --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
+            --offset) _taucli_units m cm mm km in ft; return 0 ;;
+            --part) :; return 0 ;;
+            --load-mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --drum-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --lead) _taucli_units mm in 'mm/rev' 'in/rev'; return 0 ;;
+            --load-torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
+            --load-force) _taucli_units N kN lbf; return 0 ;;
+            --incline) _taucli_units deg rad rev; return 0 ;;
+            --mu) :; return 0 ;;
+            --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
+            --until-omega) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --speed) _taucli_units 'm/s' 'km/h' 'ft/s' mph; return 0 ;;
+            --in-time) _taucli_units s ms min h; return 0 ;;
+            --alpha) _taucli_units 'rad/s^2' 'rpm/s' 'rev/s^2'; return 0 ;;
+            --accel) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
+            --accel-time) _taucli_units s ms min h; return 0 ;;
+            --run-time) _taucli_units s ms min h; return 0 ;;
+            --decel-time) _taucli_units s ms min h; return 0 ;;
+            --dwell-time) _taucli_units s ms min h; return 0 ;;
+            --distance) _taucli_units m cm mm km in ft; return 0 ;;
+            --move-angle) _taucli_units deg rad rev; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean rms_to_rated within_rating" -- "$cur")); return 0 ;;
+            --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean rms_to_rated within_rating" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency gear_inertia load_inertia mass radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
+        esac
+        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -246,8 +246,8 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
 
     ureg = registry()
     q = _pint_quantity(cleaned, option, kind, text)
-    if kind.name in ANGULAR | {"angle", "dimensionless"} and _mixes_angles(cleaned):
-        fix = {"angle": "'30 deg + 1 deg'", "dimensionless": "no angle"}.get(kind.name, "'1 rpm + 60 rpm'")
+    if kind.name in ANGULAR | {"angle", "dimensionless", "lead"} and _mixes_angles(cleaned):
+        fix = {"angle": "'30 deg + 1 deg'", "dimensionless": "no angle", "lead": "'5 mm + 1 mm'"}.get(kind.name, "'1 rpm + 60 rpm'")
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: it adds a unit with an angle to one without", hint=f"give every term the same kind of unit: {fix}")
     if not list(q.unit_items()):  # a number, or numbers with operators: the kind's SI unit
         try:
@@ -268,8 +268,10 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     except pint.errors.OffsetUnitCalculusError:  # degC, degF: a temperature, which pint will not multiply
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}, which is a temperature") from None
     except pint.DimensionalityError:
+        per_length = kind.name == "lead" and dict(q.dimensionality) == {"[length]": -1}  # threads per inch
         raise InputError(
-            option, expected(kind), example=kind.example, got=f"{text!r}, which is {_describe(q.dimensionality)}", hint=_case_of(cleaned, kind)
+            option, expected(kind), example=kind.example, got=f"{text!r}, which is {_describe(q.dimensionality)}",
+            hint="a lead is the advance per turn: 1/(threads per inch) for a single start, e.g. 0.2in for 5 per inch" if per_length else _case_of(cleaned, kind),
         ) from None
     except (OverflowError, TypeError, ValueError):
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
@@ -279,6 +281,10 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
         value *= TWO_PI if how == REVOLUTIONS else 1.0
     elif kind.name == "angle" and radians == 0 and value != 0:
         raise bare_angle(option, text)
+    elif kind.name == "lead" and radians != -1:  # pint reads rev as 2π: m/rev is m/(2π) to it
+        if radians != 0:
+            raise InputError(option, "expected a lead, a length per revolution", example=kind.example, got=f"{text!r}, which is not a length per turn")
+        value /= TWO_PI  # a length alone is the advance per revolution
     elif kind.name == "dimensionless" and radians != 0:
         raise InputError(option, "expected a plain number", example=kind.example, got=f"{text!r}, which is an angle")
     return value, how

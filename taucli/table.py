@@ -54,6 +54,7 @@ METAVARS = {
     "energy": "ENERGY",
     "density": "DENSITY",
     "torsion constant": "KAPPA",
+    "lead": "LEAD",
 }
 
 

@@ -31,7 +31,7 @@ from pathlib import Path
 from conftest import strict_json
 from hypothesis import strategies as st
 
-SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro")  # every scene of taucli.options (tests/test_fuzz.py checks)
+SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro", "drive")  # every scene of taucli.options (tests/test_fuzz.py checks)
 SECONDS = 1.0  # the longest a run may take
 
 # Units by the metavar of the option that takes them.
@@ -50,6 +50,7 @@ UNITS = {
     "K": ["N*m*s^2", "N*m*s**2", "kg*m^2"],
     "NUMBER": ["", "%", "dimensionless"],
     "N": ["", "1"],
+    "LEAD": ["mm", "in", "mm/rev", "in/rev", "m/rad", "rev/in"],
 }
 WRONG_UNITS = ["kgg", "furlong", "m/s", "kg", "s", "N", "degC", "K", "Ω", "mol", "bit", "%", "ppm", "dozen", "Hz", "c", "1/(", "m^", "**", "xyz"]
 CHOICES = {  # metavar: (valid, not valid)
@@ -157,6 +158,7 @@ CORE = {
     "pendulum": ["--shape", "--mass", "--length", "--angle0"],
     "torque": ["--r", "--force"],
     "gyro": ["--inertia", "--spin", "--mass", "--cm-distance"],
+    "drive": ["--motor-inertia", "--ratio", "--load-inertia", "--until-omega"],
 }
 
 
@@ -180,6 +182,11 @@ BASES = {
     "torque": ["--r '0.3,0.4,0 m' --force '0,0,10 N'", "--force 80N --lever 0.25m --angle 60deg", "--r '0,0.8,0 m' --mass 0.5kg --velocity '3,0,0 m/s'"],
     "gyro": ["--shape disc --mass 0.3kg --radius 5cm --spin 4000rpm --cm-distance 5cm --tilt 30deg",
              "--inertia 8.0e37kg*m^2 --spin 7.29e-5rad/s --torque 1.79e22N*m --tilt 23.44deg"],
+    "drive": ["--motor-inertia 1.2kg*cm^2 --ratio 10 --load-inertia 0.05kg*m^2 --until-omega 3000rpm --in-time 0.2s",
+              "--load-mass 250kg --lead 10mm --ratio 2 --efficiency 0.9 --mu 0.2 --motor-inertia 0.3e-4kg*m^2 --speed 15m/min --accel-time 0.1s --run-time 1s --dwell-time 0.3s --rated-torque 0.637N*m",
+              "--motor-inertia 1.2kg*cm^2 --ratio 10 --efficiency 0.9 --load-inertia 0.05kg*m^2 --load-torque -5N*m --stall-torque 2N*m --no-load-speed 3000rpm --until-omega 3500rpm",
+              "--load-mass 20kg --drum-radius 5cm --incline 90deg --motor-inertia 1e-4kg*m^2 --ratio 5 --distance 0.5m --speed 1m/s --accel 5m/s^2 --dwell-time 1s",
+              "--motor-inertia 2.5lb*in^2 --load-inertia 4.5lb*in^2 --load-mass 5lb --drum-radius 1.5in --motor-torque 100ozf*in --speed 15ft/s"],
 }
 extreme_numbers = st.one_of(
     st.sampled_from(["0", "-0", "-1", "1e-320", "5e-324", "1e-300", "1e-30", "1e-9", "1e9", "1e30", "1e300", "1.7e308", "-1e308", "1e-16", "0.9999999999999999", "1.0000000000000002"]),

@@ -69,7 +69,10 @@ DESIGN.md's "Names and signs"):
   L = Σ m r × v, L = |L|. gyro: L = Iω_s, Ω = mgr/L (τ/(L sin θ)), period_p = 2π/|Ω_slow|
   (2π/|Ω| without exact rates), the roots of I⊥Ω²cos θ − LΩ + mgr = 0 (residual, sum and
   product), spin_min = √(4I⊥ mgr cos θ)/I. inertia: the shapes' closed forms, I = I_cm + Md²,
-  k = √(I/M), a body's I and mass the sums of its parts'.
+  k = √(I/M), a body's I and mass the sums of its parts'. drive: J/N² and m r², m(p/2π)² at the
+  motor, the load torque T/(Nη) (ηT/N regenerating), the motor torque at α through the train,
+  t = ω/α and the energy balance of a run-up, the line's α₀, ω_ss and τ_m, a move's times,
+  angle, phase torques, peak, RMS and mean power (tests/definitions/drive.py).
 
 Each defect this check found has a test below with its minimal call: a face pressed by a body
 of parts, a linear drag reported as viscous, a profile beside --inertia-final, a point under a
@@ -79,7 +82,7 @@ brake (α without the friction, the angle past the stop).
 from __future__ import annotations
 
 import pytest
-from definitions import atwood, impulse, inertia, pendulum, rolling, spin, vectors
+from definitions import atwood, drive, impulse, inertia, pendulum, rolling, spin, vectors
 from definitions.check import G0, run_scene, values
 
 import taucli
@@ -137,6 +140,13 @@ def test_inertia_results_agree_with_their_definitions():
     branches = {"offset": 30, "part point": 15, "part disc": 15, "part inertia": 15, "part gyration": 15, "part density": 15, "units": 60,
                 **{shape: 10 for shape in inertia.SHAPE_DIMENSIONS}}
     run_scene("inertia", inertia.draw_inertia, inertia.check_inertia, 800, 17, 0.8, branches)
+
+
+def test_drive_results_agree_with_their_definitions():
+    branches = {"ratio": 150, "stages": 60, "efficiency": 150, "gear": 50, "load inertia": 100, "body": 40, "drum": 80, "screw": 80,
+                "incline": 50, "mu": 50, "force": 30, "load torque": 100, "reflect": 40, "alpha": 40, "in_time": 40, "line": 40,
+                "constant": 40, "times": 50, "trapezoid": 80, "rated": 30, "energy": 60, "units": 80}
+    run_scene("drive", drive.draw_drive, drive.check_drive, 1200, 41, 0.6, branches)
 
 
 @pytest.mark.parametrize("scene", ["spin_down", "impulse"])

@@ -74,6 +74,8 @@ SPELLINGS = {
     "moment of inertia": (0.5, [
         "0.5 kg*m^2", "0.5kg*m^2", "0.5 kg*m**2", "0.5 kgm^2", "0.5 kgm2", "0.5 kg m2", "0.5 kg m^2", "0.5 kg·m²", "0.5 kgm²", "0.5 kg.m^2",
         "0.5 kg-m^2", "5000 kg*cm^2", "5000000 g*cm^2", "5e6 gcm^2", "5e6 gcm2", f"{0.5 / (LB * FT**2)!r} lb*ft^2", "0.5", "1/2 kg*m^2",
+        f"{0.5 / (LB * IN**2)!r} lb*in^2", f"{0.5 / (LBF * IN)!r} lbf*in*s^2", (f"{0.5 / (LBF * IN)!r} lb*in*s^2", "lb read as pound-force, lbf*in*s^2"),
+        (f"{0.5 / (LBF / 16 * IN)!r} oz-in-s^2", "oz read as ounce-force"),
     ], ("spin-down", "--friction", "0.1", "--omega0", "1rad/s"), "--inertia"),
     "force": (10 * LBF, [
         "10 lbf", "10lbf", "160 ozf", f"{10 * LBF!r} N", f"{10 * LBF!r}N", f"{10 * LBF / 1000!r} kN", f"{10 * LBF * 1000!r} mN",
@@ -105,6 +107,11 @@ SPELLINGS = {
     # torsion constant (#19): 1 N·m/deg = 180/π N·m/rad
     "torsion constant": (0.5, ["0.5 N*m/rad", "0.5 Nm/rad", "0.5 N.m/rad", "500 mN*m/rad", f"{0.5 * math.pi / 180!r} N*m/deg", "0.5 J/rad",
                                "0.5 N*m", "0.5"], ("pendulum", "--inertia", "0.02", "--cm-distance", "0", "--mass", "1kg", "--angle0", "30deg"), "--torsion"),
+    # lead (a screw's advance per turn): a length alone is per revolution, a length per angle is turned into that
+    "lead": (0.2 * IN, [
+        "0.2 in/rev", "0.2in/rev", "0.2 in", "0.2in", "5.08 mm", "5.08mm/rev", "5.08 mm/turn", f"{5.08 / 360!r} mm/deg",
+        f"{0.2 * IN / (2 * PI)!r} m/rad", f"{0.2 * IN!r}", f"{0.2 * IN!r} m/rev", "1/5 in",
+    ], ("drive", "--load-mass", "10kg"), "--lead"),
     # density (a part's density=): 1 lb/ft³ = 0.45359237 kg / 0.3048³ m³
     "density": (7800.0, ["7800 kg/m^3", "7800 kg/m3", "7.8 g/cm^3", "7.8 g/cm3", "7.8 g/mL", "7800 kg*m^-3",
                          f"{7800 / (0.45359237 / 0.3048**3)!r} lb/ft^3", "7.8 tonne/m^3", "7800"], None, None),

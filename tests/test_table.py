@@ -28,6 +28,9 @@ WORKING = {
     "torque": ["--r", "0.3,0.4,0 m", "--force", "0,0,10 N", "--mass", "2kg", "--velocity", "0,1,0 m/s"],
     "gyro": ["--shape", "disc", "--mass", "0.3kg", "--radius", "5cm", "--spin", "4000rpm", "--cm-distance", "5cm", "--tilt", "30deg"],
     "pendulum": ["--shape", "rod", "--length", "1m", "--mass", "2kg", "--axis", "end", "--angle0", "90deg", "--angle", "0deg", "--time", "1s"],
+    "drive": ["--load-mass", "250kg", "--lead", "10mm", "--ratio", "2", "--efficiency", "0.9", "--mu", "0.2", "--incline", "10deg",
+              "--motor-inertia", "0.3e-4kg*m^2", "--speed", "15m/min", "--accel-time", "0.1s", "--run-time", "1s", "--dwell-time", "0.3s",
+              "--rated-torque", "0.637N*m", "--stall-torque", "3N*m", "--no-load-speed", "5000rpm"],
 }
 
 

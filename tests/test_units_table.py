@@ -37,7 +37,7 @@ FT = 0.3048  # m
 SHOWN = {
     "N·m": ("torque", 1.0), "kN·m": ("torque", 1e3), "mN·m": ("torque", 1e-3), "daN·m": ("torque", 10.0), "N·cm": ("torque", 0.01),
     "lbf·ft": ("torque", LBF * FT), "kgf·cm": ("torque", G0 * 0.01),
-    "kg·m²": ("moment of inertia", 1.0), "m/s²": ("acceleration", 1.0), "kg": ("mass", 1.0), "in": ("length", 0.0254), "°": ("angle", PI / 180),
+    "kg·m²": ("moment of inertia", 1.0), "lbf·in·s²": ("moment of inertia", LBF * 0.0254), "ozf·in·s²": ("moment of inertia", LBF / 16 * 0.0254), "m/s²": ("acceleration", 1.0), "kg": ("mass", 1.0), "in": ("length", 0.0254), "°": ("angle", PI / 180),
     "rad/s": ("angular velocity", 1.0), "rpm": ("angular velocity", 2 * PI / 60), "rev/s": ("angular velocity", 2 * PI),
     "rad/s²": ("angular acceleration", 1.0), "rev/s²": ("angular acceleration", 2 * PI),
 }  # fmt: skip
