@@ -38,7 +38,6 @@ def test_a_point_starting_from_rest_under_a_negative_torque():
     assert report.results["a_angle0"].value == pytest.approx(math.pi / 2, rel=1e-15, abs=0)
 
 
-@pytest.mark.xfail(strict=True, reason="a_t near a steady speed is 0: α taken from τ − bω, which cancels; (τ/I)e^{−bt/I} keeps it")
 def test_a_t_near_a_steady_speed_keeps_its_digits():
     report = taucli.spin_down(inertia=2.0, torque=3.0, viscous=0.5, time=200.0, at=0.5)
     omega, alpha, theta = viscous_drive(2.0, 3.0, 0.5, 0.0, 200.0)

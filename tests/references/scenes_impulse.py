@@ -13,8 +13,6 @@ from references.impulse import Couple, Particle, meet
 
 CLOSED = 1e-13
 KINDS = ("stick", "stick_angle", "leave", "bounce", "bounce_elastic", "ride", "couple", "heavy_couple", "small", "mixed")
-DIGITS = "J and delta_omega from ω₁ − ω₀ lose digits when small"
-LEAVES = "KE_lost with a particle that leaves (speed-after=) loses digits: KE₀ − KE₁"
 
 
 def particle_text(p: Particle) -> str:
@@ -91,11 +89,7 @@ def check_impulse(kw, scene, extra):
     exact = meet(inertia, omega0, particles, couples)
     rows = []
     with mp.workdps(DPS):
-        # ω₁ − ω₀ and KE₀ − KE₁ formed as differences of large totals lose these factors; the
-        # physics allows the budget times the condition of the small speeds the inputs make
-        dw_ratio = float(abs(exact["omega1"]) / abs(exact["delta_omega"])) if exact["delta_omega"] else math.inf
-        ke_ratio = float(exact["KE0"] / abs(exact["KE_lost"])) if exact["KE_lost"] else math.inf
-        leaves = any(p.speed_after is not None for p in particles)
+        # the physics allows the budget times the condition of the small speeds the inputs make
         cond = _condition(omega0, particles, couples)
         w1 = exact["omega1"]
         w1_cond = max(1.0, float((abs(mpf(omega0)) + abs(exact["delta_omega"]) * cond) / abs(w1))) if w1 else 1.0
@@ -103,12 +97,7 @@ def check_impulse(kw, scene, extra):
                        L0=_l_scale(inertia, omega0, particles, couples, exact["L0"]))
         budgets["L1"] = budgets["L0"]
         for name in ("J", "delta_omega", "omega1", "L0", "L1", "KE0", "KE1", "KE_lost", "KE_lost_fraction"):
-            known = ""
-            if name in ("J", "delta_omega") and dw_ratio > 10:
-                known = DIGITS
-            if name in ("KE_lost", "KE_lost_fraction") and ke_ratio > 10 and leaves:
-                known = LEAVES
-            rows.append(Row(name, value(report, name), exact[name], CLOSED * budgets.get(name, 1.0), known))
+            rows.append(Row(name, value(report, name), exact[name], CLOSED * budgets.get(name, 1.0)))
     return rows
 
 

@@ -12,7 +12,6 @@ from references.point import atwood, constant_alpha, point, viscous_drive
 CLOSED = 1e-13
 KINDS = ("torque", "torque_from_rest", "alpha", "steady", "impulse", "atwood_time", "atwood_distance")
 REST = "a point under a negative torque from rest: a_angle0 = −π/2 (its a_t taken against +θ, not along the motion it starts)"
-STEADY = "a_t near a steady speed is 0 (α formed from τ − bω, which cancels)"
 
 
 def _cond(*terms) -> float:
@@ -93,11 +92,10 @@ def check_point(kw, extra):
         if kind not in ("atwood_time", "atwood_distance"):
             rows.append(Row("omega" if kind != "impulse" else "omega1", value(report, "omega" if kind != "impulse" else "omega1"), w, CLOSED * cw))
         rest = REST if w0 == 0 and a0 < 0 else ""
-        steady = STEADY if kind == "steady" else ""
         rows += [Row("v_t", value(report, "v_t"), end["v_t"], CLOSED * cw), Row("a_c", value(report, "a_c"), end["a_c"], 2 * CLOSED * cw),
-                 Row("a_t", value(report, "a_t"), end["a_t"], CLOSED, steady),
-                 Row("a_total", value(report, "a_total"), end["a_total"], 2 * CLOSED * cw, steady),
-                 Row("a_angle", value(report, "a_angle"), end["a_angle"], 2 * CLOSED * cw, steady)]
+                 Row("a_t", value(report, "a_t"), end["a_t"], CLOSED),
+                 Row("a_total", value(report, "a_total"), end["a_total"], 2 * CLOSED * cw),
+                 Row("a_angle", value(report, "a_angle"), end["a_angle"], 2 * CLOSED * cw)]
         if "s" in end:
             rows.append(Row("s", value(report, "s"), end["s"], CLOSED * cth))
         rows += [Row("v_t0", value(report, "v_t0"), first["v_t"], CLOSED), Row("a_c0", value(report, "a_c0"), first["a_c"], CLOSED),
