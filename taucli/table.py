@@ -33,6 +33,9 @@ NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
 BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…]": a brake shoe on a turning body, repeatable
 FACE = "face"  # "mu=… [force=…] [inner-radius=…] [outer-radius=…] [pressure=uniform|wear] [surfaces=…]": a pressed flat face, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE}
+SIDE = "side"  # "hang" | "table [mu-s=… mu-k=…]" | "incline angle=… [mu-s=… mu-k=…]": where a block of atwood is
+PULL = "pull"  # "force=… [angle=…] [on=1|2]": a pull on a block of atwood, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {SIDE, PULL}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {

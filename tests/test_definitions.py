@@ -48,10 +48,13 @@ DESIGN.md's "Names and signs"):
   adding to zero; under a brake ω₁ from constant α in each stretch (held at rest), each
   contact's τ|ω₀| and τ × angle swept, KE1 − KE0 = τθ − their work; peak_torque the largest in
   size.
-- atwood: T1 = m1(g − a), T2 = m2(g + a2) hanging or m2(a + g sin θ) + μk N sgn v on a slope,
-  (T1 − T2)R − τ_a sgn v = Iα (stepped: T1r1 − T2r2), α = a/R, a2 = a r2/r1, a_massless, the
-  capstan ratio e^{μβ} sliding and e^{μ_min β} at the limit, grips ⇔ μ ≥ rim_mu_min, a_rim = αR,
-  uniform motion before a stop (v = v₀ + at, x = v₀t + ½at², v² = v₀² + 2ax).
+- atwood: each block along its path, T1 = G1 − s μk1 N1 − m1 a and T2 = G2 + s sgn(ρ) μk2 N2 + m2 a2
+  (G the pull of gravity, m g sin θ, and of the pulls away from the pulley; N = m g cos θ − P sin φ;
+  hanging θ = 90°), T1r1 − σT2r2 − τd − τa sgn ω = Iα, α = a/r1, a2 = ρa (ρ = σ r2/r1, σ = −1 both on
+  one side), T ≥ 0 (a string only pulls), N ≥ 0, at rest each balance within its static limit,
+  a_massless, the capstan ratio e^{μβ} sliding and e^{μ_min β} at the limit, grips ⇔ μ ≥ rim_mu_min,
+  a_rim = αR, uniform motion before a stop (v = v₀ + at, x = v₀t + ½at², v² = v₀² + 2ax), t_stop =
+  −v₀/a and distance_stop = −v₀²/2a, the work of the forces = ΔKE of the blocks and the pulley.
 - rolling: ma = ΣF and Iα = Στ (I = k²mR²), α = a/R rolling, mu_min = |f|/N, |f| = μk N
   slipping, rolls ⇔ μs ≥ mu_min, v² = v₀² + 2aL and L = −v₀t + ½at² (v₀ up the slope), the climb
   (v₀²/2a, d sin θ, v₀/a), KE_trans = ½mv², KE_rot = ½Iω², KE = their sum; a skid's v_roll (μk g
@@ -107,8 +110,13 @@ def test_impulse_results_agree_with_their_definitions(tmp_path):
 
 def test_atwood_results_agree_with_their_definitions():
     branches = {"hanging": 100, "incline": 60, "stepped": 50, "rim": 50, "pulley mass": 80, "pulley inertia": 50, "part": 15,
-                "axle friction": 40, "mu_k": 30, "mu_s": 20, "v0": 50, "distance": 60, "time": 60, "at": 50, "units": 60}
-    run_scene("atwood", atwood.draw_atwood, atwood.check_atwood, 1000, 11, 0.5, branches)
+                "axle friction": 40, "mu_k": 30, "mu_s": 20, "v0": 50, "distance": 60, "time": 60, "at": 50, "units": 60,
+                "general": 150, "side1 table": 15, "side1 incline": 30, "side2 table": 15, "side2 incline": 30, "side friction": 40, "pull": 60,
+                "pull in place of m1": 5, "drive": 40, "same side": 25, "steps": 60}
+    _, checker = run_scene("atwood", atwood.draw_atwood, atwood.check_atwood, 1600, 11, 0.4, branches)
+    for definition in ("T1 = G1 − s μk1 N1 − m1 a", "T2 = G2 + s sgn(ρ) μk2 N2 + m2 a2", "T1 r1 − σ T2 r2 − τd − τa sgn ω = I α",
+                       "W_gravity + W_pulls + W_drive − W_friction = ΔKE", "t_stop = −v₀/a", "a2 = ρ a (the strings' constraint)"):
+        assert checker.checked[definition] > 20, (definition, checker.checked[definition])
 
 
 def test_rolling_results_agree_with_their_definitions():
