@@ -87,21 +87,26 @@ _taucli() {
             --in-angle) _taucli_units deg rad rev; return 0 ;;
             --power) _taucli_units W kW MW hp; return 0 ;;
             --ke0) _taucli_units J kJ MJ 'kW*h' Wh; return 0 ;;
+            --work) _taucli_units J kJ MJ 'kW*h' Wh; return 0 ;;
+            --lift-mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --vehicle-mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --efficiency) :; return 0 ;;
+            --rim-accel) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --rim-speed) _taucli_units 'm/s' 'km/h' 'ft/s' mph; return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto exact euler rk4 rk45" -- "$cur")); return 0 ;;
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag KE_after omega_after energy_delivered lift_height vehicle_speed v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag KE_after omega_after energy_delivered lift_height vehicle_speed v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 work lift_mass vehicle_mass efficiency rim_accel rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --work --lift-mass --vehicle-mass --efficiency --rim-accel --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in

@@ -100,6 +100,14 @@ def test_spin_down_results_agree_with_their_definitions():
     assert checker.checked["KE0 − KE = Σ losses − work_drive"] > 100
 
 
+def test_spin_down_energy_balances_agree_with_their_definitions():
+    """#34 item 2: --work, --lift-mass, --vehicle-mass (their own draws, so the others' seeds keep their draws)."""
+    branches = {"transfer": 300, "work": 60, "lift_mass": 60, "vehicle_mass": 60, "both": 60, "until_omega": 30, "units": 40}
+    _, checker = run_scene("spin_down", spin.draw_transfer, spin.check_spin, 400, 34, 0.9, branches)
+    for name in ("KE_after = KE0 + W (work-energy)", "m g h = energy_delivered", "½ m v² = energy_delivered"):
+        assert checker.checked[name] > 15, (name, checker.checked[name])
+
+
 def test_impulse_results_agree_with_their_definitions(tmp_path):
     branches = {"balance": 150, "all five": 15, "solve inertia": 15, "solve omega0": 15, "solve omega1": 15, "solve torque": 15,
                 "solve duration": 15, "partial": 15, "skater": 30, "meeting": 60, "particle stick": 20, "particle angle": 10, "particle ride": 10,

@@ -3,6 +3,8 @@
 from taucli.options.common import ANSWER, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
 from taucli.table import FLAG, Command, Option, Result
 
+ENERGY = "Energy added, taken or put to use"
+
 COMMAND = Command(
     name="spin-down",
     summary="A wheel on a fixed axle, slowing or spun up: I dω/dt = τ_drive − τ_f − bω − kω².",
@@ -40,6 +42,14 @@ COMMAND = Command(
         ),
         Option("power", "power", "A motor of constant power P (τ = P/ω; negative: a load draining the wheel), e.g. 1kW.", sign="any"),
         Option("ke0", "energy", "Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.", sign="nonnegative", panel=MOTION),
+        Option("work", "energy", "Work done on the wheel (positive: added; negative: taken, as water takes it from a propeller), giving ω after: "
+               "½Iω₁² = ½Iω₀² + W, e.g. -50kJ.", sign="any", panel=ENERGY),
+        Option("lift_mass", "mass", "A mass the wheel's stored energy lifts as the wheel comes to rest (or slows to --until-omega): the height, "
+               "mgh = ηE, e.g. 50kg.", panel=ENERGY),
+        Option("vehicle_mass", "mass", "A vehicle the wheel's stored energy sets moving from rest as the wheel comes to rest (or slows to --until-omega): "
+               "its speed, ½mv² = ηE, e.g. 1200kg.", panel=ENERGY),
+        Option("efficiency", "dimensionless", "Efficiency η, 0 to 1, with which the stored energy reaches --lift-mass or --vehicle-mass.", default="1", panel=ENERGY),
+        Option("rim_accel", "acceleration", "Tangential acceleration of the rim, giving α = a_t/R (R the body's radius, or --radius), e.g. 0.5m/s^2.", sign="any", panel=MOTION),
         Option("rim_speed", "velocity", "Initial speed of the rim, giving ω₀ = v/R (R the body's radius, or --radius with --inertia).", sign="any", panel=MOTION),
         point_option("(at --time or the target, else the start)"),
         Option(
@@ -83,6 +93,11 @@ COMMAND = Command(
         Result("power_friction", "W", "power friction takes…"),
         Result("power_viscous", "W", "power the viscous torque takes…"),
         Result("power_drag", "W", "power drag takes…"),
+        Result("KE_after", "J", "kinetic energy after…"),
+        Result("omega_after", "rad/s", "angular velocity after…"),
+        Result("energy_delivered", "J", "energy that reaches the load (η × the energy the wheel gives up)"),
+        Result("lift_height", "m", "height the mass is lifted"),
+        Result("vehicle_speed", "m/s", "speed the vehicle reaches from rest"),
         *POINT_RESULTS,
         *CONTACT_RESULTS,
     ),

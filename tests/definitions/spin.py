@@ -169,6 +169,37 @@ def draw_spin(rng: random.Random) -> tuple[dict, list[str]]:
         tags.append("stray")
     return kw, tags
 
+def draw_transfer(rng: random.Random) -> tuple[dict, list[str]]:
+    """#34 item 2: a body and its start, then work added or taken (--work), or its stored energy
+    put to a load (--lift-mass, --vehicle-mass; --efficiency, --until-omega)."""
+    kw: dict = {}
+    W = mag(rng, -1, 2.5)
+    inertia, _ = draw_body(rng, kw)
+    tags = ["transfer"]
+    if rng.random() < 0.85:
+        kw["omega0"] = signed(rng, W * mag(rng, -0.3, 0.3))
+    else:
+        kw["ke0"] = inertia * W * W / 2 * mag(rng, -0.5, 0.5)
+    ke0 = kw.get("ke0", inertia * kw.get("omega0", 0.0) ** 2 / 2)
+    use = rng.choice(("work", "lift_mass", "vehicle_mass", "both"))
+    if use == "work":
+        kw["work"] = -rng.uniform(0, 1) * ke0 if rng.random() < 0.4 else signed(rng, inertia * W * W / 2 * mag(rng, -1, 0.5), 0.2)
+    else:
+        if use in ("lift_mass", "both"):
+            kw["lift_mass"] = mag(rng, -1, 2)
+            if rng.random() < 0.3:
+                kw["g"] = rng.uniform(1.6, 25)
+        if use in ("vehicle_mass", "both"):
+            kw["vehicle_mass"] = mag(rng, -1, 3)
+        if rng.random() < 0.5:
+            kw["efficiency"] = rng.uniform(0.05, 1.0)
+        if "omega0" in kw and rng.random() < 0.3:
+            kw["until_omega"] = kw["omega0"] * rng.uniform(-1, 1)
+            tags.append("until_omega")
+    tags.append(use)
+    return kw, tags
+
+
 def spin_mode(kw: dict) -> str:
     has_body = any(kw.get(name) is not None for name in ("inertia", "shape", "part"))
     if kw.get("alpha") is not None or not has_body:
@@ -179,8 +210,29 @@ def spin_mode(kw: dict) -> str:
         return "bisection" if kw.get("viscous") or kw.get("drag") else "closed"
     return "laws"
 
+def check_transfer(res: dict, inp: dict, c: Checker) -> None:
+    """--work: ½Iω₁² = ½Iω₀² + W; a load: E = η·½I(ω₀² − ω₁²) = mgh = ½mv²."""
+    inertia, ke0, ke1 = res["I"], res["KE0"], res["KE_after"]
+    w0 = res["omega0"] if res.get("omega0") is not None else inp.get("omega0", 0.0)
+    c.eq("KE0 = ½Iω₀²", ke0, inertia * w0 * w0 / 2)
+    c.eq("KE_after = ½Iω₁²", ke1, inertia * res["omega_after"] ** 2 / 2)
+    if "work" in inp:
+        c.eq("KE_after = KE0 + W (work-energy)", ke1, ke0 + inp["work"], ke0, inp["work"])
+        c.true("ω after turns the way ω₀ did", res["omega_after"] * w0 >= 0)
+        return
+    eta = inp.get("efficiency", 1.0)
+    c.eq("energy_delivered = η(KE0 − KE_after)", res["energy_delivered"], eta * (ke0 - ke1), eta * ke0)
+    if "lift_mass" in inp:
+        c.eq("m g h = energy_delivered", inp["lift_mass"] * inp.get("g", G0) * res["lift_height"], res["energy_delivered"])
+    if "vehicle_mass" in inp:
+        c.eq("½ m v² = energy_delivered", inp["vehicle_mass"] * res["vehicle_speed"] ** 2 / 2, res["energy_delivered"])
+
+
 def check_spin(kw: dict, report, c: Checker) -> None:
     res, inp = values(report), inputs(report)
+    if any(name in kw for name in ("work", "lift_mass", "vehicle_mass")):
+        check_transfer(res, inp, c)
+        return
     mode = spin_mode(kw)
     uniform_family = mode in ("alpha", "closed")
     inertia = res.get("I")

@@ -29,6 +29,11 @@ def split_contacts(report: Report, axle: float, contact) -> Report:
             continue
         kind = key.partition("_")[0]
         part = value.label.partition("takes")[2]
+        if value.value is None:  # withheld (a stepper past its stability limit): so is each share
+            for name, torque in (("axle", axle), ("brake", contact.brake), ("face", contact.face)):
+                if torque:
+                    results.put(key if name == "axle" else f"{kind}_{name}", None, part)
+            continue
         share = value.value / total  # the angle swept, or |ω|
         if axle:
             results.put(key, axle * share, part)

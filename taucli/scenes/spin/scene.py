@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 from taucli.errors import InputError, Unused
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import Report, Step, Table, fmt, quantity_text
+from taucli.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.inertia import body, body_table
 from taucli.scenes.point import RIM, rim_radius
@@ -27,6 +27,7 @@ from taucli.scenes.spin.point import with_point
 from taucli.scenes.spin.power import power_report
 from taucli.scenes.spin.steps import Torques
 from taucli.scenes.spin.torque_laws import drive_for_target, solve
+from taucli.scenes.spin.transfer import transfer_report
 from taucli.table import Results
 
 
@@ -76,6 +77,11 @@ def spin_down(
     power: float | None = None,
     ke0: float | None = None,
     rim_speed: float | None = None,
+    rim_accel: float | None = None,
+    work: float | None = None,
+    lift_mass: float | None = None,
+    vehicle_mass: float | None = None,
+    efficiency: float | None = None,
     energy: bool = False,
     method: str = "auto",
     dt: float | None = None,
@@ -91,11 +97,19 @@ def spin_down(
     """
     if power == 0:
         power = None  # a motor of no power is no motor
-    if g is not None and not any(plate.force is None for plate in face or ()):
-        raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
-    wheel = _wheel(body_options, rim_speed, until_arc, at)
+    if g is not None and lift_mass is None and not any(plate.force is None for plate in face or ()):
+        raise Unused("g", "is used only for the weight on a {face} with no force=, a {lift_mass}, or to read a weight given for a mass")
+    wheel = _wheel(body_options, rim_speed, until_arc, at, rim_accel)
     front = Front()
     omega0 = _initial_speed(wheel, omega0, rim_speed, ke0, front)
+    uses = {"work": work, "lift_mass": lift_mass, "vehicle_mass": vehicle_mass}
+    if efficiency is not None or any(value is not None for value in uses.values()):
+        others = {"torque": torque, "force": force, "friction": friction, "brake": brake or None, "face": face or None, "viscous": viscous,
+                  "drag": drag, "time": time, "until_angle": until_angle, "until_arc": until_arc, "alpha": alpha, "in_time": in_time,
+                  "in_angle": in_angle, "power": power, "rim_accel": rim_accel, "at": at}
+        return _transfer(wheel, omega0, uses, efficiency, until_omega, g, others, front)
+    if rim_accel is not None:
+        alpha = _alpha_of_rim(rim_accel, alpha, wheel.rim, front)
     if until_arc is not None:
         until_angle = _angle_of_arc(until_arc, until_angle, wheel.rim, front)
     push = _push(force, lever, push_angle)
@@ -140,19 +154,59 @@ def spin_down(
     return report
 
 
-def _wheel(body_options: dict, rim_speed: float | None, until_arc: float | None, at) -> Wheel:
+def _transfer(wheel: Wheel, omega0: float | None, uses: dict, efficiency: float | None, until_omega: float | None, g: float | None,
+              others: dict, front: Front) -> Report:
+    """Energy added or taken (--work), or the stored energy put to a load (--lift-mass,
+    --vehicle-mass at --efficiency): an energy balance, with no motion in time."""
+    given = [name for name, value in uses.items() if value is not None]
+    if not given:
+        raise InputError("efficiency", "goes with {lift_mass} or {vehicle_mass}: the share of the stored energy that reaches the load",
+                         example="{lift_mass} 50kg {efficiency} 0.8")
+    if uses["work"] is not None and len(given) > 1:
+        raise InputError(given[1], "conflicts with {work}: give the work done on the wheel, or the load its energy goes to")
+    if uses["work"] is not None and efficiency is not None:
+        raise InputError("efficiency", "goes with {lift_mass} or {vehicle_mass}; {work} is the work done on the wheel itself")
+    if uses["work"] is not None and until_omega is not None:
+        raise InputError("until_omega", "conflicts with {work}: the work fixes the speed after")
+    for name, value in others.items():
+        if value is not None:
+            raise InputError(name, f"conflicts with {{{given[0]}}}: an energy balance, from the speed before to the speed after, takes no torques, times or targets")
+    if wheel.inertia is None:
+        raise InputError(given[0], "needs a body ({inertia} or {shape}): its energy is ½Iω²", example="{inertia} 2kg*m^2 {omega0} 300rpm")
+    if efficiency is not None and not 0 < efficiency <= 1:
+        raise InputError("efficiency", "expected a number above 0 and at most 1", example="{efficiency} 0.8", got=f"{efficiency:g}")
+    assumed = Assumed()
+    gravity = assumed.gravity(g) if uses["lift_mass"] is not None else 0.0
+    report = transfer_report(wheel.inertia, wheel.steps, omega0 or 0.0, work=uses["work"], lift_mass=uses["lift_mass"], vehicle_mass=uses["vehicle_mass"],
+                             efficiency=efficiency, until_omega=until_omega, g=gravity, front=(front.steps, front.notes, front.results))
+    return assumed.applied(_with_parts(report, wheel.parts))
+
+
+def _alpha_of_rim(rim_accel: float, alpha: float | None, rim: float, front: Front) -> float:
+    """α from the tangential acceleration of the rim: a_t = αR."""
+    if alpha is not None:
+        raise InputError("rim_accel", "conflicts with {alpha}: give the angular acceleration one way")
+    alpha = rim_accel / rim
+    front.steps.append(Step("Angular acceleration from the rim's tangential acceleration", "a_t = αR  ⇒  α = a_t/R",
+                            f"{term(rim_accel, 'm/s**2')} / {quantity_text(rim, 'm')}", quantity_text(alpha, "rad/s**2"),
+                            "every point of a rigid wheel turns with the same α; at radius R its speed changes at a_t = αR"))
+    front.notes.append(f"α = a_t/R = {quantity_text(alpha, 'rad/s**2')}: the rim's tangential acceleration {quantity_text(rim_accel, 'm/s**2')} at R = {quantity_text(rim, 'm')}")
+    return alpha
+
+
+def _wheel(body_options: dict, rim_speed: float | None, until_arc: float | None, at, rim_accel: float | None = None) -> Wheel:
     """The body (--inertia, or --shape and its dimensions, or parts), and its rim: --radius beside
     --inertia is the rim's (for a rim speed, an arc or a point at the rim), else the shape's radius."""
     has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
     rim = None
     if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
-        if rim_speed is None and until_arc is None and at != RIM:
-            raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed}, {until_arc} or {at} rim")
+        if rim_speed is None and until_arc is None and rim_accel is None and at != RIM:
+            raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed}, {rim_accel}, {until_arc} or {at} rim")
         rim = body_options.pop("radius")
     moment, body_steps = body(**body_options) if has_body else (None, ())
     parts = body_table(**body_options) if body_options.get("part") else None
-    if rim is None and (rim_speed is not None or until_arc is not None):
-        rim = _rim_radius(body_options, "rim_speed" if rim_speed is not None else "until_arc")
+    if rim is None and (rim_speed is not None or until_arc is not None or rim_accel is not None):
+        rim = _rim_radius(body_options, "rim_speed" if rim_speed is not None else "until_arc" if until_arc is not None else "rim_accel")
     return Wheel(moment, body_steps, parts, rim)
 
 
@@ -184,6 +238,9 @@ def _angle_of_arc(until_arc: float, until_angle: float | None, rim: float, front
     if until_angle is not None:
         raise InputError("until_arc", "conflicts with {until_angle}: give the target one way")
     until_angle = until_arc / rim
+    front.results.put("theta_until", until_angle, f" the arc s = {fmt(until_arc)} m is off (θ = s/R)")
+    front.steps.append(Step("Angle of the arc", "θ = s/R", f"{term(until_arc, 'm')} / {quantity_text(rim, 'm')}", quantity_text(until_angle, "rad"),
+                            "an arc s at radius R subtends the angle s/R (in radians)"))
     front.notes.append(f"θ = s/R = {quantity_text(until_angle, 'rad')}: the arc {quantity_text(until_arc, 'm')} at R = {quantity_text(rim, 'm')}")
     return until_angle
 
@@ -202,14 +259,48 @@ def _push(force: float | None, lever: float | None, push_angle: float | None) ->
 def _at_constant_alpha(wheel: Wheel, torques: Torques, omega0, alpha, power, in_time, targets: dict, front: Front) -> tuple[Report, dict]:
     """A constant α given (--alpha), or no body: kinematics, and with a body the torque it takes;
     and the targets it answers (without a body, --in-time is the time)."""
+    if power is not None and (wheel.inertia is not None or alpha):
+        raise InputError("power", "conflicts with {alpha}: a constant power gives a changing α" if alpha else "needs a body ({inertia} or {shape})")
     if power is not None:
-        raise InputError("power", "conflicts with {alpha}: a constant power gives a changing α" if alpha is not None else "needs a body ({inertia} or {shape})")
+        return _steady_power(power, omega0, torques, targets, in_time, front), targets
     if in_time is not None:
         if targets["time"] is not None:
             raise InputError("in_time", "conflicts with {time}: without a body they say the same")
         targets = {**targets, "time": in_time}
     report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, alpha, **targets, front=(front.steps, front.notes, front.results))
     return _with_front(report, front.results), targets
+
+
+def _steady_power(power: float, omega0: float | None, torques: Torques, targets: dict, in_time, front: Front) -> Report:
+    """A power at a steady speed with no body (kinematics): the torque τ = P/ω that carries it, and
+    by --time the angle turned and the work done, W = Pt."""
+    for name, value in (("until_omega", targets["until_omega"]), ("until_angle", targets["until_angle"]), ("in_time", in_time),
+                        ("friction", torques.friction or None), ("viscous", torques.viscous or None), ("drag", torques.drag or None)):
+        if value is not None:
+            raise InputError(name, "conflicts with {power} with no body: the speed is steady, so the power and the speed fix the torque (give a body for a motor that speeds it up)")
+    if not omega0:
+        raise InputError("power", "needs the steady speed it is carried at when there is no body: {omega0} or {rim_speed}", example="{power} 1kW {omega0} 300rpm")
+    results = Results(TABLE)
+    results.update(front.results)
+    torque = power / omega0
+    results.put("alpha0", 0.0)
+    results.put("alpha", 0.0)
+    results.put("torque", torque, " that carries the power at this speed")
+    results.put("power", power, "")
+    steps = [*front.steps, Step("Torque at a steady speed", "P = τω  ⇒  τ = P/ω", f"{term(power, 'W')} / {term(omega0, 'rad/s')}", quantity_text(torque, "N*m"),
+                                "the power a torque delivers to a shaft turning at ω is τω")]
+    time = targets["time"]
+    if time is not None:
+        theta = omega0 * time
+        results.put("omega", omega0, f" at t = {fmt(time)} s")
+        results.put("theta", theta, f" by t = {fmt(time)} s")
+        results.put("revs", theta / (2 * math.pi), f" by t = {fmt(time)} s")
+        results.put("work_drive", power * time, f" by t = {fmt(time)} s")
+        steps.append(Step("Angle turned at the steady speed", "θ = ωt", f"{term(omega0, 'rad/s')} × {term(time, 's')}", quantity_text(theta, "rad"),
+                          "the speed does not change"))
+        steps.append(Step("Work done", "W = Pt = τθ", f"{term(power, 'W')} × {term(time, 's')}", quantity_text(power * time, "J"),
+                          "a constant power for a time"))
+    return Report("spin-down", "a power at a steady speed, no body (kinematics): τ = P/ω", "closed form", results, steps, list(front.notes))
 
 
 def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: dict, front: Front, method, dt, rtol) -> tuple[Report, dict, Torques]:
@@ -288,7 +379,7 @@ def _rim_radius(body_options: dict, option: str) -> float:
     for name in ("radius", "outer_radius"):
         if body_options.get(name) is not None:
             return body_options[name]
-    raise InputError(option, "needs a radius: the body's ({shape} with {radius}), or {radius} beside {inertia}")
+    raise InputError(option, "needs a radius: the body's ({shape} with {radius}), or {radius} beside {inertia} or with no body")
 
 
 def _with_front(report: Report, front: Results, notes: Sequence[str] = (), steps: Sequence[Step] = ()) -> Report:
