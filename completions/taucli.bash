@@ -25,6 +25,8 @@ _taucli() {
     inertia)
         case "$prev" in
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
+            --gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --radius) _taucli_units m cm mm km in ft; return 0 ;;
             --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
@@ -41,7 +43,7 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "mass radius inner_radius outer_radius length width height depth offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "mass density gyration radius inner_radius outer_radius length width height depth offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
@@ -49,13 +51,15 @@ _taucli() {
             COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     spin-down)
         case "$prev" in
             --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
+            --gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --radius) _taucli_units m cm mm km in ft; return 0 ;;
             --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
@@ -102,11 +106,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag KE_after omega_after energy_delivered lift_height vehicle_speed v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 work lift_mass vehicle_mass efficiency rim_accel rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 work lift_mass vehicle_mass efficiency rim_accel rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --work --lift-mass --vehicle-mass --efficiency --rim-accel --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --work --lift-mass --vehicle-mass --efficiency --rim-accel --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -188,6 +192,8 @@ _taucli() {
             --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
+            --gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --radius) _taucli_units m cm mm km in ft; return 0 ;;
             --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
@@ -219,17 +225,19 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in
             --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
+            --gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --radius) _taucli_units m cm mm km in ft; return 0 ;;
             --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
@@ -256,11 +264,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 torsion g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 torsion g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --torsion --g --angle --time --at --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --torsion --g --angle --time --at --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in
@@ -287,6 +295,8 @@ _taucli() {
             --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
+            --gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --radius) _taucli_units m cm mm km in ft; return 0 ;;
             --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
@@ -308,11 +318,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     drive)
         case "$prev" in
@@ -328,6 +338,8 @@ _taucli() {
             --load-inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
+            --gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --radius) _taucli_units m cm mm km in ft; return 0 ;;
             --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
@@ -362,11 +374,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean rms_to_rated within_rating" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency gear_inertia load_inertia mass radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

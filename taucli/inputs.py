@@ -114,37 +114,44 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
 
 
 def _either(option: Option, given: str, inputs: Inputs):
-    """A text of the option's own kind (a float), or else of its other kind, ``option.also``: a
-    Value (SI value and unit), so the scene tells the two apart (rolling's --at 0.05m, a radius,
-    and --at 30deg, an angle on the rim). A number alone is the option's own kind; a value of the
-    other kind takes no uncertainty, whose spread would be moved as the option's own kind."""
+    """A text of the option's own kind (a float), or else of one of its other kinds, ``option.also``:
+    a Value (SI value and unit), so the scene tells them apart (rolling's --at 0.05m, a radius, and
+    --at 30deg, an angle on the rim; --density 20kg/m^2, a plate's mass per area). A number alone is
+    the option's own kind; a value of another kind takes no uncertainty, whose spread would be
+    moved as the option's own kind."""
     try:
         return _quantity(option, given, inputs, None)
     except InputError as own:
-        kind = units.KINDS[option.also]
-        aside = Inputs(gravity=inputs.gravity)  # the other reading, kept only if it reads
         try:
             float(given)
         except ValueError:
+            pass
+        else:  # a number alone is only ever the option's own kind
+            raise _of_neither(option, own) from None
+        for kind_name in option.also_kinds:
+            kind = units.KINDS[kind_name]
+            aside = Inputs(gravity=inputs.gravity)  # the other reading, kept only if it reads
             try:
-                value = aside.quantity(option.name, given, option.also, sign="any")
+                value = aside.quantity(option.name, given, kind_name, sign="any")
             except InputError as other:
                 try:
                     units.read(given, "{" + option.name + "}", kind)
                 except InputError:
-                    value = None  # of neither kind
-                else:
-                    raise other from None  # of the other kind, but not a value it takes (out of bounds)
-        else:
-            value = None  # a number alone is only ever the option's own kind
-        if value is None:
-            words = "".join(f", {word}" for word in option.words)
-            raise InputError(option.name, f"{own.expected}{words} or {article(kind.name)}", example=own.example, got=own.got, hint=own.hint) from None
-        if aside.uncertainties:
-            raise InputError(option.name, f"takes {article(kind.name)} with no uncertainty", example=f"{{{option.name}}} {kind.example}", got=repr(given))
-        inputs.values.update(aside.values)
-        inputs.notes.extend(aside.notes)
-        return Value(value, kind.si_unit, "")
+                    continue  # not of this kind
+                raise other from None  # of this kind, but not a value it takes (out of bounds)
+            if aside.uncertainties:
+                raise InputError(option.name, f"takes {article(kind.name)} with no uncertainty", example=f"{{{option.name}}} {kind.example}", got=repr(given))
+            inputs.values.update(aside.values)
+            inputs.notes.extend(aside.notes)
+            return Value(value, kind.si_unit, "")
+        raise _of_neither(option, own) from None
+
+
+def _of_neither(option: Option, own: InputError) -> InputError:
+    words = "".join(f", {word}" for word in option.words)
+    kinds = [article(units.KINDS[kind].name) for kind in option.also_kinds]
+    listed = f"{words} or {kinds[0]}" if len(kinds) == 1 else f"{words}, {', '.join(kinds[:-1])} or {kinds[-1]}"
+    return InputError(option.name, f"{own.expected}{listed}", example=own.example, got=own.got, hint=own.hint)
 
 
 def _spec(name: str):

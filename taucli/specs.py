@@ -88,13 +88,37 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
     mass = read_field("mass") if "mass" in fields else None
     inertia = read_field("inertia") if "inertia" in fields else None
     gyration = read_field("gyration") if "gyration" in fields else None
-    density = _read_density(source, fields["density"], inputs, number) if "density" in fields else None
-    return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density)
+    density, per = _read_density(source, fields["density"], inputs, number) if "density" in fields else (None, "kg/m**3")
+    return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density, per)
 
 
-def _read_density(source: str, text: str, inputs: Inputs, number: int) -> float:
-    """A part's density (kg/m³), read as every quantity is."""
-    return inputs.quantity(f"{source} density=", text, "density", key=f"part{number}_density")
+_PER = (("density", "kg/m**3"), ("areal density", "kg/m**2"), ("linear density", "kg/m"))
+
+
+def _read_density(source: str, text: str, inputs: Inputs, number: int) -> tuple[float, str]:
+    """A part's density and its unit, read by its unit: kg/m³ (a number alone too), kg/m² (a
+    plate's or disc's mass per area) or kg/m (a rod's or ring's per length)."""
+    option, key = f"{source} density=", f"part{number}_density"
+    if not isinstance(text, str):
+        return inputs.quantity(option, text, "density", key=key), "kg/m**3"
+    first = None
+    for kind, unit in _PER:
+        try:
+            return inputs.quantity(option, text, kind, key=key), unit
+        except InputError as err:
+            first = first or err
+            if _of_kind(text, option, kind):
+                raise  # of this kind, but not a value it takes
+    raise InputError(option, "expected a density, an areal density or a linear density", example='{part} "plate density=20kg/m^2 width=1m height=0.5m"',
+                     got=first.got) from None
+
+
+def _of_kind(text: str, option: str, kind: str) -> bool:
+    try:
+        units.read(text, option, units.KINDS[kind])
+    except InputError:
+        return False
+    return True
 
 
 # Vectors ("0.3,0.4,0 m") and quantities given more than once (--mass 2kg --mass 3kg).

@@ -77,7 +77,12 @@ class Option:
     metavar: str | None = None  # else the kind's
     of: str | None = None  # VECTOR: the quantity kind of its components ("force")
     words: tuple[str, ...] = ()  # words a quantity option takes as well ("rim" for --at)
-    also: str | None = None  # another quantity kind it takes, passed on as a Value (rolling's --at 30deg: an angle on the rim)
+    also: str | tuple[str, ...] | None = None  # other quantity kinds it takes, passed on as a Value (rolling's --at 30deg: an angle on the rim)
+
+    @property
+    def also_kinds(self) -> tuple[str, ...]:
+        """The other quantity kinds it takes, in the order they are tried."""
+        return () if self.also is None else (self.also,) if isinstance(self.also, str) else self.also
     makes: tuple[str, ...] = ()  # FLAG: the results it turns on; naming one in --get, --y or --to turns it on
 
     @property

@@ -56,11 +56,19 @@ SHAPE_WORDS = ", ".join(SHAPE_NAMES)
 # pendulum: a part may sit on the other side of the pivot, its offset= negative (d = Σmᵢdᵢ/M, signed)
 SIGNED_PARTS = replace(PARTS, sign="any", help=PARTS.help.replace("(repeatable)", "offset= negative on the other side of the pivot (repeatable)"))
 
+# A body by its density (read by its unit: per volume, area or length) or its radius of gyration (#34).
+DENSITY = Option("density", "density", "The body's density instead of --mass, with its shape and dimensions, read by its unit: kg/m^3 for a solid, "
+                 "kg/m^2 for a disc, plate, washer (tube) or thin shell, kg/m for a rod or ring, e.g. 7800kg/m^3.", panel=BODY,
+                 also=("areal density", "linear density"))
+GYRATION = Option("gyration", "length", "The body's radius of gyration k, with --mass and no shape: I = Mk², e.g. 0.3m.", panel=BODY)
+
 # A body on an axle: its moment of inertia, or a shape with its mass and dimensions.
 BODY_OPTIONS = (
     Option("inertia", "moment of inertia", "Moment of inertia about the axle, e.g. 0.1kg*m^2 (or give --shape).", panel=BODY),
     Option("shape", CHOICE, f"The body's shape, with --mass and its dimensions: {SHAPE_WORDS}.", panel=BODY, choices=SHAPE_NAMES, metavar="SHAPE"),
     MASS,
+    DENSITY,
+    GYRATION,
     *DIMENSIONS,
     AXIS,
     OFFSET,

@@ -1,6 +1,6 @@
 """taucli inertia: the moment of inertia of a shape, shifted, or of a body of several parts."""
 
-from taucli.options.common import ANSWER, AXIS, DIMENSIONS, GRAVITY_FOR_WEIGHTS, MASS, OFFSET, PARTS, SHAPE_WORDS
+from taucli.options.common import ANSWER, AXIS, DENSITY, DIMENSIONS, GRAVITY_FOR_WEIGHTS, GYRATION, MASS, OFFSET, PARTS, SHAPE_WORDS
 from taucli.table import CHOICE, Command, Option, Result
 from taucli.names import SHAPE_NAMES
 
@@ -9,8 +9,10 @@ COMMAND = Command(
     summary="Moment of inertia of a standard shape: shifted (--offset), or a body of several parts.",
     example="taucli inertia disc --mass 5kg --radius 0.2m",
     options=(
-        Option("shape", CHOICE, f"One of: {SHAPE_WORDS}.", choices=SHAPE_NAMES, positional=True, metavar="SHAPE"),
+        Option("shape", CHOICE, f"One of: {SHAPE_WORDS} (none with --gyration).", choices=SHAPE_NAMES, positional=True, metavar="SHAPE"),
         MASS,
+        DENSITY,
+        GYRATION,
         *DIMENSIONS,
         AXIS,
         OFFSET,

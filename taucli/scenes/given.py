@@ -27,7 +27,8 @@ class Part:
     source: str = ""
     inertia: float | None = None  # its own I (about its centre when an offset moves it)
     gyration: float | None = None  # its radius of gyration k (I = Mk²)
-    density: float | None = None  # its mass from its shape's volume
+    density: float | None = None  # its mass from its shape's volume (or area, or length: density_unit)
+    density_unit: str = "kg/m**3"  # kg/m**2 for a plate's or disc's mass per area, kg/m for a rod's or ring's per length
 
     def option(self, name: str) -> str:
         flag = name.replace("_", "-")

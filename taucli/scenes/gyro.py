@@ -33,7 +33,7 @@ from taucli.options.gyro import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
 from taucli.table import Results
-from taucli.scenes.inertia import body
+from taucli.scenes.inertia import body, body_mass as whole_mass
 from taucli.scenes.shapes import SHAPES
 
 TWO_PI = 2.0 * math.pi
@@ -142,6 +142,8 @@ def gyro(
     axis: str | None = None,
     offset: float | None = None,
     part: Sequence = (),
+    gyration: float | None = None,
+    density=None,
     spin: float | None = None,
     cm_distance: float | None = None,
     torque: float | None = None,
@@ -155,7 +157,9 @@ def gyro(
     dims = {"radius": radius, "inner_radius": inner_radius, "outer_radius": outer_radius, "length": length, "width": width, "height": height, "depth": depth}
     if part and shape is None:
         raise InputError("part", "goes with {shape}: the parts are added to the shape's body", example='{shape} disc {mass} 1kg {radius} 5cm {part} "ring mass=100g radius=5cm"')
-    moment, body_steps = body(inertia=inertia, shape=shape, mass=mass if shape is not None else None, axis=axis, offset=offset, part=part, **dims)
+    own_mass = shape is not None or gyration is not None  # --mass is the body's, not only the weight's
+    moment, body_steps = body(inertia=inertia, shape=shape, mass=mass if own_mass else None, axis=axis, offset=offset, part=part,
+                              gyration=gyration, density=density, **dims)
     if spin is None:
         raise InputError("spin", "is required: the spin about the body's axis", example="{spin} 4000rpm")
     theta = HALF_PI if tilt is None else tilt
@@ -163,8 +167,8 @@ def gyro(
         raise InputError("tilt", "expected an angle from 0 to 180 deg from the upward vertical", example="{tilt} 30deg", got=f"{fmt(math.degrees(theta))} deg")
     cos_t, sin_t = tilt_cos_sin(theta)
     body_mass = None
-    if shape is not None:
-        body_mass = mass + math.fsum(p.mass for p in part)
+    if own_mass:  # the shape's (by --mass or --density) and its parts'
+        body_mass = whole_mass(shape=shape, mass=mass, axis=axis, offset=offset, part=part, gyration=gyration, density=density, **dims)
     elif mass is not None:
         body_mass = mass
 
@@ -206,7 +210,7 @@ def gyro(
     perp_steps: list[Callable[[], list[Step]]] = []
     perp = inertia_perp
     if perp is None and shape is not None and not part and offset is None:
-        perp = _perp_from_shape(shape, mass, axis, dims, cm_distance, perp_steps, notes)
+        perp = _perp_from_shape(shape, body_mass, axis, dims, cm_distance, perp_steps, notes)
     if perp is not None and inertia_perp is not None:
         _check_perp(perp, moment, body_mass, cm_distance)
     if perp is None:

@@ -17,7 +17,7 @@ from taucli.errors import InputError, Unused
 from taucli.options.inertia import COMMAND as TABLE
 from taucli.report import Report, Step, Table, fmt, quantity_text
 from taucli.scenes.given import Part
-from taucli.scenes.shapes import SHAPES, VOLUMES, Axis, Shape, fill, lookup_shape
+from taucli.scenes.shapes import AREAS, LENGTHS, SHAPES, VOLUMES, Axis, Shape, fill, lookup_shape
 from taucli.table import Results
 
 
@@ -81,22 +81,32 @@ def _given_inertia(part: Part) -> PartInertia:
     return PartInertia(part, shape, shape.axes[0], own, moved, tuple(steps), part.offset)
 
 
+# What a density is per, by its unit: the measures of the shapes it applies to, the symbols, the words.
+_PER = {
+    "kg/m**3": (VOLUMES, "M = ρV", "V", "m**3", "volume", "a solid of known volume", "a uniform body's mass is its density times its volume"),
+    "kg/m**2": (AREAS, "M = σA", "A", "m**2", "area", "a flat body (a disc, a plate, a washer: a tube; a thin shell)",
+                "a uniform sheet's mass is its mass per area times its area"),
+    "kg/m": (LENGTHS, "M = λℓ", "ℓ", "m", "length", "a thin body along a line (a rod, a ring)", "a uniform wire's mass is its mass per length times its length"),
+}
+
+
 def _mass_from_density(part: Part, shape: Shape) -> tuple[Part, Step]:
-    """The part with its mass from density × volume."""
+    """The part with its mass from its density: ρ × volume, σ × area (a plate's or disc's mass per
+    area) or λ × length (a rod's or ring's per length), as the density's unit says."""
     if part.mass is not None:
         raise InputError(part.option("density"), "conflicts with mass=: give the part's mass or its density")
-    if shape.name not in VOLUMES:
-        raise InputError(part.option("density"), f"needs a solid of known volume ({', '.join(VOLUMES)}), not a {shape.title}")
-    equation, volume_of = VOLUMES[shape.name]
-    needed = volume_of.__code__.co_varnames[: volume_of.__code__.co_argcount]  # its parameters' names
+    measures, law, symbol, unit, measure, needs, why = _PER[part.density_unit]
+    if shape.name not in measures:
+        raise InputError(part.option("density"), f"needs {needs} when it is per {measure} ({part.density_unit.replace('**', '^')}): {', '.join(measures)}, not a {shape.title}")
+    equation, measure_of = measures[shape.name]
+    needed = measure_of.__code__.co_varnames[: measure_of.__code__.co_argcount]  # its parameters' names
     for dim in needed:
         if dim not in part.dims:
-            raise InputError(part.option(dim), f"is needed for the volume of a {shape.title} ({equation})", example=part.example(dim, "0.05m"))
-    volume = volume_of(**{dim: part.dims[dim] for dim in needed})
-    mass = part.density * volume
-    step = Step(f"Mass of the {shape.title} from its density", f"M = ρV,  {equation}",
-                f"{quantity_text(part.density, 'kg/m**3')} × {quantity_text(volume, 'm**3')}", quantity_text(mass, "kg"),
-                "a uniform body's mass is its density times its volume")
+            raise InputError(part.option(dim), f"is needed for the {measure} of a {shape.title} ({equation})", example=part.example(dim, "0.05m"))
+    size = measure_of(**{dim: part.dims[dim] for dim in needed})
+    mass = part.density * size
+    step = Step(f"Mass of the {shape.title} from its density", f"{law},  {equation}",
+                f"{quantity_text(part.density, part.density_unit)} × {quantity_text(size, unit)}", quantity_text(mass, "kg"), why)
     return replace(part, mass=mass, density=None), step
 
 
@@ -243,7 +253,7 @@ def _subscript(n: int) -> str:
     return str(n).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
-def solve(parts: Sequence[Part]) -> Report:
+def solve(parts: Sequence[Part], show_mass: bool = False) -> Report:
     """The inertia scene: I about the axis, the radius of gyration k = √(I/M), I_cm when shifted."""
     body = body_inertia(parts)
     gyration = math.sqrt(body.inertia / body.mass) if body.mass else None
@@ -253,7 +263,7 @@ def solve(parts: Sequence[Part]) -> Report:
     single = body.parts[0] if len(body.parts) == 1 else None
     if single is not None and single.shape.name != "point" and single.part.offset is not None:
         results.put("I_cm", single.inertia_centre)
-    if single is None:
+    if single is None or show_mass:
         results.put("mass", body.mass)
     steps = list(body.steps)
     steps.append(
@@ -286,36 +296,56 @@ def parts_table(body: BodyInertia) -> Table:
     return Table(columns, rows)
 
 
-def main_part(shape: str | None, mass: float | None, axis: str | None, offset: float | None, dims: Mapping[str, float | None]) -> Part:
-    """The part the main options describe: SHAPE (or --shape) with --mass and its dimensions."""
+def main_part(shape: str | None, mass: float | None, axis: str | None, offset: float | None, dims: Mapping[str, float | None],
+              gyration: float | None = None, density=None) -> Part:
+    """The part the main options describe: SHAPE (or --shape) with --mass (or --density) and its
+    dimensions; or, with no shape, --gyration with --mass (I = Mk²)."""
+    if gyration is not None:
+        if shape is not None:
+            raise InputError("gyration", "conflicts with {shape}: a shape's I comes from its dimensions; give one of them")
+        if density is not None:
+            raise InputError("density", "conflicts with {gyration}: with a radius of gyration give {mass}")
+        given = [name for name, value in dims.items() if value is not None]
+        if given:
+            raise InputError(given[0], "goes with {shape}; with {gyration} the body needs only {mass}")
+        if mass is None:
+            raise InputError("mass", "is required with {gyration} (I = Mk²)", example="{mass} 5kg {gyration} 0.3m")
+        return Part("", mass, {}, None, offset, gyration=gyration)
     if shape is None:
         raise InputError("shape", f"is required, one of {', '.join(SHAPES)}", example="taucli inertia disc {mass} 5kg {radius} 0.2m")
     found = lookup_shape(shape, "shape")
+    present = {name: value for name, value in dims.items() if value is not None}
+    if density is not None:
+        if mass is not None:
+            raise InputError("density", "conflicts with {mass}: give the body's mass or its density")
+        value, unit = (density.value, density.unit) if hasattr(density, "unit") else (density, "kg/m**3")
+        return Part(found.name, None, present, axis, offset, density=value, density_unit=unit)
     if mass is None:
-        raise InputError("mass", f"is required for a {found.title}", example="{mass} 5kg")
-    return Part(found.name, mass, {name: value for name, value in dims.items() if value is not None}, axis, offset)
+        raise InputError("mass", f"is required for a {found.title} (or {{density}})", example="{mass} 5kg")
+    return Part(found.name, mass, present, axis, offset)
 
 
 def inertia(*, shape: str | None = None, mass: float | None = None, axis: str | None = None, offset: float | None = None, part: Sequence[Part] = (),
-            g: float | None = None, **dims: float | None) -> Report:
-    """``taucli inertia``: a shape's moment of inertia (shifted by --offset), or a body of parts.
+            g: float | None = None, gyration: float | None = None, density=None, **dims: float | None) -> Report:
+    """``taucli inertia``: a shape's moment of inertia (shifted by --offset), or a body of parts;
+    a shape by its --density (the mass is then a result), or a body by its --gyration and --mass.
     --g serves only to read a weight given for a mass (--mass 490N)."""
     if g is not None:
         raise Unused("g", "is used only to read a weight given for a mass", example="{mass} 490N {g} 9.8m/s^2")
-    return solve([main_part(shape, mass, axis, offset, dims), *part])
+    return solve([main_part(shape, mass, axis, offset, dims, gyration, density), *part], show_mass=density is not None)
 
 
 def body_table(
     *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
-    offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,
+    offset: float | None = None, part: Sequence[Part] = (), gyration: float | None = None, density=None, **dims: float | None,
 ) -> Table | None:
     """The parts table of a scene's body made of parts (None for a body of one piece)."""
     if not part:
         return None
     if inertia is not None:
         pieces = [Part("", None, inertia=inertia), *part]
-    elif shape is not None:
-        pieces = [main_part(shape, mass, axis, offset, dims), *part]
+    elif shape is not None or gyration is not None:
+        pieces = [main_part(shape, mass, axis, offset, dims, gyration, density), *part]
     else:
         pieces = list(part)
     return parts_table(body_inertia(pieces)) if len(pieces) > 1 else None
@@ -323,11 +353,11 @@ def body_table(
 
 def body_mass(
     *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
-    offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,
+    offset: float | None = None, part: Sequence[Part] = (), gyration: float | None = None, density=None, **dims: float | None,
 ) -> float | None:
     """The whole body's mass where its pieces give it (the shape's with every part's, a part of
     density= by its volume); None where a piece has none (--inertia, a part of inertia= alone)."""
-    pieces = ([main_part(shape, mass, axis, offset, dims)] if shape is not None else []) + list(part)
+    pieces = ([main_part(shape, mass, axis, offset, dims, gyration, density)] if shape is not None or gyration is not None else []) + list(part)
     if inertia is not None or not pieces:
         return mass
     found = body_inertia(pieces)
@@ -336,10 +366,16 @@ def body_mass(
 
 def body(
     *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
-    offset: float | None = None, part: Sequence[Part] = (), **dims: float | None,
+    offset: float | None = None, part: Sequence[Part] = (), gyration: float | None = None, density=None, **dims: float | None,
 ) -> tuple[float, Sequence[Step]]:
-    """The moment of inertia of a scene's body and its steps: --inertia, or --shape with its options."""
-    shape_options = [name for name, value in (("mass", mass), ("axis", axis), ("offset", offset), *dims.items()) if value is not None]
+    """The moment of inertia of a scene's body and its steps: --inertia, or --shape with its options
+    (--mass or --density), or --gyration with --mass."""
+    shape_options = [name for name, value in (("mass", mass), ("axis", axis), ("offset", offset), ("density", density), *dims.items()) if value is not None]
+    if inertia is not None and gyration is not None:
+        raise InputError("gyration", "conflicts with {inertia}: give the body's I one way")
+    if gyration is not None or (density is not None and shape is not None):
+        found = body_inertia([main_part(shape, mass, axis, offset, dims, gyration, density), *part])
+        return found.inertia, found.steps
     if inertia is not None:
         if shape is not None:
             raise InputError("inertia", "conflicts with {shape}: give one of them")

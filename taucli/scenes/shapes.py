@@ -173,6 +173,18 @@ def fill(template: str, mass: float, dims: Mapping[str, float]) -> str:
 
 
 # The volume of each solid shape, from its dimensions: for a part given by its density.
+# A flat body's area (its mass from an areal density, kg/m²) and a thin one's length (from a linear
+# density, kg/m): a tube given by its mass per area is a flat annulus (a washer), of the same I.
+AREAS: dict[str, tuple[str, Callable[..., float]]] = {
+    "disc": ("A = πR²", lambda radius: math.pi * radius * radius),
+    "tube": ("A = π(R₂² − R₁²)", lambda inner_radius, outer_radius: math.pi * (outer_radius - inner_radius) * (outer_radius + inner_radius)),
+    "plate": ("A = WH", lambda width, height: width * height),
+    "shell": ("A = 4πR²", lambda radius: 4 * math.pi * radius * radius),
+}
+LENGTHS: dict[str, tuple[str, Callable[..., float]]] = {
+    "rod": ("ℓ = L", lambda length: length),
+    "ring": ("ℓ = 2πR", lambda radius: 2 * math.pi * radius),
+}
 VOLUMES: dict[str, tuple[str, Callable[..., float]]] = {
     "disc": ("V = πR²L", lambda radius, length: math.pi * radius * radius * length),
     "tube": ("V = π(R₂² − R₁²)L", lambda inner_radius, outer_radius, length: math.pi * (outer_radius - inner_radius) * (outer_radius + inner_radius) * length),

@@ -23,7 +23,7 @@ from taucli.scenes.drive.train import TWO_PI, Train
 from taucli.scenes.inertia import body, body_table
 from taucli.table import Results
 
-SHAPE_OPTIONS = ("mass", "radius", "inner_radius", "outer_radius", "length", "width", "height", "depth", "axis", "offset")
+SHAPE_OPTIONS = ("mass", "density", "radius", "inner_radius", "outer_radius", "length", "width", "height", "depth", "axis", "offset")
 
 
 def drive(
@@ -144,16 +144,16 @@ def _ratio(stages: tuple[float, ...]) -> float:
 
 def _load_body(load_inertia: float | None, options: dict) -> tuple[float | None, Sequence[Step], Table | None]:
     """The rotating load at the output: --load-inertia, or a shape and its options, or parts (None: none)."""
-    shape, part = options.get("shape"), options.get("part")
+    shape, part, gyration = options.get("shape"), options.get("part"), options.get("gyration")
     given = [name for name in SHAPE_OPTIONS if options.get(name) is not None]
     if load_inertia is not None:
-        if shape is not None:
-            raise InputError("load_inertia", "conflicts with {shape}: give one of them")
+        if shape is not None or gyration is not None:
+            raise InputError("load_inertia", f"conflicts with {{{'shape' if shape is not None else 'gyration'}}}: give one of them")
         if given:
             raise InputError(given[0], "goes with {shape}; with {load_inertia} it is not used")
-    elif shape is None and given and not part:
+    elif shape is None and gyration is None and given and not part:
         raise InputError(given[0], "goes with {shape}: the rotating load's shape", example="{shape} disc {mass} 5kg {radius} 0.2m")
-    if load_inertia is None and shape is None and not part:
+    if load_inertia is None and shape is None and gyration is None and not part:
         return None, (), None
     moment, steps = body(inertia=load_inertia, **options)
     return moment, steps, body_table(inertia=load_inertia, **options)

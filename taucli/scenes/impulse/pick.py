@@ -92,7 +92,7 @@ def impulse(
 
 def _body(body_options: dict) -> tuple[float | None, Sequence[Step]]:
     """The body's moment of inertia and the steps that found it, or (None, ()) where no body is given."""
-    given = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
+    given = any(body_options.get(name) is not None for name in ("inertia", "shape", "gyration")) or bool(body_options.get("part"))
     return body(**body_options) if given else (None, ())
 
 

@@ -51,6 +51,8 @@ def pendulum(
     axis: str | None = None,
     offset: float | None = None,
     part: Sequence = (),
+    gyration: float | None = None,
+    density=None,
     cm_distance: float | None = None,
     angle0: float | None = None,
     omega0: float | None = None,
@@ -67,7 +69,7 @@ def pendulum(
     """``taucli pendulum``: the body (--inertia with --mass and --cm-distance, or --shape ...), its
     start (--angle0 from the downward vertical, --omega0), gravity and --torsion, what to report."""
     assumed = Assumed()
-    body = read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion, assumed)
+    body = read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion, assumed, gyration, density)
     swing, gravity = on_pivot(body, torsion, g, angle0, omega0, angle, assumed)
     method = choose(method or "auto", swing.gravity_torque > 0, swing.torsion > 0)
     dt, rtol = dt or DEFAULT_DT, rtol or DEFAULT_RTOL

@@ -28,9 +28,19 @@ class Body(NamedTuple):
     words: str
 
 
-def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion: float | None, assumed: Assumed) -> Body:
+def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion: float | None, assumed: Assumed,
+              gyration: float | None = None, density=None) -> Body:
     """The body from its options; with --inertia and a spring but no --cm-distance, d = 0 (a
-    torsion pendulum on a vertical wire), with a note."""
+    torsion pendulum on a vertical wire), with a note. --gyration with --mass is k about the pivot
+    (with --cm-distance), or with --offset about the centre of mass, --offset from the pivot."""
+    if gyration is not None:
+        if inertia is not None:
+            raise InputError("gyration", "conflicts with {inertia}: give the body's I one way")
+        if offset is None and cm_distance is None and not torsion:
+            raise InputError("gyration", "needs {cm_distance} when k is about the pivot (gravity's torque is mgd); or give {offset}: k about the centre of mass, "
+                             "the centre that far from the pivot", example="{gyration} 0.3m {mass} 2kg {cm_distance} 0.5m")
+        if offset is not None and cm_distance is not None:
+            raise InputError("cm_distance", "conflicts with {offset}: with {gyration} the offset is the centre of mass's distance from the pivot")
     if inertia is not None:
         if shape is not None:
             raise InputError("inertia", "conflicts with {shape}: give one of them")
@@ -47,9 +57,9 @@ def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsi
                              "I = I_cm + Md², and I_cm is never negative", example="{inertia} 0.5kg*m^2 {mass} 1kg {cm_distance} 0.5m",
                              got=f"{fmt(inertia)} kg·m²")
         return Body(inertia, mass, cm_distance, (), "a body of given I")
-    if shape is None:
+    if shape is None and gyration is None:
         raise InputError("inertia", "or {shape} is required", example="{shape} rod {length} 1m {mass} 2kg {axis} end, or {inertia} 0.5kg*m^2 {mass} 2kg {cm_distance} 0.5m")
-    found = body_inertia([main_part(shape, mass, axis, offset, dims), *part])
+    found = body_inertia([main_part(shape, mass, axis, offset, dims, gyration, density), *part])
     steps = list(found.steps)
     total = found.mass
     if cm_distance is None:

@@ -197,7 +197,7 @@ def _alpha_of_rim(rim_accel: float, alpha: float | None, rim: float, front: Fron
 def _wheel(body_options: dict, rim_speed: float | None, until_arc: float | None, at, rim_accel: float | None = None) -> Wheel:
     """The body (--inertia, or --shape and its dimensions, or parts), and its rim: --radius beside
     --inertia is the rim's (for a rim speed, an arc or a point at the rim), else the shape's radius."""
-    has_body = body_options.get("inertia") is not None or body_options.get("shape") is not None or bool(body_options.get("part"))
+    has_body = any(body_options.get(name) is not None for name in ("inertia", "shape", "gyration")) or bool(body_options.get("part"))
     rim = None
     if body_options.get("inertia") is not None and body_options.get("shape") is None and body_options.get("radius") is not None:
         if rim_speed is None and until_arc is None and rim_accel is None and at != RIM:
