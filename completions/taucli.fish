@@ -80,7 +80,7 @@ complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l face -x -d 'A f
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l g -x -a '(__taucli_units m/s^2 ft/s^2 g0)' -d 'Gravity (default 9.80665 m/s^2).'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l viscous -x -a '(__taucli_units "N*m*s" "N*m/(rad/s)")' -d 'Viscous coefficient b (torque bω), e.g. 0.01N*m*s.'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l drag -x -a '(__taucli_units "N*m*s^2")' -d 'Drag coefficient k (torque kωⁿ), e.g. 0.001N*m*s^2.'
-complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l drag-exponent -x -d 'Exponent n of the drag torque kωⁿ, 1 to 10 (default 2).'
+complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l drag-exponent -x -d 'Exponent n of the drag torque kωⁿ, above 0 and at most 10 (below 1 drag alone stops the wheel in a finite time) (default 2).'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l time -x -a '(__taucli_units s ms min h)' -d 'Report ω, θ and revolutions at this time, e.g. 4s.'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l until-omega -x -a '(__taucli_units rad/s rpm rev/s deg/s Hz)' -d 'Report the time and angle to reach this speed.'
 complete -c taucli -n '__fish_seen_subcommand_from spin-down' -l until-angle -x -a '(__taucli_units deg rad rev)' -d 'Report the time and ω when the wheel has turned this far, e.g. 10rev.'

@@ -58,7 +58,11 @@ class Phase(NamedTuple):
 
     @property
     def stops(self) -> bool:
-        return self.closed.stops
+        """It reaches ω = 0 in finite time: where the constant torque opposes it, and under a drag
+        kωⁿ with n < 1 with nothing driving it on (near rest kωⁿ outweighs bω, and dω/dt = −kωⁿ/I
+        gives ω^(1−n) falling linearly to 0 at t = Iω₀^(1−n)/((1−n)k))."""
+        c = self.closed
+        return c.stops or (bool(c.drag) and self.exponent < 1 and c.constant <= 0)
 
     def rate(self, omega: float) -> float:
         """dω/dt in this phase's frame, extended oddly below zero for the event search."""
@@ -69,6 +73,8 @@ class Phase(NamedTuple):
     def stiffness(self, omega: float) -> float:
         """|∂(dω/dt)/∂ω| = (b + n k ωⁿ⁻¹)/I, which sets a fixed step's stability."""
         c = self.closed
+        if c.drag and self.exponent < 1 and omega == 0:
+            return math.inf  # ∂(kωⁿ)/∂ω = nkωⁿ⁻¹ grows without bound at rest when n < 1
         drag = self.exponent * c.drag * abs(omega) ** (self.exponent - 1) if c.drag else 0.0
         return (c.viscous + drag) / c.inertia
 
@@ -121,6 +127,19 @@ class Phase(NamedTuple):
         if self.stops or self.closed.constant == 0:
             return None if self.stops else 0.0
         return numerics.falling_root(self.rate)  # rate(ω) falls from A/I > 0
+
+
+def _bernoulli_stop(phase: Phase) -> float:
+    """The time to rest under I dω/dt = −bω − kωⁿ with n < 1 (no constant torque): a Bernoulli
+    equation, linear in u = ω^(1−n): du/dt = −(1−n)(bu + k)/I, so u reaches 0 at
+    t = I/((1−n)b) · ln(1 + bu₀/k) (t = Iu₀/((1−n)k) without b). A stepper finds the angle to
+    full precision, but not this time: ω falls below any double long before it, and the last
+    step overshoots to a crossing that is not there."""
+    c, n = phase.closed, phase.exponent
+    u0 = c.omega0 ** (1 - n)
+    if c.viscous:
+        return c.inertia / ((1 - n) * c.viscous) * math.log1p(c.viscous * u0 / c.drag)
+    return c.inertia * u0 / ((1 - n) * c.drag)
 
 
 class Method(NamedTuple):
@@ -205,15 +224,19 @@ class Evolver:
             return 0.0, 0.0
         rate = phase.rate(target)
         heading_up = phase.rate(phase.closed.omega0) > 0
-        if rate == 0 or (rate > 0) != heading_up or (target > phase.closed.omega0) != heading_up:
+        c = phase.closed
+        gap = abs(c.omega0 - target)
+        if rate == 0 and target == 0 and phase.stops and not heading_up:
+            # drag kωⁿ with n < 1: dω/dt → 0 at rest, yet ω gets there in finite time; under drag
+            # alone at t = Iω₀^(1−n)/((1−n)k), and the other losses only make it sooner
+            bound = 1.01 * c.inertia * c.omega0 ** (1 - phase.exponent) / ((1 - phase.exponent) * c.drag)
+        elif rate == 0 or (rate > 0) != heading_up or (target > c.omega0) != heading_up or target < 0:
             return None
-        if target < 0:
-            return None
-        # |dω/dt| only grows from the target back to ω₀, so this bounds the time to get there,
-        # and its value at ω₀ bounds the time from below: a fixed step that cannot get there
-        # within the budget even at that pace is refused at once, not after a second of stepping.
-        gap = abs(phase.closed.omega0 - target)
-        bound = 1.01 * gap / abs(rate)
+        else:
+            # |dω/dt| only grows from the target back to ω₀, so this bounds the time to get there,
+            # and its value at ω₀ bounds the time from below: a fixed step that cannot get there
+            # within the budget even at that pace is refused at once, not after a second of stepping.
+            bound = 1.01 * gap / abs(rate)
         least = gap / abs(phase.rate(phase.closed.omega0))
         if self.method.dt is not None and self.method.name != "rk45" and least / self.method.dt > numerics.MAX_STEPS[self.method.name] - self.steps:
             self._refuse()
@@ -225,7 +248,11 @@ class Evolver:
                 return None
             dt = math.log(gap / remaining) / rate
             return solution.t + dt, solution.theta + phase.carry(solution.omega, dt)[1]
-        return (solution.t, solution.theta) if solution.event else None
+        if not solution.event:
+            return None
+        if target == 0 and c.drag and phase.exponent < 1 and c.constant == 0:
+            return _bernoulli_stop(phase), solution.theta
+        return solution.t, solution.theta
 
 
     def reach_angle(self, phase: Phase, distance: float, t_limit: float | None = None) -> tuple[float, float] | None:

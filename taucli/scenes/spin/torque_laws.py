@@ -84,8 +84,8 @@ def solve(
     ``error_estimate`` table); an answer estimated more than 1e-3 off is withheld, null, with a
     note. ``estimate_error=False`` leaves that out (the bench times the method alone). ``energy``
     adds KE, the work of each torque and the power."""
-    if torques.drag and not 1 <= torques.drag_exponent <= 10:
-        raise InputError("drag_exponent", "expected a number from 1 to 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
+    if torques.drag and not 0 < torques.drag_exponent <= 10:
+        raise InputError("drag_exponent", "expected a number above 0 and at most 10", example="{drag_exponent} 1.5", got=fmt(torques.drag_exponent))
     linear_drag = torques.drag if torques.drag and torques.drag_exponent == 1 else 0.0
     if linear_drag:  # kω is a viscous torque: the motion takes b + k together; the energy is shared back out below
         torques = Torques(torques.drive, torques.friction, torques.viscous + linear_drag, 0.0, 2.0, torques.static)
