@@ -215,21 +215,22 @@ _taucli() {
             --face) :; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --inertia-final) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --part-after) :; return 0 ;;
             --torque-profile) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --particle) :; return 0 ;;
             --couple) :; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net period p0 p1 pivot_impulse torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net period p0 p1 pivot_impulse torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius part_after.radius part_after.inner_radius part_after.outer_radius part_after.length part_after.width part_after.height part_after.depth part_after.offset part_after.mass part_after.inertia part_after.gyration particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --g --inertia-final --part-after --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in

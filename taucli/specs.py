@@ -32,7 +32,8 @@ def coefficients(source: str, values: dict) -> tuple[float, float | None]:
 def parts(option: Option, given, inputs: Inputs, stdin) -> tuple:
     specs = given if isinstance(given, (list, tuple)) else [given]
     signed = option.sign == "any"  # (pendulum: a part on the other side of the pivot has a negative offset=)
-    return tuple(parse_part_spec(word(option, spec), number, inputs, signed_offset=signed) for number, spec in enumerate(specs, start=2))
+    name = option.name  # part, or part_after (impulse: the body after a change)
+    return tuple(parse_part_spec(word(option, spec), number, inputs, signed_offset=signed, name=name) for number, spec in enumerate(specs, start=2 if name == "part" else 1))
 
 
 _PART_KEY = re.compile(r"\s+(?=[a-z][a-z_-]*=)")
@@ -47,14 +48,14 @@ PART_FIELDS = {  # key: (kind, sign), as parse_part_spec reads each
 }
 
 
-def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bool = False):
+def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bool = False, name: str = "part"):
     """A ``--part`` value such as "point mass=100g offset=20cm" as an inertia Part.
 
     A part is a shape with mass= (or density=) and its dimensions, or its own I: inertia=
     (with mass= and offset=, I_cm moved by the parallel-axis theorem) or gyration= with mass=;
     those need no shape word. Keys read with - or _ (inner-radius=, inner_radius=).
     """
-    source = f"{{part}} {number}"
+    source = f"{{{name}}} {number}"
     words = _PART_KEY.split(spec.strip())
     shape, *pairs = words
     if shape and "=" in shape:
@@ -81,24 +82,24 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
         kind, sign = PART_FIELDS[key]
         if key == "offset" and signed_offset:
             sign = "any"  # (pendulum: a part on the other side of the pivot)
-        return inputs.quantity(f"{source} {key.replace('_', '-')}=", fields[key], kind, sign=sign, key=f"part{number}_{key}")
+        return inputs.quantity(f"{source} {key.replace('_', '-')}=", fields[key], kind, sign=sign, key=f"{name}{number}_{key}")
 
     dims = {key: read_field(key) for key in PART_DIMENSIONS if key in fields}
     offset = read_field("offset") if "offset" in fields else None
     mass = read_field("mass") if "mass" in fields else None
     inertia = read_field("inertia") if "inertia" in fields else None
     gyration = read_field("gyration") if "gyration" in fields else None
-    density, per = _read_density(source, fields["density"], inputs, number) if "density" in fields else (None, "kg/m**3")
+    density, per = _read_density(source, fields["density"], inputs, f"{name}{number}_density") if "density" in fields else (None, "kg/m**3")
     return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density, per)
 
 
 _PER = (("density", "kg/m**3"), ("areal density", "kg/m**2"), ("linear density", "kg/m"))
 
 
-def _read_density(source: str, text: str, inputs: Inputs, number: int) -> tuple[float, str]:
+def _read_density(source: str, text: str, inputs: Inputs, key: str) -> tuple[float, str]:
     """A part's density and its unit, read by its unit: kg/m³ (a number alone too), kg/m² (a
     plate's or disc's mass per area) or kg/m (a rod's or ring's per length)."""
-    option, key = f"{source} density=", f"part{number}_density"
+    option = f"{source} density="
     if not isinstance(text, str):
         return inputs.quantity(option, text, "density", key=key), "kg/m**3"
     first = None

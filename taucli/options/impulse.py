@@ -2,7 +2,7 @@
 
 from taucli.names import QUADRATURE_NAMES
 from taucli.options.common import ANSWER, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
-from taucli.table import CHOICE, COUPLE, FILE, PARTICLE, Command, Option, Result
+from taucli.table import CHOICE, COUPLE, FILE, PART, PARTICLE, Command, Option, Result
 
 MEETS = "Particles and bodies that meet it (L conserved)"
 
@@ -21,6 +21,8 @@ COMMAND = Command(
         FACE_OPTION,
         GRAVITY,
         Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
+        Option("part_after", PART, 'The body after a change with no torque, by parts, in place of --part (the body\'s --shape or --inertia stays), '
+               'e.g. --part-after "point mass=25kg offset=0.5m" (repeatable).', repeatable=True, metavar='"SHAPE key=value ..."'),
         Option("torque_profile", FILE, "CSV 't [ms], torque [N*m]' then rows; - for stdin.", metavar="FILE"),
         Option("particle", PARTICLE,
                'A particle that meets the body, e.g. "mass=30kg speed=4m/s radius=2m": speed signed (positive in the body\'s sense), '
@@ -50,6 +52,10 @@ COMMAND = Command(
         Result("KE_lost", "J", "kinetic energy lost (KE0 − KE1)…"),
         Result("KE_lost_fraction", "", "fraction of the kinetic energy lost"),
         Result("J_net", "N*m*s", "net angular impulse, drive and friction (IΔω)"),
+        Result("period", "s", "period of a turn after, 2π/|ω₁|"),
+        Result("p0", "kg*m/s", "linear momentum of the system before, across the radius to the particle"),
+        Result("p1", "kg*m/s", "linear momentum of the system after, across the radius to the particle"),
+        Result("pivot_impulse", "N*s", "impulse of the pivot (axle) on the system, p1 − p0"),
         *CONTACT_RESULTS,
         *POINT_RESULTS,
     ),

@@ -170,6 +170,10 @@ def check_impulse(kw: dict, report, c: Checker) -> None:
     inertia = res.get("inertia") if res.get("inertia") is not None else (body_moment(kw, inp) if has_body else None)
     if w1 is not None and w0 is not None:
         c.eq("delta_omega = ω₁ − ω₀", res.get("delta_omega"), w1 - w0, w0, w1)
+    if w1:  # #34: the period of a turn after
+        c.eq("period = 2π/|ω₁|", res.get("period"), 2 * math.pi / abs(w1))
+    if res.get("pivot_impulse") is not None:  # #34: the pivot's impulse is the change of the system's linear momentum
+        c.eq("pivot_impulse = p1 − p0", res["pivot_impulse"], res["p1"] - res["p0"], res["p0"], res["p1"])
     if inertia is not None and w0 is not None and w1 is not None and not kw.get("particle") and not kw.get("couple"):
         final = inp.get("inertia_final", inertia)
         c.eq("L0 = I ω₀", res.get("L0"), inertia * w0)

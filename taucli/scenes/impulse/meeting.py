@@ -16,6 +16,7 @@ from taucli.options.impulse import COMMAND as TABLE
 from taucli.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.angles import cos_exact
 from taucli.scenes.given import Couple, Particle
+from taucli.scenes.impulse.after import put_momentum
 from taucli.scenes.inertia import part_inertia
 from taucli.table import Results
 
@@ -36,7 +37,8 @@ def _check_particle(p: Particle) -> None:
         raise InputError(p.source, "e= is at most 1 (a rebound faster than the approach would make energy)", example=example, got=fmt(p.e))
 
 
-def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], couples: Sequence[Couple], *, inertia_steps: Sequence[Step] = ()) -> Report:
+def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], couples: Sequence[Couple], *, inertia_steps: Sequence[Step] = (),
+                  centre: tuple[float, float] | str | None = None) -> Report:
     """No external torque about the axis while a particle meets the body or bodies lock: L about
     the axis is conserved; the kinetic energy is not (the difference is the heat of the sliding
     or the deformation while they come to move together).
@@ -257,5 +259,7 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         what.append("a particle that leaves" if len(leave) == 1 else "particles that leave")
     if bounce:
         what.append("a particle that rebounds (restitution)" if len(bounce) == 1 else "particles that rebound (restitution)")
+    if centre is not None and not couples:
+        put_momentum(results, steps, notes, centre, particles, omega0, omega1, after)
     model = "no external torque about the axis: L conserved; " + ", ".join(what)
     return Report("impulse", model, "closed form", results, steps, notes, {}, tables)

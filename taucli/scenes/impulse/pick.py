@@ -8,6 +8,7 @@ from taucli.errors import InputError, Unused
 from taucli.report import Report, Step
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.given import Brake, Couple, Face, Particle
+from taucli.scenes.impulse.after import body_after, body_centre, with_period
 from taucli.scenes.impulse.balance import solve_balance
 from taucli.scenes.impulse.braked import braked_kinematics, solve_braked
 from taucli.scenes.impulse.changing_inertia import solve_changing_inertia
@@ -28,6 +29,7 @@ def impulse(
     push_angle: float | None = None,
     duration: float | None = None,
     inertia_final: float | None = None,
+    part_after: Sequence = (),
     torque_profile: Iterable[tuple[float, float]] | None = None,
     method: str = "auto",
     particle: Sequence[Particle] = (),
@@ -46,7 +48,19 @@ def impulse(
     (braked); --particle or --couple, L conserved as they meet the body (meeting);
     --inertia-final, I₀ω₀ = I₁ω₁ (changing_inertia); --torque-profile, J = ∫τ dt (sampled);
     else τΔt = I(ω₁ − ω₀) (balance). Each refuses what does not belong to it, then solves.
-    A push (--force at --lever) adds its torque F r sin φ to --torque's."""
+    A push (--force at --lever) adds its torque F r sin φ to --torque's. --part-after gives the
+    body after a change (its I is --inertia-final's); after each model, the period 2π/|ω₁|."""
+    after_steps: list[Step] = []
+    if part_after:
+        inertia_final, after_steps = body_after(part_after, inertia_final, body_options)
+    report = _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
+                      at, brake, face, g, body_options)
+    return with_period(report)
+
+
+def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
+             at, brake, face, g, body_options: dict) -> Report:
+    """The model by what is given (see ``impulse``)."""
     if at is not None:
         report = impulse(omega0=omega0, omega1=omega1, torque=torque, force=force, lever=lever, push_angle=push_angle, duration=duration, inertia_final=inertia_final,
                          torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, g=g, **body_options)
@@ -74,7 +88,8 @@ def impulse(
                        {"omega1": omega1, "torque": torque, "duration": duration, "inertia_final": inertia_final, "torque_profile": torque_profile})
         assumed = Assumed()
         omega0 = _at_rest_unless_given(omega0, assumed)
-        return assumed.applied(solve_meeting(inertia, omega0, tuple(particle), tuple(couple), inertia_steps=inertia_steps))
+        centre = body_centre(body_options) if particle and not couple else None
+        return assumed.applied(solve_meeting(inertia, omega0, tuple(particle), tuple(couple), inertia_steps=inertia_steps, centre=centre))
     if inertia_final is None and torque_profile is None:
         if method != "auto":
             raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); constant torque has a closed form")
@@ -84,7 +99,7 @@ def impulse(
                                        "inertia_final": inertia_final if mode != "inertia_final" else None,
                                        "torque_profile": torque_profile if mode != "torque_profile" else None})
     if mode == "inertia_final":
-        return solve_changing_inertia(inertia, inertia_final, omega0 or 0.0, inertia_steps=inertia_steps)
+        return solve_changing_inertia(inertia, inertia_final, omega0 or 0.0, inertia_steps=(*inertia_steps, *after_steps))
     assumed = Assumed()
     omega0 = _at_rest_unless_given(omega0, assumed)
     return assumed.applied(solve_profile(inertia, omega0, torque_profile, rule=method, inertia_steps=inertia_steps))
