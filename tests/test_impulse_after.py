@@ -100,3 +100,38 @@ def test_momentum_is_null_with_a_note_where_the_centre_is_not_known():
     assert any("pivot_impulse" in note for note in report.notes)
     report = taucli.impulse(shape="disc", mass="2 kg", radius="1 m", omega0=0, particle="mass=0.1kg speed=10m/s radius=1m angle=60deg")
     assert report.results["p0"].value is None
+
+
+def test_openstax_the_catcher_stops_his_arm_after_the_catch():
+    """OpenStax University Physics vol. 1, ch. 11 (angular momentum), problem: a catcher's arm (a
+    4.0 kg, 0.5 m rod about the shoulder) catches a 0.145 kg ball at 40 m/s at its end, then stops
+    in 0.3 s. Answers as printed: (a) 7.85 rad/s, (b) 9.67 N·m. Physics: mvL = (ML²/3 + mL²)ω_c;
+    τ = I₁(0 − ω_c)/Δt."""
+    r = values(taucli.impulse(shape="rod", mass="4.0 kg", length="0.5 m", axis="end", particle="mass=0.145kg speed=40m/s radius=0.5m",
+                              omega1=0, duration="0.3 s"))
+    assert r["omega_impact"] == pytest.approx(7.85, abs=0.005)
+    assert abs(r["torque"]) == pytest.approx(9.67, abs=0.005)
+    m, v, M, L = mpmath.mpf("0.145"), 40, 4, mpmath.mpf("0.5")
+    i1 = M * L * L / 3 + m * L * L
+    w_c = m * v * L / i1
+    assert r["omega_impact"] == pytest.approx(float(w_c), rel=1e-15)
+    assert r["torque"] == pytest.approx(float(-i1 * w_c / mpmath.mpf("0.3")), rel=1e-14)
+    assert r["J"] == pytest.approx(r["L1"] - r["L0"], rel=1e-14)  # L just after the blow is L₀
+    assert r["KE_lost"] == pytest.approx(float(m * v * v / 2 - i1 * w_c**2 / 2), rel=1e-13)
+
+
+@settings(max_examples=100, deadline=None)
+@given(m=st.floats(0.01, 10), v=st.floats(1, 100), M=st.floats(0.1, 10), tau=st.floats(-50, 50).filter(lambda x: abs(x) > 1e-3), dt=st.floats(0.01, 5))
+def test_after_the_catch_the_torque_changes_the_momentum_the_catch_kept(m, v, M, tau, dt):
+    """L₀ = I₁ω_c (the blow conserves L), then τΔt = I₁ω₁ − I₁ω_c = L₁ − L₀."""
+    r = values(taucli.impulse(shape="rod", mass=M, length=1.0, axis="end", particle=f"mass={m!r}kg speed={v!r}m/s radius=1m", torque=tau, duration=dt))
+    i1 = M / 3 + m
+    assert i1 * r["omega_impact"] == pytest.approx(r["L0"], rel=1e-13)
+    assert r["J"] == pytest.approx(tau * dt, rel=1e-14)
+    assert r["L1"] - r["L0"] == pytest.approx(r["J"], rel=1e-9, abs=1e-12 * abs(r["L0"]))
+
+
+def test_after_the_catch_two_of_torque_duration_omega1():
+    base = ("impulse", "--shape", "rod", "--mass", "4kg", "--length", "0.5m", "--axis", "end", "--particle", "mass=0.145kg speed=40m/s radius=0.5m")
+    assert_usage_error(run_taucli(*base, "--duration", "0.3s"), "--duration needs --torque or --omega1 after the collision")
+    assert_usage_error(run_taucli(*base, "--duration", "0.3s", "--torque", "1N*m", "--omega1", "0"), "--omega1 conflicts with --torque and --duration")

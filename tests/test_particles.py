@@ -195,7 +195,7 @@ def test_units_do_not_change_the_answer():
         ({"inertia": 1, "particle": "mass=1kg speed=4m/s radius=1m colour=red"}, "knows"),
         ({"inertia": 1, "particle": "mass=1kg speed=4kg radius=1m"}, "velocity"),
         ({"particle": "mass=1kg speed=4m/s radius=1m"}, "is required"),
-        ({"inertia": 1, "torque": 2, "particle": "mass=1kg speed=4m/s radius=1m"}, "conflicts"),
+        ({"inertia": 1, "torque": 2, "particle": "mass=1kg speed=4m/s radius=1m"}, "needs duration or omega1 after the collision"),  # #34: a torque after it
         ({"inertia": 1, "couple": "omega0=3rad/s"}, "needs inertia="),
         ({"inertia": 1, "particle": ["mass=1kg speed=4m/s radius=1m e=0.5", "mass=1kg speed=1m/s radius=1m"]}, "one particle meeting the body alone"),
         ({"inertia": 1, "particle": "mass=1kg speed=4m/s radius=1m angle=200deg"}, "from 0 to 180"),

@@ -53,6 +53,7 @@ COMMAND = Command(
         Result("KE_lost_fraction", "", "fraction of the kinetic energy lost"),
         Result("J_net", "N*m*s", "net angular impulse, drive and friction (IΔω)"),
         Result("period", "s", "period of a turn after, 2π/|ω₁|"),
+        Result("omega_impact", "rad/s", "angular velocity just after the collision…"),
         Result("p0", "kg*m/s", "linear momentum of the system before, across the radius to the particle"),
         Result("p1", "kg*m/s", "linear momentum of the system after, across the radius to the particle"),
         Result("pivot_impulse", "N*s", "impulse of the pivot (axle) on the system, p1 − p0"),

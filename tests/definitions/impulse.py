@@ -172,6 +172,9 @@ def check_impulse(kw: dict, report, c: Checker) -> None:
         c.eq("delta_omega = ω₁ − ω₀", res.get("delta_omega"), w1 - w0, w0, w1)
     if w1:  # #34: the period of a turn after
         c.eq("period = 2π/|ω₁|", res.get("period"), 2 * math.pi / abs(w1))
+    if res.get("omega_impact") is not None:  # #34: a torque after a collision: the blow keeps L, then τΔt = ΔL
+        c.eq("J = L1 − L0 after a collision", res["J"], res["L1"] - res["L0"], res["L0"], res["L1"])
+        return
     if res.get("pivot_impulse") is not None:  # #34: the pivot's impulse is the change of the system's linear momentum
         c.eq("pivot_impulse = p1 − p0", res["pivot_impulse"], res["p1"] - res["p0"], res["p0"], res["p1"])
     if inertia is not None and w0 is not None and w1 is not None and not kw.get("particle") and not kw.get("couple"):

@@ -10,12 +10,13 @@ from taucli.scenes.assumed import Assumed
 from taucli.scenes.given import Brake, Couple, Face, Particle
 from taucli.scenes.impulse.after import body_after, body_centre, with_period
 from taucli.scenes.impulse.balance import solve_balance
+from taucli.scenes.impulse.caught import inertia_after, then_torque
 from taucli.scenes.impulse.braked import braked_kinematics, solve_braked
 from taucli.scenes.impulse.changing_inertia import solve_changing_inertia
 from taucli.scenes.impulse.meeting import solve_meeting
 from taucli.scenes.impulse.point import point_after
 from taucli.scenes.impulse.sampled import solve_profile
-from taucli.scenes.inertia import body
+from taucli.scenes.inertia import body, part_inertia
 from taucli.scenes.push import Push, drive_steps
 
 
@@ -84,12 +85,19 @@ def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia
     if g is not None:
         raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     if particle or couple:
+        # a torque after the collision (catch a ball, then stop the arm): two of τ, Δt, ω₁
+        afterwards = any(value is not None for value in (omega1, torque, duration))
         _check_meeting("particle" if particle else "couple", method, inertia,
-                       {"omega1": omega1, "torque": torque, "duration": duration, "inertia_final": inertia_final, "torque_profile": torque_profile})
+                       {"inertia_final": inertia_final, "torque_profile": torque_profile,
+                        **({} if afterwards else {"omega1": omega1, "torque": torque, "duration": duration})})
         assumed = Assumed()
         omega0 = _at_rest_unless_given(omega0, assumed)
         centre = body_centre(body_options) if particle and not couple else None
-        return assumed.applied(solve_meeting(inertia, omega0, tuple(particle), tuple(couple), inertia_steps=inertia_steps, centre=centre))
+        collision = solve_meeting(inertia, omega0, tuple(particle), tuple(couple), inertia_steps=inertia_steps, centre=centre)
+        if afterwards:
+            couple_inertias = [part_inertia(c.part).inertia if c.part is not None else c.inertia for c in couple]
+            collision = then_torque(collision, inertia_after(inertia, tuple(particle), tuple(couple), couple_inertias), omega1, torque, duration)
+        return assumed.applied(collision)
     if inertia_final is None and torque_profile is None:
         if method != "auto":
             raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); constant torque has a closed form")
