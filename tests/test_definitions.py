@@ -98,6 +98,7 @@ def test_spin_down_results_agree_with_their_definitions():
                 "stepper": 5, "held": 3, "units": 200}
     _, checker = run_scene("spin_down", spin.draw_spin, spin.check_spin, 2600, 31, 0.5, branches)
     assert checker.checked["KE0 − KE = Σ losses − work_drive"] > 100
+    assert checker.checked["theta_until = s/R (--until-arc)"] >= 4
 
 
 def test_spin_down_energy_balances_agree_with_their_definitions():
@@ -156,6 +157,12 @@ def test_inertia_results_agree_with_their_definitions():
     branches = {"offset": 30, "part point": 15, "part disc": 15, "part inertia": 15, "part gyration": 15, "part density": 15, "units": 60,
                 **{shape: 10 for shape in inertia.SHAPE_DIMENSIONS}}
     run_scene("inertia", inertia.draw_inertia, inertia.check_inertia, 800, 17, 0.8, branches)
+
+
+def test_bodies_by_density_and_gyration_agree_with_their_definitions():
+    """#34: --density per volume, area or length (by its unit), --gyration with --mass."""
+    branches = {"gyration": 20, "density kg/m^3": 40, "density kg/m^2": 60, "density kg/m": 30}
+    run_scene("inertia", inertia.draw_by_density, inertia.check_by_density, 300, 34, 0.95, branches)
 
 
 def test_drive_results_agree_with_their_definitions():

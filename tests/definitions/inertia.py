@@ -107,3 +107,45 @@ def check_inertia(kw: dict, report, c: Checker) -> None:
             c.eq("I = the shape's closed form", I, own)
     if mass:
         c.eq("k = √(I/M)", res.get("k"), math.sqrt(I / mass))
+
+
+# #34: a body by its density, read by its unit: its measure (volume, area, length) from each shape's geometry.
+MEASURES = {
+    ("disc", "kg/m^3"): lambda d: math.pi * d["radius"] ** 2 * d["length"],
+    ("sphere", "kg/m^3"): lambda d: 4 * math.pi * d["radius"] ** 3 / 3,
+    ("box", "kg/m^3"): lambda d: d["width"] * d["height"] * d["depth"],
+    ("disc", "kg/m^2"): lambda d: math.pi * d["radius"] ** 2,
+    ("plate", "kg/m^2"): lambda d: d["width"] * d["height"],
+    ("shell", "kg/m^2"): lambda d: 4 * math.pi * d["radius"] ** 2,
+    ("tube", "kg/m^2"): lambda d: math.pi * (d["outer_radius"] ** 2 - d["inner_radius"] ** 2),
+    ("rod", "kg/m"): lambda d: d["length"],
+    ("ring", "kg/m"): lambda d: 2 * math.pi * d["radius"],
+}
+
+
+def draw_by_density(rng: random.Random) -> tuple[dict, list[str]]:
+    """A shape by its density (kg/m³, kg/m², kg/m as its unit says), or a body by --gyration and --mass."""
+    if rng.random() < 0.2:
+        return {"gyration": mag(rng, -2, 1), "mass": mag(rng, -2, 3)}, ["gyration"]
+    shape, unit = rng.choice(sorted(MEASURES))
+    kw: dict = {"shape": shape}
+    needs = {"disc": ("radius",) if unit == "kg/m^2" else ("radius", "length"), "tube": ("inner_radius", "outer_radius")}.get(shape, SHAPE_DIMENSIONS[shape])
+    for name in needs:
+        kw[name] = mag(rng, -2, 1)
+    if "inner_radius" in kw:
+        kw["inner_radius"] = kw["outer_radius"] * rng.uniform(0, 0.95)
+    kw["density"] = f"{mag(rng, -1, 4)!r} {unit}"
+    return kw, ["density " + unit]
+
+
+def check_by_density(kw: dict, report, c: Checker) -> None:
+    res, inp = values(report), inputs(report)
+    if "gyration" in kw:
+        c.eq("I = M k² (--gyration)", res["I"], inp["mass"] * inp["gyration"] ** 2)
+        return
+    unit = kw["density"].split()[1]
+    dims = {name: inp[name] for name in ("radius", "inner_radius", "outer_radius", "length", "width", "height", "depth") if name in inp}
+    mass = inp["density"] * MEASURES[(kw["shape"], unit)](dims)
+    c.eq("mass = density × (volume | area | length)", res["mass"], mass)
+    axis = next((axis for (shape, axis) in SHAPE_FORMULAS if shape == kw["shape"]), None)
+    c.eq("I of the shape with the mass its density gives", res["I"], SHAPE_FORMULAS[(kw["shape"], axis)](mass, dims))

@@ -241,6 +241,8 @@ def check_spin(kw: dict, report, c: Checker) -> None:
         # t, ω₁ and θ given: ω₀ is fixed by θ = ½(ω₀ + ω₁)t (and not reported)
         w0 = 2 * inp["until_angle"] / inp.get("time", inp.get("in_time")) - inp["until_omega"]
     rim = rim_of(inp)
+    if inp.get("until_arc") is not None and rim and kw.get("until_omega") is None:  # #34: the arc's angle is a result
+        c.eq("theta_until = s/R (--until-arc)", res.get("theta_until"), inp["until_arc"] / rim)
     g = inp.get("g", G0)
     n = inp.get("drag_exponent", 2.0)
     b, k, axle = inp.get("viscous", 0.0), inp.get("drag", 0.0), inp.get("friction", 0.0)
