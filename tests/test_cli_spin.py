@@ -70,7 +70,7 @@ def test_power_law_drag_uses_rk45_under_auto(taucli):
         (("--inertia", "0.1", "--force", "3N"), ("--lever", "required")),
         (("--inertia", "0.1", "--method", "midpoint"), ("--method", "rk45")),
         (("--inertia", "0.1", "--drag", "0.1", "--drag-exponent", "1.5", "--method", "exact", "--friction", "0.3", "--omega0", "3rad/s"), ("--method", "exact")),
-        (("--inertia", "0.1", "--drag", "0.1", "--drag-exponent", "0.5", "--omega0", "3rad/s"), ("--drag-exponent", "1 to 10")),
+        (("--inertia", "0.1", "--drag", "0.1", "--drag-exponent", "11", "--omega0", "3rad/s"), ("--drag-exponent", "above 0 and at most 10")),  # 0 < n < 1 is a model since #34
         (("--inertia", "0.1", "--omega0", "3rad/s", "--friction", "0.1", "--method", "euler", "--dt", "1ns", "--time", "1h"), ("--dt", "steps")),
         (("--inertia", "0.1", "--time", "-1s"), ("--time", "zero or more")),
         (("--shape", "disc", "--mass", "5kg"), ("--radius is needed",)),
