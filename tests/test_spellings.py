@@ -115,6 +115,11 @@ SPELLINGS = {
     # density (a part's density=): 1 lb/ft³ = 0.45359237 kg / 0.3048³ m³
     "density": (7800.0, ["7800 kg/m^3", "7800 kg/m3", "7.8 g/cm^3", "7.8 g/cm3", "7.8 g/mL", "7800 kg*m^-3",
                          f"{7800 / (0.45359237 / 0.3048**3)!r} lb/ft^3", "7.8 tonne/m^3", "7800"], None, None),
+    # areal and linear density (#34: --density of a plate or disc, of a rod or ring, read by its unit)
+    "areal density": (20.0, ["20 kg/m^2", "20 kg/m2", "2 g/cm^2", "2 g/cm2", "20 kg*m^-2", "20000 g/m^2",
+                             f"{20 / (0.45359237 / 0.3048**2)!r} lb/ft^2", "20"], None, None),
+    "linear density": (0.5, ["0.5 kg/m", "500 g/m", "5 g/cm", "0.5 kg*m^-1", "0.005 kg/cm", f"{0.5 / (0.45359237 / 0.3048)!r} lb/ft",
+                             "50 g/dm", "0.5"], None, None),
 }  # fmt: skip
 
 
