@@ -110,7 +110,7 @@ def pendulum(
     if method == "small-angle" and swing.gravity_torque:
         notes.append(small_angle_note(swing, exact))
     if isinstance(model, Stepped):
-        withhold_if_off(results, notes, model, exact, motion.period, motion.t_bottom, motion.state, time, angle)
+        withhold_if_off(results, notes, model, exact, motion.period, motion.t_bottom, motion.state, time, angle, zero)
 
     steps = DeferredSteps(worked_steps, swing, body.mass, body.cm_distance, gravity, body.steps, dict(results), exact, method, angle, zero)
     report = Report(
