@@ -238,6 +238,7 @@ _taucli() {
             --cm-distance) _taucli_units m cm mm km in ft; return 0 ;;
             --angle0) _taucli_units deg rad rev; return 0 ;;
             --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --omega-bottom) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --torsion) _taucli_units 'N*m/rad' 'N*m/deg' 'mN*m/rad'; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --angle) _taucli_units deg rad rev; return 0 ;;
@@ -246,16 +247,16 @@ _taucli() {
             --method) COMPREPLY=($(compgen -W "auto exact small-angle euler rk4 rk45 verlet" -- "$cur")); return 0 ;;
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 torsion g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 omega_bottom torsion g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --torsion --g --angle --time --at --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in
