@@ -45,7 +45,7 @@ def chart(found: Fit) -> Chart:
     model_series = (Series("fitted", tuple(curve[0]), tuple(_none(curve[1])))
                     if curve is not None else Series("fitted", tuple(xs), tuple(_none(fitted)), points=True))
     panels = (
-        Panel(samples.y_key, f"{samples.y_key} measured and fitted", samples.y_unit, (Series("measured", tuple(xs), tuple(y), points=True), model_series)),
+        Panel(samples.y_key, "measured and fitted", samples.y_unit, (Series("measured", tuple(xs), tuple(y), points=True), model_series)),
         Panel("residual", f"{samples.y_key} measured − fitted", samples.y_unit, (Series("residual", tuple(xs), tuple(_none(y - fitted)), points=True),)),
     )
     return Chart(f"fit: {found.model.command.name}, {samples.y_key} against {key}", key, key, unit, panels)

@@ -13,9 +13,11 @@ diagnostics.
   ρⱼₖ = Cⱼₖ/√(CⱼⱼCₖₖ).
 - The residual RMS √(Σrᵢ²/n), R² = 1 − Σrᵢ²/Σ(yᵢ − ȳ)², and with uncertainties χ²/ν (ν = n − m)
   and the chance of a χ² this large for a model that fits.
-- The runs test (Wald–Wolfowitz) of the residuals' signs in the order of the samples' input: a
-  model that fits leaves signs that change at random; far fewer runs than expected (z < −3.3,
-  p < 0.05 %) are residuals with a shape the model does not have.
+- Two tests of the residuals in the order of the samples' input, for a shape the model does not
+  have (a line through a curve): the runs test (Wald–Wolfowitz) of their signs, which change at
+  random for a model that fits (far fewer runs than expected: z < −3.3), and their lag-1
+  autocorrelation r₁, near −1/n for a model that fits (r₁ ~ N(−1/n, 1/n): z = (r₁ + 1/n)√n > 3.3).
+  Either is p < 0.05 %: a model that fits is seldom flagged, and one flagged is said to be wrong.
 """
 
 from __future__ import annotations
@@ -31,13 +33,15 @@ from taucli.fit.model import Model
 DEGENERATE = 1e-7  # smallest singular value / largest (columns scaled): below, the inputs cannot be told apart
 NEARLY = 1e-3  # below: barely told apart (a note)
 RUNS_Z = -3.3  # the runs test's z below which the residuals are structured (one-sided p ≈ 0.0005)
+LAG_Z = 3.3  # the lag-1 autocorrelation's z above which they are
 CHI2_P = 1e-3  # a χ² this unlikely for a model that fits: a note
 RUNS_LEAST = 10  # fewer samples than this: no runs test
 STEP = 1e-3  # relative step of the differences for the Jacobian
 
 
-def jacobian(model: Model, p: np.ndarray, moved=None) -> np.ndarray:
-    """∂f(xᵢ; p)/∂pⱼ: n × m, by differences (central with Richardson; one-sided near a bound)."""
+def jacobian(model: Model, p: np.ndarray, moved=None, *, rough: bool = False) -> np.ndarray:
+    """∂f(xᵢ; p)/∂pⱼ: n × m, by differences (central with Richardson; one-sided near a bound);
+    ``rough``: forward differences, one solve per input (enough to see dependent columns)."""
     columns = []
     base = model.predict(p, moved)
     for j in range(len(p)):
@@ -48,6 +52,9 @@ def jacobian(model: Model, p: np.ndarray, moved=None) -> np.ndarray:
             q[j] = x
             return model.predict(q, moved)
 
+        if rough:
+            columns.append((f(p[j] + h) - base) / h)
+            continue
         if model.allowed(j, p[j] - 2 * h):
             coarse = (f(p[j] + 2 * h) - f(p[j] - 2 * h)) / (4 * h)
             fine = (f(p[j] + h) - f(p[j] - h)) / (2 * h)
@@ -110,7 +117,13 @@ class Quality:
     chi2_dof: float | None
     chi2_p: float | None
     runs: tuple[int, float, float, float] | None  # (runs, expected, its σ, z)
+    lag: tuple[float, float] | None  # (r₁, z)
     degeneracy: Degeneracy
+
+    @property
+    def structured(self) -> bool:
+        """The residuals have a shape: the runs test or the autocorrelation says so."""
+        return (self.runs is not None and self.runs[3] < RUNS_Z) or (self.lag is not None and self.lag[1] > LAG_Z)
 
     @property
     def dof(self) -> int:
@@ -151,8 +164,19 @@ def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray |
         from scipy.stats import chi2 as chi2_distribution  # deferred: scipy.stats (about 150 ms), only with uncertainties given
 
         chi2_p = float(chi2_distribution.sf(chi2, dof))
+    ordered = r[np.argsort(order, kind="stable")]
     return Quality(n, m, r, covariance, sigma is None, s2, math.sqrt(rss / n), 1.0 - rss / tss if tss > 0 else None, chi2,
-                   chi2 / dof if chi2 is not None else None, chi2_p, runs_test(r[np.argsort(order, kind="stable")]), found)
+                   chi2 / dof if chi2 is not None else None, chi2_p, runs_test(ordered), lag_test(ordered), found)
+
+
+def lag_test(residuals: np.ndarray) -> tuple[float, float] | None:
+    """(r₁, z) of the residuals in order, or None for fewer than RUNS_LEAST samples (or all 0)."""
+    n = len(residuals)
+    total = float(np.sum(residuals**2))
+    if n < RUNS_LEAST or not total > 0:
+        return None
+    r1 = float(np.sum(residuals[1:] * residuals[:-1])) / total
+    return r1, (r1 + 1 / n) * math.sqrt(n)
 
 
 def runs_test(residuals: np.ndarray) -> tuple[int, float, float, float] | None:

@@ -204,16 +204,26 @@ def _quality_step(found: Fit) -> Step:
     equation = "r = y − f(x; p):  RMS = √(Σrᵢ²/n),  R² = 1 − Σrᵢ²/Σ(yᵢ − ȳ)²"
     if fitted.chi2_dof is not None:
         equation += ",  χ²/ν = Σ(rᵢ/σᵢ)²/(n − m)"
-        parts.append(f"χ²/ν = {fmt(fitted.chi2, 4)}/{fitted.dof} = {fmt(fitted.chi2_dof, 4)} (a χ² this large or larger: P = {fitted.chi2_p:.2g})")
-    runs = fitted.runs
-    if runs is None:
-        verdict = f"too few samples ({fitted.n}) for the runs test of the residuals' signs"
-    elif math.isinf(runs[3]):
-        verdict = "every residual has one sign: the model misses the samples"
+        chance = f"P = {fitted.chi2_p:.2g}" if fitted.chi2_p > 1e-300 else "P below 1e-300"
+        parts.append(f"χ²/ν = {fmt(fitted.chi2, 4)}/{fitted.dof} = {fmt(fitted.chi2_dof, 4)} (a χ² this large or larger: {chance})")
+    return Step("The fit's quality", equation, ", ".join(parts), "", _shape(fitted))
+
+
+def _shape(fitted: quality.Quality) -> str:
+    """What the two tests of the residuals' shape say."""
+    if fitted.runs is None:
+        return f"too few samples ({fitted.n}) to test the residuals for a shape (at least {quality.RUNS_LEAST})"
+    verdict = "structured: the model does not describe the samples" if fitted.structured else "no shape seen beyond chance"
+    return f"{_tested(fitted)}: {verdict}"
+
+
+def _tested(fitted: quality.Quality) -> str:
+    runs, lag = fitted.runs, fitted.lag
+    if math.isinf(runs[3]):
+        said = "every residual has one sign"
     else:
-        verdict = (f"the runs test: {runs[0]} runs of one sign among the residuals, {fmt(runs[1], 3)} ± {fmt(runs[2], 2)} expected by chance "
-                   f"(z = {runs[3]:.1f}): " + ("structured, the model does not describe the samples" if runs[3] < quality.RUNS_Z else "no structure seen"))
-    return Step("The fit's quality", equation, ", ".join(parts), "", verdict)
+        said = f"{runs[0]} runs of one sign among the residuals, {fmt(runs[1], 3)} ± {fmt(runs[2], 2)} expected by chance (z = {runs[3]:.1f})"
+    return said + (f"; their lag-1 autocorrelation r₁ = {lag[0]:.2f} (z = {lag[1]:.1f})" if lag is not None else "")
 
 
 def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
@@ -222,13 +232,12 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
     if fitted.scaled:
         notes.append("no uncertainty given for the samples: each fitted input's uncertainty is from the covariance scaled by the residual "
                      "variance (--sigma gives the samples' own, and then χ²/ν)")
-    runs = fitted.runs
-    if runs is not None and runs[3] < quality.RUNS_Z:
-        said = "every residual has one sign" if math.isinf(runs[3]) else f"{runs[0]} runs of one sign where {fmt(runs[1], 3)} ± {fmt(runs[2], 2)} are expected, z = {runs[3]:.1f}"
-        notes.append(f"warning: the residuals are structured ({said}): the model does not describe these samples, and the uncertainties "
-                     "assume that it does (--plot shows the residuals)")
+    if fitted.structured:
+        notes.append(f"warning: the residuals have a shape ({_tested(fitted)}): the model does not describe these samples, "
+                     "and the uncertainties assume that it does (--plot shows the residuals)")
     if fitted.chi2_p is not None and fitted.chi2_p < quality.CHI2_P:
-        notes.append(f"warning: χ²/ν = {fmt(fitted.chi2_dof, 3)} is unlikely for a model that fits with the uncertainties given (P = {fitted.chi2_p:.1g}): "
+        chance = f"P = {fitted.chi2_p:.1g}" if fitted.chi2_p > 1e-300 else "P below 1e-300"
+        notes.append(f"warning: χ²/ν = {fmt(fitted.chi2_dof, 3)} is unlikely for a model that fits with the uncertainties given ({chance}): "
                      + ("the residuals are larger than the uncertainties" if fitted.chi2_dof > 1 else "the uncertainties given are larger than the scatter"))
     if fitted.degeneracy.ratio < quality.NEARLY:
         notes.append(f"warning: {', '.join(fitted.degeneracy.involved)} are barely told apart by these samples (correlation near ±1): "

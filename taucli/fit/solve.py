@@ -94,7 +94,7 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
     if not np.any(np.isfinite(model.predict(p0))):
         raise InputError("fit", f"the scene gives no {samples.y_key} for any sample at the start ({model.why_refused()})")
     shape = linear.affine(model, p0, np.where(p0 != 0, linear.STEP * np.abs(p0), 1.0))
-    _refuse_degenerate(model, shape.X if shape is not None else quality.jacobian(model, p0), sigma, p0)  # at the start: before a search that cannot end
+    _refuse_degenerate(model, shape.X if shape is not None else quality.jacobian(model, p0, rough=True), sigma, p0)  # at the start: before a search that cannot end
     is_linear = False
     if shape is not None:
         p = linear.solve(shape, y, sigma)
