@@ -3,6 +3,8 @@ noise: the data of docs/fit.md where no published set was found, and of the cove
 
     python tests/fit_synthetic.py docs/data      # rewrites docs/data/phyphox-gyroscope.csv
 
+and ``docs_tables()`` gives the short tables docs/fit.md shows.
+
 Every table is made by ``taucli`` itself (``pipeline.solve``) at the parameters named here, then
 rounded as an instrument would print it, with noise from ``random.Random(seed)``.
 """
@@ -61,6 +63,27 @@ def phyphox_gyroscope(seed: int = 7) -> str:
         z += rng.gauss(0, 0.01)
         rows.append(",".join(java_float(v) for v in (t, x, y, z, math.sqrt(x * x + y * y + z * z))))
     return "\n".join(rows) + "\n"
+
+
+def docs_tables() -> dict[str, str]:
+    """The short tables docs/fit.md shows (``cat``), each from its scene at the parameters named."""
+    rng = random.Random(12)
+    friction = [(t, solve("spin-down", inertia=0.1, omega0=30, friction=0.3, time=t)["omega"] + rng.gauss(0, 0.05)) for t in range(10)]
+    rng = random.Random(13)
+    spin_up = [(t, 0.05, 0, solve("spin-down", inertia=0.02, omega0=0, torque=0.05, friction=0.004, time=t)["omega"] + rng.gauss(0, 0.02)) for t in range(1, 7)]
+    spin_up += [(t, 0, 12, solve("spin-down", inertia=0.02, omega0=12, friction=0.004, time=t)["omega"] + rng.gauss(0, 0.02)) for t in range(1, 7)]
+    rng = random.Random(14)
+    periods = [(a, solve("pendulum", shape="point", mass=0.05, radius=1.0, angle0=math.radians(a), g=9.81)["period"] + rng.gauss(0, 0.002))
+               for a in (10, 20, 30, 40, 50, 60, 70, 80)]
+    rng = random.Random(15)
+    ramp = [(a, length, solve("rolling", shape="shell", angle=math.radians(a), length=length)["t"] + rng.gauss(0, 0.005)) for a in (4, 8, 12) for length in (0.5, 1.0)]
+    return {
+        "coast.csv": csv("t (s),omega (rad/s)", coast_down([1.5 * i for i in range(12)], 0.05, 11), ("g", ".3f")),
+        "friction.csv": csv("t (s),omega (rad/s)", friction, ("g", ".3f")),
+        "spin-up.csv": csv("t (s),torque (N*m),omega0 (rad/s),omega (rad/s)", spin_up, ("g", "g", "g", ".3f")),
+        "periods.csv": csv("amplitude (deg),period (s)", periods, ("g", ".4f")),
+        "ramp.csv": csv("angle (deg),length (m),t (s)", ramp, ("g", "g", ".3f")),
+    }
 
 
 if __name__ == "__main__":

@@ -20,7 +20,7 @@ from taucli.table import FLAG, Command
 
 def _scene(name: str | None) -> Command:
     if name is None or name.replace("_", "-") not in SCENES:
-        raise InputError("scene", f"expected a scene: {', '.join(SCENES)}", example="taucli fit spin-down coast.csv --inertia 0.1kg*m^2 --fit friction",
+        raise InputError("scene", f"expected a scene: {', '.join(SCENES)}", example="taucli fit spin-down coast.csv --inertia '0.1 kg*m^2' --fit friction",
                          got=None if name is None else repr(name), hint=did_you_mean(str(name), list(SCENES)) if name else None)
     return SCENES[name.replace("_", "-")]
 

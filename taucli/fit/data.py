@@ -78,6 +78,9 @@ def read(source: str, stdin=None) -> DataTable:
                          example="t (s),omega (rad/s)")
     delimiter = "\t" if "\t" in lines[start] else ";" if ";" in lines[start] else ","
     rows = _rows(lines, start, delimiter, name)
+    if not rows:
+        raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
+                         example="t (s),omega (rad/s)")
     headers = [cell.strip() for cell in rows[0][1]]
     if any(not header for header in headers):
         raise InputError(OPTION, f"{name} line {rows[0][0]}: expected a name for every column", got=repr(lines[start][:80]))

@@ -30,10 +30,15 @@ from taucli.unknowns import Unknown
 REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError)
 
 
-def held(command: Command, given: Mapping[str, object], spell) -> tuple[dict, dict[str, float], dict[str, float], list[str]]:
+def held(command: Command, given: Mapping[str, object], spell, unknowns: list[Unknown] = ()) -> tuple[dict, dict[str, float], dict[str, float], list[str]]:
     """The options held: (each as given, "value ± σ" as its value; each σ in SI; each quantity's
-    SI value; notes), as taucli.answer reads uncertain options."""
-    arguments, inputs = read(command, given)
+    SI value; notes), as taucli.answer reads uncertain options. A spec with a key fitted is read
+    with a stand-in there (a spec without a key it needs is refused)."""
+    readable = dict(given)
+    for unknown in unknowns:
+        if unknown.key is not None:
+            readable = unknown.given_with(readable, 1.0 if unknown.sign == "positive" else 0.0)
+    arguments, inputs = read(command, readable)
     central = dict(given)
     spreads: dict[str, float] = {}
     notes: list[str] = []

@@ -32,6 +32,7 @@ from taucli.fit.model import Model
 
 DEGENERATE = 1e-7  # smallest singular value / largest (columns scaled): below, the inputs cannot be told apart
 NEARLY = 1e-3  # below: barely told apart (a note)
+FLAT = 1e-9  # an input whose relative change moves f by less than this of f: the samples do not depend on it
 RUNS_Z = -3.3  # the runs test's z below which the residuals are structured (one-sided p ≈ 0.0005)
 LAG_Z = 3.3  # the lag-1 autocorrelation's z above which they are
 CHI2_P = 1e-3  # a χ² this unlikely for a model that fits: a note
@@ -72,12 +73,15 @@ class Degeneracy:
     flat: list[str]  # inputs the samples do not depend on at all
 
 
-def degeneracy(J: np.ndarray, names: list[str], p: np.ndarray) -> Degeneracy:
+def degeneracy(J: np.ndarray, names: list[str], p: np.ndarray, f: np.ndarray) -> Degeneracy:
     """How near the columns of J are to dependent (scaled to unit length: the ratio does not depend
     on the inputs' units), and which inputs the weakest direction moves, in relative terms (each
-    column times |pⱼ|: a coast-down's I, τ_f and b moving together by one factor is (1, 1, 1))."""
+    column times |pⱼ|: a coast-down's I, τ_f and b moving together by one factor is (1, 1, 1)). An
+    input that moves f (weighted as J is) by less than FLAT of f for a relative change is one the
+    samples do not depend on: its column is rounding."""
     norms = np.linalg.norm(J, axis=0)
-    flat = [name for name, norm in zip(names, norms) if not norm > 0]
+    size = float(np.linalg.norm(f)) if np.all(np.isfinite(f)) else 0.0
+    flat = [name for name, norm, x in zip(names, norms, p) if not norm > 0 or (x != 0 and norm * abs(x) <= FLAT * size)]
     if flat or J.shape[1] == 0:
         return Degeneracy(0.0, flat, flat)
     s = np.linalg.svd(J / norms, compute_uv=False)
@@ -147,7 +151,7 @@ def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray |
     r = y - fitted
     weights = 1.0 / sigma if sigma is not None else np.ones(n)
     Jw = J * weights[:, None]
-    found = degeneracy(Jw, names, p)
+    found = degeneracy(Jw, names, p, fitted * weights)
     if found.flat or found.ratio < DEGENERATE:
         refuse_degenerate(found, "the result")
     norms = np.linalg.norm(Jw, axis=0)

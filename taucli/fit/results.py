@@ -164,7 +164,8 @@ def _samples_step(found: Fit) -> Step:
 def _model_step(found: Fit) -> Step:
     model = found.model
     command = model.command
-    held = ", ".join(f"{command.flag(name)} {value}" for name, value in model.held.items() if not isinstance(value, (list, tuple)))
+    held = ", ".join(f"{command.flag(name)} = {quantity_text(model.si[name], units.KINDS[command.option(name).kind].si_unit)}" if name in model.si
+                     else f"{command.flag(name)} {value}" for name, value in model.held.items() if not isinstance(value, (list, tuple)))
     shown = command.summary.split(":", 1)[-1].strip().rstrip(".")
     return Step(
         f"The model: {command.name}'s {model.samples.y_key} for each sample, with {', '.join(model.names)} to fit",

@@ -126,7 +126,7 @@ def _factor(column: Column, unit: str, kind: str | None, si_unit: str, label: st
         one = units.converted(1.0, si_unit, unit, where)
         parsed = units.Parsed(1.0 / one.value, one.note)
     if parsed.note:
-        notes.append(parsed.note)
+        notes.append(parsed.note.replace(f"{where} 1 {unit}:", f"{where}:"))
     return parsed.value
 
 

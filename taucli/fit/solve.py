@@ -66,11 +66,10 @@ def model_of(command: Command, given: dict, names: list[str], samples: Samples, 
             arguments, _ = read(command, {key: given.pop(key)})
             if isinstance(arguments.get(key), float):
                 starts[key] = arguments[key]
-    held_options, spreads, si, notes = held(command, given, spell)
     found = []
     for name in names:
         try:
-            unknown = unknowns.resolve(command, name, held_options)
+            unknown = unknowns.resolve(command, name, given)
         except InputError as err:  # said of --find, which names inputs as --fit does
             if err.option != "find":
                 raise
@@ -78,6 +77,7 @@ def model_of(command: Command, given: dict, names: list[str], samples: Samples, 
         if unknown.name in {u.name for u in found}:
             raise InputError("fit", f"names {unknown.name} twice", got=repr(name))
         found.append(unknown)
+    held_options, spreads, si, notes = held(command, given, spell, found)
     model = Model(command, held_options, found, samples, si=si, spreads=spreads, stdin=stdin, spell=spell)
     return model, starts, notes
 
@@ -160,7 +160,8 @@ def _refuse_degenerate(model: Model, J: np.ndarray, sigma, p: np.ndarray) -> Non
     weighted = J / sigma[:, None] if sigma is not None else J
     if not np.all(np.isfinite(weighted)):
         return  # some sample has no value here: the fit decides
-    found = quality.degeneracy(weighted, model.names, p)
+    f = model.predict(p) / (sigma if sigma is not None else 1.0)
+    found = quality.degeneracy(weighted, model.names, p, f)
     if found.flat or found.ratio < quality.DEGENERATE:
         quality.refuse_degenerate(found, model.samples.y_key, f" (the scene gives {_at_first(model, p)})")
 

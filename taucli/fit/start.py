@@ -272,7 +272,7 @@ def start(model: Model, given: dict[str, float]) -> tuple[np.ndarray, list[Step]
         if not how[j]:
             p[j] = _neutral(model, j)
     waiting = [j for j in range(len(names)) if not how[j]]
-    for attempt in range(2):  # an input with no root while another is at 0 (ω₀ not yet started) is tried again after the others
+    while waiting:  # an input with no root while another is at 0 (ω₀ not yet started) is tried again after the others
         later = []
         for j in waiting:
             root = _root_start(model, j, p)
@@ -281,6 +281,8 @@ def start(model: Model, given: dict[str, float]) -> tuple[np.ndarray, list[Step]
                 continue
             p[j], how[j] = root, "root"
             steps.append(_root_step(model, j, root))
+        if later == waiting:
+            break
         waiting = later
     for j in waiting:
         name = names[j]

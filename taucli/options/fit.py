@@ -16,14 +16,14 @@ COMMAND = Command(
     name="fit",
     summary="Fit inputs of a scene to measured samples (least squares): each ± its uncertainty, the fit's quality, and the scene at the fitted values.",
     description=(
-        "SCENE's options follow the data files, as that scene takes them (--inertia 0.1kg*m^2); those named in --fit are "
+        "SCENE's options follow the data files, as that scene takes them (--inertia '0.1 kg*m^2'); those named in --fit are "
         "fitted (a value given for one is its start), the others held, with their uncertainties if they carry any. Each row "
         "of a table is a sample: columns named like the scene's options are its inputs in that row (a time column, t or time, "
         "is --time), a column named like a result is what was measured; a header may carry its unit, as Time (s) or t [ms]. "
         "Comma, semicolon or tab separated. Needs scipy: pip install 'taucli[fit]'. More, with worked examples: docs/fit.md "
         "in taucli's source."
     ),
-    example="taucli fit spin-down coast.csv --inertia 0.1kg*m^2 --fit friction,viscous,omega0",
+    example="taucli fit spin-down coast.csv --inertia '0.1 kg*m^2' --fit friction,viscous,omega0",
     options=(
         Option("scene", CHOICE, "The scene whose inputs are fitted: " + ", ".join(SCENE_NAMES) + ".", choices=SCENE_NAMES, positional=True, metavar="SCENE"),
         Option(
