@@ -260,3 +260,27 @@ def test_a_key_of_a_spec_is_fitted_as_find_names_it():
     assert found.model.names == ["brake.mu", "omega0"]
     assert abs(value_of(found, "brake.mu") - 0.3) < 4 * sigma_of(found, "brake.mu")
     assert "brake.mu" in report.results and report.results["brake.mu"].label.startswith("mu= of the brake")
+
+
+def test_a_pendulums_swing_gives_g_and_its_amplitude_from_the_zero_crossings_start():
+    """θ(t) over two swings: many values of g meet one sample (faster swings pass through the same
+    angle), so the start is the swing's own period and amplitude."""
+    rng = random.Random(14)
+    rows = [(t, solve("pendulum", shape="point", mass=0.05, radius=1.0, angle0=math.radians(30), g=9.81, time=t)["theta"] + rng.gauss(0, 0.003))
+            for t in [0.1 * i for i in range(40)]]
+    report, found = fitted("pendulum", csv("t (s),theta (rad)", rows, ("g", ".12g")), "g,angle0", shape="point", mass="50 g", radius="1 m")
+    assert found.starts == ["closed form", "closed form"]
+    assert abs(value_of(found, "g") - 9.81) < 4 * sigma_of(found, "g")
+    assert abs(value_of(found, "angle0") - math.radians(30)) < 4 * sigma_of(found, "angle0")
+
+
+def test_a_falling_masss_distance_in_time_gives_the_axle_friction():
+    rng = random.Random(16)
+    given = {"m1": 0.3, "m2": 0.2, "pulley_mass": 0.1, "pulley_radius": 0.05}
+    rows = [(t, solve("atwood", **given, axle_friction=0.005, time=t)["distance"] + rng.gauss(0, 0.002)) for t in [0.1 * i for i in range(1, 15)]]
+    report, found = fitted("atwood", csv("t (s),distance (m)", rows, ("g", ".12g")), "axle_friction", x=("t",), y="distance",
+                           m1="300 g", m2="200 g", pulley_mass="100 g", pulley_radius="5 cm")
+    assert abs(value_of(found, "axle_friction") - 0.005) < 4 * sigma_of(found, "axle_friction")
+    with pytest.raises(InputError, match="cannot tell axle_friction and pulley_mass apart"):
+        fitted("atwood", csv("t (s),distance (m)", rows, ("g", ".12g")), "axle_friction,pulley_mass", x=("t",), y="distance",
+               m1="300 g", m2="200 g", pulley_radius="5 cm")

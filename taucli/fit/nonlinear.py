@@ -10,7 +10,6 @@ bound (the samples ask for a value the input cannot take).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -56,7 +55,3 @@ def minimize(model: Model, y: np.ndarray, sigma: np.ndarray | None, p0: np.ndarr
 def stuck(model: Model, p: np.ndarray) -> int:
     """How many samples the scene gives no value for at p."""
     return int(np.sum(~np.isfinite(model.predict(p))))
-
-
-def relative(a: float, b: float) -> float:
-    return abs(a - b) / max(abs(a), abs(b), 1e-300) if math.isfinite(a) and math.isfinite(b) else math.inf

@@ -33,6 +33,7 @@ from taucli.fit.model import Model
 DEGENERATE = 1e-7  # smallest singular value / largest (columns scaled): below, the inputs cannot be told apart
 NEARLY = 1e-3  # below: barely told apart (a note)
 FLAT = 1e-9  # an input whose relative change moves f by less than this of f: the samples do not depend on it
+INVOLVED = 1e-4  # of the weakest direction's largest component: an input it moves (one it leaves is rounding there)
 RUNS_Z = -3.3  # the runs test's z below which the residuals are structured (one-sided p ≈ 0.0005)
 LAG_Z = 3.3  # the lag-1 autocorrelation's z above which they are
 CHI2_P = 1e-3  # a χ² this unlikely for a model that fits: a note
@@ -75,19 +76,20 @@ class Degeneracy:
 
 def degeneracy(J: np.ndarray, names: list[str], p: np.ndarray, f: np.ndarray) -> Degeneracy:
     """How near the columns of J are to dependent (scaled to unit length: the ratio does not depend
-    on the inputs' units), and which inputs the weakest direction moves, in relative terms (each
-    column times |pⱼ|: a coast-down's I, τ_f and b moving together by one factor is (1, 1, 1)). An
-    input that moves f (weighted as J is) by less than FLAT of f for a relative change is one the
-    samples do not depend on: its column is rounding."""
+    on the inputs' units), and which inputs the weakest direction moves (where the columns are
+    dependent, an input outside the dependence has a component of rounding size there). An input
+    that moves f (weighted as J is) by less than FLAT of f for a relative change is one the samples
+    do not depend on: its column is rounding."""
     norms = np.linalg.norm(J, axis=0)
     size = float(np.linalg.norm(f)) if np.all(np.isfinite(f)) else 0.0
     flat = [name for name, norm, x in zip(names, norms, p) if not norm > 0 or (x != 0 and norm * abs(x) <= FLAT * size)]
     if flat or J.shape[1] == 0:
         return Degeneracy(0.0, flat, flat)
-    s = np.linalg.svd(J / norms, compute_uv=False)
-    relative = np.where(np.asarray(p) != 0, np.abs(p), 1.0 / norms)
-    weakest = np.linalg.svd(J * relative, full_matrices=False)[2][-1]
-    involved = [name for name, v in zip(names, weakest) if abs(v) > 0.2 * np.max(np.abs(weakest))]
+    s, vt = np.linalg.svd(J / norms, full_matrices=False)[1:]
+    weakest = np.abs(vt[-1])
+    involved = [name for name, v in zip(names, weakest) if v > INVOLVED * np.max(weakest)]
+    if len(involved) < 2:  # a dependence takes two: the two that move most
+        involved = [names[j] for j in sorted(np.argsort(weakest)[-2:])]
     return Degeneracy(float(s[-1] / s[0]), involved, [])
 
 

@@ -44,10 +44,6 @@ class Mapped:
     factor: float  # SI per unit of the column
     si_unit: str
 
-    @property
-    def described(self) -> str:
-        return f"{self.column.header!r}"
-
 
 @dataclass
 class Samples:

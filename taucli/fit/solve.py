@@ -108,7 +108,8 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         steps.append(_linear_step(model, shape, n))
     else:
         outcome = nonlinear.minimize(model, y, sigma, p0)
-        if not outcome.converged:
+        if not outcome.converged:  # inputs the samples cannot tell apart leave a valley the search wanders in: say so first
+            _refuse_degenerate(model, quality.jacobian(model, outcome.p), sigma, outcome.p)
             raise InputError("fit", f"did not converge ({outcome.message.rstrip('.')}) after {outcome.iterations} steps from the start "
                              + ", ".join(f"{name} = {p:.6g}" for name, p in zip(model.names, p0)), hint="give a start beside --fit, or fit fewer inputs")
         p = outcome.p
@@ -117,7 +118,9 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         missing = nonlinear.stuck(model, p)
         if missing:
             raise InputError("fit", f"ends where the scene gives no {samples.y_key} for {missing} of the samples ({model.why_refused()})")
-        J = quality.jacobian(model, p)
+        polished = _polished(model, p, quality.jacobian(model, p), y, sigma)
+        J = quality.jacobian(model, polished) if not np.array_equal(polished, p) else quality.jacobian(model, p)
+        p = polished
         started = "a closed-form start" if "closed form" in how else "the starts given" if set(how) == {"given"} else "a start from single samples"
         method = f"bounded nonlinear least squares (trust region reflective, scipy.optimize.least_squares) from {started}"
         steps.append(Step(
@@ -131,6 +134,23 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
     found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p)
     covariance, from_held = _with_held(model, p, J, sigma, found.covariance)
     return Fit(model, p, found, covariance, from_held, is_linear, method, steps, [], how)
+
+
+def _polished(model: Model, p: np.ndarray, J: np.ndarray, y: np.ndarray, sigma) -> np.ndarray:
+    """One Gauss–Newton step with the accurate Jacobian from where the search stopped (within its
+    tolerance of the least squares): kept where it lowers the sum and stays within the bounds, so
+    that the solution does not depend on the search's path to the last digits."""
+    weights = 1.0 / sigma if sigma is not None else np.ones(len(y))
+    for _ in range(2):
+        before = (y - model.predict(p)) * weights
+        moved = p + np.linalg.lstsq(J * weights[:, None], before, rcond=None)[0]
+        if not all(model.allowed(j, moved[j]) for j in range(len(p))):
+            return p
+        after = (y - model.predict(moved)) * weights
+        if not (np.all(np.isfinite(after)) and np.sum(after**2) <= np.sum(before**2) * (1 + 1e-9)):  # (at the bottom the sums differ by rounding)
+            return p
+        p = moved
+    return p
 
 
 def _with_held(model: Model, p: np.ndarray, J: np.ndarray, sigma, covariance: np.ndarray) -> tuple[np.ndarray, dict[str, np.ndarray]]:
@@ -184,7 +204,7 @@ def _bound(model: Model, j: int) -> str:
 
 def _refuse_bound(model: Model, at: list[int], p: np.ndarray) -> None:
     names = [model.names[j] for j in at]
-    shown = ", ".join(f"{model.names[j]} = {p[j]:.3g} {units.KINDS[model.unknowns[j].kind].si_unit}".rstrip() for j in at)
+    shown = ", ".join(f"{model.names[j]} = {quantity_text(p[j], units.KINDS[model.unknowns[j].kind].si_unit, 3)}" for j in at)
     raise InputError("fit", f"the samples ask for {' and '.join(names)} at or past {'its' if len(at) == 1 else 'their'} least value ({shown}), "
                      f"which the scene cannot take: the model does not describe these samples with {' and '.join(names)} free",
                      hint=f"leave {' and '.join(names)} out of --fit, or look at the samples (--range, the plot)")

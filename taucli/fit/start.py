@@ -11,8 +11,10 @@ In this order, for each fitted input:
    - atwood, each run's acceleration (a, or 2d/t², or v²/2d): the equations of the masses and the
      pulley added, (m₁ − m₂)g − (I/R²)a − τ_f/R = (m₁ + m₂)a, linear in g, I and τ_f;
    - rolling down an incline, each run's acceleration: g sin θ − a k² = a, linear in g and k²;
-3. else a root of each of a few samples alone, as ``--find`` finds one (taucli.roots), the
-   others at their starts (or 0): the median of those roots.
+   - a pendulum's swing θ(t): the amplitude, and the period from the zero crossings, g from the
+     scene's own period at one g (the period goes as 1/√g at a given amplitude);
+3. else the roots of a few samples, as ``--find`` finds them (taucli.roots), the others at their
+   starts (or 0): the one that best meets the samples (least squares over up to 40 of them).
 
 Where none gives a value, the fit is refused, asking for a start.
 """
@@ -31,14 +33,21 @@ from taucli.report import Step, fmt, quantity_text
 from taucli.scenes.assumed import STANDARD_GRAVITY
 
 ROWS = 5  # samples a root is sought in, for the generic start
+CHECKED = 40  # samples each root is tried on
+CANDIDATES = 40  # roots tried, those nearest the median of all found
+NEARLY_DEPENDENT = 1e-3  # singular values of a closed form's columns (unit length) below this of the largest are cut
 
 
 def _regress(columns: dict[str, np.ndarray], rhs: np.ndarray) -> dict[str, float] | None:
+    """Least squares (the least-norm one where the columns are dependent: a start all the same, and
+    the fit then names the inputs the samples cannot tell apart)."""
     names = list(columns)
     A = np.column_stack([columns[name] for name in names])
-    if not np.all(np.isfinite(A)) or not np.all(np.isfinite(rhs)) or len(rhs) < len(names) or np.linalg.matrix_rank(A) < len(names):
+    if not np.all(np.isfinite(A)) or not np.all(np.isfinite(rhs)) or not len(rhs):
         return None
-    solution = np.linalg.lstsq(A, rhs, rcond=None)[0]
+    norms = np.linalg.norm(A, axis=0)
+    norms = np.where(norms > 0, norms, 1.0)
+    solution = np.linalg.lstsq(A / norms, rhs, rcond=NEARLY_DEPENDENT)[0] / norms  # columns to unit length: nearly dependent ones cut
     return dict(zip(names, (float(v) for v in solution)))
 
 
@@ -218,7 +227,50 @@ def _spin_down(model: Model) -> tuple[dict[str, float], Step] | None:
     )
 
 
-CLOSED: dict[str, Callable[[Model], tuple[dict[str, float], Step] | None]] = {"spin-down": _spin_down, "atwood": _atwood, "rolling": _rolling}
+def _pendulum(model: Model) -> tuple[dict[str, float], Step] | None:
+    """A swing θ(t) from rest: the amplitude, and the period from the zero crossings; g from the
+    period the scene gives at a known g, T ∝ 1/√g at a given amplitude."""
+    plain = ("torsion", "omega0", "omega_bottom")
+    if any(name in model.held for name in plain) or not set(model.names) <= {"g", "angle0"}:
+        return None
+    if set(model.samples.inputs) != {"time"} or model.samples.y_key != "theta":
+        return None
+    t = np.asarray(model.samples.inputs["time"])
+    order = np.argsort(t)
+    t, theta = t[order], np.asarray(model.samples.y)[order]
+    level = theta - np.mean(theta)
+    crossings = [t[i] - level[i] * (t[i + 1] - t[i]) / (level[i + 1] - level[i]) for i in range(len(t) - 1) if level[i] * level[i + 1] < 0]
+    if len(crossings) < 2:
+        return None
+    period = 2 * float(np.mean(np.diff(crossings)))
+    found: dict[str, float] = {}
+    amplitude = model.si.get("angle0")
+    if "angle0" in model.names:
+        first = int(np.argmax(np.abs(theta) > 0.9 * np.max(np.abs(theta))))
+        amplitude = found["angle0"] = float(np.sign(theta[first]) * np.max(np.abs(theta)))
+    if "g" in model.names:
+        reference = np.array([STANDARD_GRAVITY if name == "g" else amplitude for name in model.names])
+        try:
+            at_reference = model.report(reference, {"time": 0.0}).results["period"].value
+        except (InputError, KeyError, ValueError, ZeroDivisionError, OverflowError):
+            return None
+        if not at_reference:
+            return None
+        found["g"] = STANDARD_GRAVITY * (at_reference / period) ** 2
+    return found, Step(
+        "A start from the swing: its amplitude, and its period from the zero crossings",
+        "T = 2 × (mean time between crossings of θ's mean);  g = g₀ (T₀/T)²",
+        f"T = {quantity_text(period, 's')}, T₀ = the scene's period at g₀ = {quantity_text(STANDARD_GRAVITY, 'm/s**2')}"
+        + (f" and θ₀ = {quantity_text(amplitude, 'rad')}" if amplitude is not None else ""),
+        _said(model, found),
+        f"{len(crossings)} crossings; at a given amplitude the period goes as 1/√g, so the scene's own period at one g gives g "
+        "(a start only: the fit below matches θ(t) itself)",
+    )
+
+
+CLOSED: dict[str, Callable[[Model], tuple[dict[str, float], Step] | None]] = {
+    "spin-down": _spin_down, "atwood": _atwood, "rolling": _rolling, "pendulum": _pendulum,
+}
 
 
 def _said(model: Model, found: dict[str, float]) -> str:
@@ -232,11 +284,13 @@ def _neutral(model: Model, j: int) -> float:
 
 
 def _root_start(model: Model, j: int, p: np.ndarray) -> float | None:
-    """The median over a few samples of the value of input j alone that meets each sample."""
+    """The value of input j alone that best meets the samples: each root of a few samples (as
+    --find finds them) tried on up to CHECKED samples, the one with the least sum of squares (a
+    sample may be met by many values, as a swing's angle at one time is by many g)."""
     unknown = model.unknowns[j]
     count = model.samples.count
     picks = sorted({round(k * (count - 1) / max(ROWS - 1, 1)) for k in range(min(ROWS, count))})
-    found = []
+    found: list[float] = []
     for i in picks:
         target = model.samples.y[i]
 
@@ -248,9 +302,21 @@ def _root_start(model: Model, j: int, p: np.ndarray) -> float | None:
 
         search = roots.search(f, roots.grid(units.KINDS[unknown.kind].bounds, unknown.sign, angle=unknown.kind == "angle"), target,
                               angle=unknown.kind == "angle")
-        if search.roots:
-            found.append(min(search.roots, key=abs))
-    return float(np.median(found)) if found else None
+        found += search.roots
+    if not found:
+        return None
+    checked = sorted({round(k * (count - 1) / max(CHECKED - 1, 1)) for k in range(min(CHECKED, count))})
+    y = np.asarray(model.samples.y)[checked]
+
+    def squares(x: float) -> float:
+        q = np.array(p, dtype=float)
+        q[j] = x
+        r = np.array([model.value(q, i) for i in checked]) - y
+        return float(np.sum(r**2)) if np.all(np.isfinite(r)) else math.inf
+
+    candidates = sorted(set(found), key=lambda x: abs(x - float(np.median(found))))[:CANDIDATES]
+    best = min(candidates, key=squares)
+    return best if math.isfinite(squares(best)) else float(np.median(found))
 
 
 def start(model: Model, given: dict[str, float]) -> tuple[np.ndarray, list[Step], list[str]]:
@@ -299,11 +365,12 @@ def start(model: Model, given: dict[str, float]) -> tuple[np.ndarray, list[Step]
 
 def _root_step(model: Model, j: int, root: float) -> Step:
     name = model.names[j]
-    return Step(f"A start for {name}: the value that alone meets each of a few samples",
+    return Step(f"A start for {name}: the value that alone best meets a few samples",
                 f"{model.samples.y_key}(xᵢ; {name}) = {model.samples.y_key}ᵢ",
                 result=f"{name} = {quantity_text(root, units.KINDS[model.unknowns[j].kind].si_unit)}",
-                why=f"the median of the roots in {min(ROWS, model.samples.count)} samples spread over the table, each found as --find "
-                "finds one (a search of the input's range, then Brent's method), the other inputs at their starts")
+                why=f"the roots in {min(ROWS, model.samples.count)} samples spread over the table, each found as --find finds them "
+                "(a search of the input's range, then Brent's method), the other inputs at their starts: the one with the least "
+                f"sum of squares over up to {CHECKED} samples")
 
 
 def _inside(model: Model, j: int, p: np.ndarray) -> float:
