@@ -42,8 +42,7 @@ class Fit:
     linear: bool
     method: str
     steps: list[Step] = field(default_factory=list)
-    notes: list[str] = field(default_factory=list)
-    starts: list[str] = field(default_factory=list)
+    starts: list[str] = field(default_factory=list)  # how each input's start was found: "given", "closed form", "root"
 
 
 def names_of(text: str | None) -> list[str]:
@@ -98,10 +97,8 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
     is_linear = False
     if shape is not None:
         p = linear.solve(shape, y, sigma)
-        bad = [j for j in range(m) if not model.allowed(j, p[j])]
-        if bad:
-            _refuse_bound(model, bad, p)
-        is_linear = linear.holds(model, shape, p)
+        # past a bound the scene has no value to check it by: the bounded search below decides (and refuses there)
+        is_linear = all(model.allowed(j, p[j]) for j in range(m)) and linear.holds(model, shape, p)
     if is_linear:
         J = shape.X
         method = f"linear least squares (the model is linear in {', '.join(model.names)}: solved exactly, no iteration)"
@@ -133,13 +130,13 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
     found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p)
     covariance, from_held = _with_held(model, p, J, sigma, found.covariance)
-    return Fit(model, p, found, covariance, from_held, is_linear, method, steps, [], how)
+    return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how)
 
 
 def _polished(model: Model, p: np.ndarray, J: np.ndarray, y: np.ndarray, sigma) -> np.ndarray:
-    """One Gauss–Newton step with the accurate Jacobian from where the search stopped (within its
-    tolerance of the least squares): kept where it lowers the sum and stays within the bounds, so
-    that the solution does not depend on the search's path to the last digits."""
+    """Up to two Gauss–Newton steps with the accurate Jacobian from where the search stopped (within
+    its tolerance of the least squares), each kept where it does not raise the sum (beyond rounding)
+    and stays within the bounds: the solution does not depend on the search's path to its last digits."""
     weights = 1.0 / sigma if sigma is not None else np.ones(len(y))
     for _ in range(2):
         before = (y - model.predict(p)) * weights
