@@ -13,7 +13,7 @@ from collections.abc import Callable, Mapping
 from taucli import pipeline
 from taucli.errors import InputError
 from taucli.inputs import read
-from taucli.measurement import split
+from taucli.measurement import CONCISE, split
 from taucli.report import Report
 from taucli.table import FILE, Command, spelled
 
@@ -27,9 +27,11 @@ def plain(given: Mapping[str, object], find=None, want=None, mc=None) -> bool:
     solved for and no Monte Carlo is asked."""
     if find is not None or want is not None or mc:
         return False
-    for value in given.values():  # inline, not a helper per value: this runs on every batch line
-        if value.__class__ is str and ("±" in value or "+/-" in value or ")" in value):
+    for value in given.values():  # inline, not a helper per value: this runs on every batch line (measurement.marked)
+        if value.__class__ is str and ("±" in value or "+/-" in value or (")" in value and CONCISE.fullmatch(value) is not None)):
             return False
+        if value.__class__ in (list, tuple) and any(item.__class__ is str and ("±" in item or "+/-" in item) for item in value):
+            return False  # a repeated option's value with an uncertainty: read by _read, which says it is not carried through
     return True
 
 
@@ -65,6 +67,7 @@ def solve(
         return finding.solve_for(scene, unknown, want, spreads, notes, mc)
     nominal = scene.report({})
     if not spreads and not mc:
+        nominal.notes = [*notes, *nominal.notes]  # what the reading said (an uncertainty not carried through)
         return nominal
     slopes = propagate.jacobian(scene, {name: scene.si[name] for name in spreads}, spreads)
     sigma = propagate.combine(slopes, spreads, propagate.numeric(nominal))

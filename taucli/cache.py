@@ -121,5 +121,6 @@ def _no_constants(name: str):
 
 @lru_cache(maxsize=1)
 def unit_factors() -> Store:
-    """(unit text, kind) -> [SI factor, power of Hz]: pint's answers for this pint and units.py."""
-    return Store(folder(), "units", lambda: stamp(own_file("units.py"), package_file("pint")))
+    """(unit text, kind) -> [SI factor, how it was read]: pint's answers under taucli's rules, for
+    this pint and this units.py and registry.py (which holds the rules)."""
+    return Store(folder(), "units", lambda: stamp(own_file("units.py"), own_file("registry.py"), package_file("pint")))

@@ -147,7 +147,7 @@ def markdown(command: Command) -> str:
     """The options and results of a scene as Markdown tables, for its page in docs/."""
     lines = ["| option | takes | what it is |", "|---|---|---|"]
     for option in command.options:
-        takes = option.kind if option.is_quantity else option.shown_metavar.replace("|", " or ")
+        takes = option.kind + (f" or {option.also}" if option.also else "") if option.is_quantity else option.shown_metavar.replace("|", " or ")
         lines.append(f"| `{option.flag}` | {takes} | {option.help_text().replace('|', '/')} |")
     lines += ["", "| result | unit | what it is |", "|---|---|---|"]
     for result in command.results:

@@ -12,9 +12,10 @@ from typing import TextIO
 
 from taucli import units
 from taucli.errors import InputError, did_you_mean
+from taucli.kinds import article
 from taucli.reading import Inputs, word
 from taucli.report import Value
-from taucli.table import BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, TEXT, VECTOR, Command, Option
+from taucli.table import BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, SIDE, TEXT, VECTOR, Command, Option
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:
@@ -102,12 +103,48 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
     if option.words and isinstance(given, str) and given.strip().lower() in option.words:
         inputs.values[option.name] = Value(given.strip().lower(), None, "")
         return given.strip().lower()
+    if option.also is not None and isinstance(given, str):
+        return _either(option, given, inputs)
     if not option.repeatable:
         return _quantity(option, given, inputs, stdin)
     items = list(given) if isinstance(given, (list, tuple)) else [given]
     keys = [option.name + (str(number) if len(items) > 1 else "") for number in range(1, len(items) + 1)]
     names = [f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "") for number in range(1, len(items) + 1)]
     return tuple(inputs.quantity(name, item, option.kind, sign=option.sign, key=key) for name, item, key in zip(names, items, keys))
+
+
+def _either(option: Option, given: str, inputs: Inputs):
+    """A text of the option's own kind (a float), or else of its other kind, ``option.also``: a
+    Value (SI value and unit), so the scene tells the two apart (rolling's --at 0.05m, a radius,
+    and --at 30deg, an angle on the rim). A number alone is the option's own kind; a value of the
+    other kind takes no uncertainty, whose spread would be moved as the option's own kind."""
+    try:
+        return _quantity(option, given, inputs, None)
+    except InputError as own:
+        kind = units.KINDS[option.also]
+        aside = Inputs(gravity=inputs.gravity)  # the other reading, kept only if it reads
+        try:
+            float(given)
+        except ValueError:
+            try:
+                value = aside.quantity(option.name, given, option.also, sign="any")
+            except InputError as other:
+                try:
+                    units.read(given, "{" + option.name + "}", kind)
+                except InputError:
+                    value = None  # of neither kind
+                else:
+                    raise other from None  # of the other kind, but not a value it takes (out of bounds)
+        else:
+            value = None  # a number alone is only ever the option's own kind
+        if value is None:
+            words = "".join(f", {word}" for word in option.words)
+            raise InputError(option.name, f"{own.expected}{words} or {article(kind.name)}", example=own.example, got=own.got, hint=own.hint) from None
+        if aside.uncertainties:
+            raise InputError(option.name, f"takes {article(kind.name)} with no uncertainty", example=f"{{{option.name}}} {kind.example}", got=repr(given))
+        inputs.values.update(aside.values)
+        inputs.notes.extend(aside.notes)
+        return Value(value, kind.si_unit, "")
 
 
 def _spec(name: str):
@@ -124,3 +161,4 @@ def _spec(name: str):
 READERS = {FLAG: _flag, CHOICE: _choice, FILE: _file, COUNT: _count, TEXT: _as_given}
 READERS.update({kind: _repeated for kind in units.KINDS})
 READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec("particles"), COUPLE: _spec("couples"), BRAKE: _spec("brakes"), FACE: _spec("faces")})
+READERS.update({SIDE: _spec("sides"), PULL: _spec("pulls")})

@@ -55,6 +55,7 @@ KINDS: dict[str, Kind] = {
         Kind("energy", "J", "1 MJ", ("J", "kJ", "MJ", "kW*h", "Wh")),
         Kind("density", "kg/m**3", "'7800 kg/m^3'", ("kg/m^3", "g/cm^3", "lb/ft^3")),
         Kind("torsion constant", "N*m/rad", "0.5 N*m/rad", ("N*m/rad", "N*m/deg", "mN*m/rad")),
+        Kind("lead", "m/rev", "5 mm", ("mm", "in", "mm/rev", "in/rev")),  # a screw's advance per turn: a length alone is per revolution
     )
 }
 
@@ -65,7 +66,7 @@ STANDARD_GRAVITY = 9.80665  # m/s^2: what lbf and kgf are defined with
 ANGULAR = frozenset({"angular velocity", "angular acceleration"})
 
 
-FORCES = frozenset({"force", "torque", "viscous coefficient", "drag coefficient"})  # a mass here is its weight
+FORCES = frozenset({"force", "torque", "viscous coefficient", "drag coefficient", "moment of inertia"})  # a mass here is its weight (lb*in*s^2: lbf)
 
 
 def article(name: str) -> str:

@@ -18,19 +18,23 @@ PLUS_MINUS = ("±", "+/-")
 _NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
 NUMBER_THEN_UNIT = re.compile(rf"\s*({_NUMBER})\s*(.*?)\s*$")
 _PARENTHESISED = re.compile(rf"\s*\(\s*({_NUMBER})\s*(?:±|\+/-)\s*({_NUMBER})\s*\)\s*(.*?)\s*$")
-_CONCISE = re.compile(r"\s*([+-]?)(\d+)(?:\.(\d*))?\((\d+)\)((?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+# The concise notation: a number, then the uncertainty of its last digits in parentheses, glued
+# to it ("4.0(1) kg", "1.234(56)e3 m"). Any other parenthesis ("250kg*(0.6m)^2") is arithmetic.
+CONCISE = re.compile(r"\s*([+-]?)(\d+)(?:\.(\d*))?\((\d+)\)((?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
 
 def marked(value) -> bool:
-    """Whether ``value`` may carry an uncertainty (cheap: the plain path asks this of each value)."""
-    return isinstance(value, str) and ("±" in value or "+/-" in value or ")" in value)
+    """Whether ``value`` carries an uncertainty by its grammar: ± or +/- (a malformed one is then
+    refused by the reading), or the concise "4.0(1) kg". Cheap, as answer.plain's copy is (each
+    batch line asks it of each value): the pattern runs only on a text with a ")" in it."""
+    return isinstance(value, str) and ("±" in value or "+/-" in value or (")" in value and CONCISE.fullmatch(value) is not None))
 
 
 def split(text: str) -> tuple[str, str] | None:
     """("4.0 kg", "0.1 kg") for "4.0+/-0.1 kg", "4.0 ± 0.1 kg", "(4.0 ± 0.1) kg", "4.0 kg ± 0.1"
     or "4.0(1) kg"; None for a text with no uncertainty. The uncertainty takes the value's unit
     where it has none of its own."""
-    concise = _CONCISE.fullmatch(text)
+    concise = CONCISE.fullmatch(text)
     if concise:
         sign, whole, decimals, digits, exponent, unit = concise.groups()
         decimals = decimals or ""

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 from taucli import units
 from taucli.errors import InputError
-from taucli.measurement import split
+from taucli.measurement import marked, split
 from taucli.report import Value
 from taucli.table import Option
 
@@ -35,7 +35,7 @@ class Inputs:
             return value
         option = name if name.startswith("{") else "{" + name + "}"
         if isinstance(given, str):
-            if "±" in given or "+/-" in given or ")" in given:
+            if marked(given):
                 given = self._uncertain(given, option, kind, key or name)
             parsed = units.parse(given, option, kind, sign=sign, gravity=self.gravity)
             value, note = parsed.value, parsed.note

@@ -37,6 +37,18 @@ _POWER = re.compile(r"(\*\*|\^)\s*(\(?\s*[-+]?\s*\d+(?:\.\d+)?\s*\)?)?")
 _DIGIT_RUN = re.compile(r"\d+")
 
 
+_UNSIGNED = r"(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+
+
+# A number, a dash and a number with its unit, as prose writes a range (an en dash is a "-" by now).
+_DASHED = re.compile(rf"\s*(?P<low>[-+]?{_UNSIGNED})\s*-\s*(?P<high>{_UNSIGNED})\s*(?P<unit>[A-Za-zµμΩ_][^-+]*?)?\s*")
+
+
+def _quoted(text: str) -> str:
+    """``text`` as typed in bash, zsh and fish: quoted where it holds * ^ ( or a space."""
+    return f"'{text}'" if re.search(r"[*^() ]", text) else text
+
+
 _NORMALISE = [
     ("\u00a0", " "), ("\u202f", " "), ("·", "*"), ("⋅", "*"), ("×", "*"), ("∙", "*"),
     ("−", "-"), ("–", "-"), ("²", "**2"), ("³", "**3"), ("⁻¹", "**-1"), ("⁻²", "**-2"),
@@ -64,6 +76,12 @@ def screen(text: str, option: str, kind: Kind) -> str:
     if not _ALLOWED.fullmatch(cleaned):
         bad = next(ch for ch in cleaned if not _ALLOWED.fullmatch(ch))
         raise refuse(f"the character {bad!r} is not part of a quantity")
+    dashed = _DASHED.fullmatch(cleaned)
+    if dashed is not None:  # "1-5kg", "1 - 5 kg", "1–5kg": a range as prose writes one, not 1 − 5 kg
+        low, high, unit = dashed["low"], dashed["high"], re.sub(r"\s+", "*", dashed["unit"] or "")
+        fix = f"{low}..{high}{unit}"
+        raise InputError(option, f"expected {article(kind.name)}", example=example, got=f"{text!r}: a dash between two numbers",
+                         hint=f"a range is written {_quoted(fix)}, a list {_quoted(fix.replace('..', ','))}")
     cleaned = spellings.respell(cleaned)
     if any(len(run) > MAX_DIGITS for run in _DIGIT_RUN.findall(cleaned)):
         raise refuse(f"a number longer than {MAX_DIGITS} digits")

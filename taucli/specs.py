@@ -12,7 +12,7 @@ from taucli import units
 from taucli.errors import InputError
 from taucli.reading import Inputs, word
 from taucli.report import Value, fmt
-from taucli.scenes.given import PRESSURES, Brake, Couple, Face, Part, Particle
+from taucli.scenes.given import PRESSURES, SURFACES, Brake, Couple, Face, Part, Particle, Pull, Side
 from taucli.table import Option
 
 
@@ -277,3 +277,56 @@ def faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
             raise InputError(source, "surfaces= is a whole number", example=example, got=repr(fields["surfaces"]))
         faces.append(Face(source, mu_k, mu_s, values.get("force"), values.get("inner_radius"), values.get("outer_radius"), pressure, int(surfaces)))
     return tuple(faces)
+
+
+# --side1, --side2 and --pull of atwood (#34): "key=value ..." specs like --brake's.
+SIDE_FIELDS = {**_MU_FIELDS, "angle": ("angle", "any")}
+PULL_FIELDS = {"force": ("force", "any"), "angle": ("angle", "any")}
+
+
+def sides(option: Option, given, inputs: Inputs, stdin):
+    """Where a block is: "hang", "table [mu-s=… mu-k=…]" or "incline angle=… [mu-s=… mu-k=…]"
+    (mu= is the kinetic value); no coefficient: a smooth surface."""
+    source = "{" + option.name + "}"
+    example = '{' + option.name + '} "incline angle=30deg mu-s=0.4 mu-k=0.3"'
+    spec = word(option, given)
+    surface, fields = _spec_fields(spec, source, SIDE_FIELDS, example, shape_word=True)
+    if surface is None and "angle" in fields:
+        surface = "incline"
+    if surface not in SURFACES:
+        raise InputError(source, f"expected {', '.join(SURFACES)} then key=value pairs", example=example, got=repr(spec))
+    values = _read_fields(fields, SIDE_FIELDS, source, option.name, inputs)
+    if surface == "incline" and "angle" not in values:
+        raise InputError(source, "incline needs angle=", example=example, got=repr(spec))
+    if surface != "incline" and "angle" in values:
+        raise InputError(source, f"{surface}: takes no angle= (incline angle=… for a slope)", example=example, got=repr(spec))
+    if surface == "hang" and values:
+        raise InputError(source, "hang: takes no keys (a hanging block touches no surface)", example=example, got=repr(spec))
+    mu_k, mu_s = values.get("mu"), values.get("mu_s")
+    if mu_k is not None and "mu_k" in values:
+        raise InputError(source, "has mu= and mu-k=: mu= is the kinetic value, give it once", example=example, got=repr(spec))
+    mu_k = values.get("mu_k", mu_k)
+    if mu_k is not None and mu_s is not None and mu_s < mu_k:
+        raise InputError(source, "has mu-s= below mu-k= (static friction is at least kinetic)", got=f"{fmt(mu_s)} < {fmt(mu_k)}")
+    return Side(source, surface, values.get("angle"), mu_k, mu_s)
+
+
+def pulls(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "force=… [angle=…] [on=1|2]": a pull on a block, along its path away from the pulley,
+    tilted angle= off its surface (positive lifting it); on= the block (default 1)."""
+    example = '{pull} "force=20N angle=30deg on=2"'
+    found = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*PULL_FIELDS, "on"}, example, shape_word=False)
+        if "force" not in fields:
+            raise InputError(source, "needs force=", example=example, got=repr(spec))
+        on = fields.get("on", "1").strip()
+        if on not in ("1", "2"):
+            raise InputError(source, "on= is 1 or 2 (the block pulled: m1's or m2's)", example=example, got=repr(on))
+        values = _read_fields(fields, PULL_FIELDS, source, f"pull{number}", inputs)
+        angle = values.get("angle", 0.0)
+        if not -math.pi / 2 <= angle <= math.pi / 2:
+            raise InputError(source, "angle= is from −90 to 90 deg off the surface (a negative force= pulls the other way)",
+                             example=example, got=f"{fmt(math.degrees(angle))} deg")
+        found.append(Pull(source, values["force"], angle, int(on)))
+    return tuple(found)

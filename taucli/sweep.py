@@ -61,10 +61,10 @@ def _split_number(text: str) -> tuple[float, str] | None:
     return None if found is None else (float(found["number"]), found["unit"])
 
 
-def _shared(option: str, items: list[str], given: str) -> tuple[list[str], tuple[float, ...] | None, str]:
+def _shared(option: str, items: list[str], given: str, kind: str) -> tuple[list[str], tuple[float, ...] | None, str]:
     """The items with the last one's unit given to bare numbers before it; their numbers and unit."""
     if any(not item.strip() for item in items):
-        raise InputError(option, "has an empty item in its list or range", example=f"{option} 3N*m,6N*m", got=repr(given))
+        raise InputError(option, "has an empty item in its list or range", example=_forms(option, kind), got=repr(given))
     split = [_split_number(item) for item in items]
     unit = split[-1][1] if split[-1] is not None else ""
     texts = [f"{item.strip()} {unit}" if unit and pair is not None and not pair[1] else item.strip() for item, pair in zip(items, split)]
@@ -73,14 +73,21 @@ def _shared(option: str, items: list[str], given: str) -> tuple[list[str], tuple
     return texts, None, ""
 
 
-def _range(name: str, text: str, points: int) -> Swept:
+def _forms(option: str, kind: str) -> str:
+    """The two forms of a sweep, as typed in bash, zsh and fish: "{mass} 1..5kg or {mass} 1,5kg"."""
+    unit = KINDS[kind].example.strip("'").partition(" ")[2] if kind in KINDS else ""
+    quoted = (lambda words: f"'{words}'") if any(ch in unit for ch in "*^()") else (lambda words: words)
+    return f"{option} {quoted('1..5' + unit)} or {option} {quoted('1,5' + unit)}"
+
+
+def _range(name: str, text: str, points: int, kind: str) -> Swept:
     option = "{" + name + "}"
     ends = text.split("..")
-    if len(ends) != 2:
-        raise InputError(option, "expected a range FROM..TO", example=f"{option} 0.5..4", got=repr(text))
-    _, numbers, unit = _shared(option, ends, text)
+    if len(ends) != 2 or "..." in text:  # "1...5kg" is no range: 1 to .5, or 1. to 5?
+        raise InputError(option, "expected a range FROM..TO (two dots) or a list A,B", example=_forms(option, kind), got=repr(text))
+    _, numbers, unit = _shared(option, ends, text, kind)
     if numbers is None:
-        raise InputError(option, "expected a range of two numbers in one unit", example=f"{option} 0.5..4kg", got=repr(text))
+        raise InputError(option, "expected a range of two numbers in one unit", example=_forms(option, kind), got=repr(text))
     low, high = numbers
     if not (math.isfinite(low) and math.isfinite(high)) or low == high:
         raise InputError(option, "expected a range between two different finite numbers", example=f"{option} 0.5..4", got=repr(text))
@@ -109,7 +116,7 @@ def _list(name: str, text: str, kind: str) -> Swept:
             example=f"{option} {quoted(number + unit)} for a number, {option} {quoted(f'{whole}{unit},{part}{unit}')} for a list",
             got=repr(text),
         )
-    texts, numbers, unit = _shared(option, text.split(","), text)
+    texts, numbers, unit = _shared(option, text.split(","), text, kind)
     return Swept(name, text, tuple(texts), numbers, unit, False)
 
 
@@ -144,7 +151,7 @@ def find(command: Command, given: Mapping[str, object], points: int | None) -> t
         raise InputError("points", f"expected a whole number from 2 to {MAX_POINTS:,}", example="{points} 50", got=str(count))
     if points is not None and not ranges:
         raise InputError("points", "applies to a range (FROM..TO)", example="--inertia 0.5..4kg*m^2 {points} 20")
-    swept_range = _range(ranges[0], str(given[ranges[0]]), count) if ranges else None
+    swept_range = _range(ranges[0], str(given[ranges[0]]), count, command.option(ranges[0]).kind) if ranges else None
     swept_list = _list(lists[0], str(given[lists[0]]), command.option(lists[0]).kind) if lists else None
     total = (len(swept_range.texts) if swept_range else 1) * (len(swept_list.texts) if swept_list else 1)
     if total > MAX_POINTS:  # a range times a list of as many values would otherwise run for hours

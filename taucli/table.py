@@ -33,6 +33,9 @@ NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
 BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…]": a brake shoe on a turning body, repeatable
 FACE = "face"  # "mu=… [force=…] [inner-radius=…] [outer-radius=…] [pressure=uniform|wear] [surfaces=…]": a pressed flat face, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE}
+SIDE = "side"  # "hang" | "table [mu-s=… mu-k=…]" | "incline angle=… [mu-s=… mu-k=…]": where a block of atwood is
+PULL = "pull"  # "force=… [angle=…] [on=1|2]": a pull on a block of atwood, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {SIDE, PULL}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {
@@ -54,6 +57,7 @@ METAVARS = {
     "energy": "ENERGY",
     "density": "DENSITY",
     "torsion constant": "KAPPA",
+    "lead": "LEAD",
 }
 
 
@@ -73,6 +77,7 @@ class Option:
     metavar: str | None = None  # else the kind's
     of: str | None = None  # VECTOR: the quantity kind of its components ("force")
     words: tuple[str, ...] = ()  # words a quantity option takes as well ("rim" for --at)
+    also: str | None = None  # another quantity kind it takes, passed on as a Value (rolling's --at 30deg: an angle on the rim)
     makes: tuple[str, ...] = ()  # FLAG: the results it turns on; naming one in --get, --y or --to turns it on
 
     @property

@@ -9,10 +9,12 @@ Text is screened before pint sees it: pint evaluates ``**`` with Python integers
 How text is read (docs/units.md has the table): engineering spellings are
 rewritten first (taucli.spellings: ``Nm``, ``N-m``, ``ft-lb``, ``kgm^2``, ``RPM``, ``min-1``); a
 whole number then a fraction is a mixed number (``33 1/3 rpm``), and any other numbers side by
-side are refused (pint would multiply them); 1/time for an angular velocity or acceleration
-(``Hz``, ``1/s``, ``min^-1``) is revolutions per unit time, ω = 2πn; an angle needs its unit
-(``60deg``), 0 apart; a weight for a mass is the mass W/g, and a mass for a force (``lb*ft`` for
-a torque) its weight at standard gravity. Every reading that is not plain says so in a note.
+side are refused (pint would multiply them); for an angular velocity or acceleration, ``Hz`` and
+``min^-1`` are revolutions per unit time (ω = 2πn), a speed over a length is ω = v/R in radians,
+and a bare 1/time (``1/s``, ``s^-2``) is refused as ambiguous; an angle, an angular velocity and
+an angular acceleration need their unit (``60deg``, ``300rpm``), 0 apart; a weight for a mass is
+the mass W/g, and a mass for a force (``lb*ft`` for a torque) its weight at standard gravity.
+Every reading that is not plain says so in a note.
 Each kind has its bounds (``Kind.bounds``), the same for a quantity typed or computed
 (``check_bounds``).
 """
@@ -26,7 +28,9 @@ from typing import NamedTuple
 from taucli import cache, spellings
 from taucli.errors import InputError
 from taucli.kinds import KINDS, STANDARD_GRAVITY, Kind, article, check_bounds
-from taucli.registry import AS_GIVEN, MASS_AS_WEIGHT, REVOLUTIONS, WEIGHT, bare_angle, expected, from_pint, number_times_unit
+from taucli.registry import (
+    AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, Ambiguous, bare_number, expected, from_pint, number_times_unit,
+)
 from taucli.screen import MAX_DIGITS, MAX_TEXT_LENGTH, screen
 
 
@@ -51,7 +55,7 @@ def _cached_factor(unit: str, kind: Kind) -> tuple[float, int] | None:
     if found is None:
         stored = cache.unit_factors().get(key)
         if isinstance(stored, list) and len(stored) == 2 and isinstance(stored[0], float) and isinstance(stored[1], int):
-            if math.isfinite(stored[0]) and stored[0] and stored[1] in (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT):
+            if math.isfinite(stored[0]) and stored[0] and stored[1] in HOWS:
                 found = _FACTORS[key] = (stored[0], stored[1])
     return found
 
@@ -77,7 +81,7 @@ class Reading(NamedTuple):
     """What ``read`` made of a text."""
 
     value: float  # SI (a weight for a mass in newtons: parse divides by g)
-    how: int  # AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT
+    how: int  # AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS
     unit: str | None  # the unit as looked up: "" for a bare number, None for an expression pint read whole
     mixed: str | None = None  # "33 1/3" when a mixed number was read
 
@@ -162,15 +166,17 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive", gra
     was read where that is not plain.
 
     ``sign`` is "positive" (> 0), "nonnegative" (>= 0) or "any". A bare number means the kind's
-    SI unit, except for an angle, which needs its unit (0 aside). 1/time for an angular velocity
-    or acceleration (Hz, 1/s, min^-1) means revolutions per unit time (omega = 2 pi n). A weight
-    for a mass is the mass W/g, with ``gravity`` in m/s^2 (None: standard gravity, 9.80665).
+    SI unit, except for an angle, an angular velocity and an angular acceleration, which need
+    their unit (0 aside). For an angular velocity or acceleration, Hz and min^-1 are revolutions
+    per unit time (omega = 2 pi n), a speed over a length is v/R in radians, and any other 1/time
+    (1/s) is refused as ambiguous. A weight for a mass is the mass W/g, with ``gravity`` in m/s^2
+    (None: standard gravity, 9.80665).
     """
     kind = KINDS[kind_name]
     reading = read(text, option, kind)
     value = reading.value
-    if reading.unit == "" and kind.name == "angle" and value != 0:
-        raise bare_angle(option, text)
+    if reading.unit == "" and kind.name in NEEDS_ITS_UNIT and value != 0:
+        raise bare_number(option, text, kind, value)
     g = STANDARD_GRAVITY if gravity is None else gravity
     if reading.how == WEIGHT:
         if not (math.isfinite(g) and g > 0):
@@ -221,11 +227,13 @@ def _note(option: str, text: str, reading: Reading, value: float, gravity: float
         said.append(f"a weight, read as the mass W/g = {value:.6g} kg ({g})")
     elif reading.how == MASS_AS_WEIGHT:
         said.append(spellings.as_force(reading.unit))
+    elif reading.how == OVER_RADIUS:
+        said.append(f"α = a_t/R = {value:.6g} rad/s²" if kind.name == "angular acceleration" else f"ω = v/R = {value:.6g} rad/s")
     return f"{option} {text}: " + "; ".join(said) if said else None
 
 
 def convert(value: float, si_unit: str, target: str, option: str) -> float:
-    """Express an SI value in the unit ``target`` (``--to``), with 1/time read as revolutions."""
+    """Express an SI value in the unit ``target`` (``--to``), a unit of 1/time read as ``parse`` reads it."""
     return converted(value, si_unit, target, option).value
 
 
@@ -244,6 +252,10 @@ def converted(value: float, si_unit: str, target: str, option: str) -> Parsed:
         raise refuse()  # a unit alone: "rpm", "1/s", not "2 rpm"
     try:
         factor, how = unit_factor(split[1], target, option, kind)
+    except Ambiguous as err:  # 1/s: radians or revolutions per second
+        squared = kind.name == "angular acceleration"
+        both = f"'rad/{err.per}^2' or 'rev/{err.per}^2'" if squared else f"rad/{err.per} or rev/{err.per}"
+        raise InputError(option, f"expected a unit of {article(kind.name)} that names its angle", example=both, got=f"{target!r}: {err.why}") from None
     except InputError:
         raise refuse() from None
     if how == WEIGHT:  # a mass in newtons would depend on g
@@ -253,4 +265,6 @@ def converted(value: float, si_unit: str, target: str, option: str) -> Parsed:
         note = f"{option} {target.strip()}: {spellings.revolutions(split[1], squared=kind.name == 'angular acceleration')} (n = ω/2π)"
     elif how == MASS_AS_WEIGHT:
         note = f"{option} {target.strip()}: {spellings.as_force(split[1])}"
+    elif how == OVER_RADIUS:
+        note = f"{option} {target.strip()}: a speed over a length, in radians ({'α = a_t/R' if kind.name == 'angular acceleration' else 'ω = v/R'})"
     return Parsed(value / factor, note)

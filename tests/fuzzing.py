@@ -31,7 +31,7 @@ from pathlib import Path
 from conftest import strict_json
 from hypothesis import strategies as st
 
-SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro")  # every scene of taucli.options (tests/test_fuzz.py checks)
+SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro", "drive")  # every scene of taucli.options (tests/test_fuzz.py checks)
 SECONDS = 1.0  # the longest a run may take
 
 # Units by the metavar of the option that takes them.
@@ -50,6 +50,7 @@ UNITS = {
     "K": ["N*m*s^2", "N*m*s**2", "kg*m^2"],
     "NUMBER": ["", "%", "dimensionless"],
     "N": ["", "1"],
+    "LEAD": ["mm", "in", "mm/rev", "in/rev", "m/rad", "rev/in"],
 }
 WRONG_UNITS = ["kgg", "furlong", "m/s", "kg", "s", "N", "degC", "K", "Ω", "mol", "bit", "%", "ppm", "dozen", "Hz", "c", "1/(", "m^", "**", "xyz"]
 CHOICES = {  # metavar: (valid, not valid)
@@ -98,7 +99,7 @@ def sane_value(option: str, metavar: str | None, files: dict[str, str]) -> st.Se
     """A value a careful user might give: a plain positive number with a unit of the right kind."""
     if metavar in CHOICES:
         return st.sampled_from(CHOICES[metavar][0])
-    if option in ("--get", "--y", "--to", "--points", "--out", "--torque-profile", "--part"):
+    if option in ("--get", "--y", "--to", "--points", "--out", "--torque-profile", "--part", "--side1", "--side2", "--pull"):
         return option_value(option, metavar, files)
     units = [unit for unit in UNITS.get(metavar, ["kg"]) if unit] or [""]
     return st.tuples(st.floats(min_value=0.01, max_value=50).map(lambda x: f"{x:.3g}"), st.sampled_from(units)).map("".join)
@@ -118,6 +119,15 @@ def option_value(option: str, metavar: str | None, files: dict[str, str]) -> st.
         return st.sampled_from(["chart.svg", "chart.png", "chart.txt", "", "/nonexistent/dir/c.svg", "/proc/c.svg", ".svg"])
     if option in ("--torque-profile",):
         return st.sampled_from(sorted(files.values()) + ["-", "/dev/null", "/nonexistent.csv", "/dev/zero", "/proc/self/status"])
+    if option in ("--side1", "--side2"):  # atwood's blocks (#34)
+        mu = st.tuples(st.sampled_from([" mu-k=", " mu-s=", " mu=", " mu-k = "]), numbers).map("".join)
+        side = st.tuples(st.sampled_from(["hang", "table", "incline", "incline angle=30deg", "shelf", "", "angle=1rad"]),
+                         st.sampled_from(["", " angle=", " angle=-"]), st.sampled_from(["", "10deg", "90deg", "2rad"]), st.lists(mu, max_size=2).map("".join))
+        return st.one_of(side.map("".join), st.text(max_size=30))
+    if option == "--pull":
+        pull = st.tuples(st.sampled_from(["force=", "force=-", "", "angle=1 force="]), quantity_texts("FORCE"),
+                         st.sampled_from(["", " angle=30deg", " angle=-89deg", " angle=120deg"]), st.sampled_from(["", " on=1", " on=2", " on=3", " on=x"]))
+        return st.one_of(pull.map("".join), st.text(max_size=30))
     if option == "--part":
         part = st.tuples(st.sampled_from(sum(CHOICES["SHAPE"], [])), st.sampled_from([" mass=", " mass = ", " m="]), quantity_texts("MASS"),
                          st.sampled_from([" radius=", " offset=", " length=", " "]), quantity_texts("LENGTH")).map("".join)
@@ -157,6 +167,7 @@ CORE = {
     "pendulum": ["--shape", "--mass", "--length", "--angle0"],
     "torque": ["--r", "--force"],
     "gyro": ["--inertia", "--spin", "--mass", "--cm-distance"],
+    "drive": ["--motor-inertia", "--ratio", "--load-inertia", "--until-omega"],
 }
 
 
@@ -170,7 +181,11 @@ BASES = {
                   "--inertia 1kg*m^2 --omega0 10rad/s --friction 1N*m --viscous 0.5N*m*s --method rk4 --dt 10ms",
                   "--shape disc --mass 8kg --radius 0.25m --force 6N --lever 0.25m --push-angle 60deg --time 4s --method rk45"],
     "atwood": ["--m1 4kg --m2 1kg --pulley-mass 2kg --pulley-radius 0.1m --g 9.8", "--m1 1kg --m2 3kg --incline 30deg --mu-k 0.2 --mu-s 0.3 --distance 1m",
-               "--m1 2kg --m2 2kg --axle-friction 0.5N*m --pulley-radius 0.1m --v0 1m/s --time 2s", "--m1 1kg --pulley-inertia 0.01kg*m^2 --pulley-radius 0.05m --pulley-shape ring"],
+               "--m1 2kg --m2 2kg --axle-friction 0.5N*m --pulley-radius 0.1m --v0 1m/s --time 2s", "--m1 1kg --pulley-inertia 0.01kg*m^2 --pulley-radius 0.05m --pulley-shape ring",
+               "--m1 6kg --side1 'incline angle=30deg mu-k=0.36' --m2 2kg --side2 'table mu-k=0.36' --pulley-mass 10kg --pulley-radius 0.25m --v0 -1m/s --time 2s",
+               "--pull 'force=15N' --pull 'force=5N on=2' --pulley-radius 33cm --axle-friction 1.1N*m --pulley-inertia 0.385kg*m^2 --v0 -2m/s --distance 1m",
+               "--m1 4t --pulley-radius 0.75m --torque 40kN*m --axle-friction 3kN*m --pulley-mass 750kg --v0 -6m/s --at rim",
+               "--m1 2kg --m2 3kg --radius1 0.1m --radius2 0.2m --part 'disc mass=1kg radius=0.1m' --same-side --time 1s"],
     "rolling": ["sphere --angle 30deg --length 2m --mass 1kg --radius 0.1m", "disc --angle 40deg --mu-s 0.2 --mu-k 0.15", "sphere --v0 7m/s --mu-k 0.2",
                 "ring --angle 10deg --height 1m --v0 1m/s", "--k2 0.3 --angle 20deg --mu-s 0.1 --length 3m --omega0 5rad/s --radius 0.1m"],
     "impulse": ["--inertia 0.1kg*m^2 --omega0 0 --torque 2N*m --duration 0.5s", "--inertia 4kg*m^2 --inertia-final 1.5kg*m^2 --omega0 1rev/s --to omega1=rev/s",
@@ -180,6 +195,11 @@ BASES = {
     "torque": ["--r '0.3,0.4,0 m' --force '0,0,10 N'", "--force 80N --lever 0.25m --angle 60deg", "--r '0,0.8,0 m' --mass 0.5kg --velocity '3,0,0 m/s'"],
     "gyro": ["--shape disc --mass 0.3kg --radius 5cm --spin 4000rpm --cm-distance 5cm --tilt 30deg",
              "--inertia 8.0e37kg*m^2 --spin 7.29e-5rad/s --torque 1.79e22N*m --tilt 23.44deg"],
+    "drive": ["--motor-inertia 1.2kg*cm^2 --ratio 10 --load-inertia 0.05kg*m^2 --until-omega 3000rpm --in-time 0.2s",
+              "--load-mass 250kg --lead 10mm --ratio 2 --efficiency 0.9 --mu 0.2 --motor-inertia 0.3e-4kg*m^2 --speed 15m/min --accel-time 0.1s --run-time 1s --dwell-time 0.3s --rated-torque 0.637N*m",
+              "--motor-inertia 1.2kg*cm^2 --ratio 10 --efficiency 0.9 --load-inertia 0.05kg*m^2 --load-torque -5N*m --stall-torque 2N*m --no-load-speed 3000rpm --until-omega 3500rpm",
+              "--load-mass 20kg --drum-radius 5cm --incline 90deg --motor-inertia 1e-4kg*m^2 --ratio 5 --distance 0.5m --speed 1m/s --accel 5m/s^2 --dwell-time 1s",
+              "--motor-inertia 2.5lb*in^2 --load-inertia 4.5lb*in^2 --load-mass 5lb --drum-radius 1.5in --motor-torque 100ozf*in --speed 15ft/s"],
 }
 extreme_numbers = st.one_of(
     st.sampled_from(["0", "-0", "-1", "1e-320", "5e-324", "1e-300", "1e-30", "1e-9", "1e9", "1e30", "1e300", "1.7e308", "-1e308", "1e-16", "0.9999999999999999", "1.0000000000000002"]),

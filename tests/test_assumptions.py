@@ -57,7 +57,7 @@ def test_no_slip_is_stated_wherever_an_answer_rests_on_it():
     [
         (("spin-down", "--inertia", "1", "--omega0", "10Hz", "--friction", "1"), "--omega0 10Hz"),
         (("impulse", "--inertia", "1", "--omega0", "1Hz", "--omega1", "2Hz", "--duration", "1s"), "--omega1 2Hz"),
-        (("impulse", "--inertia", "1", "--omega0", "1", "--torque", "1", "--duration", "1", "--to", "omega1=Hz"), "--to Hz"),
+        (("impulse", "--inertia", "1", "--omega0", "1rad/s", "--torque", "1", "--duration", "1", "--to", "omega1=Hz"), "--to Hz"),
         (("spin-down", "--inertia", "1", "--omega0", "2Hz,2Hz", "--friction", "1"), "--omega0 2Hz"),
     ],
     ids=["an input", "another input", "--to", "a sweep"],

@@ -154,7 +154,7 @@ def test_the_rim_is_the_point_where_a_points_result_is_asked_with_no_at(taucli):
 
 
 @pytest.mark.parametrize("args", [
-    ("spin-down", "--inertia", "2", "--omega0", "10", "--get", "v_t"),  # no radius
+    ("spin-down", "--inertia", "2", "--omega0", "10rad/s", "--get", "v_t"),  # no radius
     ("atwood", "--m1", "4kg", "--m2", "1kg", "--get", "v_t"),  # no pulley radius
     ("atwood", "--m1", "4kg", "--m2", "1kg", "--radius1", "5cm", "--radius2", "10cm", "--at", "rim"),  # two radii
     ("rolling", "sphere", "--angle", "30deg", "--length", "1m", "--get", "v_t"),

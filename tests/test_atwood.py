@@ -183,15 +183,16 @@ def statics_reference(m1, m2, angle, mu_s, axle, radius, g):
     """The tensions statics allows at rest, from the three bodies' balances (40 digits).
 
     m1: T1 = m1 g.  m2 (along the slope, towards the pulley): T2 − m2 g sin θ + f = 0 with
-    |f| ≤ μs N.  Pulley: (T1 − T2) R = τ with |τ| ≤ τ_a. T2 lies in both intervals; statics fixes
-    it only where they meet in one point. Returns T1 and the interval (low, high) for T2."""
+    |f| ≤ μs N.  Pulley: (T1 − T2) R = τ with |τ| ≤ τ_a. A string only pulls: T2 ≥ 0 (#34: the
+    bounds once reached below 0, a string that pushes). T2 lies in all three; statics fixes it
+    only where they meet in one point. Returns T1 and the interval (low, high) for T2."""
     with mpmath.workdps(40):
         m1, m2, angle, mu_s, axle, radius, g = (mpmath.mpf(x) for x in (m1, m2, angle, mu_s, axle, radius, g))
         tension_high = m1 * g
         hanging = angle == mpmath.mpf(HANGING)
         along = m2 * g * (1 if hanging else mpmath.sin(angle))
         grip = 0 if hanging else mu_s * m2 * g * mpmath.cos(angle)
-        low = max(tension_high - axle / radius, along - grip)
+        low = max(tension_high - axle / radius, along - grip, 0)
         high = min(tension_high + axle / radius, along + grip)
         assert low <= high + 1e-13 * (tension_high + along + axle / radius) + 1e-300  # at rest: they meet (to rounding)
         return tension_high, low, high
@@ -283,7 +284,9 @@ def test_with_only_mu_s_a_moving_machine_needs_mu_k_and_a_held_one_does_not():
 
 def _massless_reference(m1, m2, angle, mu_k, mu_s, axle_force, v0, g):
     """a of the same machine with I = 0 (mpmath, 40 digits), from the forces along the string:
-    moving (or set going) in sense s, (m1 + m2)a = s[s(m1 g − m2 g sin θ) − μk N − τ/R]; held: 0."""
+    moving (or set going) in sense s, (m1 + m2)a = s[s(m1 g − m2 g sin θ) − μk N − τ/R]; held: 0.
+    None where that machine's string would have to push (#34): T1 = m1(g − a) < 0, or
+    T2 = m2(a + g sin θ) + s μk N < 0."""
     mpmath.mp.dps = 40
     m1, m2, g, v0 = map(mpmath.mpf, (m1, m2, g, v0))
     sin, cos = (mpmath.mpf(1), mpmath.mpf(0)) if angle == HANGING else (mpmath.sin(angle), mpmath.cos(angle))
@@ -295,7 +298,10 @@ def _massless_reference(m1, m2, angle, mu_k, mu_s, axle_force, v0, g):
         sense = mpmath.sign(pull)
     else:
         return mpmath.mpf(0)
-    return sense * (sense * pull - mu_k * normal - axle_force) / (m1 + m2)
+    a = sense * (sense * pull - mu_k * normal - axle_force) / (m1 + m2)
+    if m1 * (g - a) < 0 or m2 * (a + g * sin) + sense * mu_k * normal < 0:
+        return None
+    return a
 
 
 @settings(max_examples=200)
@@ -309,6 +315,13 @@ def test_the_massless_comparison_is_the_machine_with_no_pulley_inertia(m1, m2, o
     mu_s = None if static_extra is None else mu_k + static_extra
     if angle == HANGING:
         mu_k, mu_s = 0.0, None
-    report = solve(m1, m2, Pulley(1.0, 0.1, None, None, axle * 0.1), 9.8, slope=Slope(angle, mu_k, mu_s), v0=v0)
+    try:
+        report = solve(m1, m2, Pulley(1.0, 0.1, None, None, axle * 0.1), 9.8, slope=Slope(angle, mu_k, mu_s), v0=v0)
+    except InputError as refused:  # thrown against friction that stops one block faster than the string: slack (#34)
+        assert "goes slack" in str(refused)
+        assume(False)
     expected = _massless_reference(m1, m2, angle, mu_k, mu_s, axle, v0, 9.8)
+    if expected is None:
+        assert values(report)["a_massless"] is None
+        return
     assert values(report)["a_massless"] == pytest.approx(float(expected), rel=1e-12, abs=1e-12)

@@ -149,7 +149,7 @@ def test_a_tool_held_at_constant_speed_needs_no_body():
 
 
 def test_face_and_brake_results_are_in_the_table():
-    document = run_taucli("spin-down", "--shape", "disc", "--mass", "2kg", "--radius", "0.1m", "--omega0", "10", "--face", "mu=0.2",
+    document = run_taucli("spin-down", "--shape", "disc", "--mass", "2kg", "--radius", "0.1m", "--omega0", "10rad/s", "--face", "mu=0.2",
                           "--brake", "force=1N mu=0.1", "--energy", "--json").json()
     assert {"torque_brake", "work_brake", "power_brake", "torque_face", "work_face", "power_face"} <= set(document["results"])
 
@@ -171,11 +171,11 @@ def test_face_and_brake_results_are_in_the_table():
     ],
 )
 def test_refusals(argv, fragment):
-    assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--omega0", "3", *argv), fragment)
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--omega0", "3rad/s", *argv), fragment)
 
 
 def test_face_weight_under_another_gravity():
     """On the Moon (g = 1.62 m/s²) the disc on its face takes t = 3Rω₀/(4μg)."""
     result = values(taucli.spin_down(shape="disc", mass="2kg", radius="10cm", omega0="10rad/s", face="mu=0.2", g="1.62m/s^2"))
     assert result["t_stop"] == pytest.approx(float(3 * mpmath.mpf("0.1") * 10 / (4 * mpmath.mpf("0.2") * mpmath.mpf("1.62"))), rel=1e-14)
-    assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--omega0", "1", "--g", "1.62m/s^2"), "--face")
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--omega0", "1rad/s", "--g", "1.62m/s^2"), "--face")

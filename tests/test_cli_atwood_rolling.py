@@ -99,6 +99,13 @@ def test_rolling_bad_input(taucli, args, fragments):
     assert_usage_error(taucli("rolling", *args), *fragments)
 
 
+def test_rolling_at_v0_alone_needs_no_mass(taucli):
+    """#21: --v0 alone rolls along; since 246630e its energies alone need the mass (null, with a note)."""
+    doc = taucli("rolling", "sphere", "--v0", "3m/s", "--json").json()
+    assert doc["results"]["a"]["value"] == 0 and doc["results"]["KE"]["value"] is None
+    assert any("KE_trans, KE_rot, KE: give --mass" in note for note in doc["notes"])
+
+
 def test_an_incline_with_no_coefficient_given_is_smooth(taucli):
     """friction.py's rule through the command line: neither μ given, m2 slides without friction;
     only μs given and it slides, what needs μk is null with a note."""

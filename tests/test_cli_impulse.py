@@ -44,9 +44,9 @@ def test_profile_from_a_file_with_samples(taucli, tmp_path):
     "args,fragments",
     [
         (("--inertia", "0.1", "--omega0", "0"), ("are missing", "fifth")),
-        (("--inertia", "0.1", "--omega0", "0", "--omega1", "11", "--torque", "2", "--duration", "0.5s"), ("disagree",)),
+        (("--inertia", "0.1", "--omega0", "0", "--omega1", "11rad/s", "--torque", "2", "--duration", "0.5s"), ("disagree",)),
         (("--inertia", "0.1", "--inertia-final", "0.05", "--torque", "2"), ("--torque conflicts with --inertia-final",)),
-        (("--inertia-final", "0.05", "--omega0", "2"), ("--inertia", "required")),
+        (("--inertia-final", "0.05", "--omega0", "2rad/s"), ("--inertia", "required")),
         (("--inertia", "0.1", "--torque-profile", "/nonexistent.csv"), ("--torque-profile", "readable")),
         (("--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "1s", "--method", "simpson"), ("--method", "--torque-profile")),
         (("--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "-1s"), ("--duration", "positive")),

@@ -42,7 +42,7 @@ def test_hz_is_read_as_revolutions_per_second_with_a_note(taucli):
 
 
 def test_numerical_method_is_named_and_unstable_runs_say_so(taucli):
-    doc = taucli("spin-down", "--inertia", "0.1", "--omega0", "30", "--viscous", "0.5", "--method", "euler", "--dt", "0.5s", "--time", "3s", "--json").json()
+    doc = taucli("spin-down", "--inertia", "0.1", "--omega0", "30rad/s", "--viscous", "0.5", "--method", "euler", "--dt", "0.5s", "--time", "3s", "--json").json()
     assert doc["method"].startswith("euler, dt = 0.5 s")
     assert doc["results"]["omega"]["value"] is None
     assert any("unstable" in note for note in doc["notes"])
@@ -50,7 +50,7 @@ def test_numerical_method_is_named_and_unstable_runs_say_so(taucli):
 
 
 def test_power_law_drag_uses_rk45_under_auto(taucli):
-    doc = taucli("spin-down", "--inertia", "0.1", "--omega0", "30", "--friction", "0.3", "--drag", "0.001", "--drag-exponent", "1.5", "--json").json()
+    doc = taucli("spin-down", "--inertia", "0.1", "--omega0", "30rad/s", "--friction", "0.3", "--drag", "0.001", "--drag-exponent", "1.5", "--json").json()
     assert doc["method"].startswith("rk45")
     assert "no closed form" in doc["model"]
 
@@ -58,20 +58,20 @@ def test_power_law_drag_uses_rk45_under_auto(taucli):
 @pytest.mark.parametrize(
     "args,fragments",
     [
-        (("--inertia", "0", "--omega0", "30"), ("--inertia", "positive")),
-        (("--inertia", "-1 kg*m^2", "--omega0", "30"), ("--inertia", "positive")),
+        (("--inertia", "0", "--omega0", "30rad/s"), ("--inertia", "positive")),
+        (("--inertia", "-1 kg*m^2", "--omega0", "30rad/s"), ("--inertia", "positive")),
         (("--inertia", "0.1", "--friction", "0.3 N"), ("--friction", "expected a torque", "force")),
         (("--inertia", "0.1", "--viscous", "-1"), ("--viscous", "zero or more")),
         (("--inertia", "0.1", "--drag", "-0.1"), ("--drag", "zero or more")),
         (("--inertia", "0.1", "--omega0", "30 m"), ("--omega0", "angular velocity")),
-        (("--omega0", "30"), ("--inertia", "--shape")),
+        (("--omega0", "30rad/s"), ("--inertia", "--shape")),
         (("--inertia", "0.1", "--shape", "disc"), ("--inertia", "conflicts")),
         (("--inertia", "0.1", "--mass", "3kg"), ("--mass", "--shape")),
         (("--inertia", "0.1", "--force", "3N"), ("--lever", "required")),
         (("--inertia", "0.1", "--method", "midpoint"), ("--method", "rk45")),
-        (("--inertia", "0.1", "--drag", "0.1", "--drag-exponent", "1.5", "--method", "exact", "--friction", "0.3", "--omega0", "3"), ("--method", "exact")),
-        (("--inertia", "0.1", "--drag", "0.1", "--drag-exponent", "0.5", "--omega0", "3"), ("--drag-exponent", "1 to 10")),
-        (("--inertia", "0.1", "--omega0", "3", "--friction", "0.1", "--method", "euler", "--dt", "1ns", "--time", "1h"), ("--dt", "steps")),
+        (("--inertia", "0.1", "--drag", "0.1", "--drag-exponent", "1.5", "--method", "exact", "--friction", "0.3", "--omega0", "3rad/s"), ("--method", "exact")),
+        (("--inertia", "0.1", "--drag", "0.1", "--drag-exponent", "0.5", "--omega0", "3rad/s"), ("--drag-exponent", "1 to 10")),
+        (("--inertia", "0.1", "--omega0", "3rad/s", "--friction", "0.1", "--method", "euler", "--dt", "1ns", "--time", "1h"), ("--dt", "steps")),
         (("--inertia", "0.1", "--time", "-1s"), ("--time", "zero or more")),
         (("--shape", "disc", "--mass", "5kg"), ("--radius is needed",)),
     ],

@@ -48,15 +48,22 @@ DESIGN.md's "Names and signs"):
   adding to zero; under a brake ω₁ from constant α in each stretch (held at rest), each
   contact's τ|ω₀| and τ × angle swept, KE1 − KE0 = τθ − their work; peak_torque the largest in
   size.
-- atwood: T1 = m1(g − a), T2 = m2(g + a2) hanging or m2(a + g sin θ) + μk N sgn v on a slope,
-  (T1 − T2)R − τ_a sgn v = Iα (stepped: T1r1 − T2r2), α = a/R, a2 = a r2/r1, a_massless, the
-  capstan ratio e^{μβ} sliding and e^{μ_min β} at the limit, grips ⇔ μ ≥ rim_mu_min, a_rim = αR,
-  uniform motion before a stop (v = v₀ + at, x = v₀t + ½at², v² = v₀² + 2ax).
+- atwood: each block along its path, T1 = G1 − s μk1 N1 − m1 a and T2 = G2 + s sgn(ρ) μk2 N2 + m2 a2
+  (G the pull of gravity, m g sin θ, and of the pulls away from the pulley; N = m g cos θ − P sin φ;
+  hanging θ = 90°), T1r1 − σT2r2 − τd − τa sgn ω = Iα, α = a/r1, a2 = ρa (ρ = σ r2/r1, σ = −1 both on
+  one side), T ≥ 0 (a string only pulls), N ≥ 0, at rest each balance within its static limit,
+  a_massless, the capstan ratio e^{μβ} sliding and e^{μ_min β} at the limit, grips ⇔ μ ≥ rim_mu_min,
+  a_rim = αR, uniform motion before a stop (v = v₀ + at, x = v₀t + ½at², v² = v₀² + 2ax), t_stop =
+  −v₀/a and distance_stop = −v₀²/2a, the work of the forces = ΔKE of the blocks and the pulley.
 - rolling: ma = ΣF and Iα = Στ (I = k²mR²), α = a/R rolling, mu_min = |f|/N, |f| = μk N
-  slipping, rolls ⇔ μs ≥ mu_min, v² = 2aL, t = 2L/v, the climb (v₀²/2a, d sin θ, v₀/a), KE_trans
-  = ½mv², KE_rot = ½Iω², KE = their sum; a skid's v_roll (μk g and L about the contact), d_roll,
-  ω_roll = v_roll/R, energy_lost; a yo-yo's T = m(g − a), Iα = Tr, v² = v₀² + 2ah, ΔKE = mgh;
-  a spool's critical angle (a = 0 there).
+  slipping, rolls ⇔ μs ≥ mu_min, v² = v₀² + 2aL and L = −v₀t + ½at² (v₀ up the slope), the climb
+  (v₀²/2a, d sin θ, v₀/a), KE_trans = ½mv², KE_rot = ½Iω², KE = their sum; a skid's v_roll (μk g
+  and L about the contact), d_roll, ω_roll = v_roll/R, energy_lost; a yo-yo's T = m(g − a),
+  Iα = Tr, v² = v₀² + 2ah, ΔKE = mgh; a spool's critical angle (a = 0 there); a body and a
+  hanging mass: Ma = T − Mg sin θ − f, Iα = fR + cTR, m a_h = mg − T₂, T₂ − T = ½m_p a_h,
+  a_h = a + cRα, T and T₂ ≥ 0; a yo-yo spun in place: T = mg, Iα = Tr, a_hand = rα,
+  ½I(ω² − ω₀²) = TL; a rim point from the ground: |v + ω × r| and |a + α × r − ω²r| and their
+  directions, the bottom at rest while it rolls.
 - pendulum: period_small = 2π√(I/(mgd + κ)), equivalent_length = centre_of_percussion = I/(md),
   alpha0 = |mgd sin θ₀ + κθ₀|/I, ½Iω² + mgd(1 − cos θ) + ½κθ² the same at the start, the
   bottom, --angle and (exact models) --time, omega0_over, goes_over, the pivot's force
@@ -65,7 +72,10 @@ DESIGN.md's "Names and signs"):
   L = Σ m r × v, L = |L|. gyro: L = Iω_s, Ω = mgr/L (τ/(L sin θ)), period_p = 2π/|Ω_slow|
   (2π/|Ω| without exact rates), the roots of I⊥Ω²cos θ − LΩ + mgr = 0 (residual, sum and
   product), spin_min = √(4I⊥ mgr cos θ)/I. inertia: the shapes' closed forms, I = I_cm + Md²,
-  k = √(I/M), a body's I and mass the sums of its parts'.
+  k = √(I/M), a body's I and mass the sums of its parts'. drive: J/N² and m r², m(p/2π)² at the
+  motor, the load torque T/(Nη) (ηT/N regenerating), the motor torque at α through the train,
+  t = ω/α and the energy balance of a run-up, the line's α₀, ω_ss and τ_m, a move's times,
+  angle, phase torques, peak, RMS and mean power (tests/definitions/drive.py).
 
 Each defect this check found has a test below with its minimal call: a face pressed by a body
 of parts, a linear drag reported as viscous, a profile beside --inertia-final, a point under a
@@ -75,7 +85,7 @@ brake (α without the friction, the angle past the stop).
 from __future__ import annotations
 
 import pytest
-from definitions import atwood, impulse, inertia, pendulum, rolling, spin, vectors
+from definitions import atwood, drive, impulse, inertia, pendulum, rolling, spin, vectors
 from definitions.check import G0, run_scene, values
 
 import taucli
@@ -100,15 +110,24 @@ def test_impulse_results_agree_with_their_definitions(tmp_path):
 
 def test_atwood_results_agree_with_their_definitions():
     branches = {"hanging": 100, "incline": 60, "stepped": 50, "rim": 50, "pulley mass": 80, "pulley inertia": 50, "part": 15,
-                "axle friction": 40, "mu_k": 30, "mu_s": 20, "v0": 50, "distance": 60, "time": 60, "at": 50, "units": 60}
-    run_scene("atwood", atwood.draw_atwood, atwood.check_atwood, 1000, 11, 0.5, branches)
+                "axle friction": 40, "mu_k": 30, "mu_s": 20, "v0": 50, "distance": 60, "time": 60, "at": 50, "units": 60,
+                "general": 150, "side1 table": 15, "side1 incline": 30, "side2 table": 15, "side2 incline": 30, "side friction": 40, "pull": 60,
+                "pull in place of m1": 5, "drive": 40, "same side": 25, "steps": 60}
+    _, checker = run_scene("atwood", atwood.draw_atwood, atwood.check_atwood, 1600, 11, 0.4, branches)
+    for definition in ("T1 = G1 − s μk1 N1 − m1 a", "T2 = G2 + s sgn(ρ) μk2 N2 + m2 a2", "T1 r1 − σ T2 r2 − τd − τa sgn ω = I α",
+                       "W_gravity + W_pulls + W_drive − W_friction = ΔKE", "t_stop = −v₀/a", "a2 = ρ a (the strings' constraint)"):
+        assert checker.checked[definition] > 20, (definition, checker.checked[definition])
 
 
 def test_rolling_results_agree_with_their_definitions():
     branches = {"incline": 100, "flat": 50, "pull": 100, "yoyo": 40, "k2": 40, "inertia": 40, "mu_s": 30, "mu_k": 30, "length": 50,
                 "height": 15, "climb": 15, "skid": 20, "rolls along": 15, "pull up a slope": 20, "spool": 25, "pull height": 20,
-                "yoyo by I": 4, "axle": 10, "drop": 20, "at": 60, "units": 60}
-    run_scene("rolling", rolling.draw_rolling, rolling.check_rolling, 1000, 5, 0.4, branches)
+                "yoyo by I": 4, "axle": 10, "drop": 20, "at": 60, "units": 60, "hanging": 100, "string top": 40, "pulley mass": 40,
+                "hanging slope": 30, "in place": 40, "in place by I": 8, "string pulled": 20, "on the rim": 60, "climb and back": 20}
+    _, checker = run_scene("rolling", rolling.draw_rolling, rolling.check_rolling, 1400, 5, 0.4, branches)
+    for name in ("v_ground = |v + ω × r|", "a_ground = |a + α × r − ω² r|", "v_ground = 0 at the bottom while it rolls", "T₂ − T = ½ m_p a_h (the pulley)",
+                 "I α = f R + c T R", "|f| = μk N (slipping)", "I α = T r", "½ I (ω² − ω₀²) = T L", "v = −v₀ + at at the bottom"):
+        assert checker.checked[name] >= 5, (name, checker.checked[name])
 
 
 def test_pendulum_results_agree_with_their_definitions():
@@ -129,6 +148,13 @@ def test_inertia_results_agree_with_their_definitions():
     branches = {"offset": 30, "part point": 15, "part disc": 15, "part inertia": 15, "part gyration": 15, "part density": 15, "units": 60,
                 **{shape: 10 for shape in inertia.SHAPE_DIMENSIONS}}
     run_scene("inertia", inertia.draw_inertia, inertia.check_inertia, 800, 17, 0.8, branches)
+
+
+def test_drive_results_agree_with_their_definitions():
+    branches = {"ratio": 150, "stages": 60, "efficiency": 150, "gear": 50, "load inertia": 100, "body": 40, "drum": 80, "screw": 80,
+                "incline": 50, "mu": 50, "force": 30, "load torque": 100, "reflect": 40, "alpha": 40, "in_time": 40, "line": 40,
+                "constant": 40, "times": 50, "trapezoid": 80, "rated": 30, "energy": 60, "units": 80}
+    run_scene("drive", drive.draw_drive, drive.check_drive, 1200, 41, 0.6, branches)
 
 
 @pytest.mark.parametrize("scene", ["spin_down", "impulse"])

@@ -218,7 +218,7 @@ def test_an_internal_error_shows_a_traceback_only_with_debug(monkeypatch, capsys
     def broken(*args, **kwargs):
         raise RuntimeError("a planted bug")
 
-    monkeypatch.setattr(atwood, "solve", broken)
+    monkeypatch.setattr(atwood, "solve_machine", broken)
     monkeypatch.delenv("TAUCLI_DEBUG", raising=False)
     assert cli.main(["atwood", "--m1", "4kg"]) == 1
     err = capsys.readouterr().err

@@ -55,6 +55,8 @@ FOUND = [
     # hours and memory without bound: a range of 10,000 points times a list of 10,000 values (found in review; the grammar
     # then gained long lists, and a 5,000-value list took 18 s: a sweep now has at most 200 points)
     Vector("atwood", ["--m1", "1..2kg", "--points", "10000", "--m2", ",".join(["1kg"] * 10000), "--get", "a"]),
+    # exit 1 (#34, found while the grammar learned --pull): pulls on string ends with no mass and a pulley of I = 0 divided by zero
+    Vector("atwood", ["--pull", "force=15N", "--pull", "force=5N on=2", "--pulley-radius", "33cm", "--pulley-inertia", "0kg*m^2", "--v0", "-2m/s"]),
 ]
 
 

@@ -332,15 +332,15 @@ def test_the_command_line_answers_in_strict_json_with_steps():
     titles = [step["title"] for step in document["steps"]]
     assert "The torque changes L's direction, not its size" in titles and "Why the approximation holds" in titles
     for extreme in (
-        ("--shape", "disc", "--mass", "1e30", "--radius", "1e14", "--spin", "1e-40", "--cm-distance", "1e40", "--g", "1e40", "--tilt", "1deg"),
-        ("--shape", "disc", "--mass", "1e30", "--radius", "1e14", "--spin", "1e40", "--cm-distance", "1e-40", "--tilt", "1e-30deg"),
-        ("--shape", "disc", "--mass", "1e-30", "--radius", "1e-14", "--spin", "1e-40", "--cm-distance", "1e40", "--tilt", "179.99999deg"),
-        ("--inertia", "1e-40", "--spin", "1e-40", "--mass", "1e-40", "--cm-distance", "1e-40", "--inertia-perp", "1e40", "--tilt", "89.9999999deg"),
-        ("--inertia", "1e40", "--spin", "1e40", "--torque", "1e-40", "--tilt", "1e-30deg"),
+        ("--shape", "disc", "--mass", "1e30", "--radius", "1e14", "--spin", "1e-40rad/s", "--cm-distance", "1e40", "--g", "1e40", "--tilt", "1deg"),
+        ("--shape", "disc", "--mass", "1e30", "--radius", "1e14", "--spin", "1e40rad/s", "--cm-distance", "1e-40", "--tilt", "1e-30deg"),
+        ("--shape", "disc", "--mass", "1e-30", "--radius", "1e-14", "--spin", "1e-40rad/s", "--cm-distance", "1e40", "--tilt", "179.99999deg"),
+        ("--inertia", "1e-40", "--spin", "1e-40rad/s", "--mass", "1e-40", "--cm-distance", "1e-40", "--inertia-perp", "1e40", "--tilt", "89.9999999deg"),
+        ("--inertia", "1e40", "--spin", "1e40rad/s", "--torque", "1e-40", "--tilt", "1e-30deg"),
     ):
         done = run_taucli("gyro", *extreme, "--json")
         assert done.code == 0, (extreme, done.err)
         done.json()  # strict: no NaN or Infinity
-    refused = run_taucli("gyro", "--inertia", "0.01", "--spin", "10", "--torque", "1N*m", "--cm-distance", "5cm")
+    refused = run_taucli("gyro", "--inertia", "0.01", "--spin", "10rad/s", "--torque", "1N*m", "--cm-distance", "5cm")
     assert refused.code == 2
     assert refused.err.strip() == "taucli: error: --cm-distance conflicts with --torque: with the torque given, only the gyroscopic rate Ω = τ/(L sin θ) is formed"

@@ -137,7 +137,7 @@ def test_l_conserved_and_no_energy_made_against_the_reference(inertia, omega0, c
         particles = [{"mass": 1.0, "speed": 1.0, "radius": 1.0}]
     if any("e" in p for p in particles):
         couples = []  # a rebound is solved for one particle alone with the body
-    report = taucli.impulse(inertia=inertia, omega0=omega0, couple=[f"inertia={i!r} omega0={w!r}" for i, w in couples], particle=[spec(p) for p in particles])
+    report = taucli.impulse(inertia=inertia, omega0=omega0, couple=[f"inertia={i!r} omega0={w!r}rad/s" for i, w in couples], particle=[spec(p) for p in particles])
     result = values(report)
     w1, lost, energy0 = reference(inertia, omega0, couples, particles)
     parts = [abs(row[1]) + abs(row[2]) for row in report.tables["parts"].rows]  # the sizes of the L that add up
@@ -157,7 +157,7 @@ def test_locking_loses_its_closed_form_even_where_the_speeds_nearly_agree(i1, i2
     """Two bodies locking lose ½ I₁I₂/(I₁ + I₂)·(ω₁ − ω₂)², to the last digits even when ω₁ ≈ ω₂
     (the energies before and after then agree to many digits, and their difference would not)."""
     w2 = w1 * (1 + 1e-9) if w2 == 0 else w2
-    result = values(taucli.impulse(inertia=i1, omega0=w1, couple=f"inertia={i2!r} omega0={w2!r}"))
+    result = values(taucli.impulse(inertia=i1, omega0=w1, couple=f"inertia={i2!r} omega0={w2!r}rad/s"))
     exact = mp(i1) * mp(i2) / (mp(i1) + mp(i2)) * (mp(w1) - mp(w2)) ** 2 / 2
     assert result["KE_lost"] == pytest.approx(float(exact), rel=1e-12, abs=1e-300)
 
@@ -196,7 +196,7 @@ def test_units_do_not_change_the_answer():
         ({"inertia": 1, "particle": "mass=1kg speed=4kg radius=1m"}, "velocity"),
         ({"particle": "mass=1kg speed=4m/s radius=1m"}, "is required"),
         ({"inertia": 1, "torque": 2, "particle": "mass=1kg speed=4m/s radius=1m"}, "conflicts"),
-        ({"inertia": 1, "couple": "omega0=3"}, "needs inertia="),
+        ({"inertia": 1, "couple": "omega0=3rad/s"}, "needs inertia="),
         ({"inertia": 1, "particle": ["mass=1kg speed=4m/s radius=1m e=0.5", "mass=1kg speed=1m/s radius=1m"]}, "one particle meeting the body alone"),
         ({"inertia": 1, "particle": "mass=1kg speed=4m/s radius=1m angle=200deg"}, "from 0 to 180"),
         ({"inertia": 1, "couple": "disc radius=1m"}, "needs mass="),

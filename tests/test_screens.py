@@ -46,7 +46,7 @@ def test_a_sweeps_numbers_are_never_split(columns):
 @pytest.mark.parametrize("columns", WIDTHS)
 @pytest.mark.parametrize(
     "args",
-    [PARTS, ("spin-down", "--inertia", "0.01", "--omega0", "100", "--friction", "0.05", "--viscous", "2", "--method", "rk4", "--dt", "1e-4"),
+    [PARTS, ("spin-down", "--inertia", "0.01", "--omega0", "100rad/s", "--friction", "0.05", "--viscous", "2", "--method", "rk4", "--dt", "1e-4"),
      ("atwood", "--m1", "1..4kg", "--m2", "1kg", "--points", "5")],
     ids=["parts", "error estimate", "sweep"],
 )  # fmt: skip

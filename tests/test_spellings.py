@@ -54,16 +54,15 @@ SPELLINGS = {
     ], ("spin-down", "--inertia", "1", "--omega0", "1rad/s", "--friction", "0.1"), "--time"),
     "angular velocity": (100 * PI, [
         "3000rpm", "3000 rpm", "3000 RPM", "3000 Rpm", "3000 rev/min", "3000 r/min", "50 rps", "50 rev/s", "18000 deg/s", "18000°/s",
-        f"{100 * PI!r} rad/s", f"{100 * PI!r}",
+        f"{100 * PI!r} rad/s", (f"({100 * PI!r} m/s)/(1 m)", "ω = v/R = 314.159 rad/s"), (f"({100 * PI!r} m/s)/(100 cm)", "ω = v/R"),
         ("3000 min^-1", "min^-1 read as revolutions per minute (ω = 2πn)"), ("3000 min-1", "revolutions per minute"),
         ("3000 1/min", "1/min read as revolutions per minute"), ("50 Hz", "Hz read as revolutions per second"),
-        ("50 1/s", "1/s read as revolutions per second"), ("50 /s", "revolutions per second"), ("50 s^-1", "revolutions per second"),
         ("50 HZ", "Hz read as revolutions per second"),
     ], ("spin-down", "--inertia", "1", "--friction", "0.1"), "--omega0"),
     "angular acceleration": (2 * PI, [
-        "60 rpm/s", "60 RPM/s", "1 rev/s^2", "1 rev/s2", "360 deg/s^2", "3600 rev/min^2", f"{2 * PI!r} rad/s^2", f"{2 * PI!r}",
-        ("1 Hz/s", "Hz/s read as revolutions per second squared"), ("1 1/s^2", "revolutions per second squared"),
-        ("1 s^-2", "revolutions per second squared"), ("60 1/(min*s)", "revolutions per unit time"),
+        "60 rpm/s", "60 RPM/s", "1 rev/s^2", "1 rev/s2", "360 deg/s^2", "3600 rev/min^2", f"{2 * PI!r} rad/s^2",
+        ("1 Hz/s", "Hz/s read as revolutions per second squared"), ("60 1/(min*s)", "revolutions per unit time"),
+        (f"({2 * PI!r} m/s^2)/(1 m)", "α = a_t/R = 6.28319 rad/s²"),
     ], None, None),
     "torque": (LBF_FT, [
         "1 lbf*ft", "1 lbf·ft", "1 lbf-ft", "1 ft-lbf", "1 ft*lbf", "12 lbf*in", "12 in-lbf", f"{LBF_FT!r} N*m", f"{LBF_FT!r} Nm",
@@ -75,6 +74,8 @@ SPELLINGS = {
     "moment of inertia": (0.5, [
         "0.5 kg*m^2", "0.5kg*m^2", "0.5 kg*m**2", "0.5 kgm^2", "0.5 kgm2", "0.5 kg m2", "0.5 kg m^2", "0.5 kg·m²", "0.5 kgm²", "0.5 kg.m^2",
         "0.5 kg-m^2", "5000 kg*cm^2", "5000000 g*cm^2", "5e6 gcm^2", "5e6 gcm2", f"{0.5 / (LB * FT**2)!r} lb*ft^2", "0.5", "1/2 kg*m^2",
+        f"{0.5 / (LB * IN**2)!r} lb*in^2", f"{0.5 / (LBF * IN)!r} lbf*in*s^2", (f"{0.5 / (LBF * IN)!r} lb*in*s^2", "lb read as pound-force, lbf*in*s^2"),
+        (f"{0.5 / (LBF / 16 * IN)!r} oz-in-s^2", "oz read as ounce-force"),
     ], ("spin-down", "--friction", "0.1", "--omega0", "1rad/s"), "--inertia"),
     "force": (10 * LBF, [
         "10 lbf", "10lbf", "160 ozf", f"{10 * LBF!r} N", f"{10 * LBF!r}N", f"{10 * LBF / 1000!r} kN", f"{10 * LBF * 1000!r} mN",
@@ -106,6 +107,11 @@ SPELLINGS = {
     # torsion constant (#19): 1 N·m/deg = 180/π N·m/rad
     "torsion constant": (0.5, ["0.5 N*m/rad", "0.5 Nm/rad", "0.5 N.m/rad", "500 mN*m/rad", f"{0.5 * math.pi / 180!r} N*m/deg", "0.5 J/rad",
                                "0.5 N*m", "0.5"], ("pendulum", "--inertia", "0.02", "--cm-distance", "0", "--mass", "1kg", "--angle0", "30deg"), "--torsion"),
+    # lead (a screw's advance per turn): a length alone is per revolution, a length per angle is turned into that
+    "lead": (0.2 * IN, [
+        "0.2 in/rev", "0.2in/rev", "0.2 in", "0.2in", "5.08 mm", "5.08mm/rev", "5.08 mm/turn", f"{5.08 / 360!r} mm/deg",
+        f"{0.2 * IN / (2 * PI)!r} m/rad", f"{0.2 * IN!r}", f"{0.2 * IN!r} m/rev", "1/5 in",
+    ], ("drive", "--load-mass", "10kg"), "--lead"),
     # density (a part's density=): 1 lb/ft³ = 0.45359237 kg / 0.3048³ m³
     "density": (7800.0, ["7800 kg/m^3", "7800 kg/m3", "7.8 g/cm^3", "7.8 g/cm3", "7.8 g/mL", "7800 kg*m^-3",
                          f"{7800 / (0.45359237 / 0.3048**3)!r} lb/ft^3", "7.8 tonne/m^3", "7800"], None, None),
@@ -188,9 +194,12 @@ def test_each_spelling_reads_the_same_as_a_sweep_point(kind):
 
 def test_angular_acceleration_units_read_the_same_in_to(capsys):
     """No option takes an angular acceleration yet; --to reads its units: α = τ/I = 2π rad/s² = 1 rev/s²."""
-    for unit, in_unit in [("rpm/s", 60.0), ("RPM/s", 60.0), ("rev/s^2", 1.0), ("deg/s^2", 360.0), ("Hz/s", 1.0), ("1/s^2", 1.0), ("s^-2", 1.0)]:
+    for unit, in_unit in [("rpm/s", 60.0), ("RPM/s", 60.0), ("rev/s^2", 1.0), ("deg/s^2", 360.0), ("Hz/s", 1.0), ("rad/s^2", 2 * PI)]:
         document = _in_process(["spin-down", "--inertia", "1", "--torque", f"{2 * PI!r}", "--to", f"alpha0={unit}"], capsys)
         assert document["results"]["alpha0"]["value"] == pytest.approx(in_unit, rel=1e-12), unit
+    for unit in ("1/s^2", "s^-2"):  # radians or revolutions per second squared: --to reads a unit as an option does (#31)
+        assert cli.main(["spin-down", "--inertia", "1", "--torque", "1", "--to", f"alpha0={unit}"]) == 2
+        assert f"--to: expected a unit of an angular acceleration that names its angle (e.g. 'rad/s^2' or 'rev/s^2'), got '{unit}'" in capsys.readouterr().err
 
 
 REFUSED = [
@@ -250,12 +259,11 @@ def test_a_record_turntable_is_33_and_a_third_rpm():
     assert "--omega0 33 1/3 rpm: 33 1/3 read as the mixed number 33 + 1/3" in document["notes"]
 
 
-def test_fifty_per_second_is_revolutions_per_second_with_a_note():
+def test_fifty_per_second_is_refused_naming_both_readings():
+    """ω in s⁻¹ is rad/s in a physics book and rev/s by ISO 80000-3: no reading is safe (#31)."""
     result = run_taucli("spin-down", "--inertia", "1", "--omega0", "50 1/s", "--friction", "1", "--json", "--no-steps")
-    assert result.code == 0, result.err
-    document = result.json()
-    assert document["inputs"]["omega0"]["value"] == pytest.approx(50 * 2 * PI, rel=1e-12)
-    assert "--omega0 50 1/s: 1/s read as revolutions per second (ω = 2πn)" in document["notes"]
+    assert_usage_error(result, "--omega0: expected an angular velocity with its angle unit (e.g. 50rad/s or 50rev/s), got '50 1/s': "
+                               "1/s could be radians or revolutions per second")
 
 
 @pytest.mark.parametrize("text", ["2Nm", "2 N-m", "2 N.m", "2 kNm"])
@@ -311,10 +319,10 @@ def test_numbers_side_by_side_never_reach_an_answer(text):
     [
         ("33 1/3 rpm", "angular velocity", (100 / 3) * RPM), ("1 1/2 kg", "mass", 1.5), ("-1 1/2 N*m", "torque", -1.5), ("2 3/4", "length", 2.75),
         ("1 1/2kg", "mass", 1.5), ("0 1/2 kg", "mass", 0.5), ("33⅓ rpm", "angular velocity", (100 / 3) * RPM), ("2½ in", "length", 2.5 * IN),
-        ("50 1/s", "angular velocity", 100 * PI), ("1 1/s", "angular velocity", 2 * PI), ("2 * 3 kg", "mass", 6.0), ("3/4 kg", "mass", 0.75),
+        ("50 1/min", "angular velocity", 50 * RPM), ("1 1/min", "angular velocity", RPM), ("2 * 3 kg", "mass", 6.0), ("3/4 kg", "mass", 0.75),
     ],
 )  # fmt: skip
-def test_a_mixed_number_and_a_unit_1_over_s_are_not_numbers_side_by_side(text, kind, expected):
+def test_a_mixed_number_and_a_unit_1_over_a_time_are_not_numbers_side_by_side(text, kind, expected):
     assert units.parse(text, "--x", kind, sign="any").value == pytest.approx(expected, rel=1e-14)
 
 
@@ -322,8 +330,8 @@ def test_a_mixed_number_and_a_unit_1_over_s_are_not_numbers_side_by_side(text, k
     "text,kind,expected",
     [
         ("-2 N*m", "torque", -2.0), ("1e-3 kg", "mass", 1e-3), ("1e-3kg", "mass", 1e-3), ("1.5e-3 N.m", "torque", 1.5e-3), ("2.5N.m", "torque", 2.5),
-        ("4kg-200g", "mass", 3.8), ("4 kg - 200 g", "mass", 3.8), ("4s-1s", "time", 3.0), ("3 s^-1", "angular velocity", 6 * PI),
-        ("3 s**-1", "angular velocity", 6 * PI), ("2 m^-1*m^2", "length", 2.0), ("-0.5 rad", "angle", -0.5), ("1e-2 m", "length", 0.01),
+        ("4kg-200g", "mass", 3.8), ("4 kg - 200 g", "mass", 3.8), ("4s-1s", "time", 3.0), ("3 min^-1", "angular velocity", 3 * RPM),
+        ("3 min**-1", "angular velocity", 3 * RPM), ("2 m^-1*m^2", "length", 2.0), ("-0.5 rad", "angle", -0.5), ("1e-2 m", "length", 0.01),
         ("2 m/s2", "acceleration", 2.0), ("1 g0", "acceleration", G0), (".5 N.m", "torque", 0.5),
     ],
 )  # fmt: skip
@@ -430,7 +438,7 @@ CORNERS = [(i, w, tau, t) for i in units.KINDS["moment of inertia"].bounds for w
 def test_at_the_corners_of_the_bounds_every_result_is_a_finite_number(inertia, omega0, torque, time, capsys):
     """I ω², ω² I t², τ t²/I at the bounds stay inside a double: no result turns null for overflow."""
     for drive in ("--friction", "--torque"):
-        document = _in_process(["spin-down", "--inertia", repr(inertia), "--omega0", repr(omega0), drive, repr(torque), "--time", repr(time)], capsys)
+        document = _in_process(["spin-down", "--inertia", repr(inertia), "--omega0", f"{omega0!r}rad/s", drive, repr(torque), "--time", repr(time)], capsys)
         assert not [note for note in document["notes"] if "no finite value" in note], document["notes"]
         for name in ("I", "alpha0", "omega", "theta", "revs"):
             assert math.isfinite(document["results"][name]["value"]), (drive, name)
@@ -443,7 +451,7 @@ UNITS = {  # kind -> (unit, its SI value from the definitions)
     "length": [("m", 1.0), ("cm", 0.01), ("mm", 1e-3), ("ft", FT), ("in", IN), ("km", 1e3)],
     "angle": [("rad", 1.0), ("deg", PI / 180), ("°", PI / 180), ("rev", 2 * PI), ("arcmin", PI / 10800)],
     "time": [("s", 1.0), ("ms", 1e-3), ("min", 60.0), ("h", 3600.0), ("sec", 1.0)],
-    "angular velocity": [("rad/s", 1.0), ("rpm", RPM), ("RPM", RPM), ("min^-1", RPM), ("1/min", RPM), ("Hz", 2 * PI), ("rps", 2 * PI), ("1/s", 2 * PI),
+    "angular velocity": [("rad/s", 1.0), ("rpm", RPM), ("RPM", RPM), ("min^-1", RPM), ("1/min", RPM), ("Hz", 2 * PI), ("rps", 2 * PI), ("m/s/m", 1.0),
                          ("rev/s", 2 * PI), ("deg/s", PI / 180)],
     "torque": [("N*m", 1.0), ("Nm", 1.0), ("N-m", 1.0), ("lbf*ft", LBF_FT), ("lb*ft", LBF_FT), ("ft-lb", LBF_FT), ("kN*m", 1e3), ("N*cm", 0.01),
                ("oz-in", OZ * G0 * IN)],

@@ -39,7 +39,7 @@ def _top(modules: set[str]) -> set[str]:
     return {name.split(".")[0] for name in modules}
 
 
-@pytest.mark.parametrize("argv", [["--help"], ["atwood", "--help"], ["inertia", "-h"], ["spin-down", "--omega0", "3", "--help"]])
+@pytest.mark.parametrize("argv", [["--help"], ["atwood", "--help"], ["inertia", "-h"], ["spin-down", "--omega0", "3rad/s", "--help"]])
 def test_help_is_written_from_the_tables_without_typer(argv, tmp_path):
     """No typer, click, pint, rich or pydantic, no solver, and nothing kept in a cache."""
     loaded = _modules_after(argv, {"TAUCLI_CACHE_DIR": str(tmp_path)})

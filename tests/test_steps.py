@@ -42,7 +42,7 @@ def _commands() -> list[list[str]]:
             continue
         found.append(args)
     found += [[name, *argv] for name, argv in WORKING.items()]
-    found.append(["spin-down", "--inertia", "2", "--omega0", "30", "--torque", "-3", "--friction", "1", "--time", "30"])
+    found.append(["spin-down", "--inertia", "2", "--omega0", "30rad/s", "--torque", "-3", "--friction", "1", "--time", "30"])
     return found
 
 

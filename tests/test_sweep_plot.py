@@ -77,7 +77,7 @@ def test_alpha_against_inertia_for_two_torques_stays_a_factor_of_two_apart():
     "args, fragments",
     [
         (["spin-down", "--inertia", "1..2", "--torque", "1..2"], ("--inertia and --torque", "at most one range")),
-        (["spin-down", "--inertia", "1,2", "--torque", "1,2", "--omega0", "1"], ("--inertia and --torque", "list")),
+        (["spin-down", "--inertia", "1,2", "--torque", "1,2", "--omega0", "1rad/s"], ("--inertia and --torque", "list")),
         (["spin-down", "--inertia", "1", "--torque", "1", "--points", "5"], ("--points", "range")),
         (["spin-down", "--inertia", "1..2", "--torque", "1", "--points", "1"], ("--points", "2 to 200")),
         (["spin-down", "--inertia", "1..2", "--torque", "1", "--points", "ten"], ("--points", "whole number")),

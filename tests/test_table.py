@@ -21,13 +21,16 @@ SCENE_NAMES = list(SCENES)
 # One scene of each command that works, to see what its library returns.
 WORKING = {
     "inertia": ["disc", "--mass", "5kg", "--radius", "0.2m", "--offset", "0.1m"],
-    "spin-down": ["--inertia", "0.1", "--omega0", "30", "--friction", "0.3", "--time", "4s", "--until-omega", "10"],
+    "spin-down": ["--inertia", "0.1", "--omega0", "30rad/s", "--friction", "0.3", "--time", "4s", "--until-omega", "10rad/s"],
     "atwood": ["--m1", "4kg", "--m2", "1kg", "--pulley-mass", "2kg", "--pulley-radius", "0.1m", "--distance", "1m"],
     "rolling": ["sphere", "--angle", "30deg", "--length", "2m", "--mass", "1kg", "--radius", "0.1m"],
     "impulse": ["--inertia", "0.1", "--omega0", "0", "--torque", "2", "--duration", "0.5s"],
     "torque": ["--r", "0.3,0.4,0 m", "--force", "0,0,10 N", "--mass", "2kg", "--velocity", "0,1,0 m/s"],
     "gyro": ["--shape", "disc", "--mass", "0.3kg", "--radius", "5cm", "--spin", "4000rpm", "--cm-distance", "5cm", "--tilt", "30deg"],
     "pendulum": ["--shape", "rod", "--length", "1m", "--mass", "2kg", "--axis", "end", "--angle0", "90deg", "--angle", "0deg", "--time", "1s"],
+    "drive": ["--load-mass", "250kg", "--lead", "10mm", "--ratio", "2", "--efficiency", "0.9", "--mu", "0.2", "--incline", "10deg",
+              "--motor-inertia", "0.3e-4kg*m^2", "--speed", "15m/min", "--accel-time", "0.1s", "--run-time", "1s", "--dwell-time", "0.3s",
+              "--rated-torque", "0.637N*m", "--stall-torque", "3N*m", "--no-load-speed", "5000rpm"],
 }
 
 
@@ -216,7 +219,7 @@ def test_the_python_api_raises_input_error_naming_the_parameter():
 
 
 def test_the_command_line_spells_the_same_error_with_flags():
-    done = run_taucli("spin-down", "--inertia", "1", "--shape", "disc", "--omega0", "3")
+    done = run_taucli("spin-down", "--inertia", "1", "--shape", "disc", "--omega0", "3rad/s")
     assert done.code == 2
     assert done.err.strip() == "taucli: error: --inertia conflicts with --shape: give one of them"
 

@@ -2,22 +2,24 @@
 
 from taucli.names import PULLEY_SHAPES
 from taucli.options.common import ANSWER, GRAVITY, MOTION, POINT_RESULTS, point_option
-from taucli.table import CHOICE, PART, Command, Option, Result
+from taucli.table import CHOICE, FLAG, PART, PULL, SIDE, Command, Option, Result
 
 PULLEY = "Pulley"
+SIDES = "Where the blocks are, and what pulls them"
 
 COMMAND = Command(
     name="atwood",
     summary="Two masses on a string over a pulley with mass: acceleration and tensions.",
     example="taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg --pulley-radius 0.1m",
     options=(
-        Option("m1", "mass", "The hanging mass; its downward motion is positive.", sign="nonnegative"),
+        Option("m1", "mass", "The mass on side 1 (hanging unless --side1 says); its motion away from the pulley (down, hanging) is positive "
+               "(0, or left out with a --pull on it: the string's end pulled by hand).", sign="nonnegative"),
         Option("m2", "mass", "The other mass (0: one mass on a string wound on the pulley).", sign="nonnegative"),
         Option("pulley_mass", "mass", "Pulley mass (0: massless).", sign="nonnegative", default="0", panel=PULLEY),
-        Option("pulley_radius", "length", "Pulley radius (needed only for alpha, axle friction or --pulley-inertia).", panel=PULLEY),
+        Option("pulley_radius", "length", "Pulley radius (needed only for alpha, axle friction, --torque or --pulley-inertia).", panel=PULLEY),
         Option("pulley_shape", CHOICE, "Pulley shape.", choices=PULLEY_SHAPES, default="disc", panel=PULLEY),
         Option("pulley_inertia", "moment of inertia", "Pulley moment of inertia, instead of mass and shape.", sign="nonnegative", panel=PULLEY),
-        Option("axle_friction", "torque", "Constant friction torque at the axle (holds at rest too).", sign="nonnegative", panel=PULLEY),
+        Option("axle_friction", "torque", "Constant friction torque at the axle, a brake (holds at rest too).", sign="nonnegative", panel=PULLEY),
         Option(
             "part", PART,
             'A part of the pulley about its axle (a hub, a rim, spokes), as in taucli inertia, e.g. --part "ring mass=0.5kg radius=0.1m" '
@@ -26,11 +28,22 @@ COMMAND = Command(
         ),
         Option("radius1", "length", "A stepped pulley: the radius m1's string is wound at (m2's on the other side at --radius2).", panel=PULLEY),
         Option("radius2", "length", "A stepped pulley: the radius m2's string is wound at.", panel=PULLEY),
+        Option("same_side", FLAG, "m2's string wound on m1's side of the pulley, the same way: the two torques add and both blocks go down together "
+               "(a stepped pulley, or one drum at --pulley-radius).", panel=PULLEY),
         Option("rim_mu", "dimensionless", "Friction coefficient between the string and the rim: past the capstan limit the string slides.", sign="nonnegative", panel=PULLEY),
         Option("wrap", "angle", "Angle of rim the string wraps, with --rim-mu.", default="180deg", panel=PULLEY),
-        Option("incline", "angle", "m2 on a slope at this angle (0deg: a table) instead of hanging.", sign="any"),
-        Option("mu_k", "dimensionless", "Kinetic friction coefficient under m2.", sign="nonnegative"),
-        Option("mu_s", "dimensionless", "Static friction coefficient under m2.", sign="nonnegative"),
+        Option("side1", SIDE, 'Where m1 is: "hang" (the default), "table mu-s=… mu-k=…" or "incline angle=… mu-s=… mu-k=…" '
+               "(its own slope, the pulley at the top; no coefficient: smooth).", panel=SIDES, metavar='"hang|table|incline key=value ..."'),
+        Option("side2", SIDE, 'Where m2 is, as --side1 (--incline, --mu-s and --mu-k say the same for m2, and are not given beside it).',
+               panel=SIDES, metavar='"hang|table|incline key=value ..."'),
+        Option("incline", "angle", 'm2 on a slope at this angle (0deg: a table) instead of hanging: --side2 "incline angle=…".', sign="any", panel=SIDES),
+        Option("mu_k", "dimensionless", "Kinetic friction coefficient under m2 (with --incline).", sign="nonnegative", panel=SIDES),
+        Option("mu_s", "dimensionless", "Static friction coefficient under m2 (with --incline).", sign="nonnegative", panel=SIDES),
+        Option("pull", PULL, 'A constant pull on a block, e.g. "force=20N angle=30deg on=2": along its path away from the pulley (negative: '
+               "towards it), angle= tilted off its surface (positive lifting it; 0 on a hanging block), on= 1 or 2 (default 1); in place of "
+               "a hanging mass or beside one (repeatable).", panel=SIDES, repeatable=True, metavar='"force=… [angle=…] [on=1|2]"'),
+        Option("torque", "torque", "A drive torque on the pulley (a motor, a hoist drum), positive lifting m1 (winding m1's string in).",
+               sign="any", panel=SIDES),
         GRAVITY,
         Option("v0", "velocity", "Initial speed of m1 (down positive).", sign="any", default="0", panel=MOTION),
         Option("distance", "length", "Report the time and speed after this distance.", sign="nonnegative", panel=MOTION),
@@ -50,6 +63,8 @@ COMMAND = Command(
         Result("t", "s", "time to travel…"),
         Result("v", "m/s", "velocity…"),
         Result("distance", "m", "displacement of m1 (down positive)…"),
+        Result("t_stop", "s", "time until the masses stop (with --v0)"),
+        Result("distance_stop", "m", "displacement of m1 until they stop (down positive)"),
         *POINT_RESULTS,
     ),
     output=ANSWER,

@@ -1,14 +1,18 @@
-"""taucli rolling: a round body on an incline, or a skidding ball on the flat; pulled, a spool, a yo-yo."""
+"""taucli rolling: a round body on an incline, or a skidding ball on the flat; pulled, a spool, a
+yo-yo; joined to a hanging mass over a pulley; a point of it seen from the ground."""
 
 from taucli.names import ROLLING_BODIES
-from taucli.options.common import ANSWER, BODY, GRAVITY, MOTION, POINT_RESULTS, point_option
+from taucli.options.common import ANSWER, BODY, GRAVITY, MOTION, POINT_RESULTS
 from taucli.table import CHOICE, FLAG, Command, Option, Result
 
 PULL = "Pull, spool and yo-yo"
+HANGING = "Hanging mass over a pulley"
+RIM_POSITIONS = ("top", "bottom", "front", "back")  # scenes.rolling.ground_point.POSITIONS
+STRING_ENDS = ("centre", "top")  # scenes.rolling.hanging: where the string leaves the body
 
 COMMAND = Command(
     name="rolling",
-    summary="A round body on an incline: does it roll or slip, and how fast; a skidding ball; a pulled body, a spool, a yo-yo.",
+    summary="A round body on an incline: does it roll or slip, and how fast; a skidding ball; a pulled body, a spool, a yo-yo; a body joined to a hanging mass.",
     example="taucli rolling sphere --angle 30deg --length 2m",
     options=(
         Option("shape", CHOICE, f"{', '.join(ROLLING_BODIES)} (or give --k2 or --inertia).", choices=ROLLING_BODIES, positional=True, metavar="SHAPE"),
@@ -19,17 +23,31 @@ COMMAND = Command(
         Option("angle", "angle", "Slope of the incline, 0 to 90deg.", sign="any"),
         Option("mu_s", "dimensionless", "Static friction coefficient (decides roll or slip).", sign="nonnegative"),
         Option("mu_k", "dimensionless", "Kinetic friction coefficient (when it slips or skids).", sign="nonnegative"),
-        Option("length", "length", "Distance down the slope to the bottom.", panel=MOTION),
-        Option("height", "length", "Height of the slope, instead of --length.", panel=MOTION),
-        Option("v0", "velocity", "Speed up the slope (how far it climbs); on the flat, rolling at v0 (alone) or skidding (with --mu-k or --omega0); a yo-yo thrown down.", sign="any", panel=MOTION),
-        Option("omega0", "angular velocity", "Spin on the flat, in the rolling sense (skid to roll).", sign="any", panel=MOTION),
+        Option("length", "length", "Distance down the slope to the bottom; with --pull or --hanging-mass, the distance the body moves; "
+               "with --in-place, the string the hand pulls.", panel=MOTION),
+        Option("height", "length", "Height of the slope, instead of --length; a yo-yo's drop.", panel=MOTION),
+        Option("v0", "velocity", "Speed up the slope, set rolling (negative: down it), from --length above the bottom; on the flat, "
+               "rolling at v0 (alone) or skidding (with --mu-k or --omega0); a yo-yo thrown down.", sign="any", panel=MOTION),
+        Option("omega0", "angular velocity", "Spin on the flat, in the rolling sense (skid to roll); a yo-yo spun in place: its spin at the start.",
+               sign="any", panel=MOTION),
         Option("pull", "force", "A steady pull on the body (on an incline along the slope, up it), e.g. 10N.", panel=PULL),
         Option("pull_height", "length", "Where the pull acts: height above the centre (negative below; R: the top).", sign="any", default="0", panel=PULL),
         Option("pull_angle", "angle", "Angle of the pull above the surface (on an incline, from the slope).", sign="any", default="0deg", panel=PULL),
         Option("axle_radius", "length", "A spool: the string is wound at this radius (below R) and leaves from below unless --pull-height is positive; a yo-yo's axle.", panel=PULL),
         Option("yoyo", FLAG, "A yo-yo: the body falls as its string, fixed above and wound at --axle-radius, unwinds.", panel=PULL),
+        Option("in_place", FLAG, "A yo-yo spun in place: its string pulled up just hard enough that its centre stays put.", panel=PULL),
+        Option("hanging_mass", "mass", "A mass hanging from a string that runs from the body along the surface and over a pulley "
+               "(at the edge of the flat, or the top of the slope), e.g. 2kg.", panel=HANGING),
+        Option("string", CHOICE, "Where that string leaves the body: centre (an axle in a frame) or top (wound on the body).",
+               choices=STRING_ENDS, default="centre", panel=HANGING, metavar="centre|top"),
+        Option("pulley_mass", "mass", "Mass of the pulley, a uniform disc (0: massless).", sign="nonnegative", default="0", panel=HANGING),
+        Option("pulley_radius", "length", "Radius of the pulley (needed only for its angular acceleration).", panel=HANGING),
         GRAVITY,
-        point_option("from the centre, turning with the body (at the end: the bottom, the drop, rolling at last; else the start)"),
+        Option("at", "length", "A point of the body: at this radius from the centre, turning with the body (v_t, a_t, a_c, a_total, a_angle, s "
+               "about the centre), e.g. 0.05m, or rim (the body's radius; taken when one of those is asked for with no --at); or on the rim "
+               "seen from the ground: top, bottom, front, back, or an angle from the top, forward positive, e.g. 45deg (v_ground, "
+               "v_ground_angle, a_ground, a_ground_angle). At the end: the bottom, the distance, rolling at last; else the start.",
+               panel=MOTION, words=("rim", *RIM_POSITIONS), also="angle"),
     ),
     results=(
         Result("a", "m/s**2", "acceleration of the centre…"),
@@ -38,8 +56,13 @@ COMMAND = Command(
         Result("mu_min", "", "least static coefficient for rolling"),
         Result("rolls", None, "rolls without slipping"),
         Result("critical_angle", "rad", "pull angle at which the spool stays put"),
-        Result("T", "N", "tension in the string"),
+        Result("T", "N", "tension in the string…"),
+        Result("T2", "N", "tension in the hanging part of the string"),
+        Result("a_hanging", "m/s**2", "acceleration of the hanging mass, downward"),
+        Result("alpha_pulley", "rad/s**2", "angular acceleration of the pulley"),
+        Result("a_hand", "m/s**2", "acceleration of the string's free end (the hand), upward"),
         Result("v", "m/s", "speed…"),
+        Result("v_hanging", "m/s", "velocity of the hanging mass, downward…"),
         Result("omega", "rad/s", "angular velocity…"),
         Result("t", "s", "time…"),
         Result("KE_trans", "J", "kinetic energy of translation…"),
@@ -54,6 +77,10 @@ COMMAND = Command(
         Result("omega_roll", "rad/s", "angular velocity once it rolls"),
         Result("energy_lost", "J", "kinetic energy turned to heat by sliding friction"),
         *POINT_RESULTS,
+        Result("v_ground", "m/s", "speed of the point relative to the ground…"),
+        Result("v_ground_angle", "rad", "direction of that velocity…"),
+        Result("a_ground", "m/s**2", "acceleration of the point relative to the ground…"),
+        Result("a_ground_angle", "rad", "direction of that acceleration…"),
     ),
     output=ANSWER,
     headline="a",

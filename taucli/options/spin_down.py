@@ -33,6 +33,11 @@ COMMAND = Command(
             "Reach the target (--until-omega or --until-angle) in this time: the constant α, and with a body the torque, that does it.",
             panel=MOTION,
         ),
+        Option(
+            "in_angle", "angle",
+            "Reach --until-omega within this angle, e.g. 20rev: the constant α, and with a body the drive torque, that does it (stop a wheel in 10 rev: --until-omega 0).",
+            sign="any", panel=MOTION,
+        ),
         Option("power", "power", "A motor of constant power P (τ = P/ω; negative: a load draining the wheel), e.g. 1kW.", sign="any"),
         Option("ke0", "energy", "Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.", sign="nonnegative", panel=MOTION),
         Option("rim_speed", "velocity", "Initial speed of the rim, giving ω₀ = v/R (R the body's radius, or --radius with --inertia).", sign="any", panel=MOTION),

@@ -103,3 +103,30 @@ class Face:
     outer_radius: float | None = None
     pressure: str = "uniform"
     surfaces: int = 1
+
+
+SURFACES = ("hang", "table", "incline")  # where a block of the Atwood machine is (--side1, --side2)
+
+
+@dataclass(frozen=True)
+class Side:
+    """Where a block of the Atwood machine is (--side1, --side2): it hangs, lies on a table, or on
+    its own incline at ``angle``; the friction coefficients under it (None: not given)."""
+
+    source: str
+    surface: str  # "hang", "table" or "incline"
+    angle: float | None = None  # an incline's, from the horizontal
+    mu_k: float | None = None
+    mu_s: float | None = None
+
+
+@dataclass(frozen=True)
+class Pull:
+    """A constant pull on a block of the Atwood machine (--pull): ``force`` along the block's path
+    away from the pulley (negative: towards it), tilted ``angle`` off its surface (positive lifting
+    it), on block ``on`` (1 or 2)."""
+
+    source: str
+    force: float
+    angle: float = 0.0
+    on: int = 1

@@ -1,4 +1,5 @@
-"""rolling: the draws (an incline, the flat, a pull, a spool, a yo-yo) and the definitions."""
+"""rolling: the draws (an incline, the flat, a pull, a spool, a yo-yo, a yo-yo spun in place, a
+body joined to a hanging mass, a point on the rim seen from the ground) and the definitions."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ ROLLING_K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring
 def draw_rolling(rng: random.Random) -> tuple[dict, list[str]]:
     """A rolling body: down an incline (rolling or slipping, to the bottom, or climbing), skidding
     or rolling on the flat, pulled (through the centre, above or below it, a spool), a yo-yo."""
-    mode = rng.choice(("incline", "incline", "flat", "pull", "pull", "yoyo"))
+    mode = rng.choice(("incline", "incline", "flat", "pull", "pull", "yoyo", "hanging", "hanging", "in place"))
     tags = [mode]
     kw: dict = {}
     mass, radius = mag(rng, -1.5, 1.5), mag(rng, -2, 0)
@@ -50,6 +51,9 @@ def draw_rolling(rng: random.Random) -> tuple[dict, list[str]]:
         elif y < 0.85:
             kw["v0"] = speed
             tags.append("climb")
+        if y < 0.6 and rng.random() < 0.35:  # set rolling up (or down) the slope, L from the bottom
+            kw["v0"] = signed(rng, speed, 0.3)
+            tags.append("climb and back")
     elif mode == "flat":
         kw["v0"] = signed(rng, speed, 0.2)
         if rng.random() < 0.6:
@@ -85,6 +89,43 @@ def draw_rolling(rng: random.Random) -> tuple[dict, list[str]]:
         if rng.random() < 0.5:
             kw["length"] = radius * mag(rng, 0, 2)
             tags.append("length")
+    elif mode == "hanging":
+        kw.setdefault("mass", mass)
+        kw["hanging_mass"] = mass * mag(rng, -1.5, 1)
+        if rng.random() < 0.5:
+            kw["string"] = "top"
+            tags.append("string top")
+        elif rng.random() < 0.3:
+            kw["string"] = "centre"
+        if rng.random() < 0.5:
+            kw["pulley_mass"] = mass * mag(rng, -1.5, 0.5)
+            tags.append("pulley mass")
+        if rng.random() < 0.4:
+            kw["pulley_radius"] = radius * mag(rng, -1, 0.5)
+        if rng.random() < 0.4:
+            kw["angle"] = rng.uniform(0, math.pi / 2) if rng.random() < 0.95 else math.pi / 2
+            tags.append("hanging slope")
+        if rng.random() < 0.6:
+            kw["mu_s"] = rng.uniform(0, 1)
+        if rng.random() < 0.5:
+            kw["mu_k"] = rng.uniform(0, kw.get("mu_s", 1))
+        if rng.random() < 0.5:
+            kw["length"] = radius * mag(rng, 0, 2)
+            tags.append("length")
+    elif mode == "in place":
+        kw["in_place"] = True
+        if "inertia" in kw and rng.random() < 0.5:
+            kw.pop("radius", None)
+            tags.append("in place by I")
+        else:
+            kw.setdefault("radius", radius)
+        if rng.random() < 0.5:
+            kw["axle_radius"] = radius * rng.uniform(0.05, 1)
+        if rng.random() < 0.5:
+            kw["omega0"] = math.sqrt(G0 / radius) * mag(rng, -1, 1)
+        if rng.random() < 0.6:
+            kw["length"] = radius * mag(rng, 0, 2)
+            tags.append("string pulled")
     else:  # a yo-yo
         kw["yoyo"] = True
         if "inertia" in kw and rng.random() < 0.5:
@@ -100,8 +141,18 @@ def draw_rolling(rng: random.Random) -> tuple[dict, list[str]]:
             tags.append("drop")
             if rng.random() < 0.4:
                 kw["v0"] = signed(rng, speed, 0.3)
-    if rng.random() < 0.3:
-        kw["at"] = "rim" if rng.random() < 0.3 else radius * rng.uniform(0, 1.2)
+    if rng.random() < 0.45:
+        y = rng.random()
+        if y < 0.2:
+            kw["at"] = "rim"
+        elif y < 0.45:
+            kw["at"] = radius * rng.uniform(0, 1.2)
+        elif y < 0.75:
+            kw["at"] = rng.choice(("top", "bottom", "bottom", "front", "back"))
+            tags.append("on the rim")
+        else:
+            kw["at"] = f"{rng.uniform(-360, 360)!r} deg"
+            tags.append("on the rim")
         tags.append("at")
     if rng.random() < 0.05:
         name = rng.choice(("pull", "v0", "omega0", "length", "height", "angle", "axle_radius"))
@@ -134,7 +185,11 @@ def check_rolling(kw: dict, report, c: Checker) -> None:
         if res.get("KE_trans") is not None and res.get("KE_rot") is not None:
             c.eq("KE = KE_trans + KE_rot", res.get("KE"), res["KE_trans"] + res["KE_rot"])
 
-    if model.startswith("yo-yo"):
+    if model.startswith("yo-yo spun in place"):
+        check_in_place(kw, res, inp, k2, m, R, g, c)
+    elif "hanging mass" in model:
+        check_hanging(kw, res, inp, k2, m, R, g, c, energies)
+    elif model.startswith("yo-yo"):
         r = inp.get("axle_radius", R)
         if "radius" not in inp and "inertia" in inp:
             q = inp["inertia"] / (m * r * r)  # I/(m r²) about the axle: no outer radius needed
@@ -228,40 +283,152 @@ def check_rolling(kw: dict, report, c: Checker) -> None:
             mu_s = inp.get("mu_s", inp.get("mu_k"))
             c.true("rolls ⇔ μs ≥ mu_min", res["rolls"] == (mu_s >= res["mu_min"]), f"rolls {res['rolls']}, μs {mu_s}, μ_min {res['mu_min']}")
         length = inp.get("length", None if "height" not in inp else inp["height"] / sin_t)
+        v0 = inp.get("v0", 0.0)  # up the slope, set rolling: it climbs, comes back, and reaches the bottom under the same a
         if length is not None and v is not None:
-            c.eq("v² = 2aL from rest", v * v, 2 * a * length)
-            c.eq("t = 2L/v", t, 2 * length / v)
-            rim_speed = v if res.get("rolls") else (alpha * R * t if alpha is not None and R is not None else None)
+            c.eq("v² = v₀² + 2aL", v * v, v0 * v0 + 2 * a * length, v0 * v0, 2 * a * length)
+            c.eq("L = −v₀t + ½at² (v₀ up the slope)", -v0 * t + a * t * t / 2, length, v0 * t, a * t * t / 2)
+            c.eq("v = −v₀ + at at the bottom", v, -v0 + a * t, v0, a * t)
+            rim_speed = v if res.get("rolls") else (-v0 + alpha * R * t if alpha is not None and R is not None else None)
             energies(v, rim_speed=rim_speed)
-        v0 = inp.get("v0", 0.0)
         if v0 > 0 and res.get("d_climb") is not None:
             c.eq("d_climb = v₀²/2a", res["d_climb"], v0 * v0 / (2 * a))
             c.eq("h_climb = d_climb sin θ", res.get("h_climb"), res["d_climb"] * sin_t)
             c.eq("t_climb = v₀/a", res.get("t_climb"), v0 / a)
 
     if kw.get("at") is not None:
-        r = R if kw["at"] == "rim" else inp["at"]
-        check_rolling_point(kw, res, inp, r, R, c)
+        check_rolling_point(kw, res, inp, R, c, model, g)
 
-def check_rolling_point(kw, res, inp, r, R, c: Checker) -> None:
-    """The point's ω and α about the centre: ω₀ (--omega0; a body set rolling at v₀/R, a yo-yo's at v₀/r;
-    a skid with no spin 0), then ω = ω₀ + αt and θ = ω₀t + ½αt² at the end; a skid's ω_roll, its α
-    while it slides (ω_roll − ω₀)/t_roll and 0 once it rolls."""
-    v0 = inp.get("v0", 0.0)
-    rolling_radius = inp.get("axle_radius", R) if kw.get("yoyo") else R
-    skid = res.get("omega_roll") is not None and res.get("t_roll") is not None
-    if "omega0" in inp:
-        w0 = inp["omega0"]
-    elif skid or not v0:
-        w0 = 0.0
-    else:
-        w0 = v0 / rolling_radius
-    if skid and res["t_roll"] > 0:
-        omega, tr = res["omega_roll"], res["t_roll"]
-        point_checks(c, res, r, omega, 0.0, (w0 + omega) * tr / 2, start=(w0, (omega - w0) / tr))
+
+def check_hanging(kw, res, inp, k2, M, R, g, c: Checker, energies) -> None:
+    """The body (M a = T − M g sin θ − f, I α = f R + c T R), the hanging mass (m a_h = m g − T₂),
+    the pulley, a uniform disc (T₂ − T = ½ m_p a_h), the string (a_h = a + c R α), with c = 1 for a
+    string from the top, 0 from the centre; rolling a = Rα, μ_min = |f|/N; slipping |f| = μk N."""
+    m, m_p = inp["hanging_mass"], inp.get("pulley_mass", 0.0)
+    lever = 1 if kw.get("string") == "top" else 0
+    theta = inp.get("angle", 0.0)
+    sin_t, cos_t = (1.0, 0.0) if theta == math.pi / 2 else (math.sin(theta), math.cos(theta))
+    normal = M * g * cos_t
+    a, alpha, f, T, T2, a_h = (res.get(key) for key in ("a", "alpha", "friction", "T", "T2", "a_hanging"))
+    if a is None:
         return
-    alpha, t = res.get("alpha"), res.get("t")
-    if alpha is not None and t is not None:
-        point_checks(c, res, r, w0 + alpha * t, alpha, w0 * t + alpha * t * t / 2, start=(w0, alpha))
+    c.eq("M a = T − M g sin θ − f", M * a, T - M * g * sin_t - f, T, M * g * sin_t, f)
+    c.eq("m a_h = m g − T₂", m * a_h, m * g - T2, m * g, T2)
+    c.eq("T₂ − T = ½ m_p a_h (the pulley)", T2 - T, m_p * a_h / 2, T2, T)
+    if alpha is not None and R is not None:
+        c.eq("I α = f R + c T R", k2 * M * R * R * alpha, f * R + lever * T * R, f * R, T * R)
+        c.eq("a_h = a + c R α (the string)", a_h, a + lever * R * alpha, a, R * alpha)
+    if res.get("rolls"):
+        c.eq("k² M a = f + c T (rolling: Iα/R with α = a/R)", k2 * M * a, f + lever * T, f, T)
+        c.eq("a_h = (1 + c) a (rolling)", a_h, (1 + lever) * a)
+        if R is not None:
+            c.eq("alpha = a/R (rolling)", alpha, a / R)
+        if normal > 0:
+            c.eq("mu_min = |f|/N", res.get("mu_min"), abs(f) / normal)
     else:
-        point_checks(c, res, r, w0, alpha, 0.0)
+        c.eq("|f| = μk N (slipping)", abs(f), inp.get("mu_k", 0.0) * normal)
+    if ("mu_s" in inp or "mu_k" in inp) and res.get("mu_min") is not None:
+        mu_s = inp.get("mu_s", inp.get("mu_k"))
+        c.true("rolls ⇔ μs ≥ mu_min", res["rolls"] == (mu_s * normal >= abs(res["mu_min"] * normal) * (1 - 1e-14)) or abs(mu_s - res["mu_min"]) < 1e-12,
+               f"rolls {res['rolls']}, μs {mu_s}, μ_min {res['mu_min']}")
+    c.true("T ≥ 0, T₂ ≥ 0 (a taut string)", T >= -1e-12 * m * g and T2 >= -1e-12 * m * g, f"T {T}, T₂ {T2}")
+    if "pulley_radius" in inp:
+        c.eq("alpha_pulley = a_h / r_p", res.get("alpha_pulley"), a_h / inp["pulley_radius"])
+    L, t = inp.get("length"), res.get("t")
+    if L is not None and t is not None:
+        c.eq("|a| t²/2 = L", abs(a) * t * t / 2, L)
+        c.eq("v = a t", res.get("v"), a * t)
+        c.eq("v_hanging = a_h t", res.get("v_hanging"), a_h * t)
+        if alpha is not None:
+            c.eq("omega = α t", res.get("omega"), alpha * t)
+        energies(res.get("v"), spin=res.get("omega"))
+
+
+def check_in_place(kw, res, inp, k2, m, R, g, c: Checker) -> None:
+    """The centre held still: T = m g, I α = T r, the hand's a = r α; after the hand pulls L,
+    ½ I (ω² − ω₀²) = T L, ω = ω₀ + α t, KE_rot = ½ I ω²."""
+    if "radius" not in inp and "inertia" in inp:
+        per_mass = inp["inertia"] / m  # I/m
+    else:
+        per_mass = k2 * R * R
+    r = inp.get("axle_radius", R)
+    c.eq("a = 0 (the centre stays put)", res["a"], 0.0, 1.0)
+    if m is not None:
+        c.eq("T = m g", res.get("T"), m * g)
+    if r is not None:
+        c.eq("I α = T r", per_mass * res["alpha"], g * r)
+        c.eq("a_hand = r α", res.get("a_hand"), r * res["alpha"])
+    L, w0, omega = inp.get("length"), inp.get("omega0", 0.0), res.get("omega")
+    if L is not None:
+        c.eq("½ I (ω² − ω₀²) = T L", per_mass * (omega * omega - w0 * w0) / 2, g * L, per_mass * omega * omega / 2)
+        if res.get("t") is not None:
+            c.eq("ω = ω₀ + α t", omega, w0 + res["alpha"] * res["t"], w0)
+        if m is not None:
+            c.eq("KE_rot = ½ I ω²", res.get("KE_rot"), m * per_mass * omega * omega / 2)
+
+
+def _instant(kw, res, inp, R, model):
+    """The body at the point's instant, from the report and the physics: (v, ω, a, α, θ, end)
+    with x forward (the sense a is positive in), ω and α in the rolling sense of x; θ the angle
+    turned by the end; end: whether it is the end of the run (else the start)."""
+    v0 = inp.get("v0", 0.0)
+    a, alpha = res.get("a"), res.get("alpha")
+    if "skidding" in model:
+        w0 = inp.get("omega0", 0.0)
+        tr, v_roll, w_roll = res.get("t_roll"), res.get("v_roll"), res.get("omega_roll")
+        if tr is None or tr == 0:
+            return v0, w0, 0.0, 0.0, 0.0, False
+        if w_roll is None:
+            return v0, w0, (v_roll - v0) / tr, None, 0.0, False
+        return v_roll, w_roll, 0.0, 0.0, (w0 + w_roll) * tr / 2, True, (w0, (w_roll - w0) / tr)
+    if model.startswith("yo-yo spun in place"):
+        w0, v_start = inp.get("omega0", 0.0), 0.0
+    elif model.startswith("yo-yo"):
+        r = inp.get("axle_radius", R)
+        w0, v_start = (0.0 if not v0 else v0 / r), v0
+    elif "on the flat" in model and "rolling without slipping" in model and "pull" not in kw and "hanging_mass" not in kw:
+        return v0, v0 / R if R is not None else None, 0.0, 0.0, 0.0, False
+    elif "pull" in kw or "hanging_mass" in kw:
+        w0, v_start = 0.0, 0.0
+    else:  # an incline: v0 up the slope, x down it
+        w0, v_start = (0.0 if not v0 else -v0 / R if R is not None else None), -v0
+    t = res.get("t")
+    if t is None or a is None or alpha is None or w0 is None:
+        return v_start, w0, a, alpha, 0.0, False
+    v_end = v_start + a * t
+    return v_end, w0 + alpha * t, a, alpha, w0 * t + alpha * t * t / 2, True, (w0, alpha)
+
+
+def check_rolling_point(kw, res, inp, R, c: Checker, model, g) -> None:
+    """At a radius: the point's ω and α about the centre (ω₀ --omega0; a body set rolling at
+    v₀/R, on a slope −v₀/R as x points down it; a yo-yo's v₀/r; a skid's 0), then ω = ω₀ + αt and
+    θ = ω₀t + ½αt² at the end; a skid's α while it slides, 0 once it rolls. On the rim seen from
+    the ground: v + ω × r and a + α × r − ω² r, with the bottom at rest while it rolls."""
+    at = kw["at"]
+    found = _instant(kw, res, inp, R, model)
+    v, omega, a, alpha, theta, end = found[:6]
+    if at in ("top", "bottom", "front", "back") or (isinstance(at, str) and at.endswith("deg")):
+        if omega is None or v is None:
+            return
+        phi = {"top": 0.0, "front": math.pi / 2, "bottom": math.pi, "back": -math.pi / 2}.get(at)
+        phi = inp["at"] if phi is None else phi
+        r = (R * math.sin(phi), R * math.cos(phi))
+        # ω as a vector: −ω ẑ (the rolling sense of +x when y is up); ω × r = −ω (ẑ × r) = −ω (−r_y, r_x) = ω (r_y, −r_x)
+        vx, vy = v + omega * r[1], -omega * r[0]
+        c.eq("v_ground = |v + ω × r|", res.get("v_ground"), math.hypot(vx, vy), abs(v), abs(omega * R))
+        if res.get("v_ground"):
+            c.eq("v_ground_angle = atan2(v_y, v_x) (on the circle)", math.remainder(res["v_ground_angle"] - math.atan2(vy, vx), 2 * math.pi), 0.0, 1.0)
+        if res.get("rolls") and at == "bottom" and "skidding" not in model:
+            c.eq("v_ground = 0 at the bottom while it rolls", res.get("v_ground"), 0.0, abs(v))
+        if a is not None and alpha is not None:
+            ax = a + alpha * r[1] - omega * omega * r[0]
+            ay = -alpha * r[0] - omega * omega * r[1]
+            scale = max(abs(a), abs(alpha * R), omega * omega * R)
+            c.eq("a_ground = |a + α × r − ω² r|", res.get("a_ground"), math.hypot(ax, ay), scale)
+            if res.get("a_ground") and res["a_ground"] > 1e-9 * scale:
+                c.eq("a_ground_angle = atan2(a_y, a_x) (on the circle)", math.remainder(res["a_ground_angle"] - math.atan2(ay, ax), 2 * math.pi), 0.0, 1.0)
+        return
+    r = R if at == "rim" else inp["at"]
+    if end:
+        point_checks(c, res, r, omega, alpha if "skidding" not in model else 0.0, theta, start=found[6])
+    else:
+        point_checks(c, res, r, omega, alpha, 0.0)

@@ -2,8 +2,9 @@
 function that reads the options, picks the model and solves it:
 
     pulley.py         the pulley: I from a mass and a shape, a given I or parts; axle friction
-    slope.py          where m2 is: hanging, on a table or a slope; the friction under it
-    machine.py        the machine, the string gripping the pulley: a, T1, T2, statics (solve)
+    slope.py          where each block is: hanging, on a table or a slope; the friction under it
+    machine.py        the machine, the strings gripping the pulley: a, T1, T2 (solve_machine)
+    statics.py        the tensions at rest: what statics fixes, and bounds where it does not
     steps.py          the machine's worked steps
     stepped.py        a stepped pulley, each string on its own step (solve_stepped)
     capstan.py        a string that may slide over the rim (solve_rim)
@@ -20,13 +21,13 @@ from taucli.errors import InputError
 from taucli.report import Report
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.atwood.capstan import solve_rim
-from taucli.scenes.atwood.machine import solve
+from taucli.scenes.atwood.machine import Machine, solve, solve_machine
 from taucli.scenes.atwood.pulley import Pulley, with_parts
 from taucli.scenes.atwood.pulley_point import on_the_pulley
-from taucli.scenes.atwood.slope import HANGING, Slope
+from taucli.scenes.atwood.slope import HANGING, Slope, side_of
 from taucli.scenes.atwood.stepped import solve_stepped, step_radii
 
-__all__ = ["HANGING", "Pulley", "Slope", "atwood", "solve", "solve_rim", "solve_stepped"]
+__all__ = ["HANGING", "Machine", "Pulley", "Slope", "atwood", "solve", "solve_machine", "solve_rim", "solve_stepped"]
 
 
 def atwood(
@@ -38,29 +39,37 @@ def atwood(
     pulley_shape: str | None = None,
     pulley_inertia: float | None = None,
     axle_friction: float | None = None,
+    side1=None,
+    side2=None,
     incline: float | None = None,
     mu_k: float | None = None,
     mu_s: float | None = None,
+    pull: Sequence = (),
+    torque: float | None = None,
     g: float | None = None,
     v0: float | None = None,
     distance: float | None = None,
     time: float | None = None,
     radius1: float | None = None,
     radius2: float | None = None,
+    same_side: bool = False,
     rim_mu: float | None = None,
     wrap: float | None = None,
     part: Sequence = (),
     at: float | None = None,
 ) -> Report:
-    """``taucli atwood``: m2 hangs unless --incline puts it on a slope; the pulley is massless
-    unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia; a
-    stepped pulley with --radius1/--radius2; a string that may slide with --rim-mu; --at r, a
-    point on the pulley."""
-    if at is not None:  # the machine, then the point on its pulley
+    """``taucli atwood``: m1 and m2 hang unless --side1/--side2 (or --incline for m2) put them on a
+    table or a slope; pulls on them (--pull) and a drive on the pulley (--torque); the pulley is
+    massless unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia;
+    a stepped pulley with --radius1/--radius2, both strings on one side with --same-side; a
+    string that may slide with --rim-mu; --at r, a point on the pulley; t_stop and distance_stop
+    with --v0."""
+    if at is not None:  # the machine, then the point on its pulley (#34: every option passed on, --wrap was left out)
+        machine = dict(m1=m1, m2=m2, pulley_mass=pulley_mass, pulley_radius=pulley_radius, pulley_shape=pulley_shape, pulley_inertia=pulley_inertia,
+                       axle_friction=axle_friction, side1=side1, side2=side2, incline=incline, mu_k=mu_k, mu_s=mu_s, pull=pull, torque=torque, g=g,
+                       radius1=radius1, radius2=radius2, same_side=same_side, rim_mu=rim_mu, wrap=wrap, part=part)
         if rim_mu is not None:
             raise InputError("at", "does not apply with {rim_mu}: where the string slides the pulley's own turning is not followed in time")
-        machine = dict(m1=m1, m2=m2, pulley_mass=pulley_mass, pulley_radius=pulley_radius, pulley_shape=pulley_shape, pulley_inertia=pulley_inertia,
-                       axle_friction=axle_friction, incline=incline, mu_k=mu_k, mu_s=mu_s, g=g, radius1=radius1, radius2=radius2, part=part)
         report = atwood(**machine, v0=v0, distance=distance, time=time)
 
         def from_rest() -> float | None:  # once the masses have stopped: held (α = 0), or the other way at the machine's α from rest
@@ -68,39 +77,61 @@ def atwood(
 
         return on_the_pulley(report, at, pulley_radius, radius1, radius2, v0 or 0.0, distance, time, from_rest)
 
-    if m1 is None:
-        raise InputError("m1", "is required", example="{m1} 4kg")
     assumed = Assumed()
+    pulled = {number: [p for p in pull if p.on == number] for number in (1, 2)} if pull else {1: (), 2: ()}
+    if m1 is None:
+        if not pulled[1]:
+            raise InputError("m1", "is required", example="{m1} 4kg", hint='or a {pull} "force=… on=1" on the string\'s end in its place')
+        assumed.notes.append("no --m1: the string's end on side 1 pulled by hand (--pull), nothing hanging there")
     if m2 is None:
-        assumed.notes.append("no --m2: a single mass on a string wound on the pulley")
-    pulley = Pulley(pulley_mass or 0.0, pulley_radius, pulley_shape, pulley_inertia, axle_friction or 0.0)
-    if part:
-        pulley = with_parts(pulley, part, assumed)
+        if side2 is not None:
+            raise InputError("side2", "needs {m2} (the block it places)", example='{m2} 1kg {side2} "table mu-k=0.2"')
+        assumed.notes.append("no --m2: the string's end on side 2 pulled by hand (--pull)" if pulled[2] else "no --m2: a single mass on a string wound on the pulley")
+    if side2 is not None and (incline is not None or mu_k is not None or mu_s is not None):
+        given = next(name for name, value in (("incline", incline), ("mu_k", mu_k), ("mu_s", mu_s)) if value is not None)
+        raise InputError(given, "conflicts with {side2}: give m2's surface once (--incline, --mu-k and --mu-s say what --side2 does)",
+                         example='{side2} "incline angle=30deg mu-k=0.2"')
     if wrap is not None and rim_mu is None:
         raise InputError("wrap", "needs {rim_mu} (the wrap matters only where the string may slide)", example="{rim_mu} 0.3 {wrap} 180deg")
-
-    if radius1 is not None or radius2 is not None:  # a stepped pulley
-        r1, r2 = step_radii(radius1, radius2, pulley_radius)
-        _refuse("does not apply with a stepped pulley ({radius1}, {radius2}): both masses hang, their strings fixed to their steps",
-                incline=incline, rim_mu=rim_mu, mu_k=mu_k, mu_s=mu_s)
-        gravity = assumed.gravity(g)
-        return assumed.applied(solve_stepped(m1, m2 or 0.0, pulley, gravity, r1, r2, v0=v0 or 0.0, distance=distance, time=time))
+    stepped = radius1 is not None or radius2 is not None
+    r1, r2 = step_radii(radius1, radius2, pulley_radius) if stepped else (None, None)
+    pulley = Pulley(pulley_mass or 0.0, pulley_radius, pulley_shape, pulley_inertia, axle_friction or 0.0)
+    if part:
+        pulley = with_parts(pulley, part, assumed, None if not stepped else max(r1, r2))
 
     if rim_mu is not None:  # a string that may slide over the rim
         _refuse("does not apply with {rim_mu} here: a string that may slide is solved for two hanging masses on a pulley free on its axle",
-                incline=incline, axle_friction=axle_friction, mu_k=mu_k, mu_s=mu_s)
+                incline=incline, axle_friction=axle_friction, mu_k=mu_k, mu_s=mu_s, side1=side1, side2=side2, pull=pull or None, torque=torque,
+                radius1=radius1, radius2=radius2, same_side=same_side or None)
         if not m1 or not m2:
             raise InputError("m1" if not m1 else "m2", "must be more than 0 with {rim_mu}: a string with nothing on one end slides off (a string wound on the pulley is fixed to it)")
         gravity = assumed.gravity(g)
-        return assumed.applied(solve_rim(m1, m2, pulley, gravity, rim_mu, math.pi if wrap is None else wrap, v0=v0 or 0.0, distance=distance, time=time))
+        return assumed.applied(solve_rim(m1, m2, pulley, gravity, rim_mu, math.pi if wrap is None else wrap, v0=v0 or 0.0, distance=distance, time=time,
+                                           stop=v0 is not None))
 
-    # the machine. friction.py's rule: neither coefficient given, a smooth surface (μk = 0); only μs, μk unknown
-    slope = Slope(HANGING if incline is None else incline, 0.0 if mu_k is None and mu_s is None else mu_k, mu_s)
+    # friction.py's rule under each block: neither coefficient given, a smooth surface (μk = 0); only μs, μk unknown
+    if side2 is not None:
+        place2, option2 = side_of(side2, "side2"), "side2"
+    else:
+        place2, option2 = Slope(HANGING if incline is None else incline, 0.0 if mu_k is None and mu_s is None else mu_k, mu_s), "incline"
     gravity = assumed.gravity(g)
-    return assumed.applied(solve(m1, m2 or 0.0, pulley, gravity, slope=slope, v0=v0 or 0.0, distance=distance, time=time))
+    built = Machine(
+        m1 or 0.0, m2 or 0.0, pulley, gravity, side_of(side1, "side1"), place2, _pulls(pulled[1]), _pulls(pulled[2]), torque or 0.0,
+        None if not stepped else (r1, r2), same_side, ("side1", option2),
+    )
+    return assumed.applied(solve_machine(built, v0=v0 or 0.0, distance=distance, time=time, stop=v0 is not None))
 
 
-def _refuse(why: str, **options: float | None) -> None:
+def _pulls(pulls) -> tuple[float, float]:
+    """The pulls on one block, summed: along its path away from the pulley, and lifting it off its surface."""
+    if not pulls:
+        return 0.0, 0.0
+    along = math.fsum(p.force * (1.0 if p.angle == 0 else math.cos(p.angle)) for p in pulls)
+    lift = math.fsum(p.force * math.sin(p.angle) for p in pulls)
+    return along + 0.0, lift + 0.0
+
+
+def _refuse(why: str, **options) -> None:
     """An InputError for the first of ``options`` given (in the order named): it does not apply, ``why``."""
     for name, value in options.items():
         if value is not None:

@@ -8,7 +8,7 @@ import math
 
 from taucli.options.atwood import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, deferred, fmt, quantity_text, term
-from taucli.scenes.atwood.machine import solve
+from taucli.scenes.atwood.machine import Machine, solve_machine
 from taucli.scenes.atwood.pulley import Pulley
 from taucli.scenes.atwood.travel import evolve_exact, put_motion, trajectory
 from taucli.scenes.motion import Loads
@@ -16,7 +16,8 @@ from taucli.table import Results
 
 
 def solve_rim(
-    m1: float, m2: float, pulley: Pulley, g: float, rim_mu: float, wrap: float, *, v0: float = 0.0, distance: float | None = None, time: float | None = None
+    m1: float, m2: float, pulley: Pulley, g: float, rim_mu: float, wrap: float, *, v0: float = 0.0, distance: float | None = None,
+    time: float | None = None, stop: bool = False,
 ) -> Report:
     """A string that may slide over the rim. The capstan limit T_high/T_low ≤ e^{μβ} decides:
     within it the string grips (``solve``'s answer); past it the string slides, the tensions are
@@ -28,7 +29,7 @@ def solve_rim(
     giving a = g (m1 − E m2)/(m1 + E m2), T2 = 2 m1 m2 g/(m1 + E m2), E = e^{μβ} (and the
     mirror image when m2 goes down). At μ = ln(T1/T2)/β the two answers meet.
     """
-    grip = solve(m1, m2, pulley, g, v0=v0, distance=distance, time=time)  # its checks first
+    grip = solve_machine(Machine(m1, m2, pulley, g), v0=v0, distance=distance, time=time, stop=stop)  # its checks first
     grip_tension1, grip_tension2 = grip.results["T1"].value, grip.results["T2"].value
     high, low = max(grip_tension1, grip_tension2), min(grip_tension1, grip_tension2)
     # the least μ that grips: ln(T_high/T_low)/β, with T_high − T_low = (I/R²)|a| from the pulley's
@@ -78,7 +79,7 @@ def solve_rim(
     if pulley.radius is None:
         notes.append("alpha: give --pulley-radius for the pulley's angular acceleration (a_rim does not need it)")
     motion = evolve_exact(1.0, Loads(drive=a), v0)  # no friction that depends on the masses' speed: uniform a
-    put_motion(results, motion, distance, time, notes)
+    put_motion(results, motion, distance, time, notes, stop=stop)
     steps = DeferredSteps(lambda: [
         Step("For m₁ and m₂", "m₁g − T₁ = m₁a,  T₂ − m₂g = m₂a", "", "", "each mass's weight and its string's tension"),
         _capstan_step(high, low, rim_mu, wrap, rim_mu_min, False),

@@ -69,14 +69,21 @@ def check_pulley(m1: float, m2: float, pulley: Pulley, *, radius_needed: bool = 
         raise InputError("pulley_shape", "expected disc or ring", example="{pulley_shape} ring", got=repr(pulley.shape))
 
 
-def with_parts(pulley: Pulley, parts: Sequence, assumed: Assumed) -> Pulley:
+def with_parts(pulley: Pulley, parts: Sequence, assumed: Assumed, steps: float | None = None) -> Pulley:
     """The pulley with its parts: I = I of --pulley-inertia or of --pulley-mass (Σ over one axle adds),
-    plus each part's moment about the axle (taucli.scenes.inertia, parallel axes included)."""
-    if pulley.radius is None:
+    plus each part's moment about the axle (taucli.scenes.inertia, parallel axes included).
+
+    A stepped pulley's strings leave at their steps (``steps``: the larger one's radius), so the
+    parts' own I needs no --pulley-radius there; a mass given beside them is taken out to the
+    pulley's radius, or to the larger step, as solve_stepped takes it."""
+    rim = pulley.radius if pulley.radius is not None else steps
+    if rim is None:
         raise InputError("pulley_radius", "is required with {part} (the pulley adds I/R² to the moving mass)", example="{pulley_radius} 0.1m")
     if pulley.inertia is not None and pulley.mass:
         raise InputError("pulley_inertia", "conflicts with {pulley_mass} and {pulley_shape}: give one description of the pulley")
-    own_inertia = pulley.inertia if pulley.inertia is not None else Pulley.SHAPE_FACTORS[pulley.shape or "disc"] * pulley.mass * pulley.radius**2
+    own_inertia = pulley.inertia if pulley.inertia is not None else Pulley.SHAPE_FACTORS[pulley.shape or "disc"] * pulley.mass * rim**2
+    if pulley.mass and pulley.radius is None:
+        assumed.notes.append(f"no --pulley-radius: the pulley's mass taken out to the larger step, R = {fmt(rim)} m; --pulley-radius or --pulley-inertia to change it")
     from taucli.scenes.inertia import body_inertia  # deferred: bodies and the shapes' table (6 ms), only for a pulley of parts
 
     added = body_inertia(parts)

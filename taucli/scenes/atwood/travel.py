@@ -19,8 +19,10 @@ def evolve_exact(mass: float, loads: Loads, v0: float) -> Motion:
     return evolve(mass, loads, v0, Evolver(Method("exact")))
 
 
-def put_motion(results: Results, motion, distance: float | None, time: float | None, notes: list[str]) -> None:
-    """t and v after --distance, v and the displacement at --time: m1's, as solve gives them."""
+def put_motion(results: Results, motion, distance: float | None, time: float | None, notes: list[str], *, stop: bool = False) -> None:
+    """t and v after --distance, v and the displacement at --time: m1's, as solve gives them;
+    with ``stop``, when and where the masses first stop (t_stop, distance_stop: 0 where they
+    never move, null where they never stop)."""
     if distance is not None:
         reached = time_to_travel(motion, distance)
         if reached is None:
@@ -34,6 +36,22 @@ def put_motion(results: Results, motion, distance: float | None, time: float | N
         results.put("distance", displacement, f" at t = {fmt(time)} s")
         if distance is not None:
             notes.append("v is given at the distance; distance at the time")
+    if stop:
+        if motion.held_from_start:
+            results.put("t_stop", 0.0)
+            results.put("distance_stop", 0.0)
+        elif motion.stop is None:
+            results.put("t_stop", None)
+            results.put("distance_stop", None)
+            notes.append("t_stop, distance_stop: null, because the masses never stop: "
+                         + ("the net force is along their motion" if motion.first.closed.omega0 else "set going from rest, they speed up"))
+        elif not all(map(math.isfinite, motion.signed_stop)):  # friction so slight the stop is beyond a double's reach
+            results.put("t_stop", None)
+            results.put("distance_stop", None)
+            notes.append("t_stop, distance_stop: null, because the stop is too far off to be represented (the friction against the motion is that slight)")
+        else:
+            results.put("t_stop", motion.signed_stop[0])
+            results.put("distance_stop", motion.signed_stop[1])
 
 
 def time_to_travel(motion, distance: float) -> float | None:

@@ -36,7 +36,10 @@ def solve_incline(
     v0: float = 0.0,
 ) -> Report:
     """Roll or slip on a slope of ``angle`` (0 to 90°); with --length or --height, the state at
-    the bottom; with v0 > 0 (up the slope), how far it climbs.
+    the bottom; with v0 > 0 (set rolling up the slope, ω₀ = v₀/R), how far it climbs, and with a
+    length too, the bottom after it rolls back: v = √(v₀² + 2aL), L = −v₀t + ½at² (v0 < 0: set
+    rolling down it). The climb and the way back share a: rolling, and sliding too, for a body
+    set rolling slides with its contact moving down the slope, so friction points up it both ways.
 
     Friction coefficients follow friction.py's rule: only μk given, μs = μk; slipping with no μk,
     what needs it is null. On a vertical face (90°) there is no normal force and so no friction:
@@ -112,11 +115,20 @@ def solve_incline(
             results.put("v", None, " at the bottom")
             results.put("t", None, " to the bottom")
         else:
-            speed = math.sqrt(2 * a * slope_length)
-            duration = 2 * slope_length / speed
-            results.put("v", speed, " at the bottom, from rest")
+            # set off at v₀ up the slope (or −v₀ down it), it climbs, comes back past its start under
+            # the same a (rolling; or sliding, friction up the slope throughout), and reaches the bottom:
+            # L = −v₀t + ½at², v = √(v₀² + 2aL); t as a sum of positive terms either way
+            speed = math.sqrt(v0 * v0 + 2 * a * slope_length)
+            duration = (speed + v0) / a if v0 > 0 else 2 * slope_length / (speed - v0)
+            after = ", from rest" if not v0 else ", after its climb" if v0 > 0 else ", set rolling down it at v₀"
+            results.put("v", speed, " at the bottom" + after)
             results.put("t", duration, " to the bottom")
-            rim_speed = speed if rolls else (friction_per_mass / k2 * duration if friction_per_mass else 0.0)  # R ω at the bottom
+            if v0:
+                notes.append(f"{{v0}} with {{length}} or {{height}}: set rolling at {fmt(abs(v0))} m/s {'up' if v0 > 0 else 'down'} the slope "
+                             f"{fmt(slope_length)} m from the bottom{', it climbs, stops, and rolls back past its start' if v0 > 0 else ''}: "
+                             "v and t are at the bottom")
+            spin_up = friction_per_mass / k2 * duration if friction_per_mass else 0.0  # R α t while it slides
+            rim_speed = speed if rolls else spin_up - v0  # R ω at the bottom, set rolling at R ω₀ = v₀ up the slope
             if mass is not None:
                 results.put("KE_trans", 0.5 * mass * speed**2, " at the bottom")
                 results.put("KE_rot", 0.5 * k2 * mass * rim_speed**2, " at the bottom")
@@ -132,10 +144,12 @@ def solve_incline(
             results.put("d_climb", climb)
             results.put("h_climb", climb * sin_a)
             results.put("t_climb", v0 / deceleration)
+    elif v0 < 0 and slope_length is None:
+        notes.append("{v0} negative: set rolling down the slope, it does not climb; {length} or {height} for the bottom")
     if a is None:
         needs_kinetic(", ".join(name for name in ("a", "alpha", "friction", "v", "t", "d_climb", "h_climb", "t_climb") if name in results), notes)
 
-    steps = DeferredSteps(_incline_steps, roller, angle, g, static, mu_k, mu_min, rolls, a, results, slope_length)
+    steps = DeferredSteps(_incline_steps, roller, angle, g, static, mu_k, mu_min, rolls, a, results, slope_length, v0)
     model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) on a {fmt(math.degrees(angle))}° slope, "
     if vertical:
         model = f"{roller.description} (k² = I/mR² = {fmt(k2)}) falling along a vertical face (no normal force, no friction)"
@@ -148,6 +162,13 @@ def solve_incline(
 def _incline_trajectory(a: float, v0: float, results: dict[str, Value]) -> Trajectory:
     """Distance and speed along the slope: down it from rest to the bottom, or up it to the highest point."""
     curves = (("x", "m", "distance along the slope"), ("v", "m/s", "speed along the slope"))
+    bottom = results["t"].value if "t" in results else None
+    if v0 and (bottom is not None or v0 < 0):  # set off up (or down) the slope, to the bottom: x and v down the slope
+        curves = (("x", "m", "distance down the slope from the start"), ("v", "m/s", "velocity down the slope"))
+        if bottom is None:
+            return Trajectory(curves, 1.0, lambda t: (-v0 * t + a * t * t / 2, -v0 + a * t), note="plotted for 1 s; --length or --height to change")
+        marks = (((results["t_climb"].value, "highest point"),) if v0 > 0 and "t_climb" in results else ()) + ((bottom, "reaches the bottom"),)
+        return Trajectory(curves, bottom, lambda t: (-v0 * t + a * t * t / 2, -v0 + a * t), marks=marks)
     if v0 > 0 and "t_climb" in results:
         top = results["t_climb"].value
         return Trajectory(curves, top, lambda t: (v0 * t - a * t * t / 2, v0 - a * t), marks=((top, "highest point"),))
@@ -155,13 +176,12 @@ def _incline_trajectory(a: float, v0: float, results: dict[str, Value]) -> Traje
         return Trajectory(curves, 1.0, lambda t: (v0 * t - a * t * t / 2, v0 - a * t), note="plotted for 1 s: it does not come back")
     if a <= 0:
         return Trajectory(curves, 1.0, lambda t: (0.0, 0.0), note="plotted for 1 s: it stays at rest")
-    bottom = results["t"].value if "t" in results else None
     if bottom is None:
         return Trajectory(curves, 1.0, lambda t: (a * t * t / 2, a * t), note="plotted for 1 s; --length or --height to change")
     return Trajectory(curves, bottom, lambda t: (a * t * t / 2, a * t), marks=((bottom, "reaches the bottom"),))
 
 
-def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, results, slope_length=None) -> list[Step]:
+def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, results, slope_length=None, v0=0.0) -> list[Step]:
     k2 = roller.k2
     degrees = fmt(math.degrees(angle))
     steps = [
@@ -205,17 +225,25 @@ def _incline_steps(roller, angle, g, mu_s, mu_k, mu_min, rolls, a, results, slop
                 "the contact slides, so friction takes its kinetic value and a no longer equals Rα",
             )
         )
-    if "v" in results and results["v"].value is not None:
+    if "v" in results and results["v"].value is not None and not v0:
         steps.append(
             Step("Speed and time at the bottom (uniform acceleration from rest)", "v = √(2 a L),  t = 2L / v",
                  f"√(2 × {term(a, 'm/s**2')} × {term(slope_length, 'm')}),  2 × {term(slope_length, 'm')} / {term(results['v'].value, 'm/s')}",
                  f"{quantity_text(results['v'].value, 'm/s')}, {quantity_text(results['t'].value, 's')}", "constant a along the slope")
         )
-        if rolls:
-            steps.append(
-                Step("Energy check", "m g h = ½ m v² + ½ I ω² = ½ m v² (1 + k²)", "", "",
-                     f"a share k²/(1 + k²) = {fmt(100 * k2 / (1 + k2), 3)}% of the kinetic energy is rotation; no energy is lost to static friction")
-            )
+    elif "v" in results and results["v"].value is not None:
+        equation = "v = √(v₀² + 2 a L),  t = (v + v₀) / a" if v0 > 0 else "v = √(v₀² + 2 a L),  t = 2L / (v + |v₀|)"
+        steps.append(
+            Step("Speed and time at the bottom (uniform acceleration from v₀ up the slope)", equation,
+                 f"√(({term(abs(v0), 'm/s')})² + 2 × {term(a, 'm/s**2')} × {term(slope_length, 'm')})",
+                 f"{quantity_text(results['v'].value, 'm/s')}, {quantity_text(results['t'].value, 's')}",
+                 "the same a down the slope going up and coming back (friction up the slope throughout): L = −v₀t + ½at², v₀ up the slope positive")
+        )
+    if "v" in results and results["v"].value is not None and rolls:
+        steps.append(
+            Step("Energy check", "m g h = ½ m v² + ½ I ω² = ½ m v² (1 + k²)" if not v0 else "m g h = ½ m (v² − v₀²) (1 + k²)", "", "",
+                 f"a share k²/(1 + k²) = {fmt(100 * k2 / (1 + k2), 3)}% of the kinetic energy is rotation; no energy is lost to static friction")
+        )
     if "d_climb" in results and results["d_climb"].value is not None:
         steps.append(Step("How far it climbs", "d = v₀² / (2a)", "", quantity_text(results["d_climb"].value, "m"), "going up, the same a slows it"))
     return steps

@@ -72,6 +72,7 @@ def spin_down(
     until_arc: float | None = None,
     alpha: float | None = None,
     in_time: float | None = None,
+    in_angle: float | None = None,
     power: float | None = None,
     ke0: float | None = None,
     rim_speed: float | None = None,
@@ -106,8 +107,13 @@ def spin_down(
     torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent, static)
     targets = {"time": time, "until_omega": until_omega, "until_angle": until_angle}
 
-    # The model: constant α, a motor of constant power, the drive that meets a target in a time, or the torque laws.
-    if alpha is not None or wheel.inertia is None:
+    if in_angle is not None:  # ω₁ within an angle: the target angle is given, and the drive (or α) is what meets it
+        in_angle = _within_angle(in_angle, until_omega, targets, in_time, alpha, torque, push, power)
+        targets = {**targets, "until_angle": in_angle}
+
+    # The model: constant α, a motor of constant power, the drive that meets a target in a time or
+    # an angle, or the torque laws.
+    if (alpha is not None or wheel.inertia is None) and in_angle is None:
         report, targets = _at_constant_alpha(wheel, torques, omega0, alpha, power, in_time, targets, front)
     elif power is not None:
         if in_time is not None:
@@ -116,6 +122,8 @@ def spin_down(
             raise InputError("power", "conflicts with {force}: give the motor's power or the push")
         report = power_report(wheel.inertia, wheel.steps, power, torques, omega0 or 0.0, **targets, method=method, dt=dt, rtol=rtol)
         report = _with_front(report, front.results, front.notes, front.steps)
+    elif in_angle is not None:
+        report, targets, torques = _in_angle(wheel, torques, omega0, in_angle, targets, front, method, dt, rtol)
     elif in_time is not None:
         if torque is not None or push is not None:
             raise InputError("in_time", "asks for the drive torque that meets the target, so it conflicts with a drive ({torque}, {force}, {power})")
@@ -223,6 +231,38 @@ def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: di
                        f"τ = {quantity_text(torques.drive, 'N*m')}")
     front.results.put("torque", torques.drive, " that meets the target")
     targets = {"time": in_time, "until_omega": None, "until_angle": None}
+    return _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), targets, torques
+
+
+def _within_angle(in_angle: float, until_omega, targets: dict, in_time, alpha, torque, push, power) -> float:
+    """--in-angle asks for the α (and with a body the drive) that brings the wheel to --until-omega
+    within the angle: it needs that target and no other, and no drive of its own."""
+    if until_omega is None:
+        raise InputError("in_angle", "needs {until_omega}: the speed to reach within the angle", example="{until_omega} 120rpm {in_angle} 20rev")
+    for name, value in (("until_angle", targets["until_angle"]), ("time", targets["time"]), ("in_time", in_time), ("alpha", alpha)):
+        if value is not None:
+            raise InputError(name, "conflicts with {in_angle}: the angle and the speed fix α (and the time)")
+    for name, value in (("torque", torque), ("force", push), ("power", power)):
+        if value is not None:
+            raise InputError("in_angle", f"asks for the drive torque that meets the target, so it conflicts with {{{name}}}")
+    return in_angle
+
+
+def _in_angle(wheel: Wheel, torques: Torques, omega0, in_angle: float, targets: dict, front: Front, method, dt, rtol) -> tuple[Report, dict, Torques]:
+    """The constant drive that brings the wheel to --until-omega once it has turned --in-angle: at
+    constant α where the losses do not change with ω (ω₁² = ω₀² + 2αθ, α = (ω₁² − ω₀²)/(2θ)),
+    else by bisection on the motion; without a body, the kinematics alone."""
+    until_omega = targets["until_omega"]
+    if wheel.inertia is None or (not torques.viscous and not torques.drag):
+        report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, None, time=None, until_omega=until_omega,
+                                       until_angle=in_angle, front=(front.steps, front.notes, front.results))
+        return _with_front(report, front.results), targets, torques
+    torques = drive_for_target(wheel.inertia, torques, omega0 or 0.0, None, until_omega, None, method, dt, rtol, in_angle=in_angle)
+    front.notes.append(f"the constant drive torque that brings the wheel to ω = {quantity_text(until_omega, 'rad/s')} within θ = "
+                       f"{quantity_text(in_angle, 'rad')}, found by bisection on the motion: τ = {quantity_text(torques.drive, 'N*m')}")
+    front.results.put("torque", torques.drive, " that meets the target")
+    # Timed to the speed, not the angle: at a stop dθ/dt = 0, and a time to an angle would keep half the digits.
+    targets = {"time": None, "until_omega": until_omega, "until_angle": None}
     return _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), targets, torques
 
 

@@ -8,6 +8,8 @@ that Coulomb friction stops the wheel and holds it rather than chattering about 
 
 from __future__ import annotations
 
+import math
+
 from collections.abc import Sequence
 
 from taucli.errors import InputError
@@ -283,19 +285,28 @@ def _kinematics_steps(torques, first, second, stop, results, time, method, omega
     return steps
 
 
-def drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, until_angle, method, dt, rtol) -> Torques:
-    """The constant drive with which the wheel is at ω₁ (or has turned θ) at t: ω(t) and θ(t) grow
-    with the drive, so bisection brackets it; to the last bit of a double."""
+def drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, until_angle, method, dt, rtol, in_angle=None) -> Torques:
+    """The constant drive with which the wheel is at ω₁ (or has turned θ) at t, or (``in_angle``)
+    is at ω₁ when it has turned that angle: ω(t), θ(t) and ω(θ) grow with the drive (a wheel that
+    stops short of the angle is below any ω₁ ≥ 0), so bisection brackets it; to the last bit."""
     closed_form = torques.drag == 0 or torques.drag_exponent == 2
     evolver_method = choose_method(method, closed_form, dt, rtol)
 
     def miss(drive: float) -> float:
         trial = Torques(drive, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)
-        omega, theta = evolve(inertia, trial, omega0, Evolver(evolver_method)).state_at(in_time)
+        motion = evolve(inertia, trial, omega0, Evolver(evolver_method))
+        if in_angle is not None:
+            reached = motion.reach_angle(in_angle)
+            if reached is None:  # stopped short: too little drive turning forward, too much turning back
+                return -math.inf if in_angle > 0 else math.inf
+            return reached[1] - until_omega
+        omega, theta = motion.state_at(in_time)
         return omega - until_omega if until_omega is not None else theta - until_angle
 
+    if in_angle is not None:
+        in_time = 2 * abs(in_angle) / max(abs(omega0) + abs(until_omega), 1e-300)  # the time at the mean speed, a scale
     target = until_omega if until_omega is not None else until_angle
-    scale = max(abs(target) / in_time, abs(omega0), 1.0)
+    scale = max(abs(target) / in_time, abs(omega0), abs(until_omega or 0.0), 1.0)
     size = inertia * scale / in_time + torques.friction + torques.viscous * scale + torques.drag * scale**torques.drag_exponent
     low, high = -size, size
     for _ in range(200):

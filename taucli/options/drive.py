@@ -1,0 +1,125 @@
+"""taucli drive: a motor turning a load through a ratio: reflected inertia, torques, a move's RMS torque."""
+
+from dataclasses import replace
+
+from taucli.options.common import ANSWER, BODY_OPTIONS, GRAVITY, MOTION
+from taucli.table import FLAG, Command, Option, Result
+
+MOTOR = "Motor"
+TRAIN = "Drive train"
+LOAD = "Load (a rotating body at the output, a mass moved in a line, what resists)"
+PROFILE = "Move profile (accelerate, run, decelerate, dwell)"
+
+# The rotating load at the output shaft: --load-inertia, or a shape and its dimensions, or parts.
+LOAD_BODY = tuple(
+    replace(option, panel=LOAD, help=option.help.replace("the body", "the rotating load").replace("The body", "The rotating load"))
+    for option in BODY_OPTIONS
+    if option.name != "inertia"
+)
+
+COMMAND = Command(
+    name="drive",
+    summary="A motor turning a load through a ratio: the inertia it sees, the torques it gives, a move's RMS torque.",
+    description=(
+        "The load (a rotating body at the output shaft; a mass moved by a drum, belt, pinion or screw) is "
+        "reflected to the motor through the stages --ratio (N, motor speed over output speed): J/N², the "
+        "torque T/(Nη) while the motor drives it and ηT/N when the load drives the motor back. With a "
+        "speed and a time (or an acceleration) the torque to get there; with the motor's torque–speed line "
+        "(--stall-torque, --no-load-speed) or a constant --motor-torque the time it takes; with a move "
+        "profile the torque of each phase, the peak and RMS torque and the power."
+    ),
+    example="taucli drive --motor-inertia '1.2 kg*cm^2' --ratio 10 --load-inertia '0.05 kg*m^2' --until-omega 3000rpm --in-time 0.2s",
+    options=(
+        Option("motor_inertia", "moment of inertia", "Moment of inertia of the motor's rotor, e.g. 1.2kg*cm^2 or 0.0012lb*in*s^2.",
+               sign="nonnegative", panel=MOTOR),
+        Option("stall_torque", "torque", "Torque at standstill of a motor whose torque falls on a line to zero at --no-load-speed, "
+               "τ = τ_s(1 − ω/ω_nl), e.g. 2N*m.", panel=MOTOR),
+        Option("no_load_speed", "angular velocity", "Speed at which that line reaches zero torque, e.g. 3000rpm.", panel=MOTOR),
+        Option("motor_torque", "torque", "A motor that gives a constant torque from rest (instead of the line), e.g. 1.5N*m.", panel=MOTOR),
+        Option("rated_torque", "torque", "The motor's rated (continuous) torque, held against the RMS torque of a move.", panel=MOTOR),
+        Option("peak_torque", "torque", "The most torque the motor and its drive give for a short time, held against the peak of a move.",
+               panel=MOTOR),
+        Option("ratio", "dimensionless", "Speed ratio N of a stage (gear, belt, pulley): motor speed over output speed, 10 for a 10:1 "
+               "reducer; repeat for stages in series, e.g. --ratio 5 --ratio 3 (default 1, a direct drive).", panel=TRAIN, repeatable=True),
+        Option("efficiency", "dimensionless", "Efficiency η of the whole train from the motor to the load (stages, belt, screw), "
+               "above 0 and at most 1.", default="1", panel=TRAIN),
+        Option("gear_inertia", "moment of inertia", "Moment of inertia of gearing and couplings referred to the motor shaft (as a "
+               "gearhead's catalogue gives it), counted with the load.", sign="nonnegative", panel=TRAIN),
+        Option("load_inertia", "moment of inertia", "Moment of inertia of the rotating load about the output shaft (or give --shape "
+               "with its dimensions, or --part).", panel=LOAD),
+        *LOAD_BODY,
+        Option("load_mass", "mass", "A mass moved in a straight line (a table, a belt's load, a hoisted mass), with --drum-radius or "
+               "--lead, e.g. 250kg.", panel=LOAD),
+        Option("drum_radius", "length", "Radius of the drum, pulley, sprocket or pinion that moves the mass (belt, hoist, rack and "
+               "pinion): its inertia m·r² at the output shaft, e.g. 5cm.", panel=LOAD),
+        Option("lead", "lead", "Lead of a screw that moves the mass, the travel per turn: its inertia m(p/2π)² at the output shaft, "
+               "e.g. 10mm or 0.2in/rev.", panel=LOAD),
+        Option("load_torque", "torque", "Torque the load resists with at the output shaft while it moves (friction, a process), "
+               "against the motion; negative where it drives, e.g. 2N*m.", sign="any", panel=LOAD),
+        Option("load_force", "force", "Force on the moving mass against its motion while it moves (a cutting force, a seal's "
+               "friction); negative where it pushes it along, e.g. 50N.", sign="any", panel=LOAD),
+        Option("incline", "angle", "Angle of the mass's travel above the horizontal, gravity m·g·sin θ against it: 90deg lifts, "
+               "-90deg lowers.", sign="any", default="0deg", panel=LOAD),
+        Option("mu", "dimensionless", "Friction coefficient of the mass on its guides: μ·m·g·cos θ against the motion.",
+               sign="nonnegative", panel=LOAD),
+        GRAVITY,
+        Option("until_omega", "angular velocity", "Motor speed to reach from rest (a move's top speed), e.g. 3000rpm.", panel=MOTION),
+        Option("speed", "velocity", "Speed of the moving mass to reach from rest (a move's top speed), instead of --until-omega, "
+               "e.g. 15m/min.", panel=MOTION),
+        Option("in_time", "time", "Reach --until-omega (or --speed) in this time: the acceleration and the torque that do it.",
+               panel=MOTION),
+        Option("alpha", "angular acceleration", "The motor's angular acceleration (a move's acceleration and deceleration), "
+               "e.g. 3000rad/s^2.", panel=MOTION),
+        Option("accel", "acceleration", "Acceleration of the moving mass, instead of --alpha, e.g. 2.5m/s^2.", panel=MOTION),
+        Option("accel_time", "time", "Time to accelerate from rest to the top speed.", panel=PROFILE),
+        Option("run_time", "time", "Time at the top speed.", sign="nonnegative", default="0s", panel=PROFILE),
+        Option("decel_time", "time", "Time to decelerate to rest (default --accel-time).", panel=PROFILE),
+        Option("dwell_time", "time", "Time at rest before the next move.", sign="nonnegative", default="0s", panel=PROFILE),
+        Option("distance", "length", "Travel of the moving mass per move: with the times, the top speed; with --speed and --accel, "
+               "the trapezoid (a triangle if it is too short to reach the speed).", panel=PROFILE),
+        Option("move_angle", "angle", "The motor's turn per move, as --distance for a rotating load, e.g. 10rev.", panel=PROFILE),
+        Option("energy", FLAG, "Also report the run-up's energy: the kinetic energy reached, the motor's work, the work against the "
+               "load and the losses (--get KE and the like turn it on).", panel=MOTION, makes=("KE", "work_motor", "work_load", "work_loss")),
+    ),
+    results=(
+        Result("ratio_total", "", "overall ratio, N₁ × N₂ × ⋯"),
+        Result("linear_inertia", "kg*m**2", "moving mass's inertia at its shaft…"),
+        Result("reflected_inertia", "kg*m**2", "load inertia at the motor, J_g + J/N²"),
+        Result("total_inertia", "kg*m**2", "inertia at the motor, rotor and load"),
+        Result("inertia_ratio", "", "inertia ratio, load over rotor"),
+        Result("ratio_optimal", "", "ratio matching load to rotor, √(J/J_m)"),
+        Result("load_torque_motor", "N*m", "load torque at the motor, running"),
+        Result("torque_hold", "N*m", "motor torque holding the load at rest"),
+        Result("alpha", "rad/s**2", "motor's angular acceleration…"),
+        Result("torque_accel", "N*m", "motor torque while accelerating"),
+        Result("t_accel", "s", "time to accelerate…"),
+        Result("theta_accel", "rad", "motor's angle while accelerating"),
+        Result("revs_accel", "rev", "motor's revolutions while accelerating"),
+        Result("omega_steady", "rad/s", "speed where the line meets the load"),
+        Result("time_constant", "s", "mechanical time constant…"),
+        Result("alpha0", "rad/s**2", "motor's angular acceleration from rest"),
+        Result("KE", "J", "kinetic energy reached, motor and load"),
+        Result("work_motor", "J", "work of the motor in the run-up"),
+        Result("work_load", "J", "work against the load in the run-up"),
+        Result("work_loss", "J", "energy lost in the train in the run-up"),
+        Result("omega_top", "rad/s", "motor's top speed"),
+        Result("speed_top", "m/s", "moving mass's top speed"),
+        Result("t_run", "s", "time at the top speed"),
+        Result("t_decel", "s", "time to decelerate"),
+        Result("t_cycle", "s", "time of a cycle, dwell included"),
+        Result("theta_move", "rad", "motor's angle per move"),
+        Result("travel", "m", "moving mass's travel per move"),
+        Result("alpha_decel", "rad/s**2", "motor's deceleration (size)"),
+        Result("torque_decel", "N*m", "motor torque decelerating (< 0: braking)"),
+        Result("torque_peak", "N*m", "peak motor torque (size)"),
+        Result("torque_rms", "N*m", "RMS motor torque over the cycle"),
+        Result("power_peak", "W", "peak power the motor gives"),
+        Result("power_regen", "W", "peak power the load gives back"),
+        Result("power_mean", "W", "mean motor power (net) over the cycle"),
+        Result("rms_to_rated", "", "RMS torque over rated torque"),
+        Result("within_rating", None, "within the motor's ratings"),
+    ),
+    output=ANSWER,
+    headline="reflected_inertia",
+    library="taucli.scenes.drive:drive",
+)
