@@ -383,7 +383,7 @@ complete -c taucli -n '__fish_seen_subcommand_from drive' -l want -x -d 'The tar
 complete -c taucli -n '__fish_seen_subcommand_from drive' -l uncertainty -d 'With --get: each result\'s standard uncertainty in a second column.'
 complete -c taucli -n '__fish_seen_subcommand_from drive' -l mc -x -d 'Check the uncertainties by Monte Carlo with N draws.'
 complete -c taucli -n '__fish_seen_subcommand_from drive' -l help -d 'Show this message and exit.'
-complete -c taucli -n '__fish_seen_subcommand_from fit' -a 'inertia spin-down atwood rolling impulse pendulum torque gyro'
+complete -c taucli -n '__fish_seen_subcommand_from fit' -a 'inertia spin-down atwood rolling impulse pendulum torque gyro drive'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -F
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l fit -x -d 'The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu).'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l x -x -d 'A column that is an input of each sample, and which (default time), e.g. "Time (s)" or "amplitude (deg)=angle0" (repeatable).'
