@@ -77,6 +77,16 @@ def test_plot_draws_the_data_the_fit_and_the_residuals_and_out_writes_a_file(coa
     assert (tmp_path / "fit.svg").read_text().lstrip().startswith("<?xml")
 
 
+def test_the_charts_x_axis_is_in_its_columns_unit_and_the_json_in_si(tmp_path):
+    path = tmp_path / "periods.csv"
+    path.write_text("amplitude (deg),period (s)\n10,2.0123\n30,2.0382\n50,2.1057\n70,2.2107\n")
+    args = ("fit", "pendulum", str(path), "--shape", "point", "--mass", "50g", "--radius", "1m", "--x", "amplitude (deg)=angle0", "--fit", "g")
+    done = run_taucli(*args, "--no-steps", "--plot", env={"COLUMNS": "80"})
+    assert done.code == 0 and "angle0 (deg)" in done.out and "angle0 (rad)" not in done.out
+    plot = run_taucli(*args, "--json", "--plot").json()["plot"]
+    assert plot["units"]["angle0"] == "rad" and plot["samples"][0]["angle0"] == pytest.approx(0.17453292519943295, rel=1e-15)
+
+
 @pytest.mark.parametrize("args,said", [
     (("spin-down", "COAST", "--inertia", "0.1", "--fit", "friction", "--inertai", "3"),
      "--inertai is not an option of fit, nor an input of spin-down; did you mean '--inertia'?"),
@@ -111,6 +121,23 @@ def test_without_scipy_fit_says_which_extra_to_install(monkeypatch):
     assert err.getvalue() == "taucli: error: taucli fit needs scipy (not installed); pip install 'taucli[fit]'\n"
 
 
+@pytest.mark.parametrize("blocked,said", [
+    (("scipy",), "taucli: error: taucli fit needs scipy (not installed); pip install 'taucli[fit]'\n"),
+    (("numpy", "scipy"), "taucli: error: taucli fit needs numpy and scipy (not installed); pip install 'taucli[fit]'\n"),
+])
+def test_the_command_line_without_the_fit_extra_exits_2_in_one_line_naming_it(blocked, said, coast):
+    """The real entry point in a Python where numpy or scipy cannot be imported (as where the
+    extra was not installed): exit 2, one line, no traceback."""
+    code = (
+        "import sys\n"
+        f"for name in {blocked!r}:\n    sys.modules[name] = None\n"
+        f"sys.argv = ['taucli', 'fit', 'spin-down', {coast!r}, '--inertia', '0.1kg*m^2', '--fit', 'friction,omega0']\n"
+        "from taucli.__main__ import main\nsys.exit(main())\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=os.environ.copy())
+    assert (done.returncode, done.stdout, done.stderr) == (2, "", said)
+
+
 def _modules_after(argv: list[str]) -> set[str]:
     code = (
         "import io, contextlib, runpy, sys\n"
@@ -125,7 +152,12 @@ def _modules_after(argv: list[str]) -> set[str]:
     return {name.split(".")[0] for name in done.stdout.split()}
 
 
-@pytest.mark.parametrize("argv", [["atwood", "--m1", "4kg", "--m2", "1kg", "--get", "a"], ["fit", "--help"], ["spin-down", "--inertia", "0.1", "--omega0", "3rad/s", "--friction", "0.1"]])
+@pytest.mark.parametrize("argv", [
+    ["--help"], ["fit", "--help"], ["atwood", "--m1", "4kg", "--m2", "1kg", "--get", "a"],
+    ["spin-down", "--inertia", "0.1", "--omega0", "3rad/s", "--friction", "0.1"],
+    ["pendulum", "--shape", "point", "--mass", "50g", "--radius", "1m", "--angle0", "30deg", "--get", "period"],
+    ["rolling", "sphere", "--angle", "30deg", "--get", "a"],
+])
 def test_numpy_and_scipy_stay_out_of_every_other_command(argv):
     """(pint imports numpy where it is installed, the first time a unit is read: the second run
     reads its units from taucli's cache.)"""

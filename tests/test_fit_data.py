@@ -148,11 +148,27 @@ def test_a_run_table_maps_options_and_the_result_measured():
     ("t (s),omega (rad/s)\n0,1\n", "spin-down", {"sigma": "0 rad/s"}, "expected an uncertainty greater than 0"),
     ("t (s),omega (rad/s),u\n0,1,0\n", "spin-down", {"sigma": "u"}, "line 2: expected an uncertainty greater than 0 in column 'u'"),
     ("t (s),omega (rad/s)\n-1,1\n", "spin-down", {}, "line 2: column 't (s)' (--time) expected a time of zero or more"),
+    ("amplitude (deg),period (s)\n10,2.01\n40,2.07\n", "pendulum", {},
+     "x is needed: every sample is the same run of pendulum (no column gives an input that differs between them), and 'amplitude (deg)' "
+     "differs between them but is not used; say which input it is: x 'amplitude (deg)=OPTION'"),
+    ("amplitude (deg),period (s)\n10,2.01\n40,2.07\n", "pendulum", {"x": ("amplitude",)},
+     "x: reads column 'amplitude (deg)' as time (--x COLUMN alone is the time), and its unit deg is not a time; "
+     "say which input it is: x 'amplitude (deg)=OPTION'"),
+    ("t (s),omega (rad/s)\n0,1\n", "spin-down", {"y": "t (s)=omega"},
+     "y: reads column 't (s)' as the result omega, and its unit s is not an angular velocity; say which result it is: y 't (s)=RESULT'"),
 ])  # fmt: skip
 def test_a_column_that_cannot_be_matched_is_refused(text, scene, options, said):
     with pytest.raises(InputError) as caught:
         build(text, scene, **options)
     assert said in str(caught.value)
+
+
+def test_repeated_runs_of_one_scene_are_fitted_and_a_column_not_used_beside_them_only_noted():
+    """Three stopwatch times of one run are samples of one run (nothing varies): fitted as such.
+    A column that does not vary and is not used (the run's number) is a note, not a refusal."""
+    found = build("run,t (s)\n1,4.06\n1,4.03\n1,3.88\n", "atwood")
+    assert found.count == 3 and found.varying == []
+    assert found.notes == ["columns not used: 'run' (neither an input of atwood nor the result measured)"]
 
 
 def test_range_and_every_count_what_they_leave_out():

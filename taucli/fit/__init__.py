@@ -21,10 +21,24 @@ from taucli.errors import InputError
 EXTRA = "pip install 'taucli[fit]'"
 
 
+def _installed(name: str) -> bool:
+    try:
+        return importlib.util.find_spec(name) is not None
+    except (ImportError, ValueError):  # a module blocked or half imported (sys.modules[name] is None)
+        return False
+
+
 def _needs_scipy() -> None:
-    missing = [name for name in ("numpy", "scipy") if importlib.util.find_spec(name) is None]
+    """A usage error naming the extra to install where numpy or scipy is missing or does not import."""
+    missing = [name for name in ("numpy", "scipy") if not _installed(name)]
     if missing:
         raise InputError("", f"taucli fit needs {' and '.join(missing)} (not installed)", hint=EXTRA)
+    try:
+        import numpy  # noqa: F401  # deferred: numpy, only for taucli fit
+        import scipy  # noqa: F401  # deferred: scipy's package alone (its optimize, ~200 ms, where a nonlinear fit needs it)
+    except ImportError as err:  # installed, and broken (a numpy built for another Python, a partial install)
+        raise InputError("", f"taucli fit needs numpy and scipy, and they do not import ({str(err).splitlines()[0][:120]})",
+                         hint=EXTRA.replace("pip install", "pip install --force-reinstall")) from None
 
 
 def run(*, env, **given) -> int:

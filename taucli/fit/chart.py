@@ -1,7 +1,8 @@
 """The chart of a fit: the samples and the fitted model against the samples' input, and the
 residuals below, drawn as every chart is (taucli.plot: plotille in the terminal, matplotlib for
 --out). The x axis is the input that varies between the samples (the time of a time series, an
-amplitude); where it is the only one, the model is drawn as a curve over it, else at the samples.
+amplitude), in its column's unit; where it is the only one, the model is drawn as a curve over it,
+else at the samples. (``--json --plot`` gives the same numbers in SI.)
 """
 
 from __future__ import annotations
@@ -36,19 +37,30 @@ def _curve(found: Fit, key: str, xs: np.ndarray) -> tuple[np.ndarray, np.ndarray
     return grid, np.array([found.model.at(found.p, {**row, key: float(x)}) for x in grid])
 
 
+def _shown(found: Fit, key: str, unit: str) -> tuple[str, float]:
+    """(the unit the x axis is drawn in, SI per that unit): the column's own, as its header writes
+    it (an amplitude in degrees), where it has one; else SI."""
+    column = next((m for m in found.model.samples.columns if m.target == key), None)
+    if column is None or not column.column.unit or not column.factor > 0:
+        return unit, 1.0
+    return column.column.unit, column.factor
+
+
 def chart(found: Fit) -> Chart:
     samples = found.model.samples
     key, unit, xs = _axis(found)
     y = np.asarray(samples.y, dtype=float)
     fitted = found.model.predict(found.p)
     curve = _curve(found, key, xs)
-    model_series = (Series("fitted", tuple(curve[0]), tuple(_none(curve[1])))
-                    if curve is not None else Series("fitted", tuple(xs), tuple(_none(fitted)), points=True))
+    shown_unit, per = _shown(found, key, unit)
+    shown = tuple(xs / per)
+    model_series = (Series("fitted", tuple(curve[0] / per), tuple(_none(curve[1])))
+                    if curve is not None else Series("fitted", shown, tuple(_none(fitted)), points=True))
     panels = (
-        Panel(samples.y_key, "measured and fitted", samples.y_unit, (Series("measured", tuple(xs), tuple(y), points=True), model_series)),
-        Panel("residual", f"{samples.y_key} measured − fitted", samples.y_unit, (Series("residual", tuple(xs), tuple(_none(y - fitted)), points=True),)),
+        Panel(samples.y_key, "measured and fitted", samples.y_unit, (Series("measured", shown, tuple(y), points=True), model_series)),
+        Panel("residual", f"{samples.y_key} measured − fitted", samples.y_unit, (Series("residual", shown, tuple(_none(y - fitted)), points=True),)),
     )
-    return Chart(f"fit: {found.model.command.name}, {samples.y_key} against {key}", key, key, unit, panels)
+    return Chart(f"fit: {found.model.command.name}, {samples.y_key} against {key}", key, key, shown_unit, panels)
 
 
 def _none(values: np.ndarray) -> list[float | None]:

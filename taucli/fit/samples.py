@@ -154,7 +154,7 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
                              example='{y} "w (rad/s)=omega"', hint=did_you_mean(key, [r.key for r in command.results]))
         chosen[header] = (key if command.result(key) is not None else _key(key), True, unit)
     sigma_header = _sigma_column(tables, sigma)
-    _match_the_rest(command, tables[0], chosen, sigma_header, y is not None, notes)
+    unused = _match_the_rest(command, tables[0], chosen, sigma_header, y is not None, notes)
     results = [header for header, (_, is_result, _) in chosen.items() if is_result]
     if not results:
         names = ", ".join(repr(h) for h in headers)
@@ -168,7 +168,28 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         mapped.append(_mapped(command, tables[0].column(header), target, is_result, unit, fitted, given, notes))
     y_column = next(m for m in mapped if m.is_result)
     inputs_mapped = [m for m in mapped if not m.is_result]
-    return _collected(command, tables, y_column, inputs_mapped, sigma, sigma_header, ranges, every, gravity, notes)
+    found = _collected(command, tables, y_column, inputs_mapped, sigma, sigma_header, ranges, every, gravity, notes)
+    _refuse_one_run_beside_unused(command, tables, found, unused)
+    return found
+
+
+def _refuse_one_run_beside_unused(command: Command, tables: list[DataTable], found: Samples, unused: list[str]) -> None:
+    """Samples that are all one run of the scene (no input column, or none that varies) beside a
+    column that varies and is not used: that column is most likely the input the runs differ by
+    (an amplitude, a mass), and fitting the runs as repeats of one would give a wrong number."""
+    if found.varying or found.count < 2:
+        return
+    varies = [header for header in unused if len({value for table in tables for value in table.column(header).values}) > 1]
+    if varies:
+        listed = ", ".join(repr(header) for header in varies)
+        raise InputError("x", f"is needed: every sample is the same run of {command.name} (no column gives an input that differs between them), "
+                         f"and {listed} differ{'s' if len(varies) == 1 else ''} between them but {'is' if len(varies) == 1 else 'are'} not used",
+                         hint=f"say which input {'it is' if len(varies) == 1 else 'each is'}: {{x}} {_quoted(varies[0] + '=OPTION')}, "
+                         "or leave the column out of the table")
+
+
+def _quoted(text: str) -> str:
+    return f"'{text}'" if re.search(r"[\s()\[\]*^?'\"]", text) else text
 
 
 def _option_target(command: Command, name: str, text: str) -> str:
@@ -190,7 +211,8 @@ def _sigma_column(tables: list[DataTable], sigma: str | None) -> str | None:
     return sigma.strip() if sigma.strip() in headers else headers[names.index(sigma.strip())] if sigma.strip() in names else None
 
 
-def _match_the_rest(command: Command, table: DataTable, chosen: dict, sigma_header: str | None, y_given: bool, notes: list[str]) -> None:
+def _match_the_rest(command: Command, table: DataTable, chosen: dict, sigma_header: str | None, y_given: bool, notes: list[str]) -> list[str]:
+    """Match the columns --x and --y leave by their names; the headers of those left unused."""
     unused = []
     for column in table.columns:
         if column.header in chosen or column.header == sigma_header:
@@ -205,9 +227,10 @@ def _match_the_rest(command: Command, table: DataTable, chosen: dict, sigma_head
         elif result is not None and not y_given:
             chosen[column.header] = (result.key, True, "")
         else:
-            unused.append(repr(column.header))
+            unused.append(column.header)
     if unused:
-        notes.append(f"columns not used: {', '.join(unused)} (neither an input of {command.name} nor the result measured)")
+        notes.append(f"columns not used: {', '.join(repr(header) for header in unused)} (neither an input of {command.name} nor the result measured)")
+    return unused
 
 
 def _mapped(command: Command, column: Column, target: str, is_result: bool, unit: str, fitted, given, notes: list[str]) -> Mapped:
@@ -219,14 +242,29 @@ def _mapped(command: Command, column: Column, target: str, is_result: bool, unit
         if result.unit is None:
             raise InputError("y", f"expected a result that is a number; {target} is yes or no", got=repr(column.header))
         kind = _kind_of_result(result.unit)
-        return Mapped(column, target, True, _factor(column, unit, kind, result.unit, f"the result {target}", notes), result.unit)
+        try:
+            factor = _factor(column, unit, kind, result.unit, f"the result {target}", notes)
+        except InputError as err:
+            if not unit or err.option != f"column {column.header!r}":
+                raise
+            raise InputError("y", f"reads column {column.header!r} as the result {target}, and its unit {unit} is not "
+                             + (units.article(kind) if kind else f"one of {pretty_unit(result.unit)}"),
+                             hint=f"say which result it is: {{y}} {_quoted(column.header + '=RESULT')}") from None
+        return Mapped(column, target, True, factor, result.unit)
     if target in fitted:
         raise InputError("fit", f"fits {target}, and column {column.header!r} gives it for each sample: one or the other", got=repr(target))
     if target in given:
         raise InputError("data", f"column {column.header!r} gives {{{target}}} for each sample, and {{{target}}} is given as well: one or the other")
     option = command.option(target)
-    return Mapped(column, target, False, _factor(column, unit, option.kind, units.KINDS[option.kind].si_unit, f"--{target.replace('_', '-')}", notes),
-                  units.KINDS[option.kind].si_unit)
+    try:
+        factor = _factor(column, unit, option.kind, units.KINDS[option.kind].si_unit, f"--{target.replace('_', '-')}", notes)
+    except InputError as err:
+        if not unit or err.option != f"column {column.header!r}":
+            raise
+        said = " (--x COLUMN alone is the time)" if target == "time" else ""
+        raise InputError("x", f"reads column {column.header!r} as {{{target}}}{said}, and its unit {unit} is not {units.article(option.kind)}",
+                         hint=f"say which input it is: {{x}} {_quoted(column.header + '=OPTION')}") from None
+    return Mapped(column, target, False, factor, units.KINDS[option.kind].si_unit)
 
 
 def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[Mapped], sigma, sigma_header, ranges, every, gravity, notes) -> Samples:

@@ -124,13 +124,17 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
             "Minimise the squares of the residuals within the inputs' bounds",
             ("min Σᵢ ((yᵢ − f(xᵢ; p))/σᵢ)²" if sigma is not None else "min Σᵢ (yᵢ − f(xᵢ; p))²") + f" over {', '.join(_bound(model, j) for j in range(m))}",
             result=", ".join(f"{u.name} = {quantity_text(value, units.KINDS[u.kind].si_unit, 10)}" for u, value in zip(model.unknowns, p)),
-            why=f"trust region reflective (scipy) from the start: {outcome.iterations} steps, {outcome.evaluations} solves of the scene per sample "
+            why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, {_count(outcome.evaluations, 'solve')} of the scene per sample "
             f"(its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them",
         ))
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
     found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p)
     covariance, from_held = _with_held(model, p, J, sigma, found.covariance)
     return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how)
+
+
+def _count(n: int, what: str) -> str:
+    return f"{n} {what}{'' if n == 1 else 's'}"
 
 
 def _polished(model: Model, p: np.ndarray, J: np.ndarray, y: np.ndarray, sigma) -> np.ndarray:

@@ -12,7 +12,8 @@ In this order, for each fitted input:
      pulley added, (m₁ − m₂)g − (I/R²)a − τ_f/R = (m₁ + m₂)a, linear in g, I and τ_f;
    - rolling down an incline, each run's acceleration: g sin θ − a k² = a, linear in g and k²;
    - a pendulum's swing θ(t): the amplitude, and the period from the zero crossings, g from the
-     scene's own period at one g (the period goes as 1/√g at a given amplitude);
+     scene's own period at one g (the period goes as 1/√g at a given amplitude); runs of periods
+     at their amplitudes: T = √(g₀/g)·T₀ for each, linear in √(g₀/g);
 3. else the roots of a few samples, as ``--find`` finds them (taucli.roots), the others at their
    starts (or 0): the one that best meets the samples (least squares over up to 40 of them).
 
@@ -227,12 +228,37 @@ def _spin_down(model: Model) -> tuple[dict[str, float], Step] | None:
     )
 
 
+def _periods(model: Model) -> tuple[dict[str, float], Step] | None:
+    """Runs of periods (at their amplitudes): T = T₀ √(g₀/g) with T₀ the scene's period at g₀ for
+    each run, so T is c·T₀ with c = √(g₀/g), linear in c: c = ΣwTT₀/ΣwT₀² is the least squares,
+    and g = g₀/c² the start (the fit then finds it again)."""
+    y = np.asarray(model.samples.y)
+    weights = 1.0 / np.asarray(model.samples.sigma) ** 2 if model.samples.sigma is not None else np.ones(len(y))
+    at_standard = np.array([model.value(np.array([STANDARD_GRAVITY]), i) for i in range(len(y))])
+    if not np.all(np.isfinite(at_standard)) or not np.all(at_standard > 0):
+        return None
+    c = float(np.sum(weights * y * at_standard) / np.sum(weights * at_standard**2))
+    if not c > 0:
+        return None
+    found = {"g": STANDARD_GRAVITY / c**2}
+    return found, Step(
+        "A start from the periods: T ∝ 1/√g for each run",
+        "Tᵢ = c·T₀ᵢ,  c = √(g₀/g)  ⇒  c = ΣwᵢTᵢT₀ᵢ/ΣwᵢT₀ᵢ²,  g = g₀/c²",
+        f"T₀ᵢ = the scene's period of run i at g₀ = {quantity_text(STANDARD_GRAVITY, 'm/s**2')}; c = {fmt(c)}",
+        _said(model, found),
+        f"at a given amplitude (and body) the period goes as 1/√g exactly, so the {len(y)} runs are linear in c: its least squares "
+        "is the start, and the fit below finds the same g",
+    )
+
+
 def _pendulum(model: Model) -> tuple[dict[str, float], Step] | None:
     """A swing θ(t) from rest: the amplitude, and the period from the zero crossings; g from the
-    period the scene gives at a known g, T ∝ 1/√g at a given amplitude."""
+    period the scene gives at a known g, T ∝ 1/√g at a given amplitude. Runs of periods: _periods."""
     plain = ("torsion", "omega0", "omega_bottom")
-    if any(name in model.held for name in plain) or not set(model.names) <= {"g", "angle0"}:
+    if any(name in model.held or name in model.samples.inputs for name in plain) or not set(model.names) <= {"g", "angle0"}:
         return None
+    if model.samples.y_key == "period" and model.names == ["g"]:
+        return _periods(model)
     if set(model.samples.inputs) != {"time"} or model.samples.y_key != "theta":
         return None
     t = np.asarray(model.samples.inputs["time"])
