@@ -39,6 +39,13 @@ def csv(header: str, rows, formats) -> str:
     return header + "\n" + "".join(",".join(format(value, spec) for value, spec in zip(row, formats)) + "\n" for row in rows)
 
 
+def decimal_comma(text: str, header: str) -> str:
+    """A comma-separated table as a spreadsheet in a decimal-comma locale saves it: semicolons
+    between the cells, a comma in each number."""
+    rows = text.splitlines()[1:]
+    return header + "\n" + "".join(row.replace(",", ";").replace(".", ",") + "\n" for row in rows)
+
+
 def java_float(x: float) -> str:
     """A number as phyphox writes it (Java's %E style: 1.234567890E-2)."""
     mantissa, exponent = f"{x:.9E}".split("E")
@@ -77,8 +84,14 @@ def docs_tables() -> dict[str, str]:
                for a in (10, 20, 30, 40, 50, 60, 70, 80)]
     rng = random.Random(15)
     ramp = [(a, length, solve("rolling", shape="shell", angle=math.radians(a), length=length)["t"] + rng.gauss(0, 0.005)) for a in (4, 8, 12) for length in (0.5, 1.0)]
+    rng = random.Random(16)
+    torsion = [(m, solve("pendulum", shape="point", mass=m / 1000, radius=0.1, part=["inertia=0.001"], cm_distance=0, torsion=0.01)["period"]
+                + rng.gauss(0, 0.002)) for m in (50, 100, 150, 200, 250)]
+    coast = csv("t (s),omega (rad/s)", coast_down([1.5 * i for i in range(12)], 0.05, 11), ("g", ".3f"))
     return {
-        "coast.csv": csv("t (s),omega (rad/s)", coast_down([1.5 * i for i in range(12)], 0.05, 11), ("g", ".3f")),
+        "coast.csv": coast,
+        "coast-de.csv": decimal_comma(coast, "t [s];omega [rad/s]"),
+        "torsion.csv": csv("mass (g),period (s)", torsion, ("g", ".3f")),
         "friction.csv": csv("t (s),omega (rad/s)", friction, ("g", ".3f")),
         "spin-up.csv": csv("t (s),torque (N*m),omega0 (rad/s),omega (rad/s)", spin_up, ("g", "g", "g", ".3f")),
         "periods.csv": csv("amplitude (deg),period (s)", periods, ("g", ".4f")),

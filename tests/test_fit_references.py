@@ -207,3 +207,26 @@ def test_richmonds_atwood_runs_against_a_least_squares_solved_in_mpmath():
     assert _sigma(found, 1) == pytest.approx(float(mpmath.sqrt(covariance[1, 1])), rel=1e-5)
     assert found.quality.correlation[0, 1] == pytest.approx(float(covariance[0, 1] / mpmath.sqrt(covariance[0, 0] * covariance[1, 1])), rel=1e-5)
     assert found.quality.rms == pytest.approx(float(mpmath.sqrt(squares(u, v) / len(runs))), rel=1e-10)
+
+
+# Seth, George Mason University, computational physics notes "pass6" (physics.gmu.edu/~mrseth/pass6.html):
+# the exact period of a 1 m pendulum at g = 9.81 m/s², T = 4√(L/g)K(sin(θ₀/2)), for 10° to 80°.
+SETH = {10: "2.00989262729860052", 20: "2.02145125782457619", 30: "2.04098988951913023", 40: "2.06893785189358914",
+        50: "2.10593461928364287", 60: "2.15287466688051548", 70: "2.21097618054218626", 80: "2.28188592401963935"}
+
+
+def test_a_published_table_of_exact_periods_gives_its_g_back():
+    """Seth's table agrees with the elliptic integral in mpmath to 1e-16; the fit's g is the
+    table's 9.81 to the last digits a double holds, with an uncertainty of rounding size."""
+    with mpmath.workdps(DIGITS):
+        for amplitude, period in SETH.items():
+            exact = period_exact(mpf(1), mpf("9.81"), mpmath.radians(amplitude))
+            assert abs(mpf(period) / exact - 1) < 1e-15
+    text = "amplitude (deg),period (s)\n" + "".join(f"{a},{t}\n" for a, t in SETH.items())
+    command = SCENES["pendulum"]
+    options = {"shape": "point", "mass": "1 kg", "radius": "1 m"}
+    built = samples.build(command, [data.read("-", io.StringIO(text))], x=("amplitude=angle0",), fitted=["g"], given=set(options))
+    model, starts, _ = solve.model_of(command, options, ["g"], built)
+    found = solve.fit(model, starts)
+    assert float(found.p[0]) == pytest.approx(9.81, rel=1e-14)
+    assert _sigma(found, 0) < 1e-12
