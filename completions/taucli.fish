@@ -385,7 +385,7 @@ complete -c taucli -n '__fish_seen_subcommand_from drive' -l mc -x -d 'Check the
 complete -c taucli -n '__fish_seen_subcommand_from drive' -l help -d 'Show this message and exit.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -a 'inertia spin-down atwood rolling impulse pendulum torque gyro drive'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -F
-complete -c taucli -n '__fish_seen_subcommand_from fit' -l fit -x -d 'The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu).'
+complete -c taucli -n '__fish_seen_subcommand_from fit' -l fit -x -d 'The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu); repeatable.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l x -x -d 'A column that is an input of each sample, and which (default time), e.g. "Time (s)" or "amplitude (deg)=angle0" (repeatable).'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l y -x -d 'The column that was measured, and the result it is, e.g. "Gyroscope z (rad/s)=omega".'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l sigma -x -d 'Each sample\'s standard uncertainty: a column, or one value for all, e.g. 0.05rad/s.'

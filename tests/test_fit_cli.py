@@ -68,6 +68,13 @@ def test_get_prints_the_numbers_and_with_uncertainty_their_sigma(coast):
     assert samples == "30 0.0"
 
 
+def test_fit_repeated_adds_its_names(coast):
+    """--fit friction --fit viscous,omega0 fits all three (the second --fit once replaced the first)."""
+    once = run_taucli("fit", "spin-down", coast, *FIT_COAST, "--get", "friction", "--get", "viscous")
+    twice = run_taucli("fit", "spin-down", coast, "--inertia", "0.1kg*m^2", "--fit", "friction", "--fit", "viscous,omega0", "--get", "friction", "--get", "viscous")
+    assert twice.code == 0 and twice.out == once.out
+
+
 def test_plot_draws_the_data_the_fit_and_the_residuals_and_out_writes_a_file(coast, tmp_path):
     done = run_taucli("fit", "spin-down", coast, *FIT_COAST, "--no-steps", "--plot", "--out", str(tmp_path / "fit.svg"), env={"COLUMNS": "80"})
     assert done.code == 0

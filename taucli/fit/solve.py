@@ -45,8 +45,9 @@ class Fit:
     starts: list[str] = field(default_factory=list)  # how each input's start was found: "given", "closed form", "root"
 
 
-def names_of(text: str | None) -> list[str]:
-    """The inputs --fit names: "friction,viscous" (spaces and repeats allowed)."""
+def names_of(text) -> list[str]:
+    """The inputs --fit names: "friction,viscous" (spaces allowed), or several such (--fit repeated)."""
+    text = ",".join(str(part) for part in text) if isinstance(text, (list, tuple)) else text
     names = [name.strip() for name in str(text or "").replace(" ", ",").split(",") if name.strip()]
     if not names:
         raise InputError("fit", "expected the inputs to fit, by option name", example="{fit} friction,viscous", got=repr(text) if text else None)
