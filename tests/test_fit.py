@@ -286,3 +286,13 @@ def test_a_falling_masss_distance_in_time_gives_the_axle_friction():
     with pytest.raises(InputError, match="cannot tell axle_friction and pulley_mass apart"):
         fitted("atwood", csv("t (s),distance (m)", rows, ("g", ".12g")), "axle_friction,pulley_mass", x=("t",), y="distance",
                m1="300 g", m2="200 g", pulley_radius="5 cm")
+
+
+def test_samples_on_the_model_exactly_are_said_to_give_uncertainties_of_rounding_size():
+    """ω = 30 − 3t exactly (I = 0.1 kg·m², τ = 0.3 N·m): the residual variance is rounding, and so
+    the uncertainties scaled by it; a note says so, where ± 0 alone would read as a measurement's."""
+    report, found = fitted("spin-down", "t (s),omega (rad/s)\n0,30\n1,27\n2,24\n3,21\n4,18\n", "friction,omega0", inertia="0.1 kg*m^2")
+    assert value_of(found, "friction") == pytest.approx(0.3, rel=1e-12)
+    assert any(note.startswith("the samples lie on the model to rounding") for note in report.notes)
+    noisy, _ = fitted("spin-down", line_table(7), "friction,omega0", inertia="0.1 kg*m^2")
+    assert not any(note.startswith("the samples lie on the model to rounding") for note in noisy.notes)

@@ -27,6 +27,7 @@ from taucli.report import Measured, Report, Step, Table, Value, fmt, pretty_unit
 from taucli.table import spelled
 
 FEW = 5  # degrees of freedom below which the residual variance is a rough stand-in (a note)
+EXACT = 1e-9  # residual RMS, of the largest measurement, at or below which the samples are exact values (computed, not measured)
 
 
 def _label(key: str) -> str:
@@ -233,7 +234,11 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
     if fitted.scaled:
         notes.append("no uncertainty given for the samples: each fitted input's uncertainty is from the covariance scaled by the residual "
                      "variance (--sigma gives the samples' own, and then χ²/ν)")
-    if fitted.structured:
+    largest = float(np.max(np.abs(model.samples.y))) if model.samples.count else 0.0
+    if fitted.scaled and fitted.rms <= EXACT * largest:
+        notes.append(f"the samples lie on the model to rounding (residual RMS {fmt(fitted.rms, 2)}, of {fmt(largest, 3)} measured): "
+                     "the uncertainties from their scatter are of rounding size, not a measurement's (--sigma gives the samples' own)")
+    elif fitted.structured:
         notes.append(f"warning: the residuals have a shape ({_tested(fitted)}): the model does not describe these samples, "
                      "and the uncertainties assume that it does (--plot shows the residuals)")
     if fitted.chi2_p is not None and fitted.chi2_p < quality.CHI2_P:
