@@ -93,7 +93,7 @@ def put_motion(results: Results, notes: list[str], swing: Swing, exact, method: 
     results.put("period", motion.period, label)
     results.put("t_bottom", motion.t_bottom)
     balanced = isinstance(exact, Separatrix) and exact.balanced
-    if motion.t_bottom is None and not balanced and swing.speed_at(0.0) is not None and motion.period is not None:
+    if motion.t_bottom is None and not balanced and results["omega_bottom"].value is not None and motion.period is not None:
         notes.append("t_bottom: not found")
     if balanced:
         notes.append("balanced at the top: speeds at an angle are those of a body that has just left the top; it takes forever to leave")

@@ -32,7 +32,7 @@ def put_pivot(results: Results, swing: Swing, mass: float | None, cm_distance: f
     (with a mass and d > 0)."""
     if mass is not None:
         results.put("pivot_force0", pivot_force(swing, mass, cm_distance, gravity, swing.theta0, abs(swing.omega0)))
-        results.put("pivot_force_bottom", pivot_force(swing, mass, cm_distance, gravity, 0.0, swing.speed_at(0.0)))
+        results.put("pivot_force_bottom", pivot_force(swing, mass, cm_distance, gravity, 0.0, results["omega_bottom"].value))
     if mass and cm_distance:
         equivalent_length = swing.inertia / (mass * cm_distance)
         results.put("equivalent_length", equivalent_length)

@@ -61,6 +61,16 @@ def first_sense(exact, angle: float, arrives: float) -> float:
     return -1.0 if omega < 0 else 1.0
 
 
+def reached_speed(swing: Swing, exact, theta: float) -> float | None:
+    """|ω| at θ from energy where the exact motion gets there; None where it never does, for too
+    little energy or for a top it cannot pass between (a spring's well beyond the bottom)."""
+    speed = swing.speed_at(theta)
+    if speed is None or getattr(exact, "balanced", False):
+        return speed
+    reaches = exact.reaches(theta) if hasattr(exact, "reaches") else exact.time_to(theta) is not None
+    return speed if reaches else None
+
+
 def sine(theta: float) -> float:
     """sin θ, with the double nearest 180° (math.pi) read as 180° itself: 0, not 1.2e-16."""
     return 0.0 if abs(theta) == math.pi else math.sin(theta)
@@ -77,7 +87,10 @@ def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: fl
     if swing.gravity_torque:
         results.put("cm_distance", cm_distance)
     results.put("alpha0", abs(swing.accel(swing.theta0)))
-    results.put("omega_bottom", swing.speed_at(0.0))
+    bottom = reached_speed(swing, exact, 0.0)
+    results.put("omega_bottom", bottom)
+    if bottom is None and swing.speed_at(0.0) is not None:
+        notes.append("omega_bottom: the body never reaches the bottom (θ = 0): a top it cannot pass lies between")
     if angle is not None:
         speed_at_angle = swing.speed_at(angle)
         balanced = getattr(exact, "balanced", False)  # at rest on the top: the speeds of a body that has just left it, either way
