@@ -18,7 +18,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive bench completions --version --debug --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive fit bench completions --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in
@@ -363,6 +363,24 @@ _taucli() {
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        ;;
+    fit)
+        case "$prev" in
+            --fit) :; return 0 ;;
+            --x) :; return 0 ;;
+            --y) :; return 0 ;;
+            --sigma) :; return 0 ;;
+            --range) :; return 0 ;;
+            --every) :; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "correlation residual_rms r2 chi2_dof samples dropped" -- "$cur")); return 0 ;;
+            --to) :; return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+        esac
+        if [[ "$cur" != -* ]]; then
+            (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
+            return 0
+        fi
+        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --every --json --get --to --no-steps --uncertainty --plot --out --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -78,7 +78,7 @@ def _parameter(option: Option):
     """The typer parameter of one option of a table."""
     if option.positional:
         marker = typer.Argument(metavar=option.shown_metavar, help=option.help_text(), show_default=False)
-        annotation, default = Optional[str], None
+        annotation, default = (Optional[list[str]] if option.repeatable else Optional[str]), None
     elif option.kind == FLAG:
         marker = typer.Option(option.flag, help=option.help_text())
         annotation, default = bool, False
@@ -128,7 +128,9 @@ def build_app(env: Environment, only: str | None = None) -> typer.Typer:
     app.callback()(_typed(own, ROOT.options))
     for command in COMMANDS.values():
         if only is None or command.name == only:
-            app.command(command.name, cls=TaucliCommand)(_callback(command, env))
+            # a repeated argument takes the rest of the line, options it reads itself included (fit: the scene's options)
+            rest = {"ignore_unknown_options": True} if any(option.positional and option.repeatable for option in command.options) else {}
+            app.command(command.name, cls=TaucliCommand, context_settings=rest)(_callback(command, env))
     return app
 
 

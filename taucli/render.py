@@ -171,7 +171,8 @@ def document(report: Report, *, steps: bool = True) -> dict:
         "notes": list(report.notes),
     }
     for name, table in report.tables.items():
-        doc[name] = _json_table(table)
+        if name not in report.results:  # a result that is also a table (fit's correlation): its value in JSON, the table to a person
+            doc[name] = _json_table(table)
     if getattr(report, "uncertainties", None) is not None:
         _json_uncertain(doc, report)
     return doc
@@ -241,7 +242,8 @@ def document_text(report: Report, *, steps: bool = True, plot: dict | None = Non
         ',"notes":[', ",".join(map(_text, report.notes)), "]",
     ]  # fmt: skip
     for name, table in report.tables.items():
-        parts += [",", _text(name), ":", STRICT_JSON.encode(_json_table(table))]
+        if name not in report.results:  # (as in document)
+            parts += [",", _text(name), ":", STRICT_JSON.encode(_json_table(table))]
     if uncertain and report.draws:
         parts += [',"monte_carlo":', STRICT_JSON.encode(_monte_carlo(report))]
     if plot is not None:
@@ -416,7 +418,7 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
     console.print(Text.assemble((f"{report.scene}", "bold"), f": {report.model}"))
     console.print(Text(f"method: {report.method}", style="dim"))
 
-    rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items()]
+    rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items() if name not in report.tables]
     spreads = getattr(report, "uncertainties", None)
     if spreads:  # #22: 4.90 ± 0.08, digits matched to the uncertainty
         rows = [(name, with_uncertainty(report.results[name].value, spreads[name]) if name in spreads else value, unit, label) for name, value, unit, label in rows]
