@@ -148,7 +148,9 @@ def test_a_run_table_maps_options_and_the_result_measured():
     ("t (s),omega (rad/s)\n0,1\n", "spin-down", {"sigma": "0 rad/s"}, "expected an uncertainty greater than 0"),
     ("t (s),omega (rad/s),u\n0,1,0\n", "spin-down", {"sigma": "u"}, "line 2: expected an uncertainty greater than 0 in column 'u'"),
     ("t (s),omega (rad/s)\n-1,1\n", "spin-down", {}, "line 2: column 't (s)' (--time) expected a time of zero or more"),
-    ("amplitude (deg),period (s)\n10,2.01\n40,2.07\n", "pendulum", {},
+    ("amplitude (deg),period (s)\n10,2.01\n40,2.07\n", "pendulum", {},  # amplitude is a pendulum result too
+     "y: says which column was measured: 'amplitude (deg)', 'period (s)' are each named like a result"),
+    ("amplitude (deg),period (s)\n10,2.01\n40,2.07\n", "pendulum", {"y": "period"},
      "x is needed: every sample is the same run of pendulum (no column gives an input that differs between them), and 'amplitude (deg)' "
      "differs between them but is not used; say which input it is: x 'amplitude (deg)=OPTION'"),
     ("amplitude (deg),period (s)\n10,2.01\n40,2.07\n", "pendulum", {"x": ("amplitude",)},
