@@ -1,7 +1,7 @@
 """taucli impulse: angular impulse and momentum, τΔt = IΔω."""
 
 from taucli.names import QUADRATURE_NAMES
-from taucli.options.common import ANSWER, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
+from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
 from taucli.table import CHOICE, COUPLE, FILE, PARTICLE, Command, Option, Result
 
 MEETS = "Particles and bodies that meet it (L conserved)"
@@ -19,6 +19,7 @@ COMMAND = Command(
         Option("duration", "time", "How long the torque acts."),
         BRAKE_OPTION,
         FACE_OPTION,
+        BAND_OPTION,
         GRAVITY,
         Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
         Option("torque_profile", FILE, "CSV 't [ms], torque [N*m]' then rows; - for stdin.", metavar="FILE"),
