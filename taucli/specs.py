@@ -168,6 +168,7 @@ PARTICLE_FIELDS = {  # key: (kind, sign)
     "e": ("dimensionless", "nonnegative"),
 }
 COUPLE_FIELDS = {"inertia": ("moment of inertia", "nonnegative"), "omega0": ("angular velocity", "any"), "mass": ("mass", "positive"),
+                 "torque": ("torque", "positive"),
                  "offset": ("length", "nonnegative"), **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS}}
 
 
@@ -225,7 +226,7 @@ def particles(option: Option, given, inputs: Inputs, stdin) -> tuple:
 
 
 def couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
-    example = '{couple} "inertia=3kg*m^2 omega0=0", or {couple} "disc mass=2kg radius=0.1m omega0=100rpm"'
+    example = '{couple} "inertia=3kg*m^2 omega0=0", or {couple} "disc mass=2kg radius=0.1m omega0=100rpm", or through a clutch {couple} "inertia=3kg*m^2 torque=50N*m"'
     couples = []
     for number, source, spec in _specs(option, given):
         shape, fields = _spec_fields(spec, source, {*COUPLE_FIELDS, "axis"}, example, shape_word=True)
@@ -238,7 +239,7 @@ def couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
         part = None if shape is None else Part(shape, values.get("mass", 0.0), dims, fields.get("axis"), values.get("offset"), source)
         if part is not None and "mass" not in values:
             raise InputError(source, "needs mass= with a shape", example=example, got=repr(spec))
-        couples.append(Couple(source=source, inertia=values.get("inertia"), part=part, omega0=values.get("omega0")))
+        couples.append(Couple(source=source, inertia=values.get("inertia"), part=part, omega0=values.get("omega0"), torque=values.get("torque")))
     return tuple(couples)
 
 

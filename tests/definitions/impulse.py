@@ -88,6 +88,10 @@ def draw_impulse(rng: random.Random, folder) -> tuple[dict, list[str]]:
             else:
                 couples.append("disc " + spec(mass=(mag(rng, -1, 1), "kg"), radius=(mag(rng, -1.5, 0), "m"), omega0=omega))
             tags.append("couple")
+        side = random.Random(str(rng.getstate()))  # #35's draws, leaving the stream the older draws see as it was
+        if len(couples) == 1 and not particles and side.random() < 0.4:  # through a clutch that slips
+            couples[0] += " " + spec(torque=(inertia * W / T * mag(side, -1, 0.5), "N*m"))
+            tags.append("clutch")
         if particles:
             kw["particle"] = particles
         if couples:
@@ -316,6 +320,11 @@ def check_meeting(kw, report, res, inp, inertia, w0, w1, c: Checker) -> None:
     for name, l0, l1, j, speed_after in rows:
         c.eq("a part's J = L₁ − L₀", j, l1 - l0, l0, l1)
     c.eq("the parts' J add to zero", math.fsum(row[3] for row in rows), 0.0, *(row[1] for row in rows), *(row[2] for row in rows))
+    if "couple1_torque" in inp:  # a clutch that slips: each body's angular impulse is the clutch's T t_slip
+        torque, slip = inp["couple1_torque"], res.get("t_slip")
+        c.eq("T t_slip = I₁|ω₁ − ω_f| (the body's angular impulse)", torque * slip, abs(rows[0][2] - rows[0][1]), abs(rows[0][1]), abs(rows[0][2]))
+        c.eq("T t_slip = I₂|ω_f − ω₂| (the couple's)", torque * slip, abs(rows[1][2] - rows[1][1]), abs(rows[1][1]), abs(rows[1][2]))
+        c.eq("heat = KE0 − KE1 (the clutch's work over the angle slipped)", res.get("heat"), res["KE0"] - res["KE1"], res["KE0"])
     for n, (m, v1, arm) in after.items():
         row = next(row for row in rows if row[0] in (f"particle {n}", "particle"))
         c.eq("a particle's speed after (given, or v′ = ω₁r⊥ − e(v − ω₀r⊥))", row[4], v1, w1 * arm)

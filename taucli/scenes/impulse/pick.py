@@ -11,6 +11,7 @@ from taucli.scenes.given import Band, Brake, Couple, Face, Particle
 from taucli.scenes.impulse.balance import solve_balance
 from taucli.scenes.impulse.braked import braked_kinematics, solve_braked
 from taucli.scenes.impulse.changing_inertia import solve_changing_inertia
+from taucli.scenes.impulse.clutch import solve_clutch
 from taucli.scenes.impulse.meeting import solve_meeting
 from taucli.scenes.impulse.point import point_after
 from taucli.scenes.impulse.sampled import solve_profile
@@ -44,7 +45,8 @@ def impulse(
     point of the body before and after.
 
     The model, by what is given: --brake or --face, a constant torque against friction
-    (braked); --particle or --couple, L conserved as they meet the body (meeting);
+    (braked); --particle or --couple, L conserved as they meet the body (meeting; a couple
+    with torque=, through a clutch that slips: clutch);
     --inertia-final, I₀ω₀ = I₁ω₁ (changing_inertia); --torque-profile, J = ∫τ dt (sampled);
     else τΔt = I(ω₁ − ω₀) (balance). Each refuses what does not belong to it, then solves.
     A push (--force at --lever) adds its torque F r sin φ to --torque's."""
@@ -76,6 +78,11 @@ def impulse(
                        {"omega1": omega1, "torque": torque, "duration": duration, "inertia_final": inertia_final, "torque_profile": torque_profile})
         assumed = Assumed()
         omega0 = _at_rest_unless_given(omega0, assumed)
+        if any(c.torque is not None for c in couple):
+            if particle or len(couple) > 1:
+                raise InputError("couple", "with torque= (a clutch that slips) is solved for one {couple} and the body alone: "
+                                 "give the other bodies and the particles a run each", example='{couple} "inertia=3kg*m^2 omega0=0 torque=50N*m"')
+            return assumed.applied(solve_clutch(inertia, omega0, couple[0], inertia_steps=inertia_steps))
         return assumed.applied(solve_meeting(inertia, omega0, tuple(particle), tuple(couple), inertia_steps=inertia_steps))
     if inertia_final is None and torque_profile is None:
         if method != "auto":
