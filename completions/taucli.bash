@@ -130,16 +130,16 @@ _taucli() {
             --distance) _taucli_units m cm mm km in ft; return 0 ;;
             --time) _taucli_units s ms min h; return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "m1 m2 pulley_mass pulley_radius pulley_inertia axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in

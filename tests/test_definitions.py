@@ -112,7 +112,7 @@ def test_atwood_results_agree_with_their_definitions():
     branches = {"hanging": 100, "incline": 60, "stepped": 50, "rim": 50, "pulley mass": 80, "pulley inertia": 50, "part": 15,
                 "axle friction": 40, "mu_k": 30, "mu_s": 20, "v0": 50, "distance": 60, "time": 60, "at": 50, "units": 60,
                 "general": 150, "side1 table": 15, "side1 incline": 30, "side2 table": 15, "side2 incline": 30, "side friction": 40, "pull": 60,
-                "pull in place of m1": 5, "drive": 40, "same side": 25, "steps": 60}
+                "pull in place of m1": 5, "drive": 40, "same side": 25, "steps": 60, "fixed drum": 20}
     _, checker = run_scene("atwood", atwood.draw_atwood, atwood.check_atwood, 1600, 11, 0.4, branches)
     for definition in ("T1 = G1 − s μk1 N1 − m1 a", "T2 = G2 + s sgn(ρ) μk2 N2 + m2 a2", "T1 r1 − σ T2 r2 − τd − τa sgn ω = I α",
                        "W_gravity + W_pulls + W_drive − W_friction = ΔKE", "t_stop = −v₀/a", "a2 = ρ a (the strings' constraint)"):
