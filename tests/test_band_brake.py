@@ -213,3 +213,11 @@ def test_a_brake_without_a_lever_is_unchanged():
     result = values(taucli.spin_down(inertia="1kg*m^2", omega0="10rad/s", brake="force=100N mu=0.4 radius=0.5m"))
     assert result["torque_brake"] == pytest.approx(20.0, rel=1e-15)
     assert "force_brake" not in result
+
+
+def test_a_face_given_pmax_needs_no_gravity():
+    """pmax= sets the clamp force: no weight, so no standard gravity assumed, and --g is unused."""
+    report = taucli.spin_down(inertia="1kg*m^2", omega0="100rpm", face="mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm")
+    assert not any("standard gravity" in note for note in report.notes)
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--g", "9.8",
+                                  "--face", "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm"), "--g")

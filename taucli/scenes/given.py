@@ -136,6 +136,11 @@ class Face:
     surfaces: int = 1
     pmax: float | None = None  # the largest lining pressure, giving the clamp force with the radii
 
+    @property
+    def by_weight(self) -> bool:
+        """Pressed by the body's weight (no force=, no pmax=): it needs gravity."""
+        return self.force is None and self.pmax is None
+
 
 SURFACES = ("hang", "table", "incline")  # where a block of the Atwood machine is (--side1, --side2)
 

@@ -68,7 +68,7 @@ def impulse(
                       {"inertia_final": inertia_final, "torque_profile": torque_profile, "particle": particle or None, "couple": couple or None})
         assumed = Assumed()
         omega0 = _at_rest_unless_given(omega0, assumed)
-        gravity = assumed.gravity(g) if any(plate.force is None for plate in face) else None
+        gravity = assumed.gravity(g) if any(plate.by_weight for plate in face) else None
         return assumed.applied(solve_braked(inertia, omega0, torque, duration, tuple(brake), tuple(face), gravity, body_options,
                                             inertia_steps=inertia_steps, bands=tuple(band)))
     if g is not None:
@@ -130,7 +130,7 @@ def _check_braked(method: str, g: float | None, faces: Sequence[Face], inertia: 
     needs I, τ and Δt; it takes none of ``others``."""
     if method != "auto":
         raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); a braked impulse has a closed form")
-    if g is not None and not any(plate.force is None for plate in faces):
+    if g is not None and not any(plate.by_weight for plate in faces):
         raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     for name, value in others.items():
         if value is not None:

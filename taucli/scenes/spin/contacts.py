@@ -58,7 +58,7 @@ def put_contacts(brakes, faces, body_options: dict, rim: float | None, assumed: 
     """The brakes', faces' and bands' torques (contact.py), put among the results, steps and notes before the motion."""
     shape_rim = body_rim(body_options)
     options = body_options if shape_rim is not None or rim is None else {**body_options, "shape": "disc", "radius": rim}
-    g = assumed.gravity(g) if any(face.force is None for face in faces) else None
+    g = assumed.gravity(g) if any(face.by_weight for face in faces) else None
     contact = contacts(brakes, faces, options, body_mass(**body_options) if faces else body_options.get("mass"), g, bands)
     if brakes:
         results.put("torque_brake", contact.brake)

@@ -92,7 +92,7 @@ def spin_down(
     """
     if power == 0:
         power = None  # a motor of no power is no motor
-    if g is not None and not any(plate.force is None for plate in face or ()):
+    if g is not None and not any(plate.by_weight for plate in face or ()):
         raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     wheel = _wheel(body_options, rim_speed, until_arc, at)
     front = Front()
