@@ -86,6 +86,9 @@ def test_band_lining_pressure_and_units():
     assert si["pressure_band"] == pytest.approx(si["tension_tight"] / (0.2 * 0.05), rel=1e-15)
     for key in ("torque_band", "tension_tight", "tension_slack", "pressure_band", "t_stop"):
         assert us[key] == pytest.approx(si[key], rel=1e-12), key
+    shown = run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--band", "mu=0.3 wrap=180deg radius=0.2m tension=100N width=5cm",
+                       "--to", "pressure_band=psi", "--get", "pressure_band")
+    assert float(shown.out) == pytest.approx(si["pressure_band"] / 6894.757293168361, rel=1e-12)
 
 
 @settings(max_examples=30, deadline=None)

@@ -120,6 +120,8 @@ def test_set_moving_against_the_heavier_side_stops_then_slides_back():
         (["--m1", "2kg", "--m2", "1kg", "--fixed-drum", "--rim-mu", "0.2", "--pulley-mass", "1kg"], ["--pulley-mass", "--fixed-drum"]),
         (["--m1", "2kg", "--m2", "0kg", "--fixed-drum", "--rim-mu", "0.2"], ["--m2"]),
         (["--m1", "2kg", "--fixed-drum", "--rim-mu", "0.2"], ["--m2"]),
+        (["--m1", "2kg", "--m2", "1kg", "--fixed-drum", "--rim-mu", "0.2", "--pulley-radius", "5cm"], ["--pulley-radius", "--fixed-drum"]),
+        (["--m1", "2kg", "--m2", "1kg", "--fixed-drum", "--rim-mu", "0.2", "--at", "rim"], ["--at", "--fixed-drum"]),
     ],
 )
 def test_refusals(args, fragments):

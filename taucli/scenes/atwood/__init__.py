@@ -68,7 +68,8 @@ def atwood(
     string that may slide with --rim-mu; a rope over a drum that cannot turn with --fixed-drum;
     --at r, a point on the pulley; t_stop and distance_stop with --v0."""
     if fixed_drum:
-        return _over_a_fixed_drum(m1, m2, g, rim_mu, mu_k, mu_s, wrap, v0, distance, time, at=at, pulley_mass=pulley_mass, pulley_inertia=pulley_inertia,
+        return _over_a_fixed_drum(m1, m2, g, rim_mu, mu_k, mu_s, wrap, v0, distance, time, at=at, pulley_mass=pulley_mass, pulley_radius=pulley_radius,
+                                  pulley_inertia=pulley_inertia,
                                   axle_friction=axle_friction, part=part or None, radius1=radius1, radius2=radius2, same_side=same_side or None,
                                   torque=torque, side1=side1, side2=side2, incline=incline, pull=pull or None)
     if at is not None:  # the machine, then the point on its pulley (#34: every option passed on, --wrap was left out)
