@@ -224,3 +224,14 @@ def test_a_face_given_pmax_needs_no_gravity():
     assert not any("standard gravity" in note for note in report.notes)
     assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--g", "9.8",
                                   "--face", "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm"), "--g")
+
+
+def test_band_static_and_kinetic_coefficients():
+    """At rest the band holds up to (T₁ − T₂)r with μs; past it the drum turns against μk's torque."""
+    spec = "mu-s=0.4 mu-k=0.3 wrap=180deg radius=0.1m tension=100N"
+    kinetic = 100 * math.expm1(0.3 * math.pi) * 0.1
+    holding = 100 * math.expm1(0.4 * math.pi) * 0.1
+    held = values(taucli.impulse(inertia="1kg*m^2", omega0="0rad/s", torque=f"{(kinetic + holding) / 2!r}N*m", duration="1s", band=spec))
+    assert held["omega1"] == 0 and held["torque_band"] == pytest.approx(kinetic, rel=1e-14)
+    turns = values(taucli.impulse(inertia="1kg*m^2", omega0="0rad/s", torque=f"{holding * 1.01!r}N*m", duration="1s", band=spec))
+    assert turns["omega1"] == pytest.approx(holding * 1.01 - kinetic, rel=1e-12)
