@@ -74,6 +74,7 @@ _taucli() {
             --friction) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --brake) :; return 0 ;;
             --face) :; return 0 ;;
+            --band) :; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --viscous) _taucli_units 'N*m*s' 'N*m/(rad/s)'; return 0 ;;
             --drag) _taucli_units 'N*m*s^2'; return 0 ;;
@@ -92,16 +93,16 @@ _taucli() {
             --method) COMPREPLY=($(compgen -W "auto exact euler rk4 rk45" -- "$cur")); return 0 ;;
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --band --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -129,16 +130,16 @@ _taucli() {
             --distance) _taucli_units m cm mm km in ft; return 0 ;;
             --time) _taucli_units s ms min h; return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "m1 m2 pulley_mass pulley_radius pulley_inertia axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -202,6 +203,7 @@ _taucli() {
             --duration) _taucli_units s ms min h; return 0 ;;
             --brake) :; return 0 ;;
             --face) :; return 0 ;;
+            --band) :; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --inertia-final) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --torque-profile) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
@@ -209,16 +211,16 @@ _taucli() {
             --couple) :; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net torque_brake work_brake power_brake torque_face work_face power_face v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.torque couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --band --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in

@@ -30,9 +30,10 @@ NOT_QUANTITIES = NOT_QUANTITIES | {VECTOR}  # read a component at a time by its 
 PARTICLE = "particle"  # "mass=… speed=… radius=… [angle=…] [speed-after=… | e=… | radius-after=…]", repeatable
 COUPLE = "couple"  # "[SHAPE] inertia=… | mass=… dims…, omega0=…": another body on the axis, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
-BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…]": a brake shoe on a turning body, repeatable
-FACE = "face"  # "mu=… [force=…] [inner-radius=…] [outer-radius=…] [pressure=uniform|wear] [surfaces=…]": a pressed flat face, repeatable
-NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE}
+BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…] [lever=… pivot=… offset=…]": a brake shoe on a turning body, repeatable
+FACE = "face"  # "mu=… [force=…|pmax=…] [inner-radius=…] [outer-radius=…] [model=uniform|wear] [surfaces=…]": a pressed flat face, repeatable
+BAND = "band"  # "mu=… wrap=… [radius=…] [width=…] tension=…|force=… lever=… slack-arm=…|tight-arm=…": a band brake, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE, BAND}
 SIDE = "side"  # "hang" | "table [mu-s=… mu-k=…]" | "incline angle=… [mu-s=… mu-k=…]": where a block of atwood is
 PULL = "pull"  # "force=… [angle=…] [on=1|2]": a pull on a block of atwood, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {SIDE, PULL}
@@ -58,6 +59,7 @@ METAVARS = {
     "density": "DENSITY",
     "torsion constant": "KAPPA",
     "lead": "LEAD",
+    "pressure": "PRESSURE",
 }
 
 
