@@ -119,7 +119,7 @@ def _fence(lines: Sequence[str]) -> str:
 
 def markdown(sheet: Sheet) -> str:
     """The run as GitHub Markdown: the model line, the results table, tables, steps, notes."""
-    out = [f"**{md_text(sheet.scene)}**: {md_text(sheet.model)}  ", f"*method: {md_text(sheet.method)}*", ""]
+    out = [f"**{md_text(sheet.scene)}**: {md_text(sheet.model)}\\", f"*method: {md_text(sheet.method)}*", ""]
     out += _md_table(("result", "value", "unit", "what it is"), [(r.name, r.value, pretty_unit(r.unit), r.label) for r in sheet.results], (False, True, False, False))
     for part in sheet.tables:
         out += ["", f"**{md_text(part.title)}**", ""]
@@ -146,7 +146,7 @@ def _md_notes(notes: Sequence[str]) -> list[str]:
 
 def markdown_grid(grid: Grid) -> str:
     """A sweep as GitHub Markdown: the title, the model, one row per point."""
-    out = [f"**{md_text(grid.title)}**  ", f"*model: {md_text(grid.model)}*", ""]
+    out = [f"**{md_text(grid.title)}**\\", f"*model: {md_text(grid.model)}*", ""]
     out += _md_table([heading(*column) for column in grid.columns], [[shown(cell) for cell in row] for row in grid.rows], [True] * len(grid.columns))
     return "\n".join(out + _md_notes(grid.notes)) + "\n"
 

@@ -92,6 +92,10 @@ def math(text: str) -> str:
             atoms.append("^{" + math(text[i + 1 : close + 1]) + "}")  # e^(−t/τ): the bracket raised whole
             i = close + 1
             continue
+        if char == "√" and i + 1 < n and text[i + 1] == "(" and (close := _closing(text, i + 1)) is not None:
+            atoms.append("\\sqrt{" + math(text[i + 2 : close]) + "}")  # √(I/M): the root over the bracket's content
+            i = close + 1
+            continue
         if char in ACCENTS:
             base = atoms.pop() if atoms else "{}"
             atoms.append(f"\\{ACCENTS[char]}{{{base}}}")
@@ -130,30 +134,31 @@ def _closing(text: str, at: int) -> int | None:
     return None
 
 
-def _is_mathy(char: str) -> bool:
-    return char in GREEK or char in SYMBOLS or char in SUBSCRIPTS or char in SUPERSCRIPTS or char in ACCENTS
-
-
-def text(words: str) -> str:
-    """Text escaped for text mode, its Greek letters and math symbols in $…$: "ω₀ = 30 rad/s" -> "$\\omega_{0}$ = 30 rad/s"."""
-    out: list[str] = []
-    i, n = 0, len(words)
-    while i < n:
-        char = words[i]
+def _text_only(words: str) -> str:
+    out = []
+    for char in words:
         if char in TEXT_ESCAPES:
             out.append(TEXT_ESCAPES[char])
-        elif _is_mathy(char) and char not in "–—“”…′":
-            j = i
-            while j < n and _is_mathy(words[j]) and words[j] not in "–—“”…′":
-                j += 1
-            out.append("$" + math(words[i:j]) + "$")
-            i = j
-            continue
         elif char.isascii() or _LATIN.fullmatch(char):
             out.append(char)
         else:
             out.append(TEXT_ESCAPES.get(_plain(char), _plain(char)))
-        i += 1
+    return "".join(out)
+
+
+_MATHY = "".join(sorted({*GREEK, *SYMBOLS, *SUBSCRIPTS, *SUPERSCRIPTS, *ACCENTS} - set(TEXT_ESCAPES) - {"x̂"}))
+# a run of math in a text: its symbols with the letters and digits they touch (T₁, Iα, ½MR², 30°),
+# or a root over a bracket, √(I/M)
+_MATH_RUN = re.compile(rf"√\([^()]*(?:\([^()]*\)[^()]*)*\)|[A-Za-z0-9]*(?:[{re.escape(_MATHY)}]+[A-Za-z0-9]*)+")
+
+
+def text(words: str) -> str:
+    """Text escaped for text mode, its Greek letters and math in $…$: "ω₀ = 30 rad/s" -> "${\\omega}_{0}$ = 30 rad/s"."""
+    out, at = [], 0
+    for found in _MATH_RUN.finditer(words):
+        out += [_text_only(words[at : found.start()]), "$" + math(found[0]) + "$"]
+        at = found.end()
+    out.append(_text_only(words[at:]))
     return "".join(out)
 
 

@@ -292,6 +292,7 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
     elif output.format:
         stream.write(written(report, output.format, steps=output.steps))
         if output.format == "csv" and notes_to is not None:  # a spreadsheet's rows hold no notes: said beside them
+            stream.flush()
             notes_to.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in report.notes))
     else:
         render_human(report, stream, show_steps=output.steps)

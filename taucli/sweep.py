@@ -305,6 +305,7 @@ def _write_format(table: formats.Grid, format: str, stream, notes_to) -> None:
     """--format md|latex|html|csv (#36): the sweep's table as a document; a CSV's notes to stderr."""
     if format == "csv":
         stream.write(formats.csv_grid(table))
+        stream.flush()  # the rows, then the notes beside them
         if notes_to is not None:
             notes_to.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in table.notes))
         return

@@ -323,7 +323,7 @@ def test_user_text_in_a_unit_of_to_is_escaped_in_every_format(tmp_path):
     "equation, expected",
     [
         ("θ = ω₀²/(2|α|)", "{\\theta} = {\\omega}_{0}^{2}/(2|{\\alpha}|)"),
-        ("τ_rms = √(τ_a² t_a)", "{\\tau}_{\\mathrm{rms}} = \\surd ({\\tau}_{a}^{2} t_{a})"),
+        ("τ_rms = √(τ_a² t_a)", "{\\tau}_{\\mathrm{rms}} = \\sqrt{{\\tau}_{a}^{2} t_{a}}"),
         ("ω(t) = ω_ss(1 − e^(−t/τ_m))", "{\\omega}(t) = {\\omega}_{\\mathrm{ss}}(1 - e^{(-t/{\\tau}_{m})})"),
         ("a = g sin θ", "a = g \\sin  {\\theta}"),
         ("lost 799.6 J (100%)", "\\text{lost} 799.6 J (100\\%)"),

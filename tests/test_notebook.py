@@ -86,3 +86,15 @@ def test_a_result_no_keyword_turns_on_is_named_with_the_runs_results():
         report.results["v"]
     with pytest.raises(KeyError, match=r"^acceleration is not a result of atwood; this run's results: a, "):
         report.results["acceleration"]
+
+
+def test_the_notebook_example_of_docs_python_md_is_what_python_shows():
+    from conftest import ROOT
+
+    page = (ROOT / "docs" / "python.md").read_text(encoding="utf-8")
+    shown = next(line for line in page.splitlines() if line.startswith("<Report spin-down"))
+    report = taucli.spin_down(shape="disc", mass=5, radius="20 cm", omega0="30 rad/s", friction="0.3 N*m")
+    assert repr(report) == shown
+    assert "KE0 is not among this run's results: energy=True turns it on (--energy on the command line)" in page
+    for line in ("    omega0 (angular velocity, a number in rad/s; default 0)", "    friction (torque, a number in N*m)"):
+        assert line in page and line in taucli.spin_down.__doc__
