@@ -42,6 +42,7 @@ TEXT_ESCAPES = {
     "\\": "\\textbackslash{}", "{": "\\{", "}": "\\}", "#": "\\#", "$": "\\$", "%": "\\%", "&": "\\&", "_": "\\_",
     "~": "\\textasciitilde{}", "^": "\\textasciicircum{}", "<": "\\textless{}", ">": "\\textgreater{}", "|": "\\textbar{}",
     "–": "--", "—": "---", "“": "``", "”": "''", "…": "\\ldots{}", "′": "'", "\n": " ",
+    "-": "-{}", "`": "\\textasciigrave{}",  # no ligature: --g stays two hyphens, !` no ¡
 }  # fmt: skip
 _LATIN = re.compile(r"[\u00c0-\u00d6\u00d8-\u00f6\u00f8-\u00ff]")  # letters utf8 input with T1 fonts sets in text
 
@@ -207,8 +208,16 @@ def quantities(line: str) -> str:
 _PLAIN_NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e-?\d+)?")
 
 
+_UNCERTAIN = re.compile(r"(-?\d+(?:\.\d+)?) ± (\d+(?:\.\d+)?)")
+
+
 def _value(cell: str) -> str:
-    return f"\\num{{{cell}}}" if _PLAIN_NUMBER.fullmatch(cell) else text(cell)
+    """A value as shown: \\num{4.90}, or \\num{4.90 +- 0.08} with its uncertainty; a word as text."""
+    if _PLAIN_NUMBER.fullmatch(cell):
+        return f"\\num{{{cell}}}"
+    if found := _UNCERTAIN.fullmatch(cell):
+        return f"\\num[uncertainty-mode=separate]{{{found[1]} +- {found[2]}}}"  # 4.90 ± 0.08, as shown elsewhere
+    return text(cell)
 
 
 def _unit_cell(name: str | None) -> str:

@@ -42,6 +42,10 @@ def _docs_example(scene: str) -> str:
 
 
 EXAMPLES = sorted({(name, command.example) for name, command in SCENES.items()} | {(name, _docs_example(name)) for name in SCENES})
+EXAMPLES += [  # a body of parts (its parts table), a result solved for with an uncertainty (values with ± σ)
+    ("inertia", 'taucli inertia disc --mass 5kg --radius 0.2m --part "point mass=100g offset=20cm" --part "point mass=100g offset=20cm"'),
+    ("atwood", 'taucli atwood --m1 4kg --m2 1kg --pulley-radius 0.1m --find pulley_inertia --want "a=4.0+/-0.1m/s^2"'),
+]
 
 
 def run(command: str) -> tuple[int, str, str]:
@@ -253,6 +257,11 @@ def test_csv_of_one_run_is_one_row_of_every_result_at_full_precision(scene, comm
             assert float(cell) == value  # every digit of the double
         elif value is None:
             assert cell == ""
+
+
+def test_the_completions_offer_the_formats():
+    for path, offered in (("completions/taucli.fish", "-l format -x -a 'md latex html csv'"), ("completions/_taucli", "(md latex html csv)"), ("completions/taucli.bash", '--format) COMPREPLY=($(compgen -W "md latex html csv"')):
+        assert offered in (ROOT / path).read_text(encoding="utf-8"), path
 
 
 def test_no_steps_leaves_the_steps_out_of_each_format():
