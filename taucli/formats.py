@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 from taucli.measurement import with_uncertainty
 from taucli.names import FORMATS as FORMATS  # --format's choices
-from taucli.written import DIGITS, fmt, pretty_unit
+from taucli.written import pretty_unit, shown
 
 class Row(NamedTuple):
     """One result as a person is shown it: its value already written (6 digits, or with ± σ)."""
@@ -56,18 +56,6 @@ class Grid(NamedTuple):
     columns: tuple[tuple[str, str | None], ...]  # (name, unit)
     rows: tuple[tuple, ...]  # floats, bools, words or None
     notes: tuple[str, ...]
-
-def shown(value, digits: int = DIGITS) -> str:
-    """A value as a person reads it: 6 significant figures, yes/no, — where there is none."""
-    if value is None:
-        return "—"
-    if isinstance(value, bool):
-        return "yes" if value else "no"
-    if isinstance(value, (int, float)):
-        return fmt(float(value), digits)
-    if isinstance(value, list):  # --find's roots (#22)
-        return ", ".join(shown(item, digits) for item in value)
-    return str(value)
 
 def sheet(report, *, steps: bool = True) -> Sheet:
     """The report as the written formats show it (a Report, or a Measured one: values with ± σ)."""

@@ -21,8 +21,7 @@ from taucli import units
 from taucli.version import __version__
 from taucli.errors import InputError, did_you_mean
 from taucli.measurement import with_uncertainty
-from taucli import formats
-from taucli.formats import shown as shown  # a value as a person reads it (the sweep's table, the tests)
+from taucli.written import shown as shown  # a value as a person reads it (the sweep's table, the tests)
 from taucli.report import Report, Table, Value, pretty_unit
 
 
@@ -307,11 +306,15 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
 def written(report: Report, format: str, *, steps: bool = True) -> str:
     """--format md|latex|html|csv (#36): the run as a Markdown, LaTeX or HTML document, or a CSV
     of one row (a header of its results with their units)."""
-    from taucli import latex  # deferred: LaTeX's tables of symbols, only for --format latex
+    from taucli import formats  # deferred: the writers of documents (5 ms), only for --format
 
     if format == "csv":
         return formats.csv_grid(formats.single_grid(report))
-    return {"md": formats.markdown, "latex": latex.document, "html": formats.html_fragment}[format](formats.sheet(report, steps=steps))
+    if format == "latex":
+        from taucli import latex  # deferred: LaTeX's tables of symbols, only for --format latex
+
+        return latex.document(formats.sheet(report, steps=steps))
+    return {"md": formats.markdown, "html": formats.html_fragment}[format](formats.sheet(report, steps=steps))
 
 
 def _why_null(report: Report, names, stream: TextIO) -> None:

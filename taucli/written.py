@@ -61,3 +61,16 @@ def term(x: float, unit: str | None = None) -> str:
     parentheses with a true minus, (−1.5 rad/s²), so that "+ (−1.5 rad/s²) × 20 s" reads right."""
     text = quantity_text(x, unit) if unit else fmt(x)
     return f"(−{text[1:]})" if text.startswith("-") else text
+
+
+def shown(value, digits: int = DIGITS) -> str:
+    """A value as a person reads it: 6 significant figures, yes/no, — where there is none."""
+    if value is None:
+        return "—"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, (int, float)):
+        return fmt(float(value), digits)
+    if isinstance(value, list):  # --find's roots (#22)
+        return ", ".join(shown(item, digits) for item in value)
+    return str(value)
