@@ -38,6 +38,7 @@ _taucli() {
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
@@ -49,7 +50,7 @@ _taucli() {
             COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     spin-down)
         case "$prev" in
@@ -95,6 +96,7 @@ _taucli() {
             --rtol) :; return 0 ;;
             --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
@@ -102,7 +104,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --band --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --band --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -132,6 +134,7 @@ _taucli() {
             --at) _taucli_units m cm mm km in ft; return 0 ;;
             --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
@@ -139,7 +142,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -166,6 +169,7 @@ _taucli() {
             --at) _taucli_units m cm mm km in ft; return 0 ;;
             --get) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T T2 a_hanging alpha_pulley a_hand v v_hanging omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 v_ground v_ground_angle a_ground a_ground_angle" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T T2 a_hanging alpha_pulley a_hand v v_hanging omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 v_ground v_ground_angle a_ground a_ground_angle" -- "$cur")); return 0 ;;
@@ -177,7 +181,7 @@ _taucli() {
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --in-place --hanging-mass --string --pulley-mass --pulley-radius --g --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --in-place --hanging-mass --string --pulley-mass --pulley-radius --g --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in
@@ -213,6 +217,7 @@ _taucli() {
             --at) _taucli_units m cm mm km in ft; return 0 ;;
             --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
@@ -220,7 +225,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --band --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --band --g --inertia-final --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in
@@ -251,6 +256,7 @@ _taucli() {
             --rtol) :; return 0 ;;
             --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
@@ -258,7 +264,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in
@@ -271,6 +277,7 @@ _taucli() {
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
@@ -278,7 +285,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     gyro)
         case "$prev" in
@@ -303,6 +310,7 @@ _taucli() {
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
@@ -310,7 +318,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     drive)
         case "$prev" in
@@ -357,6 +365,7 @@ _taucli() {
             --move-angle) _taucli_units deg rad rev; return 0 ;;
             --get) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean rms_to_rated within_rating" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean rms_to_rated within_rating" -- "$cur")); return 0 ;;
@@ -364,7 +373,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     fit)
         case "$prev" in

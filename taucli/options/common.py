@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from taucli.names import METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
+from taucli.names import FORMATS, METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
 from dataclasses import replace
 
 from taucli.table import BAND, BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
@@ -103,6 +103,15 @@ ANSWER = (
         panel=OUTPUT,
     ),
     Option("jsonl", FLAG, "Like --json, but a sweep's documents one per line rather than one array.", panel=OUTPUT),
+    Option(
+        "format",
+        CHOICE,
+        "Write the answer as a document: md (GitHub Markdown), latex (siunitx units, the steps in align*), html (a fragment), "
+        "or csv (a header with units, a row per point of a sweep).",
+        panel=OUTPUT,
+        choices=FORMATS,
+        metavar="md|latex|html|csv",
+    ),
     Option(
         "plot",
         FLAG,
