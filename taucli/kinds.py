@@ -56,6 +56,7 @@ KINDS: dict[str, Kind] = {
         Kind("density", "kg/m**3", "'7800 kg/m^3'", ("kg/m^3", "g/cm^3", "lb/ft^3")),
         Kind("areal density", "kg/m**2", "'20 kg/m^2'", ("kg/m^2", "g/cm^2")),  # a plate's or disc's mass per area
         Kind("linear density", "kg/m", "0.5 kg/m", ("kg/m", "g/cm", "g/m")),  # a rod's or ring's mass per length
+        Kind("pressure", "Pa", "1 MPa", ("Pa", "kPa", "MPa", "bar", "psi")),
         Kind("torsion constant", "N*m/rad", "0.5 N*m/rad", ("N*m/rad", "N*m/deg", "mN*m/rad")),
         Kind("lead", "m/rev", "5 mm", ("mm", "in", "mm/rev", "in/rev")),  # a screw's advance per turn: a length alone is per revolution
     )
