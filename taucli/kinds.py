@@ -48,6 +48,7 @@ KINDS: dict[str, Kind] = {
         Kind("force", "N", "6 N", ("N", "kN", "lbf")),
         Kind("acceleration", "m/s**2", "'9.81 m/s^2'", ("m/s^2", "ft/s^2", "g0")),
         Kind("velocity", "m/s", "2 m/s", ("m/s", "km/h", "ft/s", "mph")),
+        Kind("momentum", "kg*m/s", "'2 kg*m/s'", ("kg*m/s", "N*s", "g*cm/s")),
         Kind("viscous coefficient", "N*m*s", "'0.01 N*m*s'", ("N*m*s", "N*m/(rad/s)")),
         Kind("drag coefficient", "N*m*s**2", "'0.001 N*m*s^2'", ("N*m*s^2",)),
         Kind("dimensionless", "", "0.5", ()),
