@@ -137,11 +137,13 @@ def test_pendulum_results_agree_with_their_definitions():
 
 
 def test_torque_results_agree_with_their_definitions():
-    run_scene("torque", vectors.draw_torque, vectors.check_torque, 600, 3, 0.8, {"vectors": 60, "plane": 30, "particles": 30, "both": 20, "nearly parallel": 10})
+    run_scene("torque", vectors.draw_torque, vectors.check_torque, 600, 3, 0.8, {"vectors": 60, "plane": 30, "particles": 30, "both": 20, "nearly parallel": 10,
+                                                                                        "momentum": 15, "about": 40})
 
 
 def test_gyro_results_agree_with_their_definitions():
-    run_scene("gyro", vectors.draw_gyro, vectors.check_gyro, 600, 13, 0.6, {"inertia": 60, "shape": 80, "torque": 30, "inertia_perp": 40, "units": 50})
+    run_scene("gyro", vectors.draw_gyro, vectors.check_gyro, 600, 13, 0.6, {"inertia": 60, "shape": 80, "torque": 30, "inertia_perp": 40, "units": 50,
+                                                                                 "precession": 40, "senses": 20})
 
 
 def test_inertia_results_agree_with_their_definitions():
