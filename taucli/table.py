@@ -56,6 +56,7 @@ METAVARS = {
     "power": "POWER",
     "energy": "ENERGY",
     "density": "DENSITY",
+    "stress": "STRESS",
     "torsion constant": "KAPPA",
     "lead": "LEAD",
 }

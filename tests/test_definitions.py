@@ -85,7 +85,7 @@ brake (α without the friction, the angle past the stop).
 from __future__ import annotations
 
 import pytest
-from definitions import atwood, drive, impulse, inertia, pendulum, rolling, spin, vectors
+from definitions import atwood, drive, flywheel, impulse, inertia, pendulum, rolling, spin, vectors
 from definitions.check import G0, run_scene, values
 
 import taucli
@@ -198,3 +198,9 @@ def test_impulse_point_under_a_brake_travels_to_the_stop():
     assert found["omega1"] == 0
     assert found["s"] == pytest.approx(0.5 * 100 / 12, rel=1e-12)
 
+
+
+def test_flywheel_results_agree_with_their_definitions():
+    branches = {"mean": 100, "band": 50, "rim": 50, "rim radius": 20, "solve I": 80, "solve energy": 80, "solve cs": 80, "punch": 40, "±": 30,
+                "density": 80, "units": 40}
+    run_scene("flywheel", flywheel.draw_flywheel, flywheel.check_flywheel, 600, 43, 0.6, branches)
