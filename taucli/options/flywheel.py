@@ -35,7 +35,7 @@ COMMAND = Command(
         Option("allowable_stress", "stress", "The stress the rim's material may carry, against the hoop stress at the top speed, e.g. 6MPa.", panel=RIM),
     ),
     results=(
-        Result("cs", None, "coefficient of fluctuation of speed…"),
+        Result("cs", "", "coefficient of fluctuation of speed…"),
         Result("energy_swing", "J", "maximum fluctuation of energy ΔE…"),
         Result("I", "kg*m**2", "moment of inertia of the flywheel…"),
         Result("omega_mean", "rad/s", "mean speed"),
@@ -48,7 +48,7 @@ COMMAND = Command(
         Result("hoop_stress", "Pa", "hoop stress in the rim at the mean speed, ρv²"),
         Result("hoop_stress_max", "Pa", "hoop stress at the top speed, ρv_max²"),
         Result("rim_area", "m**2", "cross-section of the rim, m/(2πRρ)"),
-        Result("stress_margin", None, "allowable stress over the hoop stress at the top speed"),
+        Result("stress_margin", "", "allowable stress over the hoop stress at the top speed"),
     ),
     output=ANSWER,
     headline="energy_swing",
