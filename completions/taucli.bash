@@ -305,6 +305,7 @@ _taucli() {
             --turn) COMPREPLY=($(compgen -W "left right pitch-up pitch-down roll-left roll-right" -- "$cur")); return 0 ;;
             --lean) _taucli_units deg rad rev; return 0 ;;
             --craft) COMPREPLY=($(compgen -W "vehicle ship aircraft" -- "$cur")); return 0 ;;
+            --rotor) :; return 0 ;;
             --bearing-span) _taucli_units m cm mm km in ft; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min L_orbital pivot_force_vertical pivot_force_horizontal couple effect bearing_force" -- "$cur")); return 0 ;;
@@ -312,11 +313,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min L_orbital pivot_force_vertical pivot_force_horizontal couple effect bearing_force" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration rotor.inertia rotor.spin" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --precession --spin-sense --turn --lean --craft --bearing-span --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --precession --spin-sense --turn --lean --craft --rotor --bearing-span --g --json --get --to --no-steps --batch --jsonl --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     drive)
         case "$prev" in

@@ -143,7 +143,7 @@ def test_torque_results_agree_with_their_definitions():
 
 def test_gyro_results_agree_with_their_definitions():
     run_scene("gyro", vectors.draw_gyro, vectors.check_gyro, 600, 13, 0.6, {"inertia": 60, "shape": 80, "torque": 30, "inertia_perp": 40, "units": 50,
-                                                                                 "precession": 40, "senses": 20})
+                                                                                 "precession": 40, "senses": 20, "rotors": 5})
 
 
 def test_inertia_results_agree_with_their_definitions():

@@ -561,3 +561,30 @@ def test_no_steady_precession_has_no_orbit():
     report = taucli.gyro(shape="disc", mass="100 g", radius="3 cm", cm_distance="4 cm", spin="10 rev/s", tilt="20 deg")
     assert report.results["L_orbital"].value is None and report.results["pivot_force_horizontal"].value is None
     assert any("no steady orbit" in note for note in report.notes)
+
+
+def test_khurmi_automobile_wheels_and_engine_add():
+    """Khurmi & Gupta, Theory of Machines, ch. 14: a four-wheeled car, each wheel 2.4 kg·m² and
+    660 mm across, the engine's rotating parts 1.2 kg·m² geared 3 : 1 to the back wheels, turning
+    the same way as the wheels, on a curve of 80 m: the gyroscopic couple (4I_W + G·I_E)v²/(r_W R)
+    = 0.5v² N·m, overturning the car outward. Here at 20 m/s: 200 N·m, as the engine given as a
+    rotor of its own beside the four wheels; turned the other way round, it takes away."""
+    v, r_w, radius = 20.0, 0.33, 80.0
+    report = taucli.gyro(inertia=4 * 2.4, spin=v / r_w, precession=v / radius, spin_sense="cw-from-right", turn="left",
+                         rotor=[f"inertia=1.2kg*m^2 spin={3 * v / r_w!r}rad/s sense=cw-from-right"])
+    assert report.results["couple"].value == pytest.approx(0.5 * v * v, rel=1e-14)
+    assert report.results["effect"].value == "rolls the vehicle to the right"  # outward from a left-hand curve
+    against = taucli.gyro(inertia=4 * 2.4, spin=v / r_w, precession=v / radius, spin_sense="cw-from-right", turn="left",
+                          rotor=[f"inertia=1.2kg*m^2 spin={3 * v / r_w!r}rad/s sense=ccw-from-right"])
+    assert against.results["couple"].value == pytest.approx((4 * 2.4 - 3 * 1.2) * v * v / (r_w * radius), rel=1e-14)
+
+
+def test_rotors_need_their_senses():
+    from conftest import assert_usage_error
+
+    assert_usage_error(run_taucli("gyro", "--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--rotor", "inertia=1 spin=1rad/s sense=cw-from-rear"),
+                       "--rotor", "goes with --spin-sense and --turn")
+    assert_usage_error(run_taucli("gyro", "--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--spin-sense", "cw-from-rear", "--turn", "left",
+                                  "--rotor", "inertia=1 spin=1rad/s sense=sideways"), "--rotor", "sense=")
+    assert_usage_error(run_taucli("gyro", "--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--spin-sense", "cw-from-rear", "--turn", "left",
+                                  "--rotor", "inertia=1 spin=1rad/s"), "--rotor", "needs sense=")

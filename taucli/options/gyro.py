@@ -1,7 +1,7 @@
 """taucli gyro: a spinning top or gyroscope on a pivot, and the precession of its axis."""
 
 from taucli.options.common import ANSWER, BODY, BODY_OPTIONS, GRAVITY
-from taucli.table import CHOICE, Command, Option, Result
+from taucli.table import CHOICE, ROTOR, Command, Option, Result
 
 PIVOT = "Pivot and torque"
 MACHINE = "A rotor on a machine whose axis is turned (--precession)"
@@ -67,6 +67,9 @@ COMMAND = Command(
                "(a two-wheeler leaning into a right-hand curve).", sign="any", panel=MACHINE),
         Option("craft", CHOICE, "The words for the effect: vehicle (front, rear, left, right), ship (bow, stern, port, starboard), "
                "aircraft (nose, tail, left, right).", choices=CRAFTS, default="vehicle", panel=MACHINE, metavar="vehicle|ship|aircraft"),
+        Option("rotor", ROTOR, 'Another rotor the vehicle turns with the first, e.g. "inertia=0.3kg*m^2 spin=5000rpm sense=cw-from-right" '
+               '(an engine beside the road wheels; repeatable): the angular momenta add as vectors.', repeatable=True, panel=MACHINE,
+               metavar='"inertia=… spin=… sense=…"'),
         Option("bearing_span", "length", "The distance between the rotor shaft's two bearings: each carries the couple as a force C/l.", panel=MACHINE),
         GRAVITY,
     ),

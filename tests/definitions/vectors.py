@@ -145,6 +145,10 @@ def draw_gyro(rng: random.Random) -> tuple[dict, list[str]]:
             if rng.random() < 0.4:
                 kw["lean"] = rng.uniform(-1.2, 1.2)
             tags.append("senses")
+            if rng.random() < 0.3:
+                sense = rng.choice([f"{t}-from-{e}" for t in ("cw", "ccw") for e in ("rear", "front", "left", "right", "above", "below")])
+                kw["rotor"] = [f"inertia={mag(rng, -2, 1)!r}kg*m^2 spin={signed(rng, mag(rng, 0, 3), 0.2)!r}rad/s sense={sense}"]
+                tags.append("rotors")
         if rng.random() < 0.5:
             kw["bearing_span"] = mag(rng, -1, 1)
         tags.append("precession")
@@ -165,10 +169,20 @@ def check_machine(kw: dict, inp: dict, res: dict, inertia: float, c: Checker) ->
         axis = tuple((-1 if turn == "cw" else 1) * x for x in VIEWER[viewer])
         lean = inp.get("lean", 0.0)
         axis = (axis[0], axis[1] * math.cos(lean) - axis[2] * math.sin(lean), axis[1] * math.sin(lean) + axis[2] * math.cos(lean))
-        sine = math.hypot(*cross(axis, TURNED_ABOUT[kw["turn"]]))
+        momentum = [inertia * inp["spin"] * x for x in axis]
+        scale = abs(L)
+        for text in kw.get("rotor", []):  # "inertia=… spin=… sense=…": each rotor's Iω along its own sense, after the lean
+            fields = dict(item.split("=") for item in text.split())
+            turn, _, viewer = fields["sense"].split("-", 2)
+            other = tuple((-1 if turn == "cw" else 1) * x for x in VIEWER[viewer])
+            other = (other[0], other[1] * math.cos(lean) - other[2] * math.sin(lean), other[1] * math.sin(lean) + other[2] * math.cos(lean))
+            spin_i = float(fields["inertia"].removesuffix("kg*m^2")) * float(fields["spin"].removesuffix("rad/s"))
+            momentum = [m + spin_i * x for m, x in zip(momentum, other)]
+            scale += abs(spin_i)
+        c.eq("couple = |ΣL × Ω|", res.get("couple"), math.hypot(*cross(momentum, TURNED_ABOUT[kw["turn"]])) * rate, scale * rate)
     else:
         sine = math.sin(inp.get("tilt", math.pi / 2))
-    c.eq("couple = Iω_sΩ sin θ", res.get("couple"), abs(inertia * inp["spin"]) * rate * sine, abs(L) * rate)
+        c.eq("couple = Iω_sΩ sin θ", res.get("couple"), abs(inertia * inp["spin"]) * rate * sine, abs(L) * rate)
     if "bearing_span" in inp:
         c.eq("bearing_force = couple / span", res.get("bearing_force"), res["couple"] / inp["bearing_span"])
 

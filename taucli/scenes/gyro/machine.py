@@ -25,7 +25,7 @@ import math
 from collections.abc import Sequence
 
 from taucli.errors import InputError
-from taucli.options.gyro import COMMAND as TABLE
+from taucli.options.gyro import COMMAND as TABLE, SPIN_SENSES
 from taucli.report import Report, Step, fmt, quantity_text
 from taucli.scenes.gyro.roots import finite
 from taucli.scenes.inertia import body
@@ -139,6 +139,7 @@ def machine(
     lean: float | None = None,
     craft: str | None = None,
     bearing_span: float | None = None,
+    rotor: Sequence = (),
     **dims: float | None,
 ) -> Report:
     """The gyroscopic couple on a rotor whose axis the vehicle turns at --precession."""
@@ -153,6 +154,15 @@ def machine(
                          example="{spin_sense} cw-from-rear {turn} left")
     if sensed and tilt is not None:
         raise InputError("tilt", "conflicts with {spin_sense} and {turn}: they fix the angle between the spin axis and the turn's axis")
+    if rotor and not sensed:
+        raise InputError("rotor", "goes with {spin_sense} and {turn}: the rotors' angular momenta add as vectors, each with its sense",
+                         example='{spin_sense} cw-from-right {turn} left {rotor} "inertia=0.3kg*m^2 spin=5000rpm sense=cw-from-right"')
+    if rotor and bearing_span is not None:
+        raise InputError("bearing_span", "is one rotor's: with {rotor} the couple is the rotors' together, carried by several shafts")
+    for other in rotor:
+        if other.sense not in SPIN_SENSES:
+            raise InputError(other.source, "expected sense= one of " + ", ".join(SPIN_SENSES), example='{rotor} "inertia=0.3kg*m^2 spin=5000rpm sense=cw-from-right"',
+                             got=repr(other.sense))
     if lean is not None and not sensed:
         raise InputError("lean", "goes with {spin_sense} and {turn}: the lean turns the rotor's axis, whose sense they give", example="{spin_sense} cw-from-left {turn} right {lean} 20deg")
     angular_momentum = moment * spin
@@ -171,10 +181,12 @@ def machine(
             spin_axis = lean_turned(spin_axis, lean)
         turn_axis = TURN_AXES[turn]
         momentum = tuple(angular_momentum * c for c in spin_axis)
+        if rotor:
+            momentum = _rotors_added(momentum, rotor, lean, steps)
         turning = tuple(precession * c for c in turn_axis)
         reactive = cross(momentum, turning)
         couple = size(reactive)
-        sine = size(cross(spin_axis, turn_axis))
+        sine = size(cross(momentum, turn_axis)) / size(momentum) if any(momentum) else 0.0
         results.put("couple", finite(couple), " on the vehicle, L × Ω")
         effect = effect_words(reactive, craft)
         results.put("effect", effect)
@@ -185,11 +197,12 @@ def machine(
                           + (f", turned by the lean of {fmt(math.degrees(lean))}° about x" if lean else "")
                           + f"; the turn ({turn}) is a rotation about Ω̂"))
         steps.append(Step("The couple the frame applies to turn L (active)", "C_active = dL/dt = Ω × L",
-                          f"{quantity_text(precession, 'rad/s')} {_vec(turn_axis)} × {quantity_text(angular_momentum, 'kg*m**2/s')} {_vec(spin_axis)}",
+                          f"{quantity_text(precession, 'rad/s')} {_vec(turn_axis)} × "
+                          + (f"{quantity_text(angular_momentum, 'kg*m**2/s')} {_vec(spin_axis)}" if not rotor else f"{_vec(momentum)} kg·m²/s"),
                           f"{_vec(tuple(-c for c in reactive))} N·m",
                           "L keeps its size but its direction turns at Ω, so it changes at Ω × L; the bearings must apply that couple to the rotor"))
         steps.append(Step("The reactive couple on the vehicle", "C = L × Ω,  |C| = Iω_sΩ sin θ",
-                          f"{quantity_text(angular_momentum, 'kg*m**2/s')} × {quantity_text(precession, 'rad/s')} × {fmt(sine)}",
+                          f"{quantity_text(size(momentum), 'kg*m**2/s')} × {quantity_text(precession, 'rad/s')} × {fmt(sine)}",
                           f"{quantity_text(couple, 'N*m')}: {effect}",
                           "the rotor pushes back on its bearings with the opposite couple; θ is the angle between the spin axis and the turn's axis"))
         if couple == 0 and precession > 0:
@@ -225,6 +238,21 @@ def machine(
                           f"a couple carried by two bearings l apart is a pair of equal, opposite forces across the shaft: {where}"))
     model = "gyroscopic couple on a rotor whose axis is turned: C = Iω_sΩ" + (" sin θ" if sensed and sine != 1.0 or tilt is not None else "")
     return Report("gyro", model, "closed form", results, steps, notes)
+
+
+def _rotors_added(momentum: Vector, rotors: Sequence, lean: float | None, steps: list[Step]) -> Vector:
+    """The first rotor's L with each --rotor's Iω_s along its own sense (turned by the lean): angular momenta add as vectors."""
+    terms = [momentum]
+    for other in rotors:
+        axis = spin_direction(other.sense)
+        if lean:
+            axis = lean_turned(axis, lean)
+        terms.append(tuple(other.inertia * other.spin * c for c in axis))
+    total = tuple(math.fsum(t[i] for t in terms) for i in range(3))
+    steps.append(Step("The rotors' angular momenta add", "L = Σ Iᵢω_sᵢ ŝᵢ", " + ".join(f"{_vec(t)}" for t in terms), f"{_vec(total)} kg·m²/s",
+                      "each rotor's L lies along its own axis, in its own sense; the vehicle turns them all at Ω, so the couple is Ω × ΣL "
+                      "(a rotor the other way round takes away)"))
+    return total
 
 
 def _vec(v: Vector) -> str:

@@ -14,7 +14,7 @@ from taucli.report import Report
 from taucli.scenes.gyro.machine import machine
 from taucli.scenes.gyro.top import top
 
-_MACHINE_ONLY = ("spin_sense", "turn", "lean", "craft", "bearing_span")
+_MACHINE_ONLY = ("spin_sense", "turn", "lean", "craft", "bearing_span", "rotor")
 _TOP_ONLY = ("cm_distance", "torque", "inertia_perp")
 
 
@@ -44,12 +44,13 @@ def gyro(
     lean: float | None = None,
     craft: str | None = None,
     bearing_span: float | None = None,
+    rotor: Sequence = (),
     g: float | None = None,
 ) -> Report:
     """``taucli gyro``: a top on a pivot (its weight at --cm-distance, or --torque), or with
     --precession a rotor whose axis a vehicle turns (the gyroscopic couple)."""
     dims = {"radius": radius, "inner_radius": inner_radius, "outer_radius": outer_radius, "length": length, "width": width, "height": height, "depth": depth}
-    given = {"spin_sense": spin_sense, "turn": turn, "lean": lean, "craft": craft, "bearing_span": bearing_span,
+    given = {"spin_sense": spin_sense, "turn": turn, "lean": lean, "craft": craft, "bearing_span": bearing_span, "rotor": rotor or None,
              "cm_distance": cm_distance, "torque": torque, "inertia_perp": inertia_perp}
     if precession is None:
         for name in _MACHINE_ONLY:
@@ -63,7 +64,7 @@ def gyro(
     if shape is None and mass is not None:
         raise InputError("mass", "goes with {shape}: with {inertia} (or parts) the rotor's mass is not used", example="{inertia} '400kg*(0.3m)^2'")
     report = machine(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, spin=spin, tilt=tilt, precession=precession,
-                     spin_sense=spin_sense, turn=turn, lean=lean, craft=craft, bearing_span=bearing_span, **dims)
+                     spin_sense=spin_sense, turn=turn, lean=lean, craft=craft, bearing_span=bearing_span, rotor=tuple(rotor or ()), **dims)
     if g is not None:
         report.notes.append("g plays no part: the vehicle turns the rotor's axis at the rate given")
     return report
