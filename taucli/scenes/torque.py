@@ -247,7 +247,7 @@ def torque(
                                ("L = r × p", momentum)) if given]
     if point is not None:
         model = " and ".join(what) + f", about the point {_vec(point)} m"
-        steps.insert(0, Step("Positions from the point", f"r' = r − a,  a = {_vec(point)} m", "; ".join(f"{_vec(w)} − {_vec(point)}" for w in given_r),
+        steps.insert(0, Step("Positions from the point", f"r' = r − a,  a = {_vec(point)} m", "; ".join(f"{_signed_vec(w)} − {_signed_vec(point)}" for w in given_r),
                              "; ".join(_vec(w) + " m" for w in [*force_r, *particle_r]),
                              "a torque or an angular momentum is about a point: each position is measured from it, r' = r − a "
                              "(a force through the point has no torque about it)"))
@@ -264,6 +264,11 @@ def _about(about) -> Vector | None:
     if len(points) != 1 or not isinstance(points[0], tuple) or len(points[0]) != 3:
         raise InputError("about", "expected one point x,y,z with a unit", example='{about} "1,0,0 m"')
     return points[0]
+
+
+def _signed_vec(v: Sequence[float]) -> str:
+    """(0, 0.5, −2): a vector in a numbers line, its minus signs true minus signs."""
+    return "(" + ", ".join("−" + fmt(c)[1:] if fmt(c).startswith("-") else fmt(c) for c in v) + ")"
 
 
 def _from(where: Vector, point: Vector) -> Vector:

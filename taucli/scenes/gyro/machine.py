@@ -256,4 +256,5 @@ def _rotors_added(momentum: Vector, rotors: Sequence, lean: float | None, steps:
 
 
 def _vec(v: Vector) -> str:
-    return "(" + ", ".join(fmt(0.0 if abs(c) < 1e-15 else c, 4) for c in v) + ")"
+    """(0, −1, 0): a direction or a vector in a step, with true minus signs."""
+    return "(" + ", ".join(fmt(0.0 if abs(c) < 1e-15 else c, 4).replace("-", "−", 1) for c in v) + ")"
