@@ -18,7 +18,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive fit bench completions --version --debug --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel fit bench completions --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in
@@ -37,6 +37,7 @@ _taucli() {
             --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
             --offset) _taucli_units m cm mm km in ft; return 0 ;;
             --part) :; return 0 ;;
+            --body-offset) _taucli_units m cm mm km in ft; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
@@ -44,7 +45,7 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "mass density gyration radius inner_radius outer_radius length width height depth offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "mass density gyration radius inner_radius outer_radius length width height depth offset body_offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
@@ -52,7 +53,7 @@ _taucli() {
             COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --body-offset --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     spin-down)
         case "$prev" in
@@ -288,6 +289,8 @@ _taucli() {
             --angle) _taucli_units deg rad rev; return 0 ;;
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
             --velocity) :; return 0 ;;
+            --momentum) :; return 0 ;;
+            --about) :; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
@@ -299,7 +302,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --momentum --about --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     gyro)
         case "$prev" in
@@ -323,18 +326,25 @@ _taucli() {
             --torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --tilt) _taucli_units deg rad rev; return 0 ;;
             --inertia-perp) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --precession) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --spin-sense) COMPREPLY=($(compgen -W "cw-from-rear ccw-from-rear cw-from-front ccw-from-front cw-from-left ccw-from-left cw-from-right ccw-from-right cw-from-above ccw-from-above cw-from-below ccw-from-below" -- "$cur")); return 0 ;;
+            --turn) COMPREPLY=($(compgen -W "left right pitch-up pitch-down roll-left roll-right" -- "$cur")); return 0 ;;
+            --lean) _taucli_units deg rad rev; return 0 ;;
+            --craft) COMPREPLY=($(compgen -W "vehicle ship aircraft" -- "$cur")); return 0 ;;
+            --rotor) :; return 0 ;;
+            --bearing-span) _taucli_units m cm mm km in ft; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min L_orbital pivot_force_vertical pivot_force_horizontal couple effect bearing_force" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min L_orbital pivot_force_vertical pivot_force_horizontal couple effect bearing_force" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration rotor.inertia rotor.spin" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --precession --spin-sense --turn --lean --craft --rotor --bearing-span --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     drive)
         case "$prev" in
@@ -392,6 +402,45 @@ _taucli() {
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        ;;
+    flywheel)
+        case "$prev" in
+            --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
+            --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --length) _taucli_units m cm mm km in ft; return 0 ;;
+            --width) _taucli_units m cm mm km in ft; return 0 ;;
+            --height) _taucli_units m cm mm km in ft; return 0 ;;
+            --depth) _taucli_units m cm mm km in ft; return 0 ;;
+            --axis) COMPREPLY=($(compgen -W "distance central diameter center end normal center-width center-height edge-width edge-height height width depth" -- "$cur")); return 0 ;;
+            --offset) _taucli_units m cm mm km in ft; return 0 ;;
+            --part) :; return 0 ;;
+            --omega-mean) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --omega-max) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --omega-min) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --fluctuation) :; return 0 ;;
+            --speed-variation) :; return 0 ;;
+            --energy-swing) _taucli_units J kJ MJ 'kW*h' Wh; return 0 ;;
+            --energy-per-cycle) _taucli_units J kJ MJ 'kW*h' Wh; return 0 ;;
+            --punch-fraction) :; return 0 ;;
+            --rim-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --rim-speed) _taucli_units 'm/s' 'km/h' 'ft/s' mph; return 0 ;;
+            --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
+            --allowable-stress) _taucli_units Pa kPa MPa GPa psi 'N/mm^2'; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area stress_margin" -- "$cur")); return 0 ;;
+            --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area stress_margin" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction rim_radius rim_speed density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --want) :; return 0 ;;
+            --mc) :; return 0 ;;
+        esac
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --rim-radius --rim-speed --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
         ;;
     fit)
         case "$prev" in

@@ -12,7 +12,7 @@ from taucli import units
 from taucli.errors import InputError
 from taucli.reading import Inputs, word
 from taucli.report import Value, fmt
-from taucli.scenes.given import PRESSURES, SURFACES, Band, Brake, Couple, Face, Part, Particle, Pull, Side
+from taucli.scenes.given import PRESSURES, SURFACES, Band, Brake, Couple, Face, Part, Particle, Pull, Rotor, Side
 from taucli.table import Option
 
 
@@ -192,6 +192,7 @@ PARTICLE_FIELDS = {  # key: (kind, sign)
     "radius_after": ("length", "nonnegative"),
     "e": ("dimensionless", "nonnegative"),
 }
+ROTOR_FIELDS = {"inertia": ("moment of inertia", "positive"), "spin": ("angular velocity", "any")}
 COUPLE_FIELDS = {"inertia": ("moment of inertia", "nonnegative"), "omega0": ("angular velocity", "any"), "mass": ("mass", "positive"),
                  "torque": ("torque", "positive"),
                  "offset": ("length", "nonnegative"), **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS}}
@@ -266,6 +267,20 @@ def couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
             raise InputError(source, "needs mass= with a shape", example=example, got=repr(spec))
         couples.append(Couple(source=source, inertia=values.get("inertia"), part=part, omega0=values.get("omega0"), torque=values.get("torque")))
     return tuple(couples)
+
+
+def rotors(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """gyro's --rotor: "inertia=… spin=… sense=cw-from-rear" (the sense a word the scene checks)."""
+    example = '{rotor} "inertia=0.3kg*m^2 spin=5000rpm sense=cw-from-right"'
+    rotors = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*ROTOR_FIELDS, "sense"}, example, shape_word=False)
+        for needed in ("inertia", "spin", "sense"):
+            if needed not in fields:
+                raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
+        values = _read_fields(fields, ROTOR_FIELDS, source, f"rotor{number}", inputs)
+        rotors.append(Rotor(source, values["inertia"], values["spin"], fields["sense"]))
+    return tuple(rotors)
 
 
 # --brake, --face and --band of spin-down and impulse (#24, #35): "key=value ..." specs like --particle's.

@@ -227,9 +227,13 @@ def range_chart(points: list[Point], swept_range: Swept, swept_list: Swept | Non
 
 
 def chart_names(points: list[Point], y: list[str]) -> list[str]:
-    """The results a range's chart shows: --y, else the scene's headline result."""
+    """The results a range's chart shows: --y, else the scene's headline result (where a model of
+    the scene has no such result, as gyro's rotor on a machine has no precession rate: its first number)."""
     results = points[0].report.results
-    names = y or [scene(points[0].report.scene).headline]
+    headline = scene(points[0].report.scene).headline
+    if headline not in results:
+        headline = next((name for name, value in results.items() if isinstance(value.value, float)), headline)
+    names = y or [headline]
     for name in names:
         if name not in results:
             raise InputError("y", f"expected the name of a result of {points[0].report.scene}: {', '.join(results)}", got=repr(name), hint=did_you_mean(name, results))

@@ -37,6 +37,8 @@ NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE, BAND}
 SIDE = "side"  # "hang" | "table [mu-s=… mu-k=…]" | "incline angle=… [mu-s=… mu-k=…]": where a block of atwood is
 PULL = "pull"  # "force=… [angle=…] [on=1|2]": a pull on a block of atwood, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {SIDE, PULL}
+ROTOR = "rotor"  # "inertia=… spin=… sense=cw-from-rear": another rotor whose axis a vehicle turns (gyro), repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {ROTOR}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {
@@ -57,6 +59,7 @@ METAVARS = {
     "power": "POWER",
     "energy": "ENERGY",
     "density": "DENSITY",
+    "stress": "STRESS",
     "torsion constant": "KAPPA",
     "lead": "LEAD",
     "pressure": "PRESSURE",

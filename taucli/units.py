@@ -29,7 +29,7 @@ from taucli import cache, expressions, spellings
 from taucli.errors import InputError
 from taucli.kinds import KINDS, STANDARD_GRAVITY, Kind, article, check_bounds
 from taucli.registry import (
-    AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, Ambiguous, bare_number, expected, from_pint, number_times_unit,
+    AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, WEIGHT_INERTIA, Ambiguous, bare_number, expected, from_pint, number_times_unit,
 )
 from taucli.screen import MAX_DIGITS, MAX_TEXT_LENGTH, screen
 
@@ -239,9 +239,16 @@ def _note(option: str, text: str, reading: Reading, value: float, gravity: float
         said.append(f"a weight, read as the mass W/g = {value:.6g} kg ({g})")
     elif reading.how == MASS_AS_WEIGHT:
         said.append(spellings.as_force(reading.unit))
+    elif reading.how == WEIGHT_INERTIA:
+        said.append(_WR2_NOTE)
     elif reading.how == OVER_RADIUS:
         said.append(f"α = a_t/R = {value:.6g} rad/s²" if kind.name == "angular acceleration" else f"ω = v/R = {value:.6g} rad/s")
     return f"{option} {text}: " + "; ".join(said) if said else None
+
+
+# A pound in an inertia with no s² is a pound of mass; the WR² of US drive catalogues (weight × radius of
+# gyration², in lb·ft²) has the same number, J = WR²/g with W in lbf, so both readings agree.
+_WR2_NOTE = "a pound or ounce of mass, the same number as a WR² (J = WR²/g)"
 
 
 def convert(value: float, si_unit: str, target: str, option: str) -> float:
@@ -277,6 +284,8 @@ def converted(value: float, si_unit: str, target: str, option: str) -> Parsed:
         note = f"{option} {target.strip()}: {spellings.revolutions(split[1], squared=kind.name == 'angular acceleration')} (n = ω/2π)"
     elif how == MASS_AS_WEIGHT:
         note = f"{option} {target.strip()}: {spellings.as_force(split[1])}"
+    elif how == WEIGHT_INERTIA:
+        note = f"{option} {target.strip()}: {_WR2_NOTE}"
     elif how == OVER_RADIUS:
         note = f"{option} {target.strip()}: a speed over a length, in radians ({'α = a_t/R' if kind.name == 'angular acceleration' else 'ω = v/R'})"
     return Parsed(value / factor, note)

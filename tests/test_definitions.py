@@ -85,7 +85,7 @@ brake (α without the friction, the angle past the stop).
 from __future__ import annotations
 
 import pytest
-from definitions import atwood, drive, impulse, inertia, pendulum, rolling, spin, vectors
+from definitions import atwood, drive, flywheel, impulse, inertia, pendulum, rolling, spin, vectors
 from definitions.check import G0, run_scene, values
 
 import taucli
@@ -146,11 +146,13 @@ def test_pendulum_results_agree_with_their_definitions():
 
 
 def test_torque_results_agree_with_their_definitions():
-    run_scene("torque", vectors.draw_torque, vectors.check_torque, 600, 3, 0.8, {"vectors": 60, "plane": 30, "particles": 30, "both": 20, "nearly parallel": 10})
+    run_scene("torque", vectors.draw_torque, vectors.check_torque, 600, 3, 0.8, {"vectors": 60, "plane": 30, "particles": 30, "both": 20, "nearly parallel": 10,
+                                                                                        "momentum": 15, "about": 40})
 
 
 def test_gyro_results_agree_with_their_definitions():
-    run_scene("gyro", vectors.draw_gyro, vectors.check_gyro, 600, 13, 0.6, {"inertia": 60, "shape": 80, "torque": 30, "inertia_perp": 40, "units": 50})
+    run_scene("gyro", vectors.draw_gyro, vectors.check_gyro, 600, 13, 0.6, {"inertia": 60, "shape": 80, "torque": 30, "inertia_perp": 40, "units": 50,
+                                                                                 "precession": 40, "senses": 20, "rotors": 5})
 
 
 def test_inertia_results_agree_with_their_definitions():
@@ -211,3 +213,9 @@ def test_impulse_point_under_a_brake_travels_to_the_stop():
     assert found["omega1"] == 0
     assert found["s"] == pytest.approx(0.5 * 100 / 12, rel=1e-12)
 
+
+
+def test_flywheel_results_agree_with_their_definitions():
+    branches = {"mean": 100, "band": 50, "rim": 50, "rim radius": 20, "solve I": 80, "solve energy": 80, "solve cs": 80, "punch": 40, "±": 30,
+                "density": 80, "units": 40}
+    run_scene("flywheel", flywheel.draw_flywheel, flywheel.check_flywheel, 600, 43, 0.6, branches)

@@ -30,6 +30,7 @@ OTHER = {
     "kg*m**2/s": ("g*cm^2/s", 1e7),
     "W": ("kW", 1e-3),
     "Pa": ("kPa", 1e-3),
+    "m**2": ("cm^2", 1e4),
     "kg*m/s": ("g*cm/s", 1e5),  # #34: an impulse's linear momentum
     "N*s": ("mN*s", 1e3),  # #34: the pivot's impulse
 }

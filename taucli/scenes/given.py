@@ -80,6 +80,16 @@ class Couple:
     torque: float | None = None
 
 
+@dataclass(frozen=True)
+class Rotor:
+    """Another rotor on the vehicle (gyro --rotor): its I, its spin and the sense a book gives it."""
+
+    source: str
+    inertia: float
+    spin: float
+    sense: str
+
+
 PRESSURES = ("uniform", "wear")  # a face's pressure models (model=)
 
 
