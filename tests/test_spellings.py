@@ -115,6 +115,9 @@ SPELLINGS = {
     # density (a part's density=): 1 lb/ft³ = 0.45359237 kg / 0.3048³ m³
     "density": (7800.0, ["7800 kg/m^3", "7800 kg/m3", "7.8 g/cm^3", "7.8 g/cm3", "7.8 g/mL", "7800 kg*m^-3",
                          f"{7800 / (0.45359237 / 0.3048**3)!r} lb/ft^3", "7.8 tonne/m^3", "7800"], None, None),
+    # pressure (a face's pmax=, a spec key): 1 bar = 1e5 Pa, 1 psi = 6894.757293168361 Pa
+    "pressure": (1.5e6, ["1.5 MPa", "1.5MPa", "1.5e6 Pa", "1500 kPa", "15 bar", "15bar", f"{1.5e6 / 6894.757293168361!r} psi", "1.5e6"],
+                 None, None),
     # stress (flywheel --allowable-stress): 1 psi = 1 lbf/in² = 6894.757293168361 Pa
     "stress": (6e6, ["6 MPa", "6MPa", "6e6 Pa", "6000 kPa", "0.006 GPa", "6 N/mm^2", "6 N/mm2", f"{6e6 / 6894.757293168361!r} psi", "6e6"],
                ("flywheel", "--omega-mean", "300rpm", "--fluctuation", "0.02", "--energy-swing", "5kJ", "--rim-radius", "0.6m", "--density", "7200kg/m^3"),
