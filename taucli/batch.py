@@ -23,10 +23,11 @@ import json
 import os
 import select
 import stat
+from collections.abc import Iterator
 
 from taucli.version import __version__
 from taucli.answer import solve
-from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean, out_of_range
+from taucli.errors import ExitStatus, InputError, TaucliError, bounded, clipped, did_you_mean, out_of_range
 from taucli.render import Output, document_text, prepared
 from taucli.table import FLAG, Command
 
@@ -36,6 +37,10 @@ _EXAMPLE_LINE = '{"m1": "4kg", "m2": "1kg"}'
 # A write of at most PIPE_BUF bytes reaches a pipe whole (POSIX): lines are written in blocks
 # of no more than this, each block ending a line, so a run that is killed leaves whole lines.
 BLOCK_BYTES = 4096
+# The longest line read (1 MiB of characters: a scene's line is under a kilobyte): a longer one, or
+# input with no line end at all (/dev/zero), gives an error object and the rest of it is passed
+# over a block at a time, so memory stays flat whatever comes in.
+MAX_LINE = 1 << 20
 
 
 def run(command: Command, fixed: dict, output: Output, env) -> int:
@@ -57,11 +62,13 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
     number = solved = 0
     pending: list = []  # texts, or their bytes where the stream has a byte buffer
     size = 0
-    for number, line in enumerate(lines, start=1):
-        if not line.strip():  # a blank line (a file's last newline, a spacer a person typed): nothing to solve
+    for number, line in enumerate(_lines(lines), start=1):
+        if line.__class__ is str and not line.strip():  # a blank line (a file's last newline, a spacer a person typed): nothing to solve
             continue
         solved += 1
         try:
+            if line.__class__ is not str:
+                raise line
             given, answer = _line(line, keys, command, texts)
             given = {**fixed, **given}
             report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag)
@@ -88,7 +95,7 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
             pending, size = [], 0
         pending.append(text)
         size += length
-        if interactive or not (whole or _waiting(lines)):
+        if interactive or line.__class__ is not str or not (whole or _waiting(lines)):  # a line too long: its error now, before the rest is passed over
             _write(out, pending)
             pending, size = [], 0
     _write(out, pending)
@@ -97,6 +104,27 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
         return int(ExitStatus.OK)
     print(f"taucli: error: {failed} of {solved} lines failed (the first: line {first_failure})", file=env.stderr)
     return int(ExitStatus.INTERNAL if failures[ExitStatus.INTERNAL] else ExitStatus.USAGE)
+
+
+def _too_long(start: str) -> InputError:
+    return InputError("", f"a line is at most {MAX_LINE:,} characters (1 MiB); expected a JSON object of options", example=_EXAMPLE_LINE,
+                      got=f"a longer line starting {start[:40]!r}")
+
+
+def _lines(stream) -> Iterator:
+    """The lines of ``stream``, each read at most MAX_LINE characters at a time: a line, or the
+    InputError of a line that is longer (the rest of it is then read and passed over)."""
+    readline = getattr(stream, "readline", None)
+    if readline is None:  # a list of lines
+        yield from (line if len(line) <= MAX_LINE else _too_long(line) for line in stream)
+        return
+    while line := readline(MAX_LINE + 1):
+        if len(line) <= MAX_LINE or line.endswith("\n"):
+            yield line
+            continue
+        yield _too_long(line)
+        while (rest := readline(MAX_LINE)) and not rest.endswith("\n"):
+            pass
 
 
 def _a_file(lines) -> bool:
@@ -141,7 +169,7 @@ def _error(number: int, status: ExitStatus, err: Exception, failures: dict) -> s
     else:
         option, message = None, f"internal error ({type(err).__name__}: {err}); this is a bug in taucli, please report it"
     failures[status] = failures.get(status, 0) + 1
-    error = {"option": option, "message": " ".join(message.split())}
+    error = {"option": option and bounded(clipped(option)), "message": bounded(" ".join(message.split()))}
     return json.dumps({"taucli": __version__, "line": number, "error": error}, ensure_ascii=False, separators=(",", ":")) + "\n"
 
 
@@ -170,6 +198,8 @@ def _line(line: str, keys: dict[str, str], command: Command, texts: frozenset[st
         given = _STRICT.decode(text)
     except ValueError as err:
         raise InputError("", "expected a JSON object of options", example=_EXAMPLE_LINE, got=f"{text[:60]!r} ({err})") from None
+    except RecursionError:  # arrays or objects nested some thousand deep
+        raise InputError("", "expected a JSON object of options, not values nested this deep", example=_EXAMPLE_LINE, got=repr(text[:60])) from None
     if not isinstance(given, dict):
         raise InputError("", "expected a JSON object of options", example=_EXAMPLE_LINE, got=repr(text[:60]))
     options: dict = {}
@@ -183,6 +213,8 @@ def _line(line: str, keys: dict[str, str], command: Command, texts: frozenset[st
             continue
         if name == "to":
             answer["to"] = tuple(value if isinstance(value, list) else [value])
+            if not all(isinstance(to, str) for to in answer["to"]):
+                raise InputError("to", "expected a text NAME=UNIT or a list of them", example='"to": ["a=ft/s^2", "T1=lbf"]', got=json.dumps(value)[:80])
         elif name == "no_steps":
             answer["steps"] = not _flag(value, name)
         elif name in FINDING:

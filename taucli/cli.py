@@ -19,7 +19,7 @@ from typing import Annotated, Optional, TextIO
 import typer
 
 from taucli import answer, help, pipeline, render
-from taucli.errors import ExitStatus, InputError, TaucliError, out_of_range
+from taucli.errors import ExitStatus, InputError, TaucliError, bounded, out_of_range
 from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
@@ -238,7 +238,7 @@ def _is_usage_error(err: Exception) -> bool:
 
 
 def _fail(env: Environment, status: ExitStatus, message: str) -> int:
-    print(f"taucli: error: {' '.join(message.split())}", file=env.stderr)
+    print(f"taucli: error: {bounded(' '.join(message.split()))}", file=env.stderr)
     return int(status)
 
 

@@ -1,0 +1,109 @@
+"""Hostile input stays bounded and answered (#33): batch lines of any length, echoes of any size,
+odd JSON shapes, profile values out of bounds, bytes that are not UTF-8."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from conftest import assert_usage_error, run_taucli, strict_json
+
+GOOD = '{"m1": "4kg", "m2": "1kg"}'
+
+
+def _batch(stdin: bytes | str, *args: str) -> tuple[int, list[dict], str]:
+    data = stdin.encode("utf-8", "surrogateescape") if isinstance(stdin, str) else stdin
+    done = subprocess.run([sys.executable, "-m", "taucli", "atwood", "--batch", "--no-steps", *args], input=data, capture_output=True, timeout=60)
+    text = done.stdout.decode("utf-8")  # strict: every line out is UTF-8
+    return done.returncode, [strict_json(line) for line in text.splitlines()], done.stderr.decode("utf-8")
+
+
+def test_a_batch_line_longer_than_a_mebibyte_gives_an_error_object_and_the_run_goes_on():
+    long_line = '{"m1": "' + "4" * (1 << 20) + 'kg"}'
+    code, out, err = _batch(f"{GOOD}\n{long_line}\n{GOOD}\n")
+    assert code == 2 and "1 of 3 lines failed (the first: line 2)" in err
+    assert [doc.get("line") for doc in out] == [None, 2, None]
+    message = out[1]["error"]["message"]
+    assert "at most 1,048,576 characters" in message and len(message) < 300
+    assert out[2]["results"]["a"]["value"] == pytest.approx(3 * 9.80665 / 5, rel=1e-15)
+
+
+def test_a_line_just_under_the_cap_is_read():
+    padded = '{"m1": "4kg", "m2": "1kg"' + " " * ((1 << 20) - len(GOOD)) + "}"
+    assert len(padded) == 1 << 20
+    code, out, _ = _batch(padded + "\n")
+    assert code == 0 and out[0]["results"]["a"]["value"] == pytest.approx(3 * 9.80665 / 5, rel=1e-15)
+
+
+def test_endless_input_with_no_line_end_keeps_memory_flat():
+    """/dev/zero: the error object comes out at once, and memory stays flat (it grew by 330 MB/s)."""
+    script = (
+        "import resource, subprocess, sys, time\n"
+        "child = subprocess.Popen([sys.executable, '-m', 'taucli', 'atwood', '--batch'], stdin=open('/dev/zero', 'rb'), stdout=subprocess.PIPE)\n"
+        "first = child.stdout.readline()\n"
+        "time.sleep(2)\n"
+        "child.kill(); child.wait()\n"
+        "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)\n"
+        "sys.stdout.write(first.decode())\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
+    peak_kb, first = done.stdout.split("\n", 1)
+    assert int(peak_kb) < 150_000, peak_kb
+    assert "at most 1,048,576 characters" in json.loads(first)["error"]["message"]
+
+
+def test_an_error_quotes_at_most_about_80_characters_of_what_was_typed(taucli):
+    huge = "4" * 100_000
+    for args in (["--m1", huge + "kg"], ["--m1", "x" + huge], ["--m1", "4kg", "--to", "a=" + huge], ["--m1", "4kg", "--get", "a" + huge],
+                 ["--m1", "4kg", "--pull", huge + "=4"], ["--m1", "4kg", "--" + huge]):
+        done = taucli("atwood", "--m2", "1kg", *args)
+        assert_usage_error(done)
+        assert len(done.err) < 400, (args[-1][:10], done.err)
+        assert max(len(word) for word in done.err.split()) <= 90
+    code, out, _ = _batch(f'{{"m1": "{huge}", "{huge}": 1}}\n{{"m1": "{"4 " * 50_000}kg"}}\n')
+    assert code == 2 and all(len(json.dumps(doc)) < 600 for doc in out), out
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        "[" * 1000 + "]" * 1000,
+        '{"a":' * 1000 + "1" + "}" * 1000,
+        '{"m1": "4kg", "to": true}',
+        '{"m1": "4kg", "to": 5}',
+        '{"m1": "4kg", "to": [1]}',
+        '{"m1": "4kg", "to": {}}',
+        '{"m1": "4kg", "to": ["a=ft/s^2", null]}',
+    ],
+)
+def test_odd_json_shapes_are_bad_input_not_bugs(line):
+    code, out, err = _batch(line + "\n")
+    assert code == 2, (out, err)
+    assert "this is a bug" not in out[0]["error"]["message"]
+
+
+def test_a_key_with_a_byte_that_is_not_utf8_is_escaped_in_the_error_object():
+    code, out, _ = _batch(b'{"m\xff1": "4kg"}\n{"m1": "4k\xffg"}\n')  # _batch decodes the output strictly
+    assert code == 2
+    assert out[0]["error"]["option"] == "m\\xff1" and "m\\xff1 is not an option" in out[0]["error"]["message"]
+    assert "4k" in out[1]["error"]["message"]
+
+
+def test_a_profile_is_held_to_the_bounds_a_typed_value_is(tmp_path, taucli):
+    cases = {
+        "t [s], torque [N*m]\n0, 1e308\n1, 1e308\n": "torque of 0 or between 1e-40 and 1e40 N*m",
+        "t [s], torque [N*m]\n0, 1\n1e-200, 2\n2e-200, 3\n": "time of 0 or between 1e-40 and 1e40 s",
+        "t [s], torque [N*m]\n0, 1\n1e50, 2\n": "time of 0 or between 1e-40 and 1e40 s",
+        "t [s], torque [N*m]\n1e-40, 1\n1.0000001e-40, 2\n": "time steps of at least 1e-40 s",
+    }
+    for number, (text, expected) in enumerate(cases.items()):
+        path = tmp_path / f"p{number}.csv"
+        path.write_text(text)
+        for method in ("auto", "trapezoid"):
+            done = taucli("impulse", "--inertia", "1kg*m^2", "--omega0", "0", "--torque-profile", str(path), "--method", method)
+            assert_usage_error(done, "--torque-profile", expected)
+    typed = taucli("impulse", "--inertia", "1kg*m^2", "--omega0", "0", "--torque", "1e308", "--duration", "1s")
+    assert_usage_error(typed, "torque of 0 or between 1e-40 and 1e40 N*m")
