@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from conftest import assert_usage_error, run_taucli, strict_json
+from conftest import assert_usage_error, strict_json
 
 GOOD = '{"m1": "4kg", "m2": "1kg"}'
 
