@@ -107,3 +107,14 @@ def test_a_profile_is_held_to_the_bounds_a_typed_value_is(tmp_path, taucli):
             assert_usage_error(done, "--torque-profile", expected)
     typed = taucli("impulse", "--inertia", "1kg*m^2", "--omega0", "0", "--torque", "1e308", "--duration", "1s")
     assert_usage_error(typed, "torque of 0 or between 1e-40 and 1e40 N*m")
+
+
+def test_charts_and_tables_are_drawn_at_20_to_400_columns(taucli):
+    """COLUMNS=100000 took 5 s and 434 MB for one chart (#33 item 2)."""
+    args = ("atwood", "--m1", "4kg", "--m2", "1kg", "--distance", "1m", "--plot")
+    wide = taucli(*args, env={"COLUMNS": "100000"})
+    assert wide.code == 0 and max(len(line) for line in wide.out.splitlines()) == 400
+    swept = taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--pulley-mass", "1..3kg", "--points", "3", env={"COLUMNS": "10000000"})
+    assert swept.code == 0 and max(len(line) for line in swept.out.splitlines()) <= 400
+    narrow = taucli(*args, env={"COLUMNS": "5"})
+    assert narrow.code == 0 and 20 <= max(len(line) for line in narrow.out.splitlines()) <= 40
