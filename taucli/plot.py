@@ -15,6 +15,7 @@ import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
+from taucli.cache import made
 from taucli.errors import InputError
 from taucli.report import Report, Trajectory, fmt, pretty_unit
 
@@ -202,8 +203,30 @@ def _unwritable(path: str, err: OSError) -> InputError:
     return InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}")
 
 
+def _matplotlib_folder() -> None:
+    """matplotlib keeps its settings and font list in ~/.config/matplotlib and ~/.cache/matplotlib
+    (or $XDG_CONFIG_HOME, $XDG_CACHE_HOME) and warns over several lines on stderr where it cannot
+    make them (a read-only or missing home), or makes a missing home's whole tree. They are made
+    here as the cache folder is (at most two levels, never a home); where they cannot be, unless
+    MPLCONFIGDIR says otherwise, it is given a temporary folder, removed at exit."""
+    if os.environ.get("MPLCONFIGDIR"):
+        return
+    home = os.path.expanduser("~")
+    bases = (os.environ.get("XDG_CONFIG_HOME") or os.path.join(home, ".config"), os.environ.get("XDG_CACHE_HOME") or os.path.join(home, ".cache"))
+    if all(made(os.path.join(base, "matplotlib")) and os.access(os.path.join(base, "matplotlib"), os.W_OK) for base in bases):
+        return
+    import atexit  # deferred: only where matplotlib has no folder of its own
+    import shutil  # deferred: as above
+    import tempfile  # deferred: as above
+
+    folder = tempfile.mkdtemp(prefix="taucli-matplotlib-")
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    os.environ["MPLCONFIGDIR"] = folder
+
+
 def write_file(chart: Chart, path: str) -> None:
     """The chart as an SVG or PNG file (matplotlib, Agg backend)."""
+    _matplotlib_folder()
     import matplotlib  # deferred: matplotlib (hundreds of ms), only for a file
 
     matplotlib.use("Agg")
