@@ -285,6 +285,8 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
     if output.charted:
         from taucli import plot  # deferred: charts (2 ms, and plotille or matplotlib when drawn), only for --plot or --out
     chart = plot.motion_chart([("", report)], chart_units(report, output.to)) if output.drawn else None
+    if output.out is not None:  # the file first: one that cannot be written (a full disk) is refused before any answer
+        plot.write_file(chart, output.out)
     if output.get:
         if output.uncertainty:  # #22: a second column, the result's standard uncertainty
             spreads = getattr(report, "uncertainties", None) or {}
@@ -300,8 +302,6 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
         if output.plot:
             columns, colour = terminal_style(stream)
             stream.write("\n" + plot.terminal(chart, columns, colour=colour))
-    if output.out is not None:
-        plot.write_file(chart, output.out)
     stream.flush()
 
 

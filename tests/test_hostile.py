@@ -4,6 +4,7 @@ odd JSON shapes, profile values out of bounds, bytes that are not UTF-8."""
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 
@@ -118,3 +119,39 @@ def test_charts_and_tables_are_drawn_at_20_to_400_columns(taucli):
     assert swept.code == 0 and max(len(line) for line in swept.out.splitlines()) <= 400
     narrow = taucli(*args, env={"COLUMNS": "5"})
     assert narrow.code == 0 and 20 <= max(len(line) for line in narrow.out.splitlines()) <= 40
+
+
+CHART = ("atwood", "--m1", "4kg", "--m2", "1kg", "--distance", "1m", "--no-steps")
+
+
+def test_out_refuses_a_link_and_a_name_with_no_stem(tmp_path, taucli):
+    """#33 item 7: a dangling link was deleted and the chart written beside it; .svg wrote .svg.png."""
+    link = tmp_path / "link.svg"
+    link.symlink_to(tmp_path / "elsewhere.svg")
+    done = taucli(*CHART, "--out", str(link))
+    assert_usage_error(done, "--out: expected a file, not a symbolic link")
+    assert link.is_symlink() and not (tmp_path / "elsewhere.svg").exists()
+    for name in (".svg", ".png", str(tmp_path / ".svg")):
+        assert_usage_error(taucli(*CHART, "--out", name), f"--out: expected a name before {name[-4:]}")
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["link.svg"]
+
+
+def test_a_chart_that_cannot_be_written_is_refused_before_the_answer(tmp_path):
+    """#33 item 6: a full disk (here a file size limit) after the answer printed it and exited 2.
+    The file is written first, through a temporary file renamed onto it: the old one stays whole."""
+    chart = tmp_path / "chart.svg"
+    chart.write_text("the old chart")
+
+    def small_files():
+        import resource
+
+        resource.setrlimit(resource.RLIMIT_FSIZE, (2000, 2000))
+
+    done = subprocess.run([sys.executable, "-m", "taucli", *CHART, "--out", str(chart)], capture_output=True, text=True, preexec_fn=small_files,
+                          env={**os.environ, "TAUCLI_CACHE_DIR": "", "PYTHONIOENCODING": "utf-8"}, timeout=120)
+    assert done.returncode == 2 and done.stdout == ""
+    assert done.stderr.startswith("taucli: error: --out: expected a file that can be written") and len(done.stderr.splitlines()) == 1
+    assert chart.read_text() == "the old chart" and sorted(path.name for path in tmp_path.iterdir()) == ["chart.svg"]
+    written = subprocess.run([sys.executable, "-m", "taucli", *CHART, "--out", str(chart), "--get", "a"], capture_output=True, text=True, timeout=120)
+    assert written.returncode == 0 and chart.read_text().lstrip().startswith("<?xml")
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["chart.svg"]
