@@ -46,8 +46,9 @@ BLOCK_BYTES = 4096
 MAX_LINE = 1 << 20
 
 
-def run(command: Command, fixed: dict, output: Output, env) -> int:
-    """Solve one scene per line of ``env.stdin``; ``fixed`` holds the command line's options."""
+def run(command: Command, fixed: dict, output: Output, env, *, limit: float | None = None) -> int:
+    """Solve one scene per line of ``env.stdin``; ``fixed`` holds the command line's options;
+    ``limit`` bounds each line's --find (seconds, estimated)."""
     lines = env.stdin
     if lines is None:
         raise InputError("batch", "reads JSON lines on stdin, but stdin is closed", example="taucli atwood --batch < scenes.jsonl")
@@ -78,7 +79,7 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
                     raise line
                 given, answer = _line(line, keys, command, texts)
                 given = {**fixed, **given}
-                report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag)
+                report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag, limit=limit)
                 shown = output._replace(**answer) if answer else output
                 text = document_text(prepared(report, shown), steps=shown.steps) + "\n"
             except TaucliError as err:
