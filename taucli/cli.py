@@ -232,6 +232,8 @@ def _whole_number(command: Command, text: Optional[str], name: str = "points") -
     if text is None:
         return None
     try:
+        if not text.strip().isascii() or "_" in text:  # one rule with quantities: no 1_000, no fullwidth ５
+            raise ValueError(text)
         return int(text)
     except ValueError:
         raise InputError(name, "expected a whole number", example=f"{{{name}}} 50", got=repr(text)) from None

@@ -89,6 +89,8 @@ def _decoded(samples, source: str, name: str):
 
 def _count(option: Option, given, inputs: Inputs, stdin) -> int:
     try:
+        if isinstance(given, str) and (not given.strip().isascii() or "_" in given):  # as cli._whole_number
+            raise ValueError(given)
         return int(given)
     except (TypeError, ValueError):
         raise InputError(option.name, "expected a whole number", example=f"{{{option.name}}} 50", got=repr(given)) from None

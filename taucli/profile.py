@@ -84,6 +84,8 @@ def _samples(rows: Iterator[tuple[int, str]], time_factor: float, torque_factor:
         if len(cells) != 2:
             raise InputError(OPTION, f"line {number}: expected two numbers, time and torque", got=repr(line))
         try:
+            if not line.isascii() or "_" in line:  # one rule with quantities: no 1_000, no fullwidth ５
+                raise ValueError(line)
             t, torque = float(cells[0]) * time_factor, float(cells[1]) * torque_factor
         except ValueError:
             raise InputError(OPTION, f"line {number}: expected numbers", got=repr(line)) from None

@@ -155,3 +155,19 @@ def test_a_chart_that_cannot_be_written_is_refused_before_the_answer(tmp_path):
     written = subprocess.run([sys.executable, "-m", "taucli", *CHART, "--out", str(chart), "--get", "a"], capture_output=True, text=True, timeout=120)
     assert written.returncode == 0 and chart.read_text().lstrip().startswith("<?xml")
     assert sorted(path.name for path in tmp_path.iterdir()) == ["chart.svg"]
+
+
+def test_digits_follow_one_rule_everywhere(tmp_path, taucli):
+    """1_000 and fullwidth digits are refused in quantities; --mc, --points and the CSV reader took them."""
+    assert_usage_error(taucli("atwood", "--m1", "1_000kg", "--m2", "1kg"), "--m1")
+    assert_usage_error(taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--pulley-mass", "1..2kg", "--points", "５", "--get", "a"),
+                       "--points: expected a whole number", "got '５'")
+    assert_usage_error(taucli("atwood", "--m1", "4+/-0.1kg", "--m2", "1kg", "--mc", "1_000", "--get", "a"), "--mc: expected a whole number", "got '1_000'")
+    profile = tmp_path / "p.csv"
+    profile.write_text("t [s], torque [N*m]\n0, 1_0\n1, 1\n", encoding="utf-8")
+    assert_usage_error(taucli("impulse", "--inertia", "1kg*m^2", "--omega0", "0", "--torque-profile", str(profile)), "line 2: expected numbers")
+
+
+def test_an_angle0_just_past_180_deg_shows_the_digits_that_matter(taucli):
+    done = taucli("pendulum", "--shape", "point", "--radius", "1m", "--mass", "1kg", "--angle0", "180.00000001deg")
+    assert_usage_error(done, "expected an angle from −180 to 180 deg under gravity alone, got 180.00000001")
