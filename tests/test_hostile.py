@@ -171,3 +171,21 @@ def test_digits_follow_one_rule_everywhere(tmp_path, taucli):
 def test_an_angle0_just_past_180_deg_shows_the_digits_that_matter(taucli):
     done = taucli("pendulum", "--shape", "point", "--radius", "1m", "--mass", "1kg", "--angle0", "180.00000001deg")
     assert_usage_error(done, "expected an angle from −180 to 180 deg under gravity alone, got 180.00000001")
+
+
+def test_rk4_blown_up_by_stiff_drag_says_it_went_unstable(taucli):
+    """--drag 1e10 --drag-exponent 2.5 --method rk4 was refused as 'out of range' (an OverflowError
+    in the stiffness, |ω|^1.5 past a double; the Python API raised it bare)."""
+    args = ("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--drag", "1e10", "--drag-exponent", "2.5", "--method", "rk4", "--time", "1s")
+    done = taucli(*args, "--no-steps")
+    assert done.code == 0 and "rk4 went unstable" in " ".join(done.out.split()) and "Use --dt below 3.5e-12 s" in " ".join(done.out.split())
+    # stiffness at ω₀ = 10 rad/s: n k ω^(n−1)/I = 2.5e10 · 10^1.5; rk4's limit 2.785 over it
+    assert 2.785 / (2.5e10 * 10**1.5) == pytest.approx(3.5e-12, rel=0.01)
+    report = taucli_api().spin_down(inertia=1, omega0="10rad/s", drag=1e10, drag_exponent=2.5, method="rk4", time="1s")
+    assert report.results["omega"].value is None
+
+
+def taucli_api():
+    import taucli
+
+    return taucli
