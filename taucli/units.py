@@ -25,7 +25,7 @@ import math
 import re
 from typing import NamedTuple
 
-from taucli import cache, spellings
+from taucli import cache, expressions, spellings
 from taucli.errors import InputError
 from taucli.kinds import KINDS, STANDARD_GRAVITY, Kind, article, check_bounds
 from taucli.registry import (
@@ -84,6 +84,7 @@ class Reading(NamedTuple):
     how: int  # AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS
     unit: str | None  # the unit as looked up: "" for a bare number, None for an expression pint read whole
     mixed: str | None = None  # "33 1/3" when a mixed number was read
+    said: tuple[str, ...] = ()  # how a function or a grouping was read (sqrt(13) = 3.60555)
 
 
 # A number alone, or a number and a plain unit ("4.5kg", "-2 N*m", "300 rpm", "0.1 kg*m^2"): a
@@ -139,6 +140,17 @@ def known(text: str, kind_name: str, sign: str) -> float | None:
 def _read(text: str, option: str, kind: Kind) -> tuple[Reading, float | None, float | None]:
     """``read``'s whole way, and the number and the unit's factor where it read number × unit."""
     cleaned = screen(text, option, kind)
+    said: list[str] = []
+    if expressions.has_calls(cleaned):
+        cleaned, said = expressions.calls(cleaned, text, option, kind)
+    cleaned, grouping = expressions.grouped(cleaned)
+    if grouping:
+        said.append(grouping)
+    if said:  # an expression: pint reads it whole, numbers side by side refused as everywhere
+        beside = spellings.side_by_side(cleaned)
+        if beside is not None:
+            raise _side_by_side(beside, text, option, kind)
+        return Reading(*from_pint(cleaned, text, option, kind), None, said=tuple(said)), None, None
     mixed = spellings.mixed_number(cleaned)
     split = None
     if mixed is not None:
@@ -221,7 +233,7 @@ def _is_number(text: str) -> bool:
 
 def _note(option: str, text: str, reading: Reading, value: float, gravity: float | None, kind: Kind) -> str | None:
     """What a reader should know about how ``text`` was read, or None when it was read plainly."""
-    said = []
+    said = list(reading.said)
     if reading.mixed:
         said.append(f"{reading.mixed} read as the mixed number {reading.mixed.replace(' ', ' + ')}")
     if reading.how == REVOLUTIONS:

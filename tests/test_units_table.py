@@ -40,6 +40,7 @@ SHOWN = {
     "kg·m²": ("moment of inertia", 1.0), "lbf·in·s²": ("moment of inertia", LBF * 0.0254), "ozf·in·s²": ("moment of inertia", LBF / 16 * 0.0254), "m/s²": ("acceleration", 1.0), "kg": ("mass", 1.0), "in": ("length", 0.0254), "°": ("angle", PI / 180),
     "rad/s": ("angular velocity", 1.0), "rpm": ("angular velocity", 2 * PI / 60), "rev/s": ("angular velocity", 2 * PI),
     "rad/s²": ("angular acceleration", 1.0), "rev/s²": ("angular acceleration", 2 * PI),
+    "m": ("length", 1.0), "N": ("force", 1.0),
 }  # fmt: skip
 
 
@@ -89,6 +90,11 @@ WAYS = {
         (("atwood", "--m2", "1kg"), "m1"),
         (("inertia", "disc", "--mass", "1kg", "--radius", "1m"), "part", "point mass={} offset=1m", "part2_mass"),
         (("inertia", "disc", "--radius", "1m", "--part", "point mass=0.5kg offset=1m"), "mass", "mass"),  # the total mass
+    ),
+    "force": Way(
+        (("spin-down", "--inertia", "1", "--lever", "1m"), "force"),
+        (("spin-down", "--inertia", "1", "--omega0", "10rad/s"), "brake", "force={} mu=0.5 radius=1m", "brake1_force"),
+        (("pendulum", "--shape", "rod", "--length", "1m", "--axis", "end", "--angle0", "90deg"), "mass", "pivot_force0"),  # mg/4 at the release
     ),
     "length": Way(
         (("atwood", "--m1", "4kg", "--m2", "1kg"), "distance"),
