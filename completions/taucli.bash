@@ -53,7 +53,7 @@ _taucli() {
             COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --body-offset --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --body-offset --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     spin-down)
         case "$prev" in
@@ -114,7 +114,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --band --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --work --lift-mass --vehicle-mass --efficiency --rim-accel --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --band --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --work --lift-mass --vehicle-mass --efficiency --rim-accel --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -152,7 +152,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -191,7 +191,7 @@ _taucli() {
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --in-place --hanging-mass --string --pulley-mass --pulley-radius --g --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --in-place --hanging-mass --string --pulley-mass --pulley-radius --g --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in
@@ -238,7 +238,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --band --g --inertia-final --part-after --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --band --g --inertia-final --part-after --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in
@@ -279,7 +279,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in
@@ -302,7 +302,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --momentum --about --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --momentum --about --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     gyro)
         case "$prev" in
@@ -344,7 +344,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --precession --spin-sense --turn --lean --craft --rotor --bearing-span --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --precession --spin-sense --turn --lean --craft --rotor --bearing-span --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     drive)
         case "$prev" in
@@ -401,7 +401,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     flywheel)
         case "$prev" in
@@ -440,7 +440,7 @@ _taucli() {
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --rim-radius --rim-speed --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --rim-radius --rim-speed --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     fit)
         case "$prev" in

@@ -18,6 +18,9 @@ from taucli.report import Report
 from taucli.table import FILE, Command, spelled
 
 
+LIMIT_SECONDS = 60.0  # the longest --find or --mc may be estimated to take on the command line before it is refused (--no-limit lifts it)
+
+
 def _as_named(name: str) -> str:
     return name
 
@@ -44,9 +47,13 @@ def solve(
     mc: int | None = None,
     stdin=None,
     spell: Callable[[str], str] = _as_named,
+    limit: float | None = None,
+    progress=None,
 ) -> Report:
     """The scene's report, as ``pipeline.solve`` gives it, with uncertainties where any input
-    carries one, solved for the input ``find`` where ``want`` (RESULT=VALUE) says."""
+    carries one, solved for the input ``find`` where ``want`` (RESULT=VALUE) says. ``limit``
+    (seconds) refuses --find and --mc work estimated to take longer; ``progress`` is told how many
+    of its planned solves are done."""
     if plain(given, find, want, mc):
         return pipeline.solve(command, given, stdin=stdin, spell=spell)
     from taucli import find as finding  # deferred: find and propagate, with what they import, only for these runs
@@ -62,7 +69,8 @@ def solve(
             raise InputError(name, "does not combine with an uncertainty, {find} or {mc}: the scene is solved many times, and a file is read once")
     unknown = finding.unknown(command, find, given) if find is not None else None
     central, spreads, notes = _read(command, given, spell, propagate.readable(command, given, unknown))
-    scene = propagate.Scene(command, central, stdin, spell, unknown)
+    scene = propagate.Scene(command, central, stdin, spell, unknown, limit=limit)
+    scene.progress = progress
     if unknown is not None:
         return finding.solve_for(scene, unknown, want, spreads, notes, mc)
     nominal = scene.report({})
@@ -74,6 +82,7 @@ def solve(
     notes = [*notes, *propagate.linearity(scene, nominal, spreads, slopes)]
     report = propagate.measured(nominal, sigma, spreads, notes)
     if mc:
+        scene.plan(mc, "mc")
         propagate.monte_carlo(scene, report, spreads, mc, lambda draw: scene.report(draw))
     return report
 

@@ -10,9 +10,11 @@ an error object in its place, naming the key, and the run goes on:
     {"taucli": "0.1.0", "line": 3, "error": {"option": "m1", "message": "m1: expected a mass ..."}}
 
 Blank lines are skipped (every other line gives one line out). Lines are read, solved and
-written one at a time; memory stays flat however long the input, and
-a run that is killed leaves only whole lines (written in blocks of whole lines, each no larger
-than a pipe takes at once). Output is flushed whenever no further input is waiting, so a person
+written one at a time; memory stays flat however long the input (a line is at most MAX_LINE
+characters), and only whole lines reach the reader: each write holds whole lines, and on SIGTERM
+or SIGINT the line in hand is finished and written before the run ends. SIGKILL cannot be
+caught: a line longer than a pipe takes at once (PIPE_BUF, 4,096 bytes: a document with its
+steps) may then be left part written. Output is flushed whenever no further input is waiting, so a person
 typing lines sees each answer at once, and a file or pipe of many lines is written in blocks. The exit status is 0 when every line gave a
 document, 2 when some line was bad input, 1 when some line met a bug.
 """
@@ -22,11 +24,13 @@ from __future__ import annotations
 import json
 import os
 import select
+import signal
 import stat
+from collections.abc import Iterator
 
 from taucli.version import __version__
 from taucli.answer import solve
-from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean, out_of_range
+from taucli.errors import ExitStatus, InputError, TaucliError, bounded, clipped, did_you_mean, out_of_range
 from taucli.render import Output, document_text, prepared
 from taucli.table import FLAG, Command
 
@@ -36,10 +40,15 @@ _EXAMPLE_LINE = '{"m1": "4kg", "m2": "1kg"}'
 # A write of at most PIPE_BUF bytes reaches a pipe whole (POSIX): lines are written in blocks
 # of no more than this, each block ending a line, so a run that is killed leaves whole lines.
 BLOCK_BYTES = 4096
+# The longest line read (1 MiB of characters: a scene's line is under a kilobyte): a longer one, or
+# input with no line end at all (/dev/zero), gives an error object and the rest of it is passed
+# over a block at a time, so memory stays flat whatever comes in.
+MAX_LINE = 1 << 20
 
 
-def run(command: Command, fixed: dict, output: Output, env) -> int:
-    """Solve one scene per line of ``env.stdin``; ``fixed`` holds the command line's options."""
+def run(command: Command, fixed: dict, output: Output, env, *, limit: float | None = None) -> int:
+    """Solve one scene per line of ``env.stdin``; ``fixed`` holds the command line's options;
+    ``limit`` bounds each line's --find (seconds, estimated)."""
     lines = env.stdin
     if lines is None:
         raise InputError("batch", "reads JSON lines on stdin, but stdin is closed", example="taucli atwood --batch < scenes.jsonl")
@@ -57,46 +66,128 @@ def run(command: Command, fixed: dict, output: Output, env) -> int:
     number = solved = 0
     pending: list = []  # texts, or their bytes where the stream has a byte buffer
     size = 0
-    for number, line in enumerate(lines, start=1):
-        if not line.strip():  # a blank line (a file's last newline, a spacer a person typed): nothing to solve
-            continue
-        solved += 1
-        try:
-            given, answer = _line(line, keys, command, texts)
-            given = {**fixed, **given}
-            report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag)
-            shown = output._replace(**answer) if answer else output
-            text = document_text(prepared(report, shown), steps=shown.steps) + "\n"
-        except TaucliError as err:
-            text = _error(number, err.exit_status, err, failures)
-            first_failure = first_failure or number
-        except OverflowError:
-            text = _error(number, ExitStatus.USAGE, out_of_range(), failures)
-            first_failure = first_failure or number
-        except (KeyboardInterrupt, BrokenPipeError):
-            raise
-        except Exception as err:  # a bug: reported on its line, and the run goes on
-            text = _error(number, ExitStatus.INTERNAL, err, failures)
-            first_failure = first_failure or number
-        if encoding is not None:  # encoded once: to count its bytes, and to write them
-            text = text.encode(*encoding)
-            length = len(text)
-        else:
-            length = len(text) if text.isascii() else len(text.encode())
-        if pending and size + length > BLOCK_BYTES:
-            _write(out, pending)
-            pending, size = [], 0
-        pending.append(text)
-        size += length
-        if interactive or not (whole or _waiting(lines)):
-            _write(out, pending)
-            pending, size = [], 0
+    signals = _Signals()
+    try:
+        for number, line in enumerate(_lines(lines), start=1):
+            signals.busy = True  # from here until the line's answer is out, a signal waits for it
+            if line.__class__ is str and not line.strip():  # a blank line (a file's last newline, a spacer a person typed): nothing to solve
+                signals.idle()
+                continue
+            solved += 1
+            try:
+                if line.__class__ is not str:
+                    raise line
+                given, answer = _line(line, keys, command, texts)
+                given = {**fixed, **given}
+                report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag, limit=limit)
+                shown = output._replace(**answer) if answer else output
+                text = document_text(prepared(report, shown), steps=shown.steps) + "\n"
+            except TaucliError as err:
+                text = _error(number, err.exit_status, err, failures)
+                first_failure = first_failure or number
+            except OverflowError:
+                text = _error(number, ExitStatus.USAGE, out_of_range(), failures)
+                first_failure = first_failure or number
+            except (KeyboardInterrupt, BrokenPipeError):
+                raise
+            except Exception as err:  # a bug: reported on its line, and the run goes on
+                text = _error(number, ExitStatus.INTERNAL, err, failures)
+                first_failure = first_failure or number
+            if encoding is not None:  # encoded once: to count its bytes, and to write them
+                text = text.encode(*encoding)
+                length = len(text)
+            else:
+                length = len(text) if text.isascii() else len(text.encode())
+            if pending and size + length > BLOCK_BYTES:
+                _write(out, pending)
+                pending, size = [], 0
+            pending.append(text)
+            size += length
+            if interactive or line.__class__ is not str or not (whole or _waiting(lines)):  # a line too long: its error now, before the rest is passed over
+                _write(out, pending)
+                pending, size = [], 0
+            signals.idle()
+    except _Stopped:
+        pass
+    finally:
+        signals.restore()
     _write(out, pending)
+    if signals.caught is not None:
+        return _stopped(signals.caught, env)
     failed = sum(failures.values())
     if not failed:
         return int(ExitStatus.OK)
     print(f"taucli: error: {failed} of {solved} lines failed (the first: line {first_failure})", file=env.stderr)
     return int(ExitStatus.INTERNAL if failures[ExitStatus.INTERNAL] else ExitStatus.USAGE)
+
+
+class _Stopped(BaseException):
+    """SIGTERM or SIGINT came while no line was in hand: the run ends now."""
+
+
+class _Signals:
+    """SIGTERM and SIGINT during a batch. A line being solved or written is finished first (the
+    signal is noted, and a write it interrupts goes on: Python retries it), then the run ends;
+    while taucli waits for input, the run ends at once. Either way only whole lines are written.
+    Outside the main thread Python's own handling stays."""
+
+    def __init__(self) -> None:
+        self.busy = False
+        self.caught: int | None = None
+        self.saved: dict = {}
+        try:
+            for number in (signal.SIGINT, signal.SIGTERM):
+                self.saved[number] = signal.signal(number, self._caught)
+        except (ValueError, OSError, AttributeError):
+            self.restore()
+
+    def _caught(self, number: int, frame) -> None:
+        self.caught = number
+        if not self.busy:
+            raise _Stopped
+
+    def idle(self) -> None:
+        """The line in hand is answered: end here if a signal came meanwhile."""
+        self.busy = False
+        if self.caught is not None:
+            raise _Stopped
+
+    def restore(self) -> None:
+        for number, handler in self.saved.items():
+            signal.signal(number, handler if handler is not None else signal.SIG_DFL)
+        self.saved = {}
+
+
+def _stopped(number: int, env) -> int:
+    """The end of a run that a signal stopped, once every whole line is out: Ctrl-C's status, or
+    the process ends by SIGTERM, as it would have without taucli's handler."""
+    if number == signal.SIGINT:
+        print(file=env.stderr)
+        return int(ExitStatus.INTERRUPTED)
+    signal.signal(number, signal.SIG_DFL)
+    os.kill(os.getpid(), number)
+    return 128 + number
+
+
+def _too_long(start: str) -> InputError:
+    return InputError("", f"a line is at most {MAX_LINE:,} characters (1 MiB); expected a JSON object of options", example=_EXAMPLE_LINE,
+                      got=f"a longer line starting {start[:40]!r}")
+
+
+def _lines(stream) -> Iterator:
+    """The lines of ``stream``, each read at most MAX_LINE characters at a time: a line, or the
+    InputError of a line that is longer (the rest of it is then read and passed over)."""
+    readline = getattr(stream, "readline", None)
+    if readline is None:  # a list of lines
+        yield from (line if len(line) <= MAX_LINE else _too_long(line) for line in stream)
+        return
+    while line := readline(MAX_LINE + 1):
+        if len(line) <= MAX_LINE or line.endswith("\n"):
+            yield line
+            continue
+        yield _too_long(line)
+        while (rest := readline(MAX_LINE)) and not rest.endswith("\n"):
+            pass
 
 
 def _a_file(lines) -> bool:
@@ -128,9 +219,22 @@ def _sink(stream) -> tuple:
 
 
 def _write(out, pending: list) -> None:
-    if pending:
-        out.write(pending[0][:0].join(pending))  # "" or b"", as the pending lines are
-        out.flush()
+    """The pending lines, in one write where the stream takes them at once; the rest of them, when a
+    raw stream (PYTHONUNBUFFERED=1) takes only part (a signal, a full pipe), until all is out."""
+    if not pending:
+        return
+    block = pending[0][:0].join(pending)  # "" or b"", as the pending lines are
+    if isinstance(block, str):
+        out.write(block)
+    else:
+        view = memoryview(block)
+        while view:
+            written = out.write(view)
+            if written is None:  # a non-blocking stream that is full: wait until it takes more
+                select.select([], [out], [])
+                continue
+            view = view[written:]
+    out.flush()
 
 
 def _error(number: int, status: ExitStatus, err: Exception, failures: dict) -> str:
@@ -141,7 +245,7 @@ def _error(number: int, status: ExitStatus, err: Exception, failures: dict) -> s
     else:
         option, message = None, f"internal error ({type(err).__name__}: {err}); this is a bug in taucli, please report it"
     failures[status] = failures.get(status, 0) + 1
-    error = {"option": option, "message": " ".join(message.split())}
+    error = {"option": option and bounded(clipped(option)), "message": bounded(" ".join(message.split()))}
     return json.dumps({"taucli": __version__, "line": number, "error": error}, ensure_ascii=False, separators=(",", ":")) + "\n"
 
 
@@ -170,6 +274,8 @@ def _line(line: str, keys: dict[str, str], command: Command, texts: frozenset[st
         given = _STRICT.decode(text)
     except ValueError as err:
         raise InputError("", "expected a JSON object of options", example=_EXAMPLE_LINE, got=f"{text[:60]!r} ({err})") from None
+    except RecursionError:  # arrays or objects nested some thousand deep
+        raise InputError("", "expected a JSON object of options, not values nested this deep", example=_EXAMPLE_LINE, got=repr(text[:60])) from None
     if not isinstance(given, dict):
         raise InputError("", "expected a JSON object of options", example=_EXAMPLE_LINE, got=repr(text[:60]))
     options: dict = {}
@@ -183,6 +289,8 @@ def _line(line: str, keys: dict[str, str], command: Command, texts: frozenset[st
             continue
         if name == "to":
             answer["to"] = tuple(value if isinstance(value, list) else [value])
+            if not all(isinstance(to, str) for to in answer["to"]):
+                raise InputError("to", "expected a text NAME=UNIT or a list of them", example='"to": ["a=ft/s^2", "T1=lbf"]', got=json.dumps(value)[:80])
         elif name == "no_steps":
             answer["steps"] = not _flag(value, name)
         elif name in FINDING:

@@ -5,8 +5,12 @@ A one-off run spends most of its time importing pint and loading its registry (~
 taucli, so it is kept in ``units-*.json`` and pint is asked again only for a text not seen before.
 
 Nothing here may cost an answer: a missing, unreadable, corrupt, stale or read-only cache is
-ignored (and rewritten when it can be). The folder is ``$TAUCLI_CACHE_DIR`` if set (empty: keep
-nothing), else the platform's user cache folder with ``taucli`` appended.
+ignored (and rewritten when it can be). Nor may it change one: the cache is a trust boundary
+(the folder may be shared, or edited), so each file carries a checksum of its entries and of
+what they were made from (taucli's rules, pint's version, a checksum of pint's definitions), and
+a file that does not verify is not read. The folder is ``$TAUCLI_CACHE_DIR`` if set (empty: keep
+nothing), else ``$XDG_CACHE_HOME/taucli``, else the platform's user cache folder with ``taucli``
+appended, in a home that exists.
 """
 
 from __future__ import annotations
@@ -25,18 +29,72 @@ MAX_ENTRIES = 512  # per store; beyond it, answers are worked out each time and 
 
 @lru_cache(maxsize=1)
 def folder() -> str | None:
-    """taucli's cache folder (not created here), or None when caching is turned off."""
+    """taucli's cache folder (not created here), or None when caching is turned off or there is
+    no home to keep it in: ``$TAUCLI_CACHE_DIR``, else ``$XDG_CACHE_HOME/taucli`` (an absolute
+    path), else the platform's cache folder in a home that exists (never one made up: ``HOME=``
+    or ``HOME=/nonexistent`` keep nothing)."""
     chosen = os.environ.get("TAUCLI_CACHE_DIR")
     if chosen is not None:
         return chosen if chosen.strip() else None
+    xdg = os.environ.get("XDG_CACHE_HOME", "")
+    if sys.platform not in ("win32", "darwin") and os.path.isabs(xdg):
+        return os.path.join(xdg, "taucli")
+    if sys.platform == "win32" and os.environ.get("LOCALAPPDATA"):
+        return os.path.join(os.environ["LOCALAPPDATA"], "taucli")
     home = os.path.expanduser("~")
+    if not (os.path.isabs(home) and home != os.sep and os.path.isdir(home)):
+        return None
     if sys.platform == "win32":
-        base = os.environ.get("LOCALAPPDATA") or os.path.join(home, "AppData", "Local")
+        base = os.path.join(home, "AppData", "Local")
     elif sys.platform == "darwin":
         base = os.path.join(home, "Library", "Caches")
     else:
-        base = os.environ.get("XDG_CACHE_HOME") or os.path.join(home, ".cache")
+        base = os.path.join(home, ".cache")
     return os.path.join(base, "taucli")
+
+
+def made(path: str) -> bool:
+    """Whether the folder ``path`` is there, made if need be: it, and its parent (~/.cache) where
+    that is missing, but never a folder above (a home that does not exist stays so)."""
+    if os.path.isdir(path):
+        return True
+    parent = os.path.dirname(path)
+    try:
+        if not os.path.isdir(parent):
+            if not os.path.isdir(os.path.dirname(parent)):
+                return False
+            os.mkdir(parent, 0o700)
+        os.mkdir(path, 0o700)
+    except OSError:
+        return os.path.isdir(path)
+    return True
+
+
+def checksum(*texts: str) -> str:
+    """A checksum of ``texts`` (crc32, eight hex digits)."""
+    value = 0
+    for text in texts:
+        value = zlib.crc32(text.encode("utf-8", "surrogatepass"), value)
+    return f"{value:08x}"
+
+
+def file_checksum(path: str | None) -> str:
+    """The checksum of a file's content ("?" where it cannot be read): pint's definitions."""
+    try:
+        with open(path, "rb") as handle:
+            return f"{zlib.crc32(handle.read()):08x}"
+    except (OSError, TypeError):
+        return "?"
+
+
+def pint_version(init: str | None) -> str:
+    """pint's version, from the name of its .dist-info beside the package (importlib.metadata
+    costs milliseconds), or "?"."""
+    try:
+        site = os.path.dirname(os.path.dirname(init))
+        return next((name[5:-10] for name in os.listdir(site) if name.startswith("pint-") and name.endswith(".dist-info")), "?")
+    except (OSError, TypeError):
+        return "?"
 
 
 def stamp(*origins: str | None) -> str:
@@ -90,12 +148,15 @@ class Store:
         self._save()
 
     def _load(self) -> None:
+        """The entries of the file, where its stamp is this one and its checksum verifies: an
+        edited entry ("kg" as 2 kg) does not, and the store starts empty (rewritten as it fills)."""
         try:
             with open(self.file, encoding="utf-8") as handle:
                 stored = json.load(handle, parse_constant=_no_constants)
             if isinstance(stored, dict) and stored.get("stamp") == self.stamp and isinstance(stored.get("entries"), dict):
-                self.entries = dict(list(stored["entries"].items())[:MAX_ENTRIES])
-        except (OSError, ValueError, TypeError, AttributeError):
+                if stored.get("checksum") == _entries_checksum(self.stamp, stored["entries"]):
+                    self.entries = dict(list(stored["entries"].items())[:MAX_ENTRIES])
+        except (OSError, ValueError, TypeError, AttributeError, RecursionError):
             self.entries = {}
 
     def _save(self) -> None:
@@ -104,15 +165,65 @@ class Store:
         folder_path, name = os.path.split(self.file)
         temporary = os.path.join(folder_path, f".{name}.{os.getpid()}")
         try:
-            os.makedirs(folder_path, exist_ok=True)
+            if not made(folder_path):
+                return
             with open(temporary, "w", encoding="utf-8") as handle:
-                json.dump({"stamp": self.stamp, "entries": self.entries}, handle, ensure_ascii=False)
+                json.dump({"stamp": self.stamp, "checksum": _entries_checksum(self.stamp, self.entries), "entries": self.entries}, handle, ensure_ascii=False)
             os.replace(temporary, self.file)
         except OSError:
             try:
                 os.unlink(temporary)
             except OSError:
                 pass
+
+
+def checked_folder(path: str) -> bool:
+    """Whether the folder ``path`` (pint's own cache of its parsed definitions, pickled) holds only
+    files whose checksums match those taucli wrote down after pint last wrote there (``seal``);
+    where it does not, its files are removed so that pint builds them afresh. False when the folder
+    cannot be made or cleared: then pint is given no cache folder."""
+    if not (made(os.path.dirname(path)) and made(path)):
+        return False
+    sums = _sums(path)
+    try:
+        names = sorted(name for name in os.listdir(path) if os.path.isfile(os.path.join(path, name)))
+        if all(sums.get(name) == file_checksum(os.path.join(path, name)) for name in names):
+            return True
+        for name in names:
+            os.unlink(os.path.join(path, name))
+        os.unlink(path + ".sums")
+    except FileNotFoundError:
+        pass
+    except OSError:
+        return False
+    return True
+
+
+def seal(path: str) -> None:
+    """Write down the checksum of each file in ``path``, for checked_folder."""
+    try:
+        sums = {name: file_checksum(os.path.join(path, name)) for name in sorted(os.listdir(path)) if os.path.isfile(os.path.join(path, name))}
+        if sums == _sums(path):
+            return
+        temporary = f"{path}.sums.{os.getpid()}"
+        with open(temporary, "w", encoding="utf-8") as handle:
+            json.dump(sums, handle)
+        os.replace(temporary, path + ".sums")
+    except OSError:
+        pass
+
+
+def _sums(path: str) -> dict:
+    try:
+        with open(path + ".sums", encoding="utf-8") as handle:
+            sums = json.load(handle)
+        return sums if isinstance(sums, dict) else {}
+    except (OSError, ValueError, RecursionError):
+        return {}
+
+
+def _entries_checksum(stamp: str, entries: dict) -> str:
+    return checksum(stamp, json.dumps(entries, sort_keys=True, ensure_ascii=False))
 
 
 def _no_constants(name: str):
@@ -123,4 +234,12 @@ def _no_constants(name: str):
 def unit_factors() -> Store:
     """(unit text, kind) -> [SI factor, how it was read]: pint's answers under taucli's rules, for
     this pint and this units.py and registry.py (which holds the rules)."""
-    return Store(folder(), "units", lambda: stamp(own_file("units.py"), own_file("registry.py"), package_file("pint")))
+    return Store(folder(), "units", _units_stamp)
+
+
+def _units_stamp() -> str:
+    """taucli's version and rules, pint's version, and a checksum of the definitions pint reads."""
+    init = package_file("pint")
+    definitions = [os.path.join(os.path.dirname(init), name) for name in ("default_en.txt", "constants_en.txt")] if init else []
+    return "|".join([stamp(own_file("units.py"), own_file("registry.py"), init), f"pint {pint_version(init)}",
+                     *(f"{os.path.basename(path)}:{file_checksum(path)}" for path in definitions)])

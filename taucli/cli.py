@@ -13,13 +13,14 @@ import inspect
 import os
 import sys
 import traceback
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Annotated, Optional, TextIO
 
 import typer
 
 from taucli import answer, help, pipeline, render
-from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean, out_of_range
+from taucli.errors import ExitStatus, InputError, TaucliError, bounded, did_you_mean, out_of_range
 from taucli.names import FORMATS
 from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
@@ -157,7 +158,8 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         if swept_range or swept_list:
             raise InputError((swept_range or swept_list).name, "cannot be a range or a list with {batch}: give one scene per line")
         from taucli import batch  # deferred: only --batch
-        return batch.run(command, {**scene_given, **_finding(asked, batch=True)}, render.Output(to=tuple(asked["to"] or ()), steps=not asked["no_steps"]), env)
+        return batch.run(command, {**scene_given, **_finding(asked, batch=True)}, render.Output(to=tuple(asked["to"] or ()), steps=not asked["no_steps"]), env,
+                         limit=None if asked["no_limit"] else answer.LIMIT_SECONDS)
     output = render.Output(
         json=bool(asked["json"] or asked["jsonl"]),
         get=tuple(asked["get"] or ()),
@@ -181,18 +183,38 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
 
         plot.check_file(output.out)
     finding = {**_finding(asked), "mc": _whole_number(command, asked["mc"], "mc")}
+    limit = None if asked["no_limit"] else answer.LIMIT_SECONDS
 
-    def solve(options: dict):
-        return answer.solve(command, options, stdin=env.stdin, spell=command.flag, **finding)
+    with _progress_bar(env, bool(finding.get("find") or finding["mc"])) as progress:
+        def solve(options: dict):
+            return answer.solve(command, options, stdin=env.stdin, spell=command.flag, limit=limit, progress=progress, **finding)
 
+        if swept_range is None and swept_list is None:
+            report = solve(scene_given)
+        else:
+            from taucli import sweep  # deferred: as above
+
+            solved = sweep.solve_all(command, swept_range, swept_list, scene_given, solve)
     if swept_range is None and swept_list is None:
-        render.render(solve(scene_given), output, env.stdout, env.stderr)
+        render.render(report, output, env.stdout, env.stderr)
         return int(ExitStatus.OK)
-    from taucli import sweep  # deferred: as above
-
-    solved = sweep.solve_all(command, swept_range, swept_list, scene_given, solve)
     sweep.render(solved, swept_range, swept_list, output, list(asked["y"] or ()), env.stdout, env.stderr)
     return int(ExitStatus.OK)
+
+
+@contextmanager
+def _progress_bar(env: Environment, wanted: bool):
+    """A progress bar on stderr for --find and --mc, where stderr is a terminal (else None): told
+    (done, planned) solves as they go, and gone when the work is."""
+    if not wanted or not getattr(env.stderr, "isatty", lambda: False)():
+        yield None
+        return
+    from rich.console import Console  # deferred: rich, only for a bar on a terminal
+    from rich.progress import Progress
+
+    with Progress(console=Console(file=env.stderr), transient=True) as bar:
+        task = bar.add_task("solving", total=None)
+        yield lambda done, planned: bar.update(task, completed=done, total=planned)
 
 
 def _point_at_the_rim(command: Command, given: dict, asked: set) -> None:
@@ -227,6 +249,8 @@ def _whole_number(command: Command, text: Optional[str], name: str = "points") -
     if text is None:
         return None
     try:
+        if not text.strip().isascii() or "_" in text:  # one rule with quantities: no 1_000, no fullwidth ５
+            raise ValueError(text)
         return int(text)
     except ValueError:
         raise InputError(name, "expected a whole number", example=f"{{{name}}} 50", got=repr(text)) from None
@@ -255,7 +279,7 @@ def _is_usage_error(err: Exception) -> bool:
 
 
 def _fail(env: Environment, status: ExitStatus, message: str) -> int:
-    print(f"taucli: error: {' '.join(message.split())}", file=env.stderr)
+    print(f"taucli: error: {bounded(' '.join(message.split()))}", file=env.stderr)
     return int(status)
 
 

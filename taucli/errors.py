@@ -69,17 +69,40 @@ class InputError(TaucliError, ValueError):
         option = spell(self.option) if _PARAMETER.fullmatch(self.option) else name(self.option)
         # "--mass is required ..." reads as a sentence; "--mass: expected a mass" as a label.
         joiner = " " if self.expected.split(" ", 1)[0] in _VERBS else ": "
+        option = clipped(option)
         message = f"{option}{joiner}{name(self.expected)}" if option else name(self.expected)
         if self.example:
             message += f" (e.g. {name(self.example)})"
         if self.got is not None:
-            message += f", got {self.got}"
+            message += f", got {clipped(self.got, GOT)}"
         if self.hint:
             message += f"; {name(self.hint)}"
-        return message
+        return bounded(message)
 
 
 _PARAMETER = re.compile(r"[a-z][a-z0-9_]*")
+
+# A message quotes at most QUOTED characters of one word of what was typed (a 100 KB value, a
+# 10 MB batch key), and its "got" part at most GOT: the start and the end, either side of "…".
+QUOTED = 80
+GOT = 2 * QUOTED
+_LONG_WORD = re.compile(r"\S{%d,}" % (QUOTED + 1))
+_UNDECODED = re.compile("[\udc80-\udcff]")  # a byte that was not UTF-8, as Python's surrogateescape reads it
+
+
+def clipped(text: str, limit: int = QUOTED) -> str:
+    """``text`` as it is, or its start and end (``limit`` characters in all) either side of "…"."""
+    if len(text) <= limit:
+        return text
+    tail = limit // 4
+    return f"{text[: limit - tail - 1]}…{text[-tail:]}"
+
+
+def bounded(message: str) -> str:
+    """A message that can be written anywhere as UTF-8: each word of it at most QUOTED characters,
+    and each byte that was not UTF-8 (read as a lone surrogate) written as its escape, \\xff."""
+    message = _LONG_WORD.sub(lambda word: clipped(word.group()), message)
+    return _UNDECODED.sub(lambda char: f"\\x{ord(char.group()) - 0xDC00:02x}", message)
 
 
 class Unused(InputError):

@@ -25,7 +25,7 @@ from taucli.errors import InputError
 from taucli.report import Measured, Report, Step, Value, fmt, pretty_unit, quantity_text, term
 from taucli.table import spelled
 from taucli.measurement import NUMBER_THEN_UNIT, split
-from taucli.propagate import Scene, combine, jacobian, linearity, monte_carlo, numeric
+from taucli.propagate import FIND_SOLVES, Scene, combine, jacobian, linearity, monte_carlo, numeric
 from taucli.roots import brent
 from taucli.scenes.assumed import STANDARD_GRAVITY
 
@@ -78,6 +78,9 @@ def unknown(command, name: str, given) -> unknowns.Unknown:
     return unknowns.resolve(command, name, given)
 
 
+REDRAWN_SOLVES = 10  # about how many solves the value solved for takes again for one Monte Carlo draw, from near the first
+
+
 def solve_for(scene: Scene, unknown: unknowns.Unknown, want: str, spreads: dict[str, float], notes: list[str], mc: int | None) -> Report:
     """The report at the value of the input ``unknown`` that meets ``want``, that value as a result."""
     command = scene.command
@@ -85,6 +88,7 @@ def solve_for(scene: Scene, unknown: unknowns.Unknown, want: str, spreads: dict[
     key, target, target_spread, unit, want_notes = _target(scene, want)
     si_unit = units.KINDS[unknown.kind].si_unit
     refusals: dict[str, Exception] = {}
+    scene.plan(FIND_SOLVES, "find")
 
     def f(x: float) -> float | None:
         values = scene.results({name: x})
@@ -175,6 +179,7 @@ def solve_for(scene: Scene, unknown: unknowns.Unknown, want: str, spreads: dict[
         uncertainties=sigma, input_uncertainties=dict(spreads),
     )
     if mc and (spreads or target_spread):
+        scene.plan(mc * REDRAWN_SOLVES, "mc")
         monte_carlo(scene, report, spread_all, mc, lambda draw: _redrawn(scene, name, key, target, x, draw, spreads), {"{want}": target})
     return report
 

@@ -89,6 +89,8 @@ def _decoded(samples, source: str, name: str):
 
 def _count(option: Option, given, inputs: Inputs, stdin) -> int:
     try:
+        if isinstance(given, str) and (not given.strip().isascii() or "_" in given):  # as cli._whole_number
+            raise ValueError(given)
         return int(given)
     except (TypeError, ValueError):
         raise InputError(option.name, "expected a whole number", example=f"{{{option.name}}} 50", got=repr(given)) from None
@@ -108,6 +110,8 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
     if not option.repeatable:
         return _quantity(option, given, inputs, stdin)
     items = list(given) if isinstance(given, (list, tuple)) else [given]
+    if None in items:  # [2, null]: each item given must be a value
+        raise InputError(option.name, "expected a value for each item, not null (None)", example=f"{{{option.name}}} {units.KINDS[option.kind].example}", got=repr(given))
     keys = [option.name + (str(number) if len(items) > 1 else "") for number in range(1, len(items) + 1)]
     names = [f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "") for number in range(1, len(items) + 1)]
     return tuple(inputs.quantity(name, item, option.kind, sign=option.sign, key=key) for name, item, key in zip(names, items, keys))

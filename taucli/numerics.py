@@ -160,7 +160,10 @@ def integrate(
             raise TooManySteps()
         step = min(h, t_end - t)
         if stiffness is not None:
-            worst = max(worst, step * stiffness(omega))
+            try:
+                worst = max(worst, step * stiffness(omega))
+            except OverflowError:  # |ω|^(n−1) past a double: a fixed step has long left its stable region
+                worst = math.inf
         try:
             d_omega, d_theta, error = _step(tableau, f, omega, step)
         except (ValueError, OverflowError):  # fsum met inf − inf or overflowed: the run has blown up

@@ -11,10 +11,13 @@ from __future__ import annotations
 import importlib.util
 import math
 import os
+import stat
+import tempfile
 import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
+from taucli.cache import made
 from taucli.errors import InputError
 from taucli.report import Report, Trajectory, fmt, pretty_unit
 
@@ -188,27 +191,58 @@ def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> s
 
 
 def check_file(path: str) -> None:
-    """--out names an .svg or .png file, and matplotlib is there to draw it."""
-    if not path.lower().endswith((".svg", ".png")):
+    """--out names an .svg or .png file with a name before its suffix, not a link or a folder, in
+    a folder that can be written; and matplotlib is there to draw it. Nothing is made or removed
+    at ``path`` here: the folder is tried with a temporary file of its own."""
+    folder, name = os.path.split(path)
+    stem, suffix = name[:-4], name[-4:]  # (os.path.splitext reads ".svg" as a stem with no suffix)
+    if suffix.lower() not in (".svg", ".png"):
         raise InputError("--out", "expected a file name ending in .svg or .png", example="--out chart.svg", got=repr(path))
-    existed = os.path.exists(path)
-    try:  # open it now, so that a file that cannot be written is refused before any answer is printed
-        with open(path, "ab"):
-            pass
-    except OSError as err:
-        raise _unwritable(path, err) from None
-    if not existed:
-        os.remove(path)
+    if not stem:  # ".svg" alone: a suffix with no name (it was written as .svg.png)
+        raise InputError("--out", f"expected a name before {suffix}", example=f"--out chart{suffix}", got=repr(path))
+    if os.path.islink(path):
+        raise InputError("--out", "expected a file, not a symbolic link: taucli does not write through links", example="--out chart.svg",
+                         got=f"{path!r} -> {os.readlink(path)!r}")
+    if os.path.isdir(path):
+        raise InputError("--out", "expected a file, not a folder", example="--out chart.svg", got=repr(path))
     if importlib.util.find_spec("matplotlib") is None:
         raise InputError("--out", "needs matplotlib to draw files", hint="pip install 'taucli[plot]'")
+    try:
+        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
+    except OSError as err:
+        raise _unwritable(path, err) from None
+    os.close(handle)
+    os.unlink(temporary)
 
 
 def _unwritable(path: str, err: OSError) -> InputError:
     return InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}")
 
 
+def _matplotlib_folder() -> None:
+    """matplotlib keeps its settings and font list in ~/.config/matplotlib and ~/.cache/matplotlib
+    (or $XDG_CONFIG_HOME, $XDG_CACHE_HOME) and warns over several lines on stderr where it cannot
+    make them (a read-only or missing home), or makes a missing home's whole tree. They are made
+    here as the cache folder is (at most two levels, never a home); where they cannot be, unless
+    MPLCONFIGDIR says otherwise, it is given a temporary folder, removed at exit."""
+    if os.environ.get("MPLCONFIGDIR"):
+        return
+    home = os.path.expanduser("~")
+    bases = (os.environ.get("XDG_CONFIG_HOME") or os.path.join(home, ".config"), os.environ.get("XDG_CACHE_HOME") or os.path.join(home, ".cache"))
+    if all(made(os.path.join(base, "matplotlib")) and os.access(os.path.join(base, "matplotlib"), os.W_OK) for base in bases):
+        return
+    import atexit  # deferred: only where matplotlib has no folder of its own
+    import shutil  # deferred: as above
+    import tempfile  # deferred: as above
+
+    folder = tempfile.mkdtemp(prefix="taucli-matplotlib-")
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    os.environ["MPLCONFIGDIR"] = folder
+
+
 def write_file(chart: Chart, path: str) -> None:
     """The chart as an SVG or PNG file (matplotlib, Agg backend)."""
+    _matplotlib_folder()
     import matplotlib  # deferred: matplotlib (hundreds of ms), only for a file
 
     matplotlib.use("Agg")
@@ -235,8 +269,49 @@ def write_file(chart: Chart, path: str) -> None:
     figure.suptitle(chart.title, fontsize="medium")
     figure.tight_layout()
     try:
-        figure.savefig(path)
-    except OSError as err:  # the folder was checked first; the file itself may still refuse
-        raise _unwritable(path, err) from None
+        _replace_atomically(path, lambda temporary: figure.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()))
     finally:
         pyplot.close(figure)
+
+
+def _replace_atomically(path: str, write) -> None:
+    """``write`` a temporary file beside ``path``, then rename it onto ``path`` in one step: a
+    reader sees the old file or the whole new one, a failed write (a full disk) leaves ``path`` as
+    it was, and a symbolic link made at ``path`` meanwhile is replaced, never followed."""
+    folder, name = os.path.split(path)
+    try:
+        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
+    except OSError as err:
+        raise _unwritable(path, err) from None
+    os.close(handle)
+    try:
+        write(temporary)
+        os.chmod(temporary, _new_file_mode(path))
+        os.replace(temporary, path)
+    except OSError as err:
+        _remove(temporary)
+        raise _unwritable(path, err) from None
+    except BaseException:
+        _remove(temporary)
+        raise
+
+
+def _new_file_mode(path: str) -> int:
+    """The mode a file written at ``path`` would have: an existing file's, else 0666 less the umask
+    (mkstemp makes its files 0600)."""
+    try:
+        info = os.lstat(path)
+        if stat.S_ISREG(info.st_mode):
+            return stat.S_IMODE(info.st_mode)
+    except OSError:
+        pass
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
+
+
+def _remove(path: str) -> None:
+    try:
+        os.unlink(path)
+    except OSError:
+        pass

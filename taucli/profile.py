@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 from taucli import units
 from taucli.errors import InputError
+from taucli.kinds import BOUNDS, check_bounds
 
 OPTION = "--torque-profile"
 _HEADER_CELL = re.compile(r"^\s*([A-Za-z_][\w ]*?)\s*(?:\[(.*)\])?\s*$")
@@ -83,6 +84,8 @@ def _samples(rows: Iterator[tuple[int, str]], time_factor: float, torque_factor:
         if len(cells) != 2:
             raise InputError(OPTION, f"line {number}: expected two numbers, time and torque", got=repr(line))
         try:
+            if not line.isascii() or "_" in line:  # one rule with quantities: no 1_000, no fullwidth ５
+                raise ValueError(line)
             t, torque = float(cells[0]) * time_factor, float(cells[1]) * torque_factor
         except ValueError:
             raise InputError(OPTION, f"line {number}: expected numbers", got=repr(line)) from None
@@ -90,6 +93,12 @@ def _samples(rows: Iterator[tuple[int, str]], time_factor: float, torque_factor:
             raise InputError(OPTION, f"line {number}: expected finite numbers", got=repr(line))
         if t <= previous:
             raise InputError(OPTION, f"line {number}: time must increase from row to row", got=repr(line))
+        # Held to the bounds a typed --torque or --duration is held to, a step between rows too
+        # (steps of 1e-200 s would underflow Simpson's weights to a zero divisor).
+        check_bounds(t, "time", OPTION, sign="any", got=f"t = {t:g} s on line {number} ({line!r})")
+        check_bounds(torque, "torque", OPTION, sign="any", got=f"τ = {torque:g} N*m on line {number} ({line!r})")
+        if t - previous < BOUNDS[0]:
+            raise InputError(OPTION, f"line {number}: expected time steps of at least {BOUNDS[0]:g} s", got=f"a step of {t - previous:g} s to {line!r}")
         previous = t
         count += 1
         yield t, torque

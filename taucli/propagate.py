@@ -17,6 +17,7 @@ input. Neither is imported here.
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Callable, Mapping
 
 from taucli import pipeline
@@ -30,11 +31,27 @@ MC_SEED = 22  # Monte Carlo draws are seeded: the same run gives the same check
 MC_MAX = 100_000
 
 
-class Scene:
-    """The scene with its options fixed but for the SI values a caller moves."""
+FIND_SOLVES = 450  # about how many solves a --find search takes: a grid over the unknown's range, then refined
+ESTIMATES = frozenset({5, 10, 20, 40, 80, 160, 320})  # after so many solves the cost of all is estimated (first after 5)
 
-    def __init__(self, command: Command, given: dict, stdin, spell, unknown=None):
+
+class OverBudget(InputError):
+    """Work estimated to take longer than the limit: refused before most of it is done."""
+
+
+class Scene:
+    """The scene with its options fixed but for the SI values a caller moves.
+
+    ``limit`` (seconds, or None) bounds the work: a caller says how many solves it plans
+    (``plan``), and after the first few are timed, the rest is estimated and refused where it
+    would pass the limit (OverBudget), saying the setting that would fit."""
+
+    def __init__(self, command: Command, given: dict, stdin, spell, unknown=None, limit: float | None = None):
         self.command, self.given, self.stdin, self.spell = command, given, stdin, spell
+        self.limit = limit
+        self.spent = 0.0  # seconds in solves
+        self.planned: tuple[int, int, str] | None = None  # (solves so far when planned, solves planned, what asked for them)
+        self.progress = None  # called with (done, planned) after each planned solve: a progress bar
         arguments, _ = read(command, readable(command, given, unknown))
         self.si = {name: value for name, value in arguments.items() if isinstance(value, float)}
         self.solves = 0
@@ -44,7 +61,34 @@ class Scene:
         self.unknowns: dict[str, object] = {unknown.name: unknown} if unknown is not None else {}
         self.refusal: Exception | None = None  # why the scene last refused the inputs moved (results)
 
+    def plan(self, solves: int, setting: str) -> None:
+        """``solves`` more solves are to come, asked for by ``setting`` ("mc", "find")."""
+        self.planned = (self.solves, solves, setting)
+
+    def _spend(self, seconds: float) -> None:
+        self.spent += seconds
+        if self.planned is None:
+            return
+        start, planned, setting = self.planned
+        done = self.solves - start
+        if self.progress is not None:
+            self.progress(done, planned)
+        if self.limit is None or planned <= done:
+            return
+        if done in ESTIMATES or self.spent > self.limit:  # estimated again as it goes: solves differ in cost across a --find's range
+            each = self.spent / max(self.solves, 1)
+            estimate = max(each * planned, self.spent)
+            if estimate > self.limit:
+                raise _over_budget(setting, planned, each, estimate, self.limit)
+
     def report(self, moved: Mapping[str, float]) -> Report:
+        started = time.perf_counter()
+        try:
+            return self._report(moved)
+        finally:
+            self._spend(time.perf_counter() - started)
+
+    def _report(self, moved: Mapping[str, float]) -> Report:
         self.solves += 1
         if self.unknowns:
             given = {**self.given, **{name: x for name, x in moved.items() if name not in self.unknowns}}
@@ -59,6 +103,8 @@ class Scene:
         (the reason kept in ``refusal``)."""
         try:
             return numeric(self.report(moved))
+        except OverBudget:
+            raise
         except (InputError, OverflowError, ZeroDivisionError, ValueError) as err:
             self.refusal = err
             return None
@@ -74,6 +120,22 @@ class Scene:
     def allowed(self, name: str, x: float) -> bool:
         low, high = self.domain(name)
         return low < x < high if self.sign(name) == "positive" else low <= x < high
+
+
+def _over_budget(setting: str, planned: int, each: float, estimate: float, limit: float) -> OverBudget:
+    """The refusal of work estimated past ``limit``, with the setting that would fit."""
+    took = f"is estimated to take about {estimate:,.0f} s ({planned:,} solves of about {_seconds(each)} each), over the {limit:.0f} s limit"
+    if setting == "mc":
+        fits = int(limit / each)
+        hint = (f"{{mc}} {fits} fits" if fits >= 2 else "no number of draws fits") + "; {no_limit} runs it as asked"
+    else:
+        hint = "a faster solve fits (a larger {dt}, or {method} auto where a closed form exists); {no_limit} runs it as asked"
+    return OverBudget(setting, took, hint=hint)
+
+
+def _seconds(each: float) -> str:
+    milliseconds = each * 1000
+    return f"{milliseconds:.2g} ms" if milliseconds < 10 else f"{milliseconds:,.0f} ms" if milliseconds < 1000 else f"{each:.3g} s"
 
 
 def readable(command: Command, given: Mapping[str, object], unknown=None) -> dict:
@@ -215,6 +277,8 @@ def monte_carlo(scene: Scene, report: Measured, spreads: Mapping[str, float], dr
             draw[name] = x
         try:
             solved = solve_draw(draw)
+        except OverBudget:
+            raise
         except (InputError, OverflowError, ZeroDivisionError, ValueError):
             solved = None
         values = numeric(solved) if isinstance(solved, Report) else solved

@@ -61,5 +61,6 @@ class Inputs:
 
 def word(option: Option, given) -> str:
     if not isinstance(given, str):
-        raise InputError(option.name, f"expected one of {', '.join(option.choices)}", got=repr(given))
+        expected = f"one of {', '.join(option.choices)}" if option.choices else "a text"
+        raise InputError(option.name, f"expected {expected}", got=f"{given!r} ({type(given).__name__})")
     return given.strip()

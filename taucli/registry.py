@@ -63,10 +63,16 @@ def registry():
     import pint  # deferred: pint (about 150 ms with its registry), only for a text the cache has not seen
 
     where = cache.folder()
+    kept = None if where is None else os.path.join(where, "pint")
+    if kept is not None and not cache.checked_folder(kept):  # pint's pickles, checked: an edited one is not read
+        kept = None
     try:
-        ureg = pint.UnitRegistry(cache_folder=None if where is None else os.path.join(where, "pint"))
+        ureg = pint.UnitRegistry(cache_folder=kept)
     except Exception:  # an unreadable, unwritable or corrupt cache must not cost the answer
         ureg = pint.UnitRegistry()
+    else:
+        if kept is not None:
+            cache.seal(kept)
     ureg.define("rev = revolution")
     ureg.define("rps = revolution / second")
     ureg.define("taucli_angle = [taucli_angle]")  # to tell a sum of angled and angle-free units (_mixes_angles)

@@ -251,6 +251,8 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
     elif output.drawn:
         runs = [(swept_list.label(p.list_index), p.report) for p in points]
         chart = plot.motion_chart(runs, renderer.chart_units(points[0].report, output.to))
+    if output.out is not None and chart is not None:  # the file first: one that cannot be written is refused before any answer
+        plot.write_file(chart, output.out)
     if output.get:
         for point in points:
             values = [point.report.inputs[s.name].value for s in swept]
@@ -271,8 +273,6 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
         if chart is not None and (swept_range is not None or output.plot):
             columns, colour = renderer.terminal_style(stream)
             stream.write(("" if output.plot else "\n") + plot.terminal(chart, columns, colour=colour))
-    if output.out is not None and chart is not None:
-        plot.write_file(chart, output.out)
     stream.flush()
 
 

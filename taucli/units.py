@@ -214,8 +214,13 @@ def _check(value: float, text: str, option: str, kind: Kind, sign: str) -> None:
 def si_number(value: float, option: str, kind_name: str, *, sign: str = "positive") -> float:
     """A number given as SI (a JSON number in a batch line, a float from Python), checked as a
     text would be: finite, within bounds, of its sign. No unit to read, so an angle is radians."""
-    _check(float(value), repr(value), option, KINDS[kind_name], sign)
-    return float(value)
+    try:
+        number = float(value)
+    except OverflowError:  # an int past a double's range (10**400): as far out of bounds as inf
+        number = math.inf if value > 0 else -math.inf
+        check_bounds(number, kind_name, option, sign=sign, got=f"a whole number of about {int(abs(value).bit_length() * math.log10(2)) + 1} digits")
+    _check(number, repr(value), option, KINDS[kind_name], sign)
+    return number
 
 
 def _is_number(text: str) -> bool:

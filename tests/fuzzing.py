@@ -135,6 +135,14 @@ def option_value(option: str, metavar: str | None, files: dict[str, str]) -> st.
     return quantity_texts(metavar or "")
 
 
+# Batch lines of shapes that once met a bug (#33): nesting past Python's recursion limit, "to" that
+# is not a text, a key that is not UTF-8 (as stdin's surrogateescape reads it), a line of 1 MiB.
+HOSTILE_LINES = [
+    "[" * 1000 + "]" * 1000, '{"a":' * 1000 + "1" + "}" * 1000, '{"m1": "4kg", "to": true}', '{"m1": "4kg", "to": 5}',
+    '{"m1": "4kg", "to": [1]}', '{"m1": "4kg", "to": {}}', '{"m\udcff1": "4kg"}', '{"m1": "' + "4" * (1 << 20) + 'kg"}',
+]
+
+
 @dataclass
 class Vector:
     scene: str
@@ -257,7 +265,7 @@ def vectors(draw, scene: str, files: dict[str, str]) -> Vector:
     stdin = ""
     if "--batch" in args or "-" in args:
         line = st.dictionaries(st.sampled_from([o[0].lstrip("-").replace("-", "_") or "shape" for o in options]), st.one_of(quantity_texts("MASS"), st.floats(), st.integers(), st.none(), st.booleans()), max_size=5)
-        stdin = "\n".join(draw(st.lists(st.one_of(line.map(json.dumps), st.text(max_size=30)), max_size=5)))
+        stdin = "\n".join(draw(st.lists(st.one_of(line.map(json.dumps), st.text(max_size=30), st.sampled_from(HOSTILE_LINES)), max_size=5)))
     return Vector(scene, args, stdin)
 
 
@@ -271,6 +279,7 @@ def profile_files(folder: Path) -> dict[str, str]:
         "huge": "t [s], torque [N*m]\n0, 1e308\n1, 1e308\n2, -1e308\n",
         "long_line": "t [s], torque [N*m]\n" + "1" * 100_000 + ", 1\n",
         "binary": "\x00\x01\x02\xff",
+        "tiny_steps": "t [s], torque [N*m]\n0, 1\n1e-200, 2\n2e-200, 3\n",  # (#33) Simpson's weights underflowed to a zero divisor
         "empty": "",
     }
     paths = {}

@@ -131,3 +131,32 @@ def test_a_killed_batch_leaves_only_whole_lines(tmp_path):
     assert text.endswith("\n") and len(text) >= 200_000
     for line in text.splitlines():
         assert json.loads(line)["scene"] == "atwood"
+
+
+LONG_LINE = '{"shape": "rod", "length": "1m", "mass": "2kg", "axis": "end", "angle0": "90deg", "angle": "30deg", "at": "0.5m"}\n'  # ~7 KB out
+
+
+@pytest.mark.parametrize("signal_number", [signal.SIGTERM, signal.SIGINT])
+def test_sigterm_and_sigint_leave_whole_lines_with_a_slow_reader(tmp_path, signal_number):
+    """#33 item 5: lines of ~7 KB, more than a pipe takes at once, read slowly; each signal lands
+    while taucli is blocked writing, and the line in hand is finished before it stops."""
+    scenes = tmp_path / "scenes.jsonl"
+    scenes.write_text(LONG_LINE * 2000)
+    for attempt in range(4):
+        with scenes.open() as source:
+            child = subprocess.Popen([sys.executable, "-m", "taucli", "pendulum", "--batch"], stdin=source, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=os.environ.copy())
+            received = child.stdout.read(100_000 + 1_537 * attempt)
+            time.sleep(0.5)  # the pipe fills, and taucli blocks part way through writing a line
+            child.send_signal(signal_number)
+            chunks = [received]
+            while chunk := child.stdout.read(997):  # a slow reader: small reads, with pauses
+                chunks.append(chunk)
+                time.sleep(0.001)
+            child.wait(timeout=60)
+            child.stderr.close()
+            child.stdout.close()
+        text = b"".join(chunks).decode("utf-8")
+        assert text.endswith("\n"), (signal_number, attempt, text[-200:])
+        documents = [json.loads(line) for line in text.splitlines()]
+        assert len(documents) < 2000 and all(document["scene"] == "pendulum" for document in documents)
+        assert child.returncode == (130 if signal_number == signal.SIGINT else -signal.SIGTERM)

@@ -57,6 +57,10 @@ FOUND = [
     Vector("atwood", ["--m1", "1..2kg", "--points", "10000", "--m2", ",".join(["1kg"] * 10000), "--get", "a"]),
     # exit 1 (#34, found while the grammar learned --pull): pulls on string ends with no mass and a pulley of I = 0 divided by zero
     Vector("atwood", ["--pull", "force=15N", "--pull", "force=5N on=2", "--pulley-radius", "33cm", "--pulley-inertia", "0kg*m^2", "--v0", "-2m/s"]),
+    # exit 1 (#33): time steps of 1e-200 s divided by zero, with either rule
+    Vector("impulse", ["--inertia", "1kg*m^2", "--omega0", "0", "--torque-profile", "{tiny_steps}", "--method", "trapezoid"]),
+    # exit 1 (#33): a batch line nested 1,000 deep (RecursionError), and "to" that is not a text (AttributeError)
+    Vector("atwood", ["--batch"], "[" * 1000 + "]" * 1000 + "\n" + '{"m1": "4kg", "to": true}\n{"m1": "4kg", "to": [1]}'),
 ]
 
 

@@ -96,6 +96,7 @@ UNCERTAIN = (
     Option("want", TEXT, "The target of --find, e.g. --want a=4.0m/s^2 (may carry an uncertainty).", panel=FIND, metavar="RESULT=VALUE"),
     Option("uncertainty", FLAG, "With --get: each result's standard uncertainty in a second column.", panel=FIND),
     Option("mc", COUNT, "Check the uncertainties by Monte Carlo with N draws.", panel=FIND, metavar="N"),
+    Option("no_limit", FLAG, "Run --find or --mc however long it is estimated to take (else refused past 60 s).", panel=FIND),
 )
 
 # How to answer: read by the command line, not by the scene.

@@ -189,10 +189,16 @@ class Evolver:
             self.unstable.append(f"{self.method.name}: ω left the range of a double (it is not finite); results withheld")
         elif solution.unstable:
             limit = numerics.METHODS[self.method.name].stability_limit
+            # Where ω blew up past a double (the rate is inf), the step that would have held is set
+            # by the stiffness at the start, which the step first left the stable region from.
+            start_rate = phase.stiffness(phase.closed.omega0 if omega_start is None else omega_start) * self.method.dt
+            rate = solution.worst_rate if math.isfinite(solution.worst_rate) else start_rate
+            reached = fmt(solution.worst_rate, 3) if math.isfinite(solution.worst_rate) else "past the largest double (ω blew up)"
             self.unstable.append(
-                f"{self.method.name} went unstable: dt·|∂α/∂ω| reached {fmt(solution.worst_rate, 3)}, above its limit "
-                f"{fmt(limit, 4)}; results withheld. Use --dt below {fmt(self.method.dt * limit / solution.worst_rate, 2)} s, "
-                "or --method auto"
+                f"{self.method.name} went unstable: dt·|∂α/∂ω| reached {reached}, above its limit "
+                f"{fmt(limit, 4)}; results withheld. "
+                + (f"Use --dt below {fmt(self.method.dt * limit / rate, 2)} s, " if 0 < rate < math.inf else "Use a smaller --dt, ")
+                + "or --method auto"
             )
         return solution
 

@@ -98,7 +98,15 @@ def on_pivot(body: Body, torsion: float | None, g: float | None, angle0: float |
         )
     theta0 = angle0 or 0.0
     if not kappa and abs(theta0) > math.pi:
-        raise InputError("angle0", "expected an angle from −180 to 180 deg under gravity alone", got=f"{fmt(math.degrees(theta0))} deg")
+        raise InputError("angle0", "expected an angle from −180 to 180 deg under gravity alone", got=_past_half_turn(theta0))
     if angle is not None and not kappa and abs(angle) > math.pi:
-        raise InputError("angle", "expected an angle from −180 to 180 deg under gravity alone", got=f"{fmt(math.degrees(angle))} deg")
+        raise InputError("angle", "expected an angle from −180 to 180 deg under gravity alone", got=_past_half_turn(angle))
     return Swing(body.inertia, gravity_torque, kappa, theta0, omega0 or 0.0), gravity
+
+
+def _past_half_turn(angle: float) -> str:
+    """An angle just past ±180° in degrees, with the digits that show it is past (fmt's six
+    significant digits would print 180.00000001° as "180")."""
+    degrees = math.degrees(angle)
+    shown = fmt(degrees)
+    return f"{shown if abs(float(shown.replace('−', '-'))) > 180 else repr(degrees)} deg"
