@@ -455,7 +455,7 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
-            (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
+            (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
             return 0
         fi
         COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --every --json --get --to --no-steps --uncertainty --plot --out --help" -- "$cur"))

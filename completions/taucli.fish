@@ -478,7 +478,7 @@ complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l uncertainty -d '
 complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l mc -x -d 'Check the uncertainties by Monte Carlo with N draws.'
 complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l no-limit -d 'Run --find or --mc however long it is estimated to take (else refused past 60 s).'
 complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l help -d 'Show this message and exit.'
-complete -c taucli -n '__fish_seen_subcommand_from fit' -a 'inertia spin-down atwood rolling impulse pendulum torque gyro drive'
+complete -c taucli -n '__fish_seen_subcommand_from fit' -a 'inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -F
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l fit -x -d 'The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu); repeatable.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l x -x -d 'A column that is an input of each sample, and which (default time), e.g. "Time (s)" or "amplitude (deg)=angle0" (repeatable).'
