@@ -121,7 +121,7 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
         if value.unit is None or not isinstance(value.value, (float, int)) or isinstance(value.value, bool):
             if value.value is None:
                 continue
-            raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to I=g*cm^2")
+            raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to 'I=g*cm^2'")
         converted, note = units.converted(float(value.value), value.unit, unit, "--to")[:2]
         results[name] = value._replace(value=converted, unit=unit)
         spreads = getattr(report, "uncertainties", None)

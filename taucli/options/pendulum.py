@@ -14,7 +14,7 @@ COMMAND = Command(
         Option("cm_distance", "length", "Distance d from the pivot to the centre of mass (else from the shape and --offset).", sign="nonnegative"),
         Option("angle0", "angle", "Starting angle from the downward vertical (90deg: horizontal).", sign="any", default="0", panel=MOTION),
         Option("omega0", "angular velocity", "Starting angular velocity, positive toward larger angles.", sign="any", default="0", panel=MOTION),
-        Option("torsion", "torsion constant", "Torsion constant κ of a spring or wire (torque κθ), e.g. 0.5N*m/rad.", sign="nonnegative"),
+        Option("torsion", "torsion constant", "Torsion constant κ of a spring or wire (torque κθ), e.g. '0.5N*m/rad'.", sign="nonnegative"),
         GRAVITY,
         Option("angle", "angle", "Report ω and the time to reach this angle, e.g. 0deg.", sign="any", panel=MOTION),
         Option("time", "time", "Report θ and ω at this time, e.g. 2s.", sign="nonnegative", panel=MOTION),

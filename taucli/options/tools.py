@@ -39,7 +39,7 @@ EXIT_STATUSES = (
 ROOT = Command(
     name="taucli",
     summary="Rigid-body rotation about a fixed axis: τ_net = Iα and what follows from it.",
-    description="Quantities take units: 4kg, 300 rpm, 0.3 N*m, 30deg. A bare number is SI, except for an angle, an angular velocity or an angular acceleration, which need their unit.",
+    description="Quantities take units: 4kg, 300rpm, '0.3 N*m', 30deg. A bare number is SI, except for an angle, an angular velocity or an angular acceleration, which need their unit.",
     example="taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg",
     options=(
         Option("version", FLAG, "Print the version and exit."),
