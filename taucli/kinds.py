@@ -54,7 +54,7 @@ KINDS: dict[str, Kind] = {
         Kind("power", "W", "1 kW", ("W", "kW", "MW", "hp")),
         Kind("energy", "J", "1 MJ", ("J", "kJ", "MJ", "kW*h", "Wh")),
         Kind("density", "kg/m**3", "'7800 kg/m^3'", ("kg/m^3", "g/cm^3", "lb/ft^3")),
-        Kind("torsion constant", "N*m/rad", "0.5 N*m/rad", ("N*m/rad", "N*m/deg", "mN*m/rad")),
+        Kind("torsion constant", "N*m/rad", "'0.5 N*m/rad'", ("N*m/rad", "N*m/deg", "mN*m/rad")),
         Kind("lead", "m/rev", "5 mm", ("mm", "in", "mm/rev", "in/rev")),  # a screw's advance per turn: a length alone is per revolution
     )
 }
