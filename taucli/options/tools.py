@@ -25,8 +25,8 @@ BENCH = Command(
 COMPLETIONS = Command(
     name="completions",
     summary="Print the completion script for SHELL: commands, options, shapes, methods, and units after a number.",
-    description="The scripts are static: pressing TAB never starts Python. docs/shell.md says where each goes.",
-    example="taucli completions bash > ~/.local/share/bash-completion/completions/taucli",
+    description="The scripts are static: pressing TAB never starts Python. For bash, save it and source it from ~/.bashrc (source ~/.taucli.bash); docs/shell.md says where zsh's and fish's go.",
+    example="taucli completions bash > ~/.taucli.bash",
     options=(Option("shell", CHOICE, "bash, zsh or fish.", choices=SHELLS, positional=True, metavar="SHELL"),),
     handler="taucli.tools:completions",
 )
