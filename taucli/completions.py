@@ -210,7 +210,7 @@ def _zsh_option(option: Option) -> str:
 
 def _zsh_described(label: str) -> str:
     """A choice's description in a ((choice\\:description ...)) action, inside a single-quoted spec."""
-    return '"' + label.replace("\\", "").replace('"', "").replace("'", "").replace(":", "").replace("[", "(").replace("]", ")") + '"'
+    return '"' + label.replace("\\", "").replace('"', "").replace(":", "").replace("'", "'\\''").replace("[", "(").replace("]", ")") + '"'
 
 
 def _zsh(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:

@@ -239,10 +239,11 @@ def test_axis_with_no_shape_typed_offers_every_axis():
     assert '*) axes="distance central diameter center end' in bash
 
 
-def test_fish_labels_each_result_of_get_with_its_own_label(tmp_path):
-    argv, env, setup, ready = _install("fish", tmp_path)
+@pytest.mark.parametrize("shell", ["fish", "zsh"])
+def test_each_result_of_get_has_its_own_label(shell, tmp_path):
+    argv, env, setup, ready = _install(shell, tmp_path)
     shown = _press_tab(argv, env, setup, ready, "taucli atwood --get T\t")
-    assert "tension on m1" in shown and "tension on m2" in shown, shown
+    assert "tension on m1's side" in shown and "tension on m2's side" in shown, shown
     script = completions.script("fish")
     gets = [line for line in script.splitlines() if "from atwood'" in line and " -l get " in line]
     labels = [line.rsplit(" -d ", 1)[1] for line in gets]
