@@ -1,7 +1,7 @@
 """A first run (an empty cache folder) costs no more than a warm one (#36 item 8).
 
 pint's SI factor for each common unit text is shipped in the package (taucli/units-shipped.json,
-built by ``python -m taucli.cache``), so a first run reads "4 kg" without importing pint and
+built by ``python -m taucli.shipped``), so a first run reads "4 kg" without importing pint and
 building its registry, as a warm run does. The table is used only for the rules and the pint it
 was built with; these tests check that it is current, that each factor is pint's, and that a
 first run of README's examples never imports pint. (Timings: docs/running.md, measured by hand.)
@@ -17,7 +17,7 @@ import sys
 
 import pytest
 
-from taucli import cache, units
+from taucli import cache, shipped, units
 from taucli.kinds import KINDS
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -31,7 +31,7 @@ def _shipped() -> dict:
 def test_the_shipped_table_is_current():
     if cache.pint_version() is None:
         pytest.skip("pint's version cannot be found from its dist-info folder here: the table is not used")
-    assert _shipped()["stamp"] == cache.rules_stamp(), "the reading rules or pint changed: run `python -m taucli.cache`"
+    assert _shipped()["stamp"] == cache.rules_stamp(), "the reading rules or pint changed: run `python -m taucli.shipped`"
     assert cache.shipped_unit_factors() == _shipped()["entries"]
 
 
@@ -53,12 +53,12 @@ def test_every_unit_of_the_docs_examples_is_shipped():
     """A unit a page's example types reads from the table on a first run."""
     entries = cache.shipped_unit_factors() or pytest.skip("the table is not used with this pint")
     missing = []
-    for text in sorted(cache._document_units(ROOT)):
+    for text in sorted(shipped._document_units(ROOT)):
         for kind in KINDS:
             found = units.factor_entry(f"1 {text}", kind)
             if found is not None and found[0] not in entries:
                 missing.append(found[0])
-    assert not missing, f"run `python -m taucli.cache`: {missing}"
+    assert not missing, f"run `python -m taucli.shipped`: {missing}"
 
 
 def test_a_stale_table_is_not_used(monkeypatch):
