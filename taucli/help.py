@@ -2,6 +2,7 @@
 
     taucli --help          the commands, taucli's own options, the exit statuses
     taucli atwood --help   the command's summary, results, example and options by panel
+    taucli help [COMMAND]  the same as --help
 
 ``requested`` finds a help request in the arguments as click would: -h or --help where it is not
 the value of an option that takes one, before any ``--``.
@@ -33,6 +34,8 @@ def requested(args: list[str]) -> Command | None:
         return ROOT
     if at == len(args):
         return None
+    if args[at] == "help":  # taucli help, taucli help atwood: as --help
+        return COMMANDS.get(args[at + 1], ROOT) if at + 1 < len(args) else ROOT
     command = COMMANDS.get(args[at])
     if command is None:
         return None

@@ -202,8 +202,9 @@ def _unwritable(path: str, err: OSError) -> InputError:
     return InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}")
 
 
-def write_file(chart: Chart, path: str) -> None:
-    """The chart as an SVG or PNG file (matplotlib, Agg backend)."""
+def write_file(chart: Chart, path: str, said_to=None) -> None:
+    """The chart as an SVG or PNG file (matplotlib, Agg backend); where it went is said on
+    ``said_to`` (stderr: stdout holds the answer alone)."""
     import matplotlib  # deferred: matplotlib (hundreds of ms), only for a file
 
     matplotlib.use("Agg")
@@ -232,3 +233,5 @@ def write_file(chart: Chart, path: str) -> None:
         raise _unwritable(path, err) from None
     finally:
         pyplot.close(figure)
+    if said_to is not None:
+        said_to.write(f"taucli: wrote the chart to {path}\n")

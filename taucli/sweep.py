@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 from taucli import plot
 from taucli import render as renderer
+from taucli.display import minus_signs
 from taucli.errors import InputError, did_you_mean
 from taucli.options import scene
 from taucli.report import Report, pretty_unit
@@ -236,7 +237,7 @@ def chart_names(points: list[Point], y: list[str]) -> list[str]:
     return names
 
 
-def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | None, output, y: list[str], stream) -> None:
+def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | None, output, y: list[str], stream, said_to=None) -> None:
     """The sweep in the format asked for: --get lines, a JSON array or lines, or a table and a chart."""
     points = [Point(p.range_index, p.list_index, renderer.prepared(p.report, output)) for p in points]
     swept = [s for s in (swept_list, swept_range) if s is not None]
@@ -265,8 +266,35 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
             columns, colour = renderer.terminal_style(stream)
             stream.write(("" if output.plot else "\n") + plot.terminal(chart, columns, colour=colour))
     if output.out is not None and chart is not None:
-        plot.write_file(chart, output.out)
+        plot.write_file(chart, output.out, said_to=said_to)
     stream.flush()
+
+
+def _notes_where(points: list[Point], swept: list[Swept]) -> list[str]:
+    """Each distinct note of the points, once; a note not true at every point says where it is
+    ("at m2 = 4 kg: nothing moves"), or at how many points and between which values."""
+    where: dict[str, list[int]] = {}
+    for row, point in enumerate(points):
+        for note in point.report.notes:
+            rows = where.setdefault(note, [])
+            if not rows or rows[-1] != row:
+                rows.append(row)
+    if len(points) < 2:
+        return list(where)
+
+    def at(row: int) -> str:
+        point = points[row]
+        return ", ".join(pretty_unit(s.texts[point.range_index if s.is_range else point.list_index]).join((f"{s.name} = ", "")) for s in reversed(swept))
+
+    said = []
+    for note, rows in where.items():
+        if len(rows) == len(points):
+            said.append(note)
+        elif len(rows) <= 3:
+            said.append(f"at {'; '.join(at(row) for row in rows)}: {note}")
+        else:
+            said.append(f"at {len(rows)} of the {len(points)} points, {at(rows[0])} to {at(rows[-1])}: {note}")
+    return said
 
 
 def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
@@ -292,9 +320,9 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
             rows.append(cells)
         # numbers are never split: a table too wide for the terminal becomes a list, one point at a time
         renderer.draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
-        notes = list(dict.fromkeys(n for p in points for n in p.report.notes))
+        notes = _notes_where(points, swept)
         for note in notes[:MAX_NOTES]:
-            console.print(Text.assemble(("note: ", "yellow"), note))
+            console.print(Text.assemble(("note: ", "yellow"), minus_signs(note)))
         if len(notes) > MAX_NOTES:
             console.print(Text(f"… and {len(notes) - MAX_NOTES} more notes that differ from point to point (see --json)", style="dim"))
         console.print(Text("steps: run one point alone to see its worked solution", style="dim"))

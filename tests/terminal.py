@@ -45,7 +45,7 @@ class Terminal:
             pytest.skip(f"{shell} is not installed")
         self.shell = shell
         environment = {k: v for k, v in os.environ.items() if k not in ("COLUMNS", "LINES", "TAUCLI_DEBUG")}
-        environment.update(PATH=f"{shell_bin_dir()}:{os.environ['PATH']}", TERM="dumb", PYTHONIOENCODING="utf-8",
+        environment.update(PATH=f"{shell_bin_dir()}:{os.environ['PATH']}", TERM="xterm-256color", PYTHONIOENCODING="utf-8",
                            LANG="C.UTF-8", LC_ALL="C.UTF-8", **(env or {}))
         self.child = pexpect.spawn(shell, _START[shell], env=environment, dimensions=(rows, columns), encoding="utf-8", timeout=60)
         self._settle()
@@ -60,7 +60,7 @@ class Terminal:
         self.child.expect(r"__BEGIN__\r?\n")
         self.child.expect(r"__END__(\d+)")
         output = self.child.before
-        return output.replace("\r\n", "\n").replace("\r", ""), int(self.child.match.group(1))
+        return plain(output).replace("\r\n", "\n").replace("\r", ""), int(self.child.match.group(1))
 
     def close(self) -> None:
         self.child.sendline("exit")

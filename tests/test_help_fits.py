@@ -58,8 +58,6 @@ def test_unquoted_glob_finds_what_a_shell_globs():
 def test_no_help_line_is_wider_than_the_terminal(columns, monkeypatch):
     for command in ALL:
         for line in _help(command, columns, monkeypatch).splitlines():
-            if command.name == "completions" and "~/" in line:
-                continue  # a path of 50 characters, whole on its own line
             assert len(line) <= columns, f"{command.name} at {columns}: {line!r}"
 
 
@@ -167,3 +165,10 @@ def test_each_example_as_shown_at_40_columns_runs(shell):
             assert status == 0, f"{shell}: {typed}\n{printed}"
     finally:
         terminal.close()
+
+
+def test_every_kinds_example_is_typed_for_every_shell():
+    """The example an error message gives for a kind ("(e.g. '0.3 N*m')") works as typed."""
+    from taucli.kinds import KINDS
+
+    assert not [kind.example for kind in KINDS.values() if unquoted_glob(kind.example)]
