@@ -53,7 +53,7 @@ def test_a_long_option_with_one_dash(args, meant):
     assert f"did you mean {meant}?" in _refused(*args)
 
 
-@pytest.mark.parametrize("args,command", [(("help",), None), (("help", "atwood"), "atwood"), (("help", "pendulum"), "pendulum")])
+@pytest.mark.parametrize("args,command", [(("help",), None), (("help", "atwood"), "atwood"), (("help", "pendulum"), "pendulum"), (("atwood", "help"), "atwood")])
 def test_help_as_a_command(args, command):
     run = run_taucli(*args)
     assert run.code == 0 and run.err == ""
