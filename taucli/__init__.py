@@ -7,7 +7,8 @@ texts or SI numbers; each returns the Report the command line renders:
     >>> taucli.atwood(m1="4 kg", m2=1, pulley_mass="2 kg").results["a"].value
     4.9033...
 
-A value the scene cannot use raises taucli.InputError (a ValueError) naming the parameter.
+A value the scene cannot use raises taucli.InputError (a ValueError) naming the parameter; a
+result the run did not make, taucli.MissingResult (a KeyError) naming what makes it.
 """
 
 from __future__ import annotations
@@ -15,9 +16,10 @@ from __future__ import annotations
 from taucli.errors import InputError
 from taucli.options import SCENES  # plain data: no solver, typer, rich or pint
 from taucli.report import Report
+from taucli.table import MissingResult
 from taucli.version import __version__ as __version__  # taucli.__version__
 
-__all__ = ["InputError", "Report", *(command.function_name for command in SCENES.values())]
+__all__ = ["InputError", "MissingResult", "Report", *(command.function_name for command in SCENES.values())]
 
 
 def __getattr__(name: str):

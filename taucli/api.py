@@ -8,12 +8,14 @@ Report. A scene's positional argument (inertia's and rolling's SHAPE) may be giv
 from __future__ import annotations
 
 import inspect
+import textwrap
 from collections.abc import Callable
 
 from taucli import answer
 from taucli.options import SCENES
 from taucli.report import Report
-from taucli.table import Command
+from taucli.kinds import KINDS
+from taucli.table import CHOICE, COUNT, FILE, FLAG, TEXT, VECTOR, Command, Option
 
 
 def function(name: str) -> Callable[..., Report] | None:
@@ -48,10 +50,60 @@ def _made(command: Command) -> Callable[..., Report]:
     scene.__signature__ = inspect.Signature(parameters, return_annotation=Report)
     scene.__name__ = scene.__qualname__ = command.function_name
     scene.__module__ = "taucli"
-    scene.__doc__ = (
-        f"{command.summary}\n\nKeywords (texts with units, or SI numbers): "
-        + ", ".join(option.name for option in command.options)
-        + ".\n\nfind=NAME with want=\"RESULT=VALUE\" solves for an input; a text such as \"4.0+/-0.1 kg\" carries an uncertainty"
-        + f".\n\nResults: {command.results_line()}.\n\nAs on the command line: {command.example}"
-    )
+    scene.__doc__ = docstring(command)
     return scene
+
+
+def _kind(option: Option) -> str:
+    """What a keyword takes, as help() lists it: "mass, kg", "one of disc, ring", "True or False"."""
+    if option.kind == FLAG:
+        what = "True or False"
+    elif option.kind == CHOICE:
+        what = "one of " + ", ".join(option.choices)
+    elif option.kind == COUNT:
+        what = "a whole number"
+    elif option.kind == FILE:
+        what = "a file's path"
+    elif option.kind == TEXT:
+        what = "text"
+    elif option.kind == VECTOR:
+        what = f'a vector of {option.of}s, "x,y,z UNIT" (SI: {KINDS[option.of].si_unit})' if option.of in KINDS else "a vector"
+    elif option.kind in KINDS:
+        unit = KINDS[option.kind].si_unit
+        what = f"{option.kind}, a number in {unit}" if unit else "a number"
+        if option.also in KINDS:
+            what += f", or {option.also}"
+        if option.words:
+            what += " or " + " or ".join(repr(word) for word in option.words)
+    else:
+        what = f"a {option.kind} spec, {option.shown_metavar}"
+    if option.repeatable:
+        what += "; repeatable: a list"
+    if option.default:
+        what += f"; default {option.default}"
+    if option.makes:
+        what += "; makes " + ", ".join(option.makes)
+    return what
+
+
+def docstring(command: Command) -> str:
+    """help(taucli.spin_down): the summary, then each keyword with its kind, unit, default and
+    help, from the scene's table (#36), its results and an example."""
+    keywords = []
+    for option in command.options:
+        keywords.append(f"    {option.name} ({_kind(option)})")
+        keywords += textwrap.wrap(option.help, 88, initial_indent=" " * 8, subsequent_indent=" " * 8)
+    return "\n".join([
+        command.summary,
+        "",
+        "Each keyword takes a text with its unit (\"30 rad/s\", \"300 rpm\") or a number in the SI unit",
+        "listed; None (the default) leaves it out, as a missing option does. find=NAME with",
+        "want=\"RESULT=VALUE\" solves for an input; a text such as \"4.0+/-0.1 kg\" carries an uncertainty.",
+        "",
+        "Keywords:",
+        *keywords,
+        "",
+        *textwrap.wrap(f"Results (report.results[NAME].value, SI): {command.results_line()}.", 96),
+        "",
+        f"As on the command line: {command.example}",
+    ])  # fmt: skip

@@ -19,7 +19,8 @@ from typing import Annotated, Optional, TextIO
 import typer
 
 from taucli import answer, help, pipeline, render, usage
-from taucli.errors import ExitStatus, InputError, TaucliError, out_of_range
+from taucli.errors import ExitStatus, InputError, TaucliError, did_you_mean, out_of_range
+from taucli.names import FORMATS
 from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
@@ -78,7 +79,7 @@ def _parameter(option: Option):
     """The typer parameter of one option of a table."""
     if option.positional:
         marker = typer.Argument(metavar=option.shown_metavar, help=option.help_text(), show_default=False)
-        annotation, default = Optional[str], None
+        annotation, default = (Optional[list[str]] if option.repeatable else Optional[str]), None
     elif option.kind == FLAG:
         marker = typer.Option(option.flag, help=option.help_text())
         annotation, default = bool, False
@@ -128,7 +129,9 @@ def build_app(env: Environment, only: str | None = None) -> typer.Typer:
     app.callback()(_typed(own, ROOT.options))
     for command in COMMANDS.values():
         if only is None or command.name == only:
-            app.command(command.name, cls=TaucliCommand)(_callback(command, env))
+            # a repeated argument takes the rest of the line, options it reads itself included (fit: the scene's options)
+            rest = {"ignore_unknown_options": True} if any(option.positional and option.repeatable for option in command.options) else {}
+            app.command(command.name, cls=TaucliCommand, context_settings=rest)(_callback(command, env))
     return app
 
 
@@ -147,7 +150,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
 
         swept_range, swept_list = sweep.find(command, scene_given, points)
     if asked["batch"]:
-        for name in ("plot", "out", "points", "y", "jsonl", "get"):
+        for name in ("plot", "out", "points", "y", "jsonl", "get", "format"):
             if _present(asked[name]):
                 why = "writes whole JSON documents" if name == "get" else "writes one --json document per line"
                 raise InputError(name, f"does not combine with {{batch}}, which {why}", example="{batch} {no_steps}" if name == "get" else None)
@@ -164,6 +167,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         out=asked["out"],
         json_lines=bool(asked["jsonl"]),
         uncertainty=bool(asked["uncertainty"]),
+        format=_format(asked),
     )
     named = {*output.get, *(asked["y"] or ()), *(to.partition("=")[0].strip() for to in output.to)}
     _point_at_the_rim(command, scene_given, named)
@@ -204,6 +208,19 @@ def _turn_on_what_makes(command: Command, given: dict, asked: set) -> None:
     for option in command.options:
         if option.makes and not given.get(option.name) and asked & set(option.makes):
             given[option.name] = True
+
+
+def _format(asked: dict) -> Optional[str]:
+    """--format (#36): one of md, latex, html, csv, alone among the ways to answer."""
+    chosen = asked["format"]
+    if chosen is None:
+        return None
+    if chosen not in FORMATS:
+        raise InputError("format", f"expected one of {', '.join(FORMATS)}", example="{format} md", got=repr(chosen), hint=did_you_mean(chosen, FORMATS))
+    for name in ("json", "jsonl", "get", "plot"):
+        if _present(asked[name]):
+            raise InputError(name, "does not combine with {format}: each writes the whole answer", example="{format} " + chosen)
+    return chosen
 
 
 def _whole_number(command: Command, text: Optional[str], name: str = "points") -> Optional[int]:

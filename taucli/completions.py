@@ -44,6 +44,8 @@ class Command:
     help: str
     options: tuple[Option, ...]
     positional: tuple[str, ...] = ()  # words the first argument takes
+    files: bool = False  # the words after the first argument are files (fit's data)
+    argument: str = "shape"  # what the first argument is, for zsh's description
 
 
 def spec() -> tuple[tuple[Option, ...], tuple[Command, ...]]:
@@ -55,6 +57,8 @@ def spec() -> tuple[tuple[Option, ...], tuple[Command, ...]]:
             _sentence(command.summary),
             _options(command, (*command.options, *command.output)),
             next((option.choices for option in command.options if option.positional), ()),
+            any(option.positional and option.kind == table.FILE for option in command.options),
+            next((option.shown_metavar.lower() for option in command.options if option.positional), "shape"),
         )
         for command in COMMANDS.values()
     )
@@ -70,7 +74,7 @@ def _options(command: table.Command, options) -> tuple[Option, ...]:
             continue
         choices = option.choices
         described: tuple[tuple[str, str], ...] = ()
-        if option.name in RESULT_NAMES and command.results:
+        if option.name in RESULT_NAMES and command.results and (option.name == "get" or command.library is not None):  # fit's --y is a column
             choices = tuple(result.key for result in command.results)
             described = tuple((result.key, _sentence(result.label.replace(table.FILLED, ""))) for result in command.results)
         if option.name == FIND and command.results:
@@ -170,7 +174,10 @@ def _bash(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
         flags = " ".join(option.flag for option in command.options)
         if command.positional:
             lines.append('        if [[ "$cur" != -* ]]; then')
-            lines.append(f'            COMPREPLY=($(compgen -W "{" ".join(command.positional)}" -- "$cur"))')
+            if command.files:  # the word after the command is the first argument; later ones are files
+                lines.append(f'            (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "{" ".join(command.positional)}" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))')
+            else:
+                lines.append(f'            COMPREPLY=($(compgen -W "{" ".join(command.positional)}" -- "$cur"))')
             lines.append("            return 0")
             lines.append("        fi")
         lines.append(f'        COMPREPLY=($(compgen -W "{flags}" -- "$cur"))')
@@ -277,7 +284,9 @@ def _zsh(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
         lines.append("            _arguments \\")
         specs = [_zsh_option(option) for option in command.options]
         if command.positional:
-            specs.append(f"'1:{'shell' if command.name == 'completions' else 'shape'}:({' '.join(command.positional)})'")
+            specs.append(f"'1:{command.argument}:({' '.join(command.positional)})'")
+        if command.files:
+            specs.append("'*:file:_files'")
         lines += [f"                {spec} \\" for spec in specs[:-1]] + [f"                {specs[-1]}", "            ;;"]
     lines += ["        esac", "        ;;", "    esac", "}", "", '_taucli "$@"', ""]
     return "\n".join(lines)
@@ -325,6 +334,8 @@ def _fish(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
         condition = f"-n '__fish_seen_subcommand_from {command.name}'"
         if command.positional:
             lines.append(f"complete -c taucli {condition} -a {_fish_text(' '.join(command.positional))}")
+        if command.files:
+            lines.append(f"complete -c taucli {condition} -F")
         for option in command.options:
             line = f"complete -c taucli {condition} -l {option.flag[2:]}"
             if option.units:

@@ -110,7 +110,7 @@ def solve_for(scene: Scene, unknown: unknowns.Unknown, want: str, spreads: dict[
         if not search.roots:
             _refuse_unreachable(unknown, key, target, unit, si_unit, search, refusals, scene.given.get(unknown.option.name) is not None)
         found = search.roots
-        best = min(range(len(found)), key=lambda i: abs(found[i]))
+        best = min(range(len(found)), key=lambda i: (abs(found[i]), found[i] < 0))  # the smallest; of ±x, the positive
         x = found[best]
         solution = _search_step(name, key, target, si_unit, unit, search, best)
         extra.extend(_search_notes(unknown, key, target, unit, si_unit, search, f))
@@ -253,7 +253,7 @@ def _atwood_inverse(scene: Scene, name: str, target: float):
 
 
 def _stop_inverse(scene: Scene, name: str, target: float):
-    loads = ("viscous", "drag", "torque", "force", "power", "alpha", "brake", "face")
+    loads = ("viscous", "drag", "torque", "force", "power", "alpha", "brake", "face", "band")
     if any(option in scene.given for option in loads) or "omega0" not in scene.si or target <= 0:
         return None
     probe = scene.results({name: 1.0})  # I does not depend on the friction

@@ -231,7 +231,7 @@ def markdown(command: Command) -> str:
 def update_pages(folder: str) -> bool:
     """Rewrite the generated tables of each scene's page in ``folder`` (docs/); whether any changed."""
     changed = False
-    for command in SCENES.values():
+    for command in (*SCENES.values(), COMMANDS["fit"]):  # fit: not a scene, and its page holds its table too
         path = os.path.join(folder, f"{command.name}.md")
         with open(path, encoding="utf-8") as handle:
             old = handle.read()

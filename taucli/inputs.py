@@ -15,7 +15,7 @@ from taucli.errors import InputError, did_you_mean
 from taucli.kinds import article
 from taucli.reading import Inputs, word
 from taucli.report import Value
-from taucli.table import BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, SIDE, TEXT, VECTOR, Command, Option
+from taucli.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, ROTOR, SIDE, TEXT, VECTOR, Command, Option
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:
@@ -160,5 +160,5 @@ def _spec(name: str):
 
 READERS = {FLAG: _flag, CHOICE: _choice, FILE: _file, COUNT: _count, TEXT: _as_given}
 READERS.update({kind: _repeated for kind in units.KINDS})
-READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec("particles"), COUPLE: _spec("couples"), BRAKE: _spec("brakes"), FACE: _spec("faces")})
-READERS.update({SIDE: _spec("sides"), PULL: _spec("pulls")})
+READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec("particles"), COUPLE: _spec("couples"), BRAKE: _spec("brakes"), FACE: _spec("faces"), BAND: _spec("bands")})
+READERS.update({SIDE: _spec("sides"), PULL: _spec("pulls"), ROTOR: _spec("rotors")})

@@ -48,12 +48,15 @@ KINDS: dict[str, Kind] = {
         Kind("force", "N", "6 N", ("N", "kN", "lbf")),
         Kind("acceleration", "m/s**2", "'9.81 m/s^2'", ("m/s^2", "ft/s^2", "g0")),
         Kind("velocity", "m/s", "2 m/s", ("m/s", "km/h", "ft/s", "mph")),
+        Kind("momentum", "kg*m/s", "'2 kg*m/s'", ("kg*m/s", "N*s", "g*cm/s")),
         Kind("viscous coefficient", "N*m*s", "'0.01 N*m*s'", ("N*m*s", "N*m/(rad/s)")),
         Kind("drag coefficient", "N*m*s**2", "'0.001 N*m*s^2'", ("N*m*s^2",)),
         Kind("dimensionless", "", "0.5", ()),
         Kind("power", "W", "1 kW", ("W", "kW", "MW", "hp")),
         Kind("energy", "J", "1 MJ", ("J", "kJ", "MJ", "kW*h", "Wh")),
         Kind("density", "kg/m**3", "'7800 kg/m^3'", ("kg/m^3", "g/cm^3", "lb/ft^3")),
+        Kind("pressure", "Pa", "1 MPa", ("Pa", "kPa", "MPa", "bar", "psi")),
+        Kind("stress", "Pa", "200 MPa", ("Pa", "kPa", "MPa", "GPa", "psi", "N/mm^2")),
         Kind("torsion constant", "N*m/rad", "'0.5 N*m/rad'", ("N*m/rad", "N*m/deg", "mN*m/rad")),
         Kind("lead", "m/rev", "5 mm", ("mm", "in", "mm/rev", "in/rev")),  # a screw's advance per turn: a length alone is per revolution
     )

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import re
 
-from taucli.report import fmt
+from taucli.written import fmt
 
 PLUS_MINUS = ("±", "+/-")
 _NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"

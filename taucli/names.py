@@ -26,3 +26,4 @@ PULLEY_SHAPES = ("disc", "ring")  # scenes.atwood.Pulley.SHAPE_FACTORS
 BENCH_SCENES = ("spin-down", "impulse")  # bench.SCENES
 BENCH_SCENES += ("pendulum",)  # (#19)
 SHELLS = ("bash", "zsh", "fish")  # completions.FILE_NAMES
+FORMATS = ("md", "latex", "html", "csv")  # --format (#36): formats.py and latex.py write them

@@ -28,6 +28,7 @@ class Series:
     label: str
     xs: tuple[float, ...]
     ys: tuple[float | None, ...]  # None: no value at that x (the result does not exist there)
+    points: bool = False  # drawn as markers alone (measured samples), not joined by a line
 
 
 @dataclass(frozen=True)
@@ -166,14 +167,18 @@ def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> s
             if x_low <= x <= x_high:
                 figure.axvline((x - x_low) / (x_high - x_low), lc="white" if colour else None)
         for n, (xs, ys) in drawn:
-            figure.plot(xs, ys, lc=COLOURS[n % len(COLOURS)] if colour else None)
-        for n, (xs, ys) in drawn if len(panel.series) > 1 else ():  # markers tell series apart without colour,
+            if panel.series[n].points:
+                figure.scatter(xs, ys, lc=COLOURS[n % len(COLOURS)] if colour else None, marker=MARKERS[n % len(MARKERS)])
+            else:
+                figure.plot(xs, ys, lc=COLOURS[n % len(COLOURS)] if colour else None)
+        for n, (xs, ys) in drawn if len(panel.series) > 1 and not any(s.points for s in panel.series) else ():  # markers tell series apart without colour,
             every = max(1, 3 * len(xs) // width)  # drawn after every line, one in three columns at most
             figure.scatter(xs[::every], ys[::every], lc=COLOURS[n % len(COLOURS)] if colour else None, marker=MARKERS[n % len(MARKERS)])
         axis = "\n".join(line.rstrip() for line in figure.show(legend=False).replace("> ()", ">").replace("| ()", "|").splitlines())
         out += ["", *textwrap.wrap(f"{panel.key}: {panel.label}", columns), axis, f"{' ' * 12}{axis_title(chart.x_key, chart.x_unit)}"]
     if len(chart.panels[0].series) > 1:
-        legend = "  ".join(f"{MARKERS[n % len(MARKERS)]} {series.label}" for n, series in enumerate(chart.panels[0].series))
+        marked = any(series.points for series in chart.panels[0].series)  # samples as markers beside lines: a line is a line
+        legend = "  ".join(f"{MARKERS[n % len(MARKERS)] if series.points or not marked else '⠤'} {series.label}" for n, series in enumerate(chart.panels[0].series))
         out += textwrap.wrap(legend, columns)
     for x, what in chart.marks:
         out += textwrap.wrap(f"│ at {chart.x_key} = {fmt(x, 4)} {pretty_unit(chart.x_unit)}: {what}", columns, subsequent_indent="  ")
@@ -215,7 +220,10 @@ def write_file(chart: Chart, path: str, said_to=None) -> None:
         ax = row[0]
         for n, series in enumerate(panel.series):
             xs, ys = _plotted(series)
-            ax.plot(xs, ys, label=series.label or None, marker="o" if len(xs) < 12 else None)
+            if series.points:
+                ax.plot(xs, ys, label=series.label or None, linestyle="none", marker="o" if len(xs) < 200 else ".", markersize=4)
+            else:
+                ax.plot(xs, ys, label=series.label or None, marker="o" if len(xs) < 12 else None)
         for x, what in chart.marks:
             ax.axvline(x, linestyle="--", linewidth=0.8, color="grey")
         ax.set_ylabel(axis_title(panel.label, panel.unit))

@@ -32,7 +32,9 @@ TWO_PI = 2.0 * math.pi
 # a mass for a force (the factor holds standard gravity); a speed (or a tangential acceleration)
 # over a length, ω = v/R, in radians.
 AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS = 0, 1, 2, 3, 4
-HOWS = (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS)
+WEIGHT_INERTIA = 5  # lb*ft^2 for a moment of inertia: a mass-pound, which is also the number of a WR² (weight-inertia)
+HOWS = (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS, WEIGHT_INERTIA)
+_POUND_MASSES = frozenset({"pound", "ounce"})
 
 
 # Names for dimensionalities that show up in "got ..." messages, keyed by exponents.
@@ -275,6 +277,8 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
         ) from None
     except (OverflowError, TypeError, ValueError):
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
+    if kind.name == "moment of inertia" and how == AS_GIVEN and _POUND_MASSES & {name for name, _ in q.unit_items()}:
+        how = WEIGHT_INERTIA  # lb*ft^2, oz*in^2: read as mass × length², which is a WR²'s number too (a note says so)
     radians = _radians(q.units)
     if kind.name in ANGULAR and radians == 0:  # 1/time for a rotation: revolutions, v/R in radians, or ambiguous
         how = _per_time(cleaned, q, text, option, kind)

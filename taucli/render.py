@@ -1,6 +1,7 @@
-"""Renderers: the human view (rich table and steps), --json, and --get; --to converts units.
+"""Renderers: the human view (rich table and steps), --json, --get and --format (md, latex, html,
+csv: written by taucli.formats and taucli.latex); --to converts units.
 
-JSON and --get print nothing on stdout but the answer. rich is imported by the human view only.
+JSON, --get and --format print nothing on stdout but the answer. rich is imported by the human view only.
 """
 
 from __future__ import annotations
@@ -21,7 +22,8 @@ from taucli.version import __version__
 from taucli.errors import InputError, did_you_mean
 from taucli.display import equation_text, minus_signs, wrap_expression
 from taucli.measurement import with_uncertainty
-from taucli.report import DIGITS, Report, Table, Value, fmt, pretty_unit
+from taucli.written import DIGITS, shown as written_shown
+from taucli.report import Report, Table, Value, pretty_unit
 
 
 # Compact, and strict: NaN or Infinity raise rather than print (finite_only keeps them out).
@@ -42,6 +44,7 @@ class Output(NamedTuple):
     out: str | None = None  # also draw the chart to this .svg or .png file
     json_lines: bool = False  # a sweep's documents one per line rather than one array
     uncertainty: bool = False  # --get: each result's standard uncertainty in a second column (#22)
+    format: str | None = None  # --format md|latex|html|csv (#36): a document of that format
 
     @property
     def charted(self) -> bool:
@@ -172,7 +175,8 @@ def document(report: Report, *, steps: bool = True) -> dict:
         "notes": list(report.notes),
     }
     for name, table in report.tables.items():
-        doc[name] = _json_table(table)
+        if name not in report.results:  # a result that is also a table (fit's correlation): its value in JSON, the table to a person
+            doc[name] = _json_table(table)
     if getattr(report, "uncertainties", None) is not None:
         _json_uncertain(doc, report)
     return doc
@@ -242,7 +246,8 @@ def document_text(report: Report, *, steps: bool = True, plot: dict | None = Non
         ',"notes":[', ",".join(map(_text, report.notes)), "]",
     ]  # fmt: skip
     for name, table in report.tables.items():
-        parts += [",", _text(name), ":", STRICT_JSON.encode(_json_table(table))]
+        if name not in report.results:  # (as in document)
+            parts += [",", _text(name), ":", STRICT_JSON.encode(_json_table(table))]
     if uncertain and report.draws:
         parts += [',"monte_carlo":', STRICT_JSON.encode(_monte_carlo(report))]
     if plot is not None:
@@ -286,6 +291,11 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
             _why_null(report, output.get, notes_to)
     elif output.json:
         stream.write(document_text(report, steps=output.steps, plot=plot.plot_document(report) if output.charted else None) + "\n")
+    elif output.format:
+        stream.write(written(report, output.format, steps=output.steps))
+        if output.format == "csv" and notes_to is not None:  # a spreadsheet's rows hold no notes: said beside them
+            stream.flush()
+            notes_to.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in report.notes))
     else:
         render_human(report, stream, show_steps=output.steps)
         if output.plot:
@@ -294,6 +304,20 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
     if output.out is not None:
         plot.write_file(chart, output.out, said_to=notes_to)
     stream.flush()
+
+
+def written(report: Report, format: str, *, steps: bool = True) -> str:
+    """--format md|latex|html|csv (#36): the run as a Markdown, LaTeX or HTML document, or a CSV
+    of one row (a header of its results with their units)."""
+    from taucli import formats  # deferred: the writers of documents (5 ms), only for --format
+
+    if format == "csv":
+        return formats.csv_grid(formats.single_grid(report))
+    if format == "latex":
+        from taucli import latex  # deferred: LaTeX's tables of symbols, only for --format latex
+
+        return latex.document(formats.sheet(report, steps=steps))
+    return {"md": formats.markdown, "html": formats.html_fragment}[format](formats.sheet(report, steps=steps))
 
 
 def _why_null(report: Report, names, stream: TextIO) -> None:
@@ -334,15 +358,10 @@ def bare(value) -> str:
 
 
 def shown(value, digits: int = DIGITS) -> str:
-    if value is None:
-        return "—"
-    if isinstance(value, bool):
-        return "yes" if value else "no"
-    if isinstance(value, (int, float)):
-        return minus_signs(fmt(float(value), digits))
-    if isinstance(value, list):  # --find's roots (#22)
-        return ", ".join(shown(item, digits) for item in value)
-    return minus_signs(str(value))  # a vector's "(0.8, -0.6, 0)"
+    """A value as the human view shows it (the tables, the sweep's table): as taucli.written
+    writes it for every format, with one minus sign, − (taucli.display). md, LaTeX and HTML keep
+    written's ASCII."""
+    return minus_signs(written_shown(value, digits))
 
 
 NARROW = 60  # columns below which results are listed rather than tabled
@@ -425,7 +444,7 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
     console.print(Text.assemble((f"{report.scene}", "bold"), f": {minus_signs(report.model)}"))
     console.print(Text(f"method: {report.method}", style="dim"))
 
-    rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items()]
+    rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items() if name not in report.tables]
     spreads = getattr(report, "uncertainties", None)
     if spreads:  # #22: 4.90 ± 0.08, digits matched to the uncertainty
         rows = [(name, minus_signs(with_uncertainty(report.results[name].value, spreads[name])) if name in spreads else value, unit, label) for name, value, unit, label in rows]

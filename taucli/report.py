@@ -6,10 +6,12 @@ reads back ("kg*m**2", "N*m", "rad/s"). A result that does not exist is ``None``
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import NamedTuple
+
+# How numbers and units are written (the solvers' steps import them from here)
+from taucli.written import DIGITS as DIGITS, fmt as fmt, pretty_unit as pretty_unit, quantity_text as quantity_text, term as term
 
 Number = float | bool | str | None
 
@@ -107,8 +109,35 @@ class Report:
     tables: dict[str, Table] = field(default_factory=dict)
     trajectory: Callable[[], Trajectory] | None = None  # built when a plot asks for it (see deferred)
 
+    # In Python and Jupyter (#36): a short repr, and the documents of --format md, html and latex.
+    HEADLINES = 3  # results a repr names
 
-@dataclass
+    def __repr__(self) -> str:
+        from taucli.formats import sheet  # deferred: the writers, only when a report is shown in Python
+
+        rows = [row for row in sheet(self, steps=False).results if row.value != "—"]
+        named = ", ".join(f"{row.name} = {row.value} {pretty_unit(row.unit)}".rstrip() for row in rows[: self.HEADLINES])
+        more = f", … ({len(rows) - self.HEADLINES} more)" if len(rows) > self.HEADLINES else ""
+        return f"<{type(self).__name__} {self.scene}: {self.model}; {named}{more}>"
+
+    def _repr_markdown_(self) -> str:
+        from taucli.formats import markdown, sheet  # deferred: as in __repr__
+
+        return markdown(sheet(self))
+
+    def _repr_html_(self) -> str:
+        from taucli.formats import html_fragment, sheet  # deferred: as in __repr__
+
+        return html_fragment(sheet(self))
+
+    def _repr_latex_(self) -> str:
+        from taucli.formats import sheet  # deferred: as in __repr__
+        from taucli.latex import document
+
+        return document(sheet(self))
+
+
+@dataclass(repr=False)
 class Measured(Report):
     """A report whose results carry standard uncertainties (SI, as the values): taucli.propagate
     and taucli.find make it; a renderer shows "uncertainty" beside "value"."""
@@ -137,57 +166,3 @@ class deferred:
             self._built = self._build(*self._args, **self._kwargs)
             self._args, self._kwargs = (), {}
         return self._built
-
-
-DIGITS = 6  # significant figures of every number a person is shown: the results table and the steps alike
-
-
-def fmt(x: float, digits: int = DIGITS) -> str:
-    """A number as a person writes it in a worked solution: ``digits`` significant figures."""
-    if x == 0:
-        return "0"
-    if not math.isfinite(x):
-        return str(x)
-    magnitude = math.floor(math.log10(abs(x)))
-    if -4 <= magnitude < 7:
-        decimals = max(0, digits - 1 - magnitude)
-        text = f"{x:.{decimals}f}"
-        if "." in text:
-            text = text.rstrip("0").rstrip(".")
-        return "0" if text in ("-0", "") else text
-    mantissa, exponent = f"{x:.{digits - 1}e}".split("e")
-    if "." in mantissa:
-        mantissa = mantissa.rstrip("0").rstrip(".")
-    return f"{mantissa}e{int(exponent)}"
-
-
-_SUPERSCRIPTS = {"**2": "²", "**3": "³", "**-1": "⁻¹", "**-2": "⁻²", "^2": "²", "^3": "³", "^-1": "⁻¹", "^-2": "⁻²"}
-
-
-_PRETTY: dict[str, str] = {}  # a unit string -> as shown: the same few dozen units are shown over and over
-
-
-def pretty_unit(unit: str | None) -> str:
-    """A unit string as a person reads it: kg*m**2 -> kg·m², rad/s**2 -> rad/s²."""
-    if not unit:
-        return ""
-    shown = _PRETTY.get(unit)
-    if shown is None:
-        shown = unit
-        for power, superscript in _SUPERSCRIPTS.items():
-            shown = shown.replace(power, superscript)
-        shown = _PRETTY[unit] = shown.replace("*", "·") if len(_PRETTY) < 4096 else shown.replace("*", "·")
-    return shown
-
-
-def quantity_text(x: float, unit: str, digits: int = DIGITS) -> str:
-    """A number with its unit, for the numbers line of a step: 0.2 m, 5 kg."""
-    shown = pretty_unit(unit)
-    return f"{fmt(x, digits)} {shown}" if shown else fmt(x, digits)
-
-
-def term(x: float, unit: str | None = None) -> str:
-    """A number (with its unit) as a term of a numbers line: 30 rad/s; a negative one in
-    parentheses with a true minus, (−1.5 rad/s²), so that "+ (−1.5 rad/s²) × 20 s" reads right."""
-    text = quantity_text(x, unit) if unit else fmt(x)
-    return f"(−{text[1:]})" if text.startswith("-") else text

@@ -6,6 +6,7 @@ unreadable or would be slow to evaluate (pint evaluates ``**`` with Python integ
 
 from __future__ import annotations
 
+import math
 import re
 
 from taucli import spellings
@@ -31,7 +32,7 @@ MAX_PAREN_DEPTH = 4
 _ALLOWED = re.compile(r"[A-Za-z0-9_ .+\-*/^()µμΩ]*")
 
 
-_POWER = re.compile(r"(\*\*|\^)\s*(\(?\s*[-+]?\s*\d+(?:\.\d+)?\s*\)?)?")
+_POWER = re.compile(r"(\*\*|\^)\s*(\(\s*[-+]?\s*\d+(?:\.\d+)?\s*\)|[-+]?\s*\d+(?:\.\d+)?)?")  # x^2, x^-1, x^(1.5)
 
 
 _DIGIT_RUN = re.compile(r"\d+")
@@ -93,12 +94,33 @@ def screen(text: str, option: str, kind: Kind) -> str:
     powers = list(_POWER.finditer(cleaned))
     if len(powers) > MAX_POWERS:
         raise refuse("too many powers")
+    raised = []  # (where a power is, its size, the parenthesised group it raises, if any)
     for power in powers:
         exponent = power.group(2)
         if exponent is None:
             raise refuse("a power must be a plain number, as in m^2")
-        if abs(float(exponent.strip("() ").replace(" ", ""))) > MAX_EXPONENT:
+        size = abs(float(exponent.strip("() ").replace(" ", "")))
+        if size > MAX_EXPONENT:
             raise refuse(f"a power larger than {MAX_EXPONENT}")
         if re.match(r"\s*(\*\*|\^)", cleaned[power.end() :]):
             raise refuse("a power of a power")
+        raised.append((power.start(), size, _group_before(cleaned, power.start())))
+    # a power of a group that holds powers multiplies them: ((3m)^2 + (2m)^2)^0.5 is fine, (9^9)^9 is 9^81
+    for where, size, _ in raised:
+        total = size * math.prod(outer for _, outer, group in raised if group is not None and group[0] < where < group[1])
+        if total > MAX_EXPONENT:
+            raise refuse(f"powers of powers that make one larger than {MAX_EXPONENT}")
     return cleaned
+
+
+def _group_before(text: str, end: int) -> tuple[int, int] | None:
+    """The span of the parenthesised group that ends just before ``end`` (spaces aside), or None."""
+    close = len(text[:end].rstrip()) - 1
+    if close < 0 or text[close] != ")":
+        return None
+    depth = 0
+    for i in range(close, -1, -1):
+        depth += (text[i] == ")") - (text[i] == "(")
+        if depth == 0:
+            return i, close
+    return None

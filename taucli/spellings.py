@@ -192,6 +192,11 @@ def revolutions(unit: str | None, *, squared: bool = False) -> str:
     if not unit:
         return "1/time read as revolutions per unit time"
     shown = unit.replace("**", "^")
+    prefixed = re.fullmatch(r"(kilo|mega|giga|milli|micro|[kMGmµu])(?:Hz|hertz)", unit)
+    if prefixed and not squared:
+        scale = {"k": "1000", "M": "10⁶", "G": "10⁹", "m": "1/1000", "µ": "10⁻⁶", "u": "10⁻⁶"}[
+            {"kilo": "k", "mega": "M", "giga": "G", "milli": "m", "micro": "µ"}.get(prefixed.group(1), prefixed.group(1))]
+        return f"{shown} read as {scale} revolutions per second"
     if unit == "Hz" or (squared and unit in ("Hz/s", "Hz**2")):
         per = "second"
     else:

@@ -18,7 +18,7 @@ import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
-from taucli import plot
+from taucli import formats, plot
 from taucli import render as renderer
 from taucli.display import minus_signs
 from taucli.errors import InputError, did_you_mean
@@ -228,17 +228,22 @@ def range_chart(points: list[Point], swept_range: Swept, swept_list: Swept | Non
 
 
 def chart_names(points: list[Point], y: list[str]) -> list[str]:
-    """The results a range's chart shows: --y, else the scene's headline result."""
+    """The results a range's chart shows: --y, else the scene's headline result (where a model of
+    the scene has no such result, as gyro's rotor on a machine has no precession rate: its first number)."""
     results = points[0].report.results
-    names = y or [scene(points[0].report.scene).headline]
+    headline = scene(points[0].report.scene).headline
+    if headline not in results:
+        headline = next((name for name, value in results.items() if isinstance(value.value, float)), headline)
+    names = y or [headline]
     for name in names:
         if name not in results:
             raise InputError("y", f"expected the name of a result of {points[0].report.scene}: {', '.join(results)}", got=repr(name), hint=did_you_mean(name, results))
     return names
 
 
-def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | None, output, y: list[str], stream, said_to=None) -> None:
-    """The sweep in the format asked for: --get lines, a JSON array or lines, or a table and a chart."""
+def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | None, output, y: list[str], stream, notes_to=None) -> None:
+    """The sweep in the format asked for: --get lines, a JSON array or lines, a --format document
+    (#36), or a table and a chart."""
     points = [Point(p.range_index, p.list_index, renderer.prepared(p.report, output)) for p in points]
     swept = [s for s in (swept_list, swept_range) if s is not None]
     chart = None
@@ -259,6 +264,8 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
             for point in points
         ]
         stream.write("".join(doc + "\n" for doc in documents) if output.json_lines else "[" + ",".join(documents) + "]\n")
+    elif output.format:
+        _write_format(grid(points, swept), output.format, stream, notes_to)
     else:
         if not output.plot:
             _render_table(points, swept, stream)
@@ -266,7 +273,7 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
             columns, colour = renderer.terminal_style(stream)
             stream.write(("" if output.plot else "\n") + plot.terminal(chart, columns, colour=colour))
     if output.out is not None and chart is not None:
-        plot.write_file(chart, output.out, said_to=said_to)
+        plot.write_file(chart, output.out, said_to=notes_to)
     stream.flush()
 
 
@@ -297,32 +304,70 @@ def _notes_where(points: list[Point], swept: list[Swept]) -> list[str]:
     return said
 
 
+def _swept_values(swept: Swept, points: list[Point]) -> tuple[str, str | None, list]:
+    """A swept option's name, unit and value at each point: in the unit the user typed, else SI."""
+    if swept.numbers is not None and swept.unit:
+        return swept.name, swept.unit, [swept.numbers[point.range_index if swept.is_range else point.list_index] for point in points]
+    value = points[0].report.inputs.get(swept.name)
+    return swept.name, value.unit if value is not None else None, [point.report.inputs[swept.name].value for point in points]
+
+
+def grid(points: list[Point], swept: list[Swept]) -> formats.Grid:
+    """The sweep as one table: the swept values, then every result that has a value somewhere;
+    the distinct notes of its points (at most MAX_NOTES, and how many more)."""
+    first = points[0].report
+    what = " × ".join(f"--{s.name.replace('_', '-')} {s.given} ({len(s.texts)} values)" for s in reversed(swept))
+    models = dict.fromkeys(p.report.model for p in points)
+    model = first.model if len(models) == 1 else f"varies ({len(models)} kinds; see --json)"
+    names = [name for name in first.results if any(p.report.results.get(name) and p.report.results[name].value is not None for p in points)]
+    swept_columns = [_swept_values(s, points) for s in swept]
+    columns = tuple((name, unit) for name, unit, _ in swept_columns) + tuple((name, first.results[name].unit) for name in names)
+    rows = tuple(
+        tuple(values[row] for _, _, values in swept_columns)
+        + tuple(point.report.results[name].value if name in point.report.results else None for name in names)
+        for row, point in enumerate(points)
+    )
+    notes = _notes_where(points, swept)  # a note true at some points only says at which
+    if len(notes) > MAX_NOTES:
+        notes = notes[:MAX_NOTES] + [f"… and {len(notes) - MAX_NOTES} more notes that differ from point to point (see --json)"]
+    return formats.Grid(f"{first.scene}: {what}", model, columns, rows, tuple(notes))
+
+
+def _write_format(table: formats.Grid, format: str, stream, notes_to) -> None:
+    """--format md|latex|html|csv (#36): the sweep's table as a document; a CSV's notes to stderr."""
+    if format == "csv":
+        stream.write(formats.csv_grid(table))
+        stream.flush()  # the rows, then the notes beside them
+        if notes_to is not None:
+            notes_to.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in table.notes))
+        return
+    if format == "latex":
+        from taucli import latex  # deferred: LaTeX's tables of symbols, only for --format latex
+
+        stream.write(latex.grid(table))
+        return
+    stream.write(formats.markdown_grid(table) if format == "md" else formats.html_grid(table))
+
+
 def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
     """One row per point: the swept values, then every result that has a value somewhere."""
     from rich.text import Text  # deferred: rich (about 30 ms), only for the human view
 
+    table = grid(points, swept)
     with renderer.drawing(stream) as console:
-        first = points[0].report
-        what = " × ".join(f"--{s.name.replace('_', '-')} {s.given} ({len(s.texts)} values)" for s in reversed(swept))
-        console.print(Text.assemble((first.scene, "bold"), f": {what}"))
-        models = dict.fromkeys(p.report.model for p in points)
-        console.print(Text(f"model: {first.model}" if len(models) == 1 else f"model: varies ({len(models)} kinds; see --json)", style="dim"))
-        names = [name for name in first.results if any(p.report.results.get(name) and p.report.results[name].value is not None for p in points)]
-        columns = [_swept_columns(s, points) for s in swept]
-        headings = [heading for heading, _ in columns]
-        for name in names:
-            unit = pretty_unit(first.results[name].unit)
-            headings.append(f"{name} ({unit})" if unit else name)
-        rows = []
-        for row, point in enumerate(points):
-            cells = [renderer.shown(values[row]) for _, values in columns]
-            cells += [renderer.shown(point.report.results[name].value if name in point.report.results else None) for name in names]
-            rows.append(cells)
+        scene_name, _, what = table.title.partition(": ")
+        console.print(Text.assemble((scene_name, "bold"), f": {what}"))
+        console.print(Text(f"model: {table.model}", style="dim"))
+        headings = []
+        for name, unit in table.columns:
+            shown_unit = pretty_unit(unit)
+            headings.append(f"{name} ({shown_unit})" if shown_unit else name)
+        rows = [[renderer.shown(cell) for cell in row] for row in table.rows]
         # numbers are never split: a table too wide for the terminal becomes a list, one point at a time
         renderer.draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
-        notes = _notes_where(points, swept)
-        for note in notes[:MAX_NOTES]:
-            console.print(Text.assemble(("note: ", "yellow"), minus_signs(note)))
-        if len(notes) > MAX_NOTES:
-            console.print(Text(f"… and {len(notes) - MAX_NOTES} more notes that differ from point to point (see --json)", style="dim"))
+        for note in table.notes:
+            if note.startswith("… and "):
+                console.print(Text(note, style="dim"))
+            else:
+                console.print(Text.assemble(("note: ", "yellow"), minus_signs(note)))
         console.print(Text("steps: run one point alone to see its worked solution", style="dim"))

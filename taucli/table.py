@@ -30,12 +30,15 @@ NOT_QUANTITIES = NOT_QUANTITIES | {VECTOR}  # read a component at a time by its 
 PARTICLE = "particle"  # "mass=… speed=… radius=… [angle=…] [speed-after=… | e=… | radius-after=…]", repeatable
 COUPLE = "couple"  # "[SHAPE] inertia=… | mass=… dims…, omega0=…": another body on the axis, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
-BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…]": a brake shoe on a turning body, repeatable
-FACE = "face"  # "mu=… [force=…] [inner-radius=…] [outer-radius=…] [pressure=uniform|wear] [surfaces=…]": a pressed flat face, repeatable
-NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE}
+BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…] [lever=… pivot=… offset=…]": a brake shoe on a turning body, repeatable
+FACE = "face"  # "mu=… [force=…|pmax=…] [inner-radius=…] [outer-radius=…] [model=uniform|wear] [surfaces=…]": a pressed flat face, repeatable
+BAND = "band"  # "mu=… wrap=… [radius=…] [width=…] tension=…|force=… lever=… slack-arm=…|tight-arm=…": a band brake, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE, BAND}
 SIDE = "side"  # "hang" | "table [mu-s=… mu-k=…]" | "incline angle=… [mu-s=… mu-k=…]": where a block of atwood is
 PULL = "pull"  # "force=… [angle=…] [on=1|2]": a pull on a block of atwood, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {SIDE, PULL}
+ROTOR = "rotor"  # "inertia=… spin=… sense=cw-from-rear": another rotor whose axis a vehicle turns (gyro), repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {ROTOR}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {
@@ -56,8 +59,10 @@ METAVARS = {
     "power": "POWER",
     "energy": "ENERGY",
     "density": "DENSITY",
+    "stress": "STRESS",
     "torsion constant": "KAPPA",
     "lead": "LEAD",
+    "pressure": "PRESSURE",
 }
 
 
@@ -206,6 +211,10 @@ class Results(dict):
         self.command = command
         self._known = command._index["results:"]
 
+    def __missing__(self, key: str):
+        """``results["KE0"]`` where this run has no KE0: say what makes it (#36)."""
+        raise MissingResult(key, self.command, tuple(self))
+
     def put(self, key: str, value, part: str = "") -> None:
         found = self._known.get(key)
         if found is None:
@@ -215,3 +224,26 @@ class Results(dict):
 
 
 FILLED = "…"  # where a result's label takes the part its solver fills in
+
+
+class MissingResult(KeyError):
+    """A result this run has not made: which keyword makes it, or which results the run has.
+
+    A KeyError, so that ``"KE0" in results`` and ``results.get("KE0")`` work as on any dict.
+    """
+
+    def __init__(self, key: str, command: Command, present: tuple[str, ...]):
+        super().__init__(key)
+        self.key, self.scene, self.present = key, command.name, present
+        self.makers = tuple(option.name for option in command.options if key in option.makes)
+        self.in_table = command.result(key) is not None
+
+    def __str__(self) -> str:
+        if self.makers:
+            turn_on = " or ".join(f"{name}=True" for name in self.makers)
+            flags = " or ".join("--" + name.replace("_", "-") for name in self.makers)
+            return f"{self.key} is not among this run's results: {turn_on} turns it on ({flags} on the command line)"
+        if self.in_table:
+            return (f"{self.key} is a result of {self.scene} that these inputs do not make (its page in docs/ says which do); "
+                    f"this run's results: {', '.join(self.present)}")
+        return f"{self.key} is not a result of {self.scene}; this run's results: {', '.join(self.present)}"

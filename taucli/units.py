@@ -25,11 +25,11 @@ import math
 import re
 from typing import NamedTuple
 
-from taucli import cache, spellings
+from taucli import cache, expressions, spellings
 from taucli.errors import InputError
 from taucli.kinds import KINDS, STANDARD_GRAVITY, Kind, article, check_bounds
 from taucli.registry import (
-    AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, Ambiguous, bare_number, expected, from_pint, number_times_unit,
+    AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, WEIGHT_INERTIA, Ambiguous, bare_number, expected, from_pint, number_times_unit,
 )
 from taucli.screen import MAX_DIGITS, MAX_TEXT_LENGTH, screen
 
@@ -104,6 +104,7 @@ class Reading(NamedTuple):
     how: int  # AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS
     unit: str | None  # the unit as looked up: "" for a bare number, None for an expression pint read whole
     mixed: str | None = None  # "33 1/3" when a mixed number was read
+    said: tuple[str, ...] = ()  # how a function or a grouping was read (sqrt(13) = 3.60555)
 
 
 # A number alone, or a number and a plain unit ("4.5kg", "-2 N*m", "300 rpm", "0.1 kg*m^2"): a
@@ -159,6 +160,17 @@ def known(text: str, kind_name: str, sign: str) -> float | None:
 def _read(text: str, option: str, kind: Kind) -> tuple[Reading, float | None, float | None]:
     """``read``'s whole way, and the number and the unit's factor where it read number × unit."""
     cleaned = screen(text, option, kind)
+    said: list[str] = []
+    if expressions.has_calls(cleaned):
+        cleaned, said = expressions.calls(cleaned, text, option, kind)
+    cleaned, grouping = expressions.grouped(cleaned)
+    if grouping:
+        said.append(grouping)
+    if said:  # an expression: pint reads it whole, numbers side by side refused as everywhere
+        beside = spellings.side_by_side(cleaned)
+        if beside is not None:
+            raise _side_by_side(beside, text, option, kind)
+        return Reading(*from_pint(cleaned, text, option, kind), None, said=tuple(said)), None, None
     mixed = spellings.mixed_number(cleaned)
     split = None
     if mixed is not None:
@@ -236,7 +248,7 @@ def _is_number(text: str) -> bool:
 
 def _note(option: str, text: str, reading: Reading, value: float, gravity: float | None, kind: Kind) -> str | None:
     """What a reader should know about how ``text`` was read, or None when it was read plainly."""
-    said = []
+    said = list(reading.said)
     if reading.mixed:
         said.append(f"{reading.mixed} read as the mixed number {reading.mixed.replace(' ', ' + ')}")
     if reading.how == REVOLUTIONS:
@@ -247,9 +259,16 @@ def _note(option: str, text: str, reading: Reading, value: float, gravity: float
         said.append(f"a weight, read as the mass W/g = {value:.6g} kg ({g})")
     elif reading.how == MASS_AS_WEIGHT:
         said.append(spellings.as_force(reading.unit))
+    elif reading.how == WEIGHT_INERTIA:
+        said.append(_WR2_NOTE)
     elif reading.how == OVER_RADIUS:
         said.append(f"α = a_t/R = {value:.6g} rad/s²" if kind.name == "angular acceleration" else f"ω = v/R = {value:.6g} rad/s")
     return f"{option} {text}: " + "; ".join(said) if said else None
+
+
+# A pound in an inertia with no s² is a pound of mass; the WR² of US drive catalogues (weight × radius of
+# gyration², in lb·ft²) has the same number, J = WR²/g with W in lbf, so both readings agree.
+_WR2_NOTE = "a pound or ounce of mass, the same number as a WR² (J = WR²/g)"
 
 
 def convert(value: float, si_unit: str, target: str, option: str) -> float:
@@ -285,6 +304,8 @@ def converted(value: float, si_unit: str, target: str, option: str) -> Parsed:
         note = f"{option} {target.strip()}: {spellings.revolutions(split[1], squared=kind.name == 'angular acceleration')} (n = ω/2π)"
     elif how == MASS_AS_WEIGHT:
         note = f"{option} {target.strip()}: {spellings.as_force(split[1])}"
+    elif how == WEIGHT_INERTIA:
+        note = f"{option} {target.strip()}: {_WR2_NOTE}"
     elif how == OVER_RADIUS:
         note = f"{option} {target.strip()}: a speed over a length, in radians ({'α = a_t/R' if kind.name == 'angular acceleration' else 'ω = v/R'})"
     return Parsed(value / factor, note)

@@ -23,8 +23,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from taucli.errors import InputError
-from taucli.specs import BRAKE_FIELDS, COUPLE_FIELDS, FACE_FIELDS, PARTICLE_FIELDS, PART_FIELDS
-from taucli.table import BRAKE, COUPLE, FACE, PART, PARTICLE, VECTOR, Command, Option
+from taucli.specs import BAND_FIELDS, BRAKE_FIELDS, COUPLE_FIELDS, FACE_FIELDS, PARTICLE_FIELDS, PART_FIELDS, ROTOR_FIELDS
+from taucli.table import BAND, BRAKE, COUPLE, FACE, PART, PARTICLE, ROTOR, VECTOR, Command, Option
 from taucli.units import KINDS
 
 # The keys of each spec that --find may solve for: (kind, sign). Not a face's surfaces= (a whole
@@ -33,8 +33,10 @@ SPEC_KEYS: dict[str, dict[str, tuple[str, str]]] = {
     PART: {key: value for key, value in PART_FIELDS.items() if key != "density"},
     PARTICLE: PARTICLE_FIELDS,
     COUPLE: COUPLE_FIELDS,
+    ROTOR: ROTOR_FIELDS,
     BRAKE: BRAKE_FIELDS,
     FACE: {key: value for key, value in FACE_FIELDS.items() if key != "surfaces"},
+    BAND: BAND_FIELDS,
 }
 
 # Options read as vectors that a scene also takes as one signed size (a force in the plane).

@@ -31,7 +31,7 @@ from pathlib import Path
 from conftest import strict_json
 from hypothesis import strategies as st
 
-SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro", "drive")  # every scene of taucli.options (tests/test_fuzz.py checks)
+SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro", "drive", "flywheel")  # every scene of taucli.options (tests/test_fuzz.py checks)
 SECONDS = 1.0  # the longest a run may take
 
 # Units by the metavar of the option that takes them.
@@ -168,6 +168,7 @@ CORE = {
     "torque": ["--r", "--force"],
     "gyro": ["--inertia", "--spin", "--mass", "--cm-distance"],
     "drive": ["--motor-inertia", "--ratio", "--load-inertia", "--until-omega"],
+    "flywheel": ["--inertia", "--omega-mean", "--fluctuation", "--energy-swing"],
 }
 
 
@@ -194,12 +195,17 @@ BASES = {
                  "--inertia 0.02kg*m^2 --torsion 0.5N*m/rad --cm-distance 0 --mass 1kg --angle0 30deg --time 1s --method verlet --dt 1ms"],
     "torque": ["--r '0.3,0.4,0 m' --force '0,0,10 N'", "--force 80N --lever 0.25m --angle 60deg", "--r '0,0.8,0 m' --mass 0.5kg --velocity '3,0,0 m/s'"],
     "gyro": ["--shape disc --mass 0.3kg --radius 5cm --spin 4000rpm --cm-distance 5cm --tilt 30deg",
-             "--inertia 8.0e37kg*m^2 --spin 7.29e-5rad/s --torque 1.79e22N*m --tilt 23.44deg"],
+             "--inertia 8.0e37kg*m^2 --spin 7.29e-5rad/s --torque 1.79e22N*m --tilt 23.44deg",
+             "--inertia 36kg*m^2 --spin 2400rpm --precession 1.1rad/s --spin-sense cw-from-rear --turn left --craft aircraft --bearing-span 1m"],
     "drive": ["--motor-inertia 1.2kg*cm^2 --ratio 10 --load-inertia 0.05kg*m^2 --until-omega 3000rpm --in-time 0.2s",
               "--load-mass 250kg --lead 10mm --ratio 2 --efficiency 0.9 --mu 0.2 --motor-inertia 0.3e-4kg*m^2 --speed 15m/min --accel-time 0.1s --run-time 1s --dwell-time 0.3s --rated-torque 0.637N*m",
               "--motor-inertia 1.2kg*cm^2 --ratio 10 --efficiency 0.9 --load-inertia 0.05kg*m^2 --load-torque -5N*m --stall-torque 2N*m --no-load-speed 3000rpm --until-omega 3500rpm",
               "--load-mass 20kg --drum-radius 5cm --incline 90deg --motor-inertia 1e-4kg*m^2 --ratio 5 --distance 0.5m --speed 1m/s --accel 5m/s^2 --dwell-time 1s",
               "--motor-inertia 2.5lb*in^2 --load-inertia 4.5lb*in^2 --load-mass 5lb --drum-radius 1.5in --motor-torque 100ozf*in --speed 15ft/s"],
+    "flywheel": ["--omega-mean 300rpm --fluctuation 0.02 --energy-swing 5kJ --rim-radius 0.6m --density 7200kg/m^3 --allowable-stress 6MPa",
+                 "--energy-per-cycle 26741J --punch-fraction 0.16 --rim-speed 25m/s --fluctuation 0.03",
+                 "--shape ring --mass 6.5t --radius 1.8m --energy-swing 56kJ --omega-mean 120rpm",
+                 "--inertia 250kg*m^2 --omega-max 303rpm --omega-min 297rpm --rim-radius 0.6m --density 7200kg/m^3"],
 }
 extreme_numbers = st.one_of(
     st.sampled_from(["0", "-0", "-1", "1e-320", "5e-324", "1e-300", "1e-30", "1e-9", "1e9", "1e30", "1e300", "1.7e308", "-1e308", "1e-16", "0.9999999999999999", "1.0000000000000002"]),

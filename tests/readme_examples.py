@@ -24,6 +24,7 @@ def rewrite(text: str) -> str:
         entries = re.split(r"^\$ ", body, flags=re.M)
         out = [entries[0]]
         with tempfile.TemporaryDirectory() as scratch:
+            Path(scratch, "docs").symlink_to(Path(__file__).resolve().parent.parent / "docs", target_is_directory=True)  # docs/data/... by path
             for entry in entries[1:]:
                 command, _, printed = entry.partition("\n")
                 if command.startswith("cat ") and " " not in command[4:]:

@@ -85,7 +85,7 @@ brake (α without the friction, the angle past the stop).
 from __future__ import annotations
 
 import pytest
-from definitions import atwood, drive, impulse, inertia, pendulum, rolling, spin, vectors
+from definitions import atwood, drive, flywheel, impulse, inertia, pendulum, rolling, spin, vectors
 from definitions.check import G0, run_scene, values
 
 import taucli
@@ -94,7 +94,7 @@ import taucli
 def test_spin_down_results_agree_with_their_definitions():
     branches = {"laws": 150, "alpha": 40, "kinematics": 40, "power": 40, "in_time": 40, "closed": 15, "bisection": 10, "friction": 80,
                 "viscous": 60, "drag": 50, "drag_exponent": 5, "torque": 60, "push": 8, "brake": 30, "face": 8, "face weight": 8,
-                "time": 100, "until_omega": 50, "until_angle": 30, "until_arc": 4, "energy": 100, "at": 60, "ke0": 8, "rim_speed": 8,
+                "band": 30, "brake lever": 15, "face pmax": 10, "time": 100, "until_omega": 50, "until_angle": 30, "until_arc": 4, "energy": 100, "at": 60, "ke0": 8, "rim_speed": 8,
                 "stepper": 5, "held": 3, "units": 200}
     _, checker = run_scene("spin_down", spin.draw_spin, spin.check_spin, 2600, 31, 0.5, branches)
     assert checker.checked["KE0 − KE = Σ losses − work_drive"] > 100
@@ -103,7 +103,7 @@ def test_spin_down_results_agree_with_their_definitions():
 def test_impulse_results_agree_with_their_definitions(tmp_path):
     branches = {"balance": 150, "all five": 15, "solve inertia": 15, "solve omega0": 15, "solve omega1": 15, "solve torque": 15,
                 "solve duration": 15, "partial": 15, "skater": 30, "meeting": 60, "particle stick": 20, "particle angle": 10, "particle ride": 10,
-                "particle leave": 10, "particle rebound": 5, "couple": 20, "braked": 30, "brake": 20, "face": 10, "face weight": 4, "profile": 30,
+                "particle leave": 10, "particle rebound": 5, "couple": 20, "clutch": 5, "braked": 30, "brake": 20, "face": 10, "face weight": 4, "band": 8, "profile": 30,
                 "quadratic": 10, "samples": 10, "at": 60, "units": 100}
     run_scene("impulse", lambda rng: impulse.draw_impulse(rng, tmp_path), impulse.check_impulse, 1600, 20, 0.5, branches)
 
@@ -112,7 +112,7 @@ def test_atwood_results_agree_with_their_definitions():
     branches = {"hanging": 100, "incline": 60, "stepped": 50, "rim": 50, "pulley mass": 80, "pulley inertia": 50, "part": 15,
                 "axle friction": 40, "mu_k": 30, "mu_s": 20, "v0": 50, "distance": 60, "time": 60, "at": 50, "units": 60,
                 "general": 150, "side1 table": 15, "side1 incline": 30, "side2 table": 15, "side2 incline": 30, "side friction": 40, "pull": 60,
-                "pull in place of m1": 5, "drive": 40, "same side": 25, "steps": 60}
+                "pull in place of m1": 5, "drive": 40, "same side": 25, "steps": 60, "fixed drum": 20}
     _, checker = run_scene("atwood", atwood.draw_atwood, atwood.check_atwood, 1600, 11, 0.4, branches)
     for definition in ("T1 = G1 − s μk1 N1 − m1 a", "T2 = G2 + s sgn(ρ) μk2 N2 + m2 a2", "T1 r1 − σ T2 r2 − τd − τa sgn ω = I α",
                        "W_gravity + W_pulls + W_drive − W_friction = ΔKE", "t_stop = −v₀/a", "a2 = ρ a (the strings' constraint)"):
@@ -137,11 +137,13 @@ def test_pendulum_results_agree_with_their_definitions():
 
 
 def test_torque_results_agree_with_their_definitions():
-    run_scene("torque", vectors.draw_torque, vectors.check_torque, 600, 3, 0.8, {"vectors": 60, "plane": 30, "particles": 30, "both": 20, "nearly parallel": 10})
+    run_scene("torque", vectors.draw_torque, vectors.check_torque, 600, 3, 0.8, {"vectors": 60, "plane": 30, "particles": 30, "both": 20, "nearly parallel": 10,
+                                                                                        "momentum": 15, "about": 40})
 
 
 def test_gyro_results_agree_with_their_definitions():
-    run_scene("gyro", vectors.draw_gyro, vectors.check_gyro, 600, 13, 0.6, {"inertia": 60, "shape": 80, "torque": 30, "inertia_perp": 40, "units": 50})
+    run_scene("gyro", vectors.draw_gyro, vectors.check_gyro, 600, 13, 0.6, {"inertia": 60, "shape": 80, "torque": 30, "inertia_perp": 40, "units": 50,
+                                                                                 "precession": 40, "senses": 20, "rotors": 5})
 
 
 def test_inertia_results_agree_with_their_definitions():
@@ -196,3 +198,9 @@ def test_impulse_point_under_a_brake_travels_to_the_stop():
     assert found["omega1"] == 0
     assert found["s"] == pytest.approx(0.5 * 100 / 12, rel=1e-12)
 
+
+
+def test_flywheel_results_agree_with_their_definitions():
+    branches = {"mean": 100, "band": 50, "rim": 50, "rim radius": 20, "solve I": 80, "solve energy": 80, "solve cs": 80, "punch": 40, "±": 30,
+                "density": 80, "units": 40}
+    run_scene("flywheel", flywheel.draw_flywheel, flywheel.check_flywheel, 600, 43, 0.6, branches)

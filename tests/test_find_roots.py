@@ -215,14 +215,18 @@ def test_the_brake_that_stops_a_lowered_load_exactly_at_the_distance():
 
 
 def test_an_input_that_may_be_negative_is_searched_to_its_edges_on_both_sides():
-    # The same drum with τ = 24.6133 N·m, which opposes the motion either way: going down (v0 > 0) the
-    # load slows at (τ/R − m g)/(m + M/2), going up (v0 < 0) at (τ/R + m g)/(m + M/2). v after 1 m is 0
-    # where v0² = 2 × that × d, one root each side of 0, each at an edge of where v exists.
+    # m1 = 10 kg against m2 = 5 kg on a drum (5 kg, R = 0.2 m) braked by τ = 20 N·m, which opposes the
+    # motion either way: going down (v0 > 0) m1 slows at (τ/R − (m1 − m2) g)/(m1 + m2 + M/2), going up
+    # (v0 < 0) at (τ/R + (m1 − m2) g)/(m1 + m2 + M/2), under g, so both strings stay taut. v after 1 m
+    # is 0 where v0² = 2 × that × d, one root each side of 0, each at an edge of where v exists.
+    # (The drum once used here, m2 = 0 and τ = 24.6 N·m, slowed a rising load at 1.8 g: its string
+    # would push, and a slack string is now refused.)
     with mpmath.workdps(MP_DPS):
-        tau, radius, mass, drum = mpmath.mpf("24.6133"), mpmath.mpf("0.2"), 10, mpmath.mpf("12.5")
-        down = mpmath.sqrt(2 * (tau / radius - mass * G) / drum)
-        up = -mpmath.sqrt(2 * (tau / radius + mass * G) / drum)
-    report = taucli.atwood(m1="10kg", m2=0, pulley_mass="5kg", pulley_radius="0.2m", axle_friction="24.6133 N*m", distance="1m", find="v0", want="v=0m/s")
+        tau, radius, m1, m2, drum = mpmath.mpf(20), mpmath.mpf("0.2"), 10, 5, mpmath.mpf(5)
+        total = m1 + m2 + drum / 2
+        down = mpmath.sqrt(2 * (tau / radius - (m1 - m2) * G) / total)
+        up = -mpmath.sqrt(2 * (tau / radius + (m1 - m2) * G) / total)
+    report = taucli.atwood(m1="10kg", m2="5kg", pulley_mass="5kg", pulley_radius="0.2m", axle_friction="20 N*m", distance="1m", find="v0", want="v=0m/s")
     assert sorted(found_roots(report, "v0")) == pytest.approx([float(up), float(down)], rel=1e-9)
     assert report.results["v0"].value == pytest.approx(float(down), rel=1e-9)
 
@@ -290,3 +294,11 @@ def test_the_want_values_reading_has_its_note():
     report = taucli.spin_down(inertia="1 kg*m^2", omega0="10rad/s", time="1s", find="friction", want="omega=1Hz")
     assert report.results["omega"].value == pytest.approx(2 * math.pi, rel=1e-12)
     assert any("Hz read as revolutions per second" in note for note in report.notes)
+
+
+def test_of_two_roots_of_one_size_the_positive_is_the_result():
+    """t_stop = 3 s under friction 1 N·m on 2 kg·m² holds for ω₀ = ±1.5 rad/s: the result is +1.5
+    (it was −1.5, the first found), and both are listed."""
+    report = taucli.spin_down(inertia=2.0, friction=1.0, find="omega0", want="t_stop=3s")
+    assert report.results["omega0"].value == pytest.approx(1.5, rel=1e-12)
+    assert sorted(report.results["roots"].value) == pytest.approx([-1.5, 1.5], rel=1e-12)

@@ -258,7 +258,7 @@ def test_a_vertical_top_gives_the_sleeping_top_limit():
 
 def test_without_a_perpendicular_moment_only_the_approximation():
     report = taucli.gyro(inertia="3.75e-4 kg*m^2", spin="4000 rpm", mass="0.3 kg", cm_distance="5 cm")
-    assert set(report.results) == {"L", "omega_p", "period_p"}
+    assert set(report.results) == {"L", "omega_p", "period_p", "L_orbital", "pivot_force_vertical", "pivot_force_horizontal"}
     assert any("omega_p only" in note for note in report.notes)
     assert report.results["period_p"].value == pytest.approx(2 * math.pi / report.results["omega_p"].value, rel=1e-15)
     rod = taucli.gyro(shape="rod", mass=1, length=0.3, spin=100, cm_distance=0.1)  # no symmetric I⊥ known
@@ -344,3 +344,247 @@ def test_the_command_line_answers_in_strict_json_with_steps():
     refused = run_taucli("gyro", "--inertia", "0.01", "--spin", "10rad/s", "--torque", "1N*m", "--cm-distance", "5cm")
     assert refused.code == 2
     assert refused.err.strip() == "taucli: error: --cm-distance conflicts with --torque: with the torque given, only the gyroscopic rate Ω = τ/(L sin θ) is formed"
+
+
+# --- a rotor whose axis a vehicle turns: the gyroscopic couple (#35 item 5) ---------------------
+
+
+def reactive_couple(inertia, spin, spin_axis, rate, turn_axis):
+    """The couple the rotor puts on the vehicle, from the physics: L(t) = R(Ωt) L₀ (L₀ turned
+    about the turn's axis at Ω, Rodrigues' rotation), the frame applies dL/dt at t = 0 (mpmath's
+    numerical derivative at 40 digits), and the rotor pushes back with minus that."""
+    k = [mpmath.mpf(c) for c in turn_axis]
+    l0 = [mpmath.mpf(inertia) * mpmath.mpf(spin) * mpmath.mpf(c) for c in spin_axis]
+
+    def turned(t, i):
+        angle = mpmath.mpf(rate) * t
+        k_cross_l = [k[1] * l0[2] - k[2] * l0[1], k[2] * l0[0] - k[0] * l0[2], k[0] * l0[1] - k[1] * l0[0]]
+        k_dot_l = sum(a * b for a, b in zip(k, l0))
+        return l0[i] * mpmath.cos(angle) + k_cross_l[i] * mpmath.sin(angle) + k[i] * k_dot_l * (1 - mpmath.cos(angle))
+
+    return [-mpmath.diff(lambda t: turned(t, i), 0) for i in range(3)]
+
+
+def test_khurmi_aeroplane_in_a_left_turn():
+    """Khurmi & Gupta, Theory of Machines, Example 14.2: an aeroplane makes a half circle of 50 m
+    radius to the left at 200 km/h; engine and propeller 400 kg, radius of gyration 0.3 m, 2400 rpm
+    clockwise seen from the rear. The book: C = 10.046 kN·m (with ω and Ω rounded to 251.4 and
+    1.11 rad/s); the effect is to raise the nose and dip the tail."""
+    report = taucli.gyro(inertia="400kg*(0.3m)^2", spin="2400 rpm", precession="(200 km/h)/(50 m)",
+                         spin_sense="cw-from-rear", turn="left", craft="aircraft")
+    couple = report.results["couple"].value
+    assert couple == pytest.approx(10046, rel=1e-3)
+    with mpmath.workdps(40):
+        want = mpmath.mpf(36) * 2400 * 2 * mpmath.pi / 60 * (mpmath.mpf(200) / 3.6 / 50)
+    assert relative(couple, want) < 1e-14
+    assert report.results["effect"].value == "raises the nose and dips the tail"
+
+
+@pytest.mark.parametrize(
+    "sense, turn, effect",
+    [  # the four cases of the problem's variants (as the theory-of-machines texts tabulate them)
+        ("cw-from-rear", "left", "raises the nose and dips the tail"),
+        ("cw-from-rear", "right", "lowers the nose and raises the tail"),
+        ("cw-from-front", "left", "lowers the nose and raises the tail"),
+        ("cw-from-front", "right", "raises the nose and dips the tail"),
+    ],
+)
+def test_aircraft_effects_as_the_books_tabulate_them(sense, turn, effect):
+    report = taucli.gyro(inertia=36, spin="2400 rpm", precession="1 rad/s", spin_sense=sense, turn=turn, craft="aircraft")
+    assert report.results["effect"].value == effect
+
+
+def test_khurmi_ship_steering_left():
+    """Khurmi & Gupta, Theory of Machines, Example 14.3: a ship's turbine rotor, 8 tonnes, radius of
+    gyration 0.6 m, 1800 rpm clockwise seen from the stern; the ship at 100 km/h steers to the left
+    on a curve of 75 m radius. The book: C = 200.866 kN·m (ω and Ω rounded to 188.5 and 0.37 rad/s);
+    the effect is to raise the bow and lower the stern."""
+    report = taucli.gyro(inertia="8000kg*(0.6m)^2", spin="1800 rpm", precession="(100 km/h)/(75 m)",
+                         spin_sense="cw-from-rear", turn="left", craft="ship")
+    assert report.results["couple"].value == pytest.approx(200866, rel=2e-3)
+    assert report.results["effect"].value == "raises the bow and lowers the stern"
+
+
+@pytest.mark.parametrize(
+    "turn, effect",
+    [  # a rotor clockwise seen from the stern (the texts' table of a ship's gyroscopic effects)
+        ("left", "raises the bow and lowers the stern"),
+        ("right", "lowers the bow and raises the stern"),
+        ("pitch-up", "turns the ship towards starboard"),
+        ("pitch-down", "turns the ship towards port"),
+    ],
+)
+def test_a_ships_effects_steering_and_pitching(turn, effect):
+    report = taucli.gyro(inertia=700, spin="3000 rpm", precession="0.1 rad/s", spin_sense="cw-from-rear", turn=turn, craft="ship")
+    assert report.results["effect"].value == effect
+
+
+def test_khurmi_ship_pitching_bow_falling():
+    """Khurmi & Gupta, Theory of Machines, Example 14.4: a rotor of 3500 kg, radius of gyration 0.45 m,
+    3000 rpm clockwise seen from the stern; (1) steering left on 100 m at 36 km/h: 22.27 kN·m, raising
+    the bow; (2) pitching in SHM of period 40 s through 12° in all, the bow falling at its fastest:
+    Ω_max = (6° in rad)(2π/40 s), the couple turns the ship towards port."""
+    inertia = "3500kg*(0.45m)^2"
+    steering = taucli.gyro(inertia=inertia, spin="3000 rpm", precession="(36 km/h)/(100 m)", spin_sense="cw-from-rear", turn="left", craft="ship")
+    assert round(steering.results["couple"].value / 1000, 2) == 22.27
+    assert steering.results["effect"].value == "raises the bow and lowers the stern"
+    peak_rate = math.radians(6) * 2 * math.pi / 40
+    pitching = taucli.gyro(inertia=inertia, spin="3000 rpm", precession=peak_rate, spin_sense="cw-from-rear", turn="pitch-down", craft="ship")
+    assert pitching.results["couple"].value == pytest.approx(3500 * 0.45**2 * 100 * math.pi * peak_rate, rel=1e-14)
+    assert pitching.results["effect"].value == "turns the ship towards port"
+
+
+def test_irodov_ship_on_an_arc_bearing_moment():
+    """Irodov, Problems in General Physics, §1.6: a ship at 36 km/h on an arc of radius 200 m; a
+    flywheel of I = 3.8·10³ kg·m² at 300 rpm along the ship's length. The moment of the gyroscopic
+    forces on the bearings: N = 2πnIv/R = 6 kN·m."""
+    report = taucli.gyro(inertia="3.8e3 kg*m^2", spin="300 rpm", precession="(36 km/h)/(200 m)", bearing_span="2 m")
+    assert round(report.results["couple"].value / 1000, 1) == 6.0
+    assert report.results["bearing_force"].value == pytest.approx(report.results["couple"].value / 2, rel=1e-15)
+    assert any("--spin-sense and --turn" in note for note in report.notes)
+
+
+SENSES = [f"{t}-from-{e}" for t in ("cw", "ccw") for e in ("rear", "front", "left", "right", "above", "below")]
+TURN_AXES = {"left": (0, 0, 1), "right": (0, 0, -1), "pitch-up": (0, -1, 0), "pitch-down": (0, 1, 0), "roll-right": (1, 0, 0), "roll-left": (-1, 0, 0)}
+# Where a viewer stands, from the rotor: clockwise seen from there is a spin pointing away from them.
+VIEWERS = {"rear": (-1, 0, 0), "front": (1, 0, 0), "left": (0, 1, 0), "right": (0, -1, 0), "above": (0, 0, 1), "below": (0, 0, -1)}
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.sampled_from(SENSES), st.sampled_from(sorted(TURN_AXES)), st.floats(0.01, 10), st.floats(1, 1e4), st.one_of(st.just(0.0), st.floats(0.01, 1.4), st.floats(-1.4, -0.01)))
+def test_the_couple_against_the_turned_angular_momentum(sense, turn, inertia, rate, lean):
+    """The couple's size against −dL/dt of L turned about the turn's axis (mpmath), the spin axis
+    first turned by the lean about the forward axis; and the words name the largest component."""
+    report = taucli.gyro(inertia=inertia, spin="1000 rpm", precession=rate, spin_sense=sense, turn=turn, lean=lean)
+    clockwise, _, viewer = sense.split("-", 2)
+    axis = [(-1 if clockwise == "cw" else 1) * c for c in VIEWERS[viewer]]
+    c, s = mpmath.cos(lean), mpmath.sin(lean)
+    axis = [axis[0], c * axis[1] - s * axis[2], s * axis[1] + c * axis[2]]
+    with mpmath.workdps(40):
+        want = reactive_couple(inertia, 1000 * 2 * mpmath.pi / 60, axis, rate, TURN_AXES[turn])
+        size = mpmath.sqrt(sum(w * w for w in want))
+    scale = inertia * 1000 * 2 * math.pi / 60 * rate
+    assert abs(report.results["couple"].value - float(size)) <= 1e-13 * scale
+    effect = report.results["effect"].value
+    if float(size) < 1e-9 * scale:
+        assert report.results["couple"].value <= 1e-12 * scale
+        return
+    biggest = max(range(3), key=lambda i: abs(want[i]))
+    words = {(0, 1): "rolls the vehicle to the right", (0, -1): "rolls the vehicle to the left", (1, -1): "raises the front", (1, 1): "lowers the front",
+             (2, 1): "turns the vehicle to the left", (2, -1): "turns the vehicle to the right"}
+    assert words[(biggest, 1 if want[biggest] > 0 else -1)] in effect
+
+
+def test_a_roll_about_the_spin_axis_gives_no_couple():
+    """A fore-and-aft rotor when the ship rolls: the axis turns about itself, L keeps its direction."""
+    report = taucli.gyro(inertia=700, spin="3000 rpm", precession="0.03 rad/s", spin_sense="cw-from-rear", turn="roll-right", craft="ship")
+    assert report.results["couple"].value == 0
+    assert report.results["effect"].value == "none"
+    assert any("no gyroscopic couple" in note for note in report.notes)
+
+
+def test_a_leaning_two_wheeler_feels_c_cos_lean_and_is_rolled_outward():
+    """Road wheels rolling forward spin clockwise seen from the right; in a right-hand turn leaning
+    θ into it, the wheels' couple is Iω_sΩ cos θ and rolls the machine outward, to the left (the
+    theory-of-machines texts' two-wheeler: C cos θ, an overturning couple)."""
+    upright = taucli.gyro(inertia=2.0, spin="100 rad/s", precession="0.5 rad/s", spin_sense="cw-from-right", turn="right")
+    leaning = taucli.gyro(inertia=2.0, spin="100 rad/s", precession="0.5 rad/s", spin_sense="cw-from-right", turn="right", lean="30 deg")
+    assert upright.results["couple"].value == 100.0
+    assert leaning.results["couple"].value == pytest.approx(100 * math.cos(math.radians(30)), rel=1e-15)
+    assert upright.results["effect"].value == leaning.results["effect"].value == "rolls the vehicle to the left"
+
+
+def test_bearing_forces_and_their_senses():
+    """F = C/l at each bearing, opposite; the rotor of the ship steering left pushes the bow-end
+    bearing up (it raises the bow)."""
+    report = taucli.gyro(inertia="8000kg*(0.6m)^2", spin="1800 rpm", precession="(100 km/h)/(75 m)", spin_sense="cw-from-rear",
+                         turn="left", craft="ship", bearing_span="3 m")
+    assert report.results["bearing_force"].value == pytest.approx(report.results["couple"].value / 3, rel=1e-15)
+    assert any("bearing at its bow end up and the one at its stern end down" in note for note in report.notes)
+
+
+def test_the_couple_is_the_same_in_any_units():
+    si = taucli.gyro(inertia=36, spin=251.32741228718345, precession=1.1111111111111112).results["couple"].value
+    us = taucli.gyro(inertia="26.552 slug*ft^2", spin="40 rev/s", precession="(200 km/h)/(50 m)").results["couple"].value
+    assert us == pytest.approx(si * 26.552 * 1.3558179483314004 / 36, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "argv, fragments",
+    [
+        (("--inertia", "1", "--spin", "100rpm", "--turn", "left"), ("--turn", "goes with --precession")),
+        (("--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--turn", "left"), ("--spin-sense", "is required")),
+        (("--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--cm-distance", "1m"), ("--cm-distance", "conflicts with --precession")),
+        (("--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--lean", "10deg"), ("--lean", "goes with --spin-sense and --turn")),
+        (("--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--mass", "2kg"), ("--mass", "goes with --shape")),
+        (("--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--spin-sense", "cw-from-rear", "--turn", "left", "--tilt", "30deg"),
+         ("--tilt", "conflicts")),
+        (("--inertia", "1", "--spin", "100rpm", "--precession", "-1rad/s"), ("--precession",)),
+    ],
+)
+def test_machine_refusals_are_one_line(argv, fragments):
+    from conftest import assert_usage_error
+
+    assert_usage_error(run_taucli("gyro", *argv), *fragments)
+
+
+# --- the orbit of the centre of mass and the pivot's force (#34 item 11) ------------------------
+
+
+def test_the_openstax_gyroscope_orbit_and_pivot_force():
+    """OpenStax's 0.3 kg disc, centre 5 cm from the pivot, horizontal, at 20 rev/s: the centre of
+    mass goes round a 5 cm circle at Ω; the pivot holds mg up and pushes mΩ²r in (from the physics:
+    the centre's position r(t) = r(cos Ωt, sin Ωt, 0), its acceleration by mpmath's derivative)."""
+    report = taucli.gyro(shape="disc", mass="0.3 kg", radius="5 cm", spin="20 rev/s", cm_distance="5 cm", g="9.8 m/s^2")
+    rate = report.results["omega_p_slow"].value
+    with mpmath.workdps(40):
+        position = lambda t: [mpmath.mpf("0.05") * mpmath.cos(rate * t), mpmath.mpf("0.05") * mpmath.sin(rate * t)]  # noqa: E731
+        accel = [mpmath.diff(lambda t: position(t)[i], 0, 2) for i in range(2)]
+        velocity = [mpmath.diff(lambda t: position(t)[i], 0) for i in range(2)]
+        inward = mpmath.mpf("0.3") * mpmath.sqrt(sum(a * a for a in accel))
+        orbital = mpmath.mpf("0.3") * (position(0)[0] * velocity[1] - position(0)[1] * velocity[0])
+    assert relative(report.results["pivot_force_horizontal"].value, inward) < 1e-13
+    assert relative(report.results["L_orbital"].value, orbital) < 1e-13
+    assert report.results["pivot_force_vertical"].value == pytest.approx(0.3 * 9.8, rel=1e-15)
+
+
+def test_a_tilted_tops_orbit_uses_the_exact_rate_and_r_sin_theta():
+    """Tilted 30°, the circle is r sin θ across and the rate the exact slow one."""
+    report = taucli.gyro(shape="disc", mass="0.3 kg", radius="5 cm", spin="4000 rpm", cm_distance="5 cm", tilt="30 deg")
+    slow = report.results["omega_p_slow"].value
+    circle = 0.05 * math.sin(math.radians(30))
+    assert report.results["pivot_force_horizontal"].value == pytest.approx(0.3 * slow**2 * circle, rel=1e-14)
+    assert report.results["L_orbital"].value == pytest.approx(0.3 * 0.05 * slow * circle, rel=1e-14)
+
+
+def test_no_steady_precession_has_no_orbit():
+    report = taucli.gyro(shape="disc", mass="100 g", radius="3 cm", cm_distance="4 cm", spin="10 rev/s", tilt="20 deg")
+    assert report.results["L_orbital"].value is None and report.results["pivot_force_horizontal"].value is None
+    assert any("no steady orbit" in note for note in report.notes)
+
+
+def test_khurmi_automobile_wheels_and_engine_add():
+    """Khurmi & Gupta, Theory of Machines, ch. 14: a four-wheeled car, each wheel 2.4 kg·m² and
+    660 mm across, the engine's rotating parts 1.2 kg·m² geared 3 : 1 to the back wheels, turning
+    the same way as the wheels, on a curve of 80 m: the gyroscopic couple (4I_W + G·I_E)v²/(r_W R)
+    = 0.5v² N·m, overturning the car outward. Here at 20 m/s: 200 N·m, as the engine given as a
+    rotor of its own beside the four wheels; turned the other way round, it takes away."""
+    v, r_w, radius = 20.0, 0.33, 80.0
+    report = taucli.gyro(inertia=4 * 2.4, spin=v / r_w, precession=v / radius, spin_sense="cw-from-right", turn="left",
+                         rotor=[f"inertia=1.2kg*m^2 spin={3 * v / r_w!r}rad/s sense=cw-from-right"])
+    assert report.results["couple"].value == pytest.approx(0.5 * v * v, rel=1e-14)
+    assert report.results["effect"].value == "rolls the vehicle to the right"  # outward from a left-hand curve
+    against = taucli.gyro(inertia=4 * 2.4, spin=v / r_w, precession=v / radius, spin_sense="cw-from-right", turn="left",
+                          rotor=[f"inertia=1.2kg*m^2 spin={3 * v / r_w!r}rad/s sense=ccw-from-right"])
+    assert against.results["couple"].value == pytest.approx((4 * 2.4 - 3 * 1.2) * v * v / (r_w * radius), rel=1e-14)
+
+
+def test_rotors_need_their_senses():
+    from conftest import assert_usage_error
+
+    assert_usage_error(run_taucli("gyro", "--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--rotor", "inertia=1 spin=1rad/s sense=cw-from-rear"),
+                       "--rotor", "goes with --spin-sense and --turn")
+    assert_usage_error(run_taucli("gyro", "--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--spin-sense", "cw-from-rear", "--turn", "left",
+                                  "--rotor", "inertia=1 spin=1rad/s sense=sideways"), "--rotor", "sense=")
+    assert_usage_error(run_taucli("gyro", "--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--spin-sense", "cw-from-rear", "--turn", "left",
+                                  "--rotor", "inertia=1 spin=1rad/s"), "--rotor", "needs sense=")

@@ -116,7 +116,8 @@ def _document_examples() -> list[tuple[str, str]]:
             elif block in ("sh", "bash", "zsh", "fish") and not line.lstrip().startswith("#"):
                 found.append((where, line))
             elif block is None:
-                found.extend((where, code) for code in re.findall(r"`([^`]+)`", line) if code.startswith(("taucli ", "--")))
+                found.extend((where, code) for code in re.findall(r"`([^`]+)`", line)
+                             if code.startswith(("taucli ", "--")) and not re.search(r"[A-Z]{2,}\[", code))  # not a syntax: --x COLUMN[=OPTION]
     return found
 
 

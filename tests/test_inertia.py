@@ -401,3 +401,41 @@ def test_a_wheel_with_a_child_on_its_rim():
 def test_bad_parts_are_refused(spec, fragment):
     with pytest.raises(InputError, match=fragment):
         taucli.inertia(shape="point", mass=1, radius=0.1, part=[spec])
+
+
+# --- moving a whole body of parts (#35 item 6) -------------------------------------------------
+
+
+def test_hibbeler_plate_with_a_hole_about_a_point_on_its_rim():
+    """Hibbeler, Engineering Mechanics: Dynamics, Example 17.3: a disc of radius 250 mm with a
+    concentric hole of 125 mm, 8000 kg/m³ and 10 mm thick, about O on its rim: I_O = 1.20 kg·m²."""
+    mass = 8000 * math.pi * (0.25**2 - 0.125**2) * 0.01
+    report = taucli.inertia("tube", mass=mass, inner_radius="125 mm", outer_radius="250 mm", body_offset="250 mm")
+    assert round(report.results["I"].value, 2) == 1.20
+    # from the physics: ∫r²dm over the annulus about O, in polar coordinates about the centre (mpmath)
+    with mpmath.workdps(30):
+        density = mpmath.mpf(mass) / (mpmath.pi * (mpmath.mpf("0.25") ** 2 - mpmath.mpf("0.125") ** 2))
+        about_o = mpmath.quad(lambda r, t: density * ((r * mpmath.cos(t) - mpmath.mpf("0.25")) ** 2 + (r * mpmath.sin(t)) ** 2) * r,
+                              [mpmath.mpf("0.125"), mpmath.mpf("0.25")], [0, 2 * mpmath.pi])
+    assert report.results["I"].value == pytest.approx(float(about_o), rel=1e-12)
+    assert report.results["I"].value == pytest.approx(taucli.inertia("tube", mass=mass, inner_radius="125 mm", outer_radius="250 mm", offset="250 mm").results["I"].value, rel=1e-15)
+
+
+def test_body_offset_moves_the_whole_body_on_its_total_mass():
+    built = taucli.inertia("disc", mass="20 kg", radius="0.3 m", part=["ring mass=5kg radius=0.3m"]).results["I"].value
+    moved = taucli.inertia("disc", mass="20 kg", radius="0.3 m", part=["ring mass=5kg radius=0.3m"], body_offset="0.5 m").results
+    assert moved["I_cm"].value == built
+    assert moved["I"].value == pytest.approx(built + 25 * 0.25, rel=1e-15)
+    assert moved["mass"].value == 25
+
+
+def test_offset_with_parts_says_it_moves_the_shape_alone():
+    report = taucli.inertia("disc", mass="2 kg", radius="0.1 m", offset="0.5 m", part=["point mass=1kg offset=0.1m"])
+    assert any("--offset moves the disc alone" in note and "--body-offset" in note for note in report.notes)
+
+
+@pytest.mark.parametrize("part", ["point mass=1kg offset=0.1m", "disc mass=1kg radius=0.1m offset=0.2m", "inertia=0.2kg*m^2"])
+def test_body_offset_refuses_parts_off_the_axis_or_without_a_mass(part):
+    with pytest.raises(InputError) as refused:
+        taucli.inertia("disc", mass="2 kg", radius="0.1 m", part=[part], body_offset="1 m")
+    assert "body_offset" in str(refused.value.args[0]) or "--body-offset" in str(refused.value)

@@ -71,6 +71,8 @@ def test_the_refusal_names_examples_that_read_as_typed():
         ("3000 min^-1", "angular velocity", 100 * PI, "min^-1 read as revolutions per minute"),
         ("50 Hz", "angular velocity", 100 * PI, "Hz read as revolutions per second"),
         ("1 Hz/s", "angular acceleration", 2 * PI, "Hz/s read as revolutions per second squared"),
+        ("5 kHz", "angular velocity", 10000 * PI, "kHz read as 1000 revolutions per second"),  # not "per unit time"
+        ("2 mHz", "angular velocity", 0.004 * PI, "mHz read as 1/1000 revolutions per second"),
         ("60 1/(min*s)", "angular acceleration", 2 * PI, "revolutions per unit time"),
         ("(50 Hz)*(0.1 m)/(0.2 m)", "angular velocity", 50 * PI, "revolutions per unit time"),  # a gear's ratio of a frequency
     ],

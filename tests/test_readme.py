@@ -18,7 +18,7 @@ import sys
 
 import pytest
 
-from conftest import documents_text, run_taucli
+from conftest import ROOT, documents_text, run_taucli
 
 
 def sessions() -> list[tuple[str, str, dict[str, str]]]:
@@ -54,6 +54,11 @@ def _shell_env(tmp_path) -> dict[str, str]:
     return {**os.environ, "PATH": f"{bin_dir}:{os.environ['PATH']}", "COLUMNS": "80"}
 
 
+def _with_docs(folder) -> None:
+    """docs/ beside the block's files: a page reads a longer data file by its path (docs/data/...)."""
+    (folder / "docs").symlink_to(ROOT / "docs", target_is_directory=True)
+
+
 def _needs(program: str) -> None:
     if shutil.which(program) is None:
         if os.environ.get("CI"):
@@ -70,6 +75,7 @@ def test_the_pages_have_examples_to_check():
 def test_an_example_prints_what_its_page_shows(command, printed, files, tmp_path, monkeypatch):
     for name, text in files.items():
         (tmp_path / name).write_text(text, encoding="utf-8")
+    _with_docs(tmp_path)
     monkeypatch.chdir(tmp_path)
     if _piped(command):
         if "jq" in command:
@@ -97,6 +103,7 @@ def test_every_readme_and_docs_command_works_as_typed_in_zsh_and_fish(shell, tmp
             continue  # (the test above says so)
         folder = tmp_path / str(number)
         folder.mkdir()
+        _with_docs(folder)
         for name, text in files.items():
             (folder / name).write_text(text, encoding="utf-8")
         in_bash = subprocess.run(["bash", "-c", command], capture_output=True, text=True, env=env, cwd=folder, timeout=60)

@@ -4,7 +4,7 @@ L about the axis is conserved while they meet; the reference writes every small 
 difference of inputs (J = m r⊥ (1+e)(v − ω₀ r⊥) I/(I + m r⊥²) and the like), so it keeps its
 digits where taucli may not. Budget: 1e-13 times the condition of the small differences of the
 inputs themselves (v − ω₀ r⊥ where a particle nearly moves with the body, ω_c − ω₀, v − v′).
-Disagreements the project knows of are named in Row.known and held by strict xfails below.
+Disagreements this test found (all fixed) keep their minimal calls below.
 """
 
 from __future__ import annotations
@@ -56,7 +56,7 @@ def _particle_l_after(p, omega1):
     return p.mass * radius**2 * omega1
 
 
-# -- disagreements the project knows of: minimal calls, strict xfails ---------------------------
+# -- disagreements found (and fixed): their minimal calls ------------------------------------------
 
 def test_a_small_exchange_keeps_its_digits():
     report = taucli.impulse(inertia=1.0, omega0="1 rad/s", particle="mass=1e-09kg speed=2.0m/s radius=1.0m")

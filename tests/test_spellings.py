@@ -73,8 +73,8 @@ SPELLINGS = {
     ], ("spin-down", "--inertia", "1"), "--torque"),
     "moment of inertia": (0.5, [
         "0.5 kg*m^2", "0.5kg*m^2", "0.5 kg*m**2", "0.5 kgm^2", "0.5 kgm2", "0.5 kg m2", "0.5 kg m^2", "0.5 kg·m²", "0.5 kgm²", "0.5 kg.m^2",
-        "0.5 kg-m^2", "5000 kg*cm^2", "5000000 g*cm^2", "5e6 gcm^2", "5e6 gcm2", f"{0.5 / (LB * FT**2)!r} lb*ft^2", "0.5", "1/2 kg*m^2",
-        f"{0.5 / (LB * IN**2)!r} lb*in^2", f"{0.5 / (LBF * IN)!r} lbf*in*s^2", (f"{0.5 / (LBF * IN)!r} lb*in*s^2", "lb read as pound-force, lbf*in*s^2"),
+        "0.5 kg-m^2", "5000 kg*cm^2", "5000000 g*cm^2", "5e6 gcm^2", "5e6 gcm2", (f"{0.5 / (LB * FT**2)!r} lb*ft^2", "WR²"), "0.5", "1/2 kg*m^2",
+        (f"{0.5 / (LB * IN**2)!r} lb*in^2", "a pound or ounce of mass"), f"{0.5 / (LBF * IN)!r} lbf*in*s^2", (f"{0.5 / (LBF * IN)!r} lb*in*s^2", "lb read as pound-force, lbf*in*s^2"),
         (f"{0.5 / (LBF / 16 * IN)!r} oz-in-s^2", "oz read as ounce-force"),
     ], ("spin-down", "--friction", "0.1", "--omega0", "1rad/s"), "--inertia"),
     "force": (10 * LBF, [
@@ -115,6 +115,13 @@ SPELLINGS = {
     # density (a part's density=): 1 lb/ft³ = 0.45359237 kg / 0.3048³ m³
     "density": (7800.0, ["7800 kg/m^3", "7800 kg/m3", "7.8 g/cm^3", "7.8 g/cm3", "7.8 g/mL", "7800 kg*m^-3",
                          f"{7800 / (0.45359237 / 0.3048**3)!r} lb/ft^3", "7.8 tonne/m^3", "7800"], None, None),
+    # stress (flywheel --allowable-stress): 1 psi = 1 lbf/in² = 6894.757293168361 Pa
+    "stress": (6e6, ["6 MPa", "6MPa", "6e6 Pa", "6000 kPa", "0.006 GPa", "6 N/mm^2", "6 N/mm2", f"{6e6 / 6894.757293168361!r} psi", "6e6"],
+               ("flywheel", "--omega-mean", "300rpm", "--fluctuation", "0.02", "--energy-swing", "5kJ", "--rim-radius", "0.6m", "--density", "7200kg/m^3"),
+               "--allowable-stress"),
+    # momentum (torque --momentum, a vector read a component at a time): 1 N·s = 1 kg·m/s
+    "momentum": (2.0, ["2 kg*m/s", "2kg*m/s", "2 kg m/s", "2 N*s", "2000 g*m/s", "200000 g*cm/s", f"{2 / (0.45359237 * 0.3048)!r} lb*ft/s", "2"],
+                 None, None),
 }  # fmt: skip
 
 

@@ -235,3 +235,65 @@ def test_forces_not_in_one_plane_reduce_to_a_wrench():
 
 def mp(x):
     return mpmath.mpf(x)
+
+
+# --- about a point, and a particle by its momentum (#34 item 11) -----------------------------
+
+
+def test_hrw_pebble_about_the_origin_and_about_a_point():
+    """Halliday, Resnick & Walker, Fundamentals of Physics, ch. 11 (torque as a vector): F = (2.0 N)î
+    − (3.0 N)k̂ acts on a pebble at r = (0.50 m)ĵ − (2.0 m)k̂. The torque about the origin, and
+    about the point (2.0 m, 0, −3.0 m): the book prints (−1.5 N·m)î − (4.0 N·m)ĵ − (1.0 N·m)k̂ for both."""
+    origin = values(taucli.torque(r="0,0.5,-2 m", force="2,0,-3 N"))
+    about = values(taucli.torque(r="0,0.5,-2 m", force="2,0,-3 N", about="2,0,-3 m"))
+    for result in (origin, about):
+        assert (result["tau_x"], result["tau_y"], result["tau_z"]) == (-1.5, -4.0, -1.0)
+    # the reference: the determinant with r − a in the second row, at 40 digits
+    want = det_cross([0 - 2, 0.5 - 0, -2 + 3], [2, 0, -3])
+    assert [about["tau_x"], about["tau_y"], about["tau_z"]] == [float(w) for w in want]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.one_of(st.just(0.0), st.floats(1e-6, 10), st.floats(-10, -1e-6)), min_size=9, max_size=9))
+def test_about_a_point_is_the_torque_of_r_minus_a(c):
+    """τ about a = (r − a) × F (the determinant at 40 digits), and = τ about the origin − a × F."""
+    r, f, a = c[0:3], c[3:6], c[6:9]
+    result = values(taucli.torque(r=[r], force=[f], about=a))
+    want = det_cross([mpmath.mpf(x) - mpmath.mpf(y) for x, y in zip(r, a)], f)
+    scale = sum(abs(x) for x in r + a) * sum(abs(x) for x in f) + 1e-300
+    for key, w in zip(("tau_x", "tau_y", "tau_z"), want):
+        assert abs(result[key] - float(w)) <= 4e-16 * scale
+
+
+def test_hrw_object_angular_momentum_from_its_momentum():
+    """Halliday, Resnick & Walker, Fundamentals of Physics, ch. 11: a 2.00 kg object at d = (2.00 m)î
+    + (4.00 m)ĵ − (3.00 m)k̂ with v = −(6.00 m/s)î + (3.00 m/s)ĵ + (3.00 m/s)k̂: L about the origin
+    is (42.0 î + 24.0 ĵ + 60.0 k̂) kg·m²/s. Given by its momentum p = mv = (−12, 6, 6) kg·m/s, the same."""
+    by_momentum = values(taucli.torque(r="2,4,-3 m", momentum="-12,6,6 kg*m/s"))
+    by_velocity = values(taucli.torque(r="2,4,-3 m", mass="2 kg", velocity="-6,3,3 m/s"))
+    for result in (by_momentum, by_velocity):
+        assert (result["L_x"], result["L_y"], result["L_z"]) == (42.0, 24.0, 60.0)
+    assert by_momentum["L"] == pytest.approx(math.sqrt(42**2 + 24**2 + 60**2), rel=1e-15)
+
+
+def test_momentum_in_other_units_and_about_a_point():
+    """p in N·s or g·cm/s is the same momentum; about a, L = (r − a) × p (a particle moving straight
+    through the point has none about it)."""
+    si = values(taucli.torque(r="1,2,0 m", momentum="3,0,0 kg*m/s", about="0,1,0 m"))
+    other = values(taucli.torque(r="100,200,0 cm", momentum="3e5,0,0 g*cm/s", about="0,1,0 m"))
+    assert si["L_z"] == pytest.approx(-3.0, rel=1e-15) and other["L_z"] == pytest.approx(-3.0, rel=1e-12)
+    through = values(taucli.torque(r="1,2,0 m", momentum="3,0,0 N*s", about="0,2,0 m"))
+    assert through["L"] == 0.0
+
+
+@pytest.mark.parametrize(
+    "argv, fragments",
+    [
+        (("--r", "1,0,0 m", "--momentum", "0,1,0 kg*m/s", "--mass", "1kg"), ("--momentum", "conflicts with --velocity and --mass")),
+        (("--r", "1,0,0 m", "--momentum", "0,1,0 m/s"), ("--momentum", "momentum")),
+        (("--force", "10N", "--lever", "1m", "--about", "1,0,0 m"), ("--about", "goes with forces given as vectors")),
+        (("--r", "1,0,0 m", "--force", "0,1,0 N", "--about", "1 m"), ("--about", "expected one point")),
+    ],
+)
+def test_about_and_momentum_refusals_are_one_line(argv, fragments):
+    assert_usage_error(run_taucli("torque", *argv), *fragments)

@@ -36,10 +36,12 @@ FT = 0.3048  # m
 # The units of the "read as" column: the kind each is of, and the SI value of one.
 SHOWN = {
     "N·m": ("torque", 1.0), "kN·m": ("torque", 1e3), "mN·m": ("torque", 1e-3), "daN·m": ("torque", 10.0), "N·cm": ("torque", 0.01),
-    "lbf·ft": ("torque", LBF * FT), "kgf·cm": ("torque", G0 * 0.01),
+    "lbf·ft": ("torque", LBF * FT), "kgf·cm": ("torque", G0 * 0.01), "kgf·m": ("torque", G0),
+    "lbf·ft·s²": ("moment of inertia", LBF * FT), "lb·ft²": ("moment of inertia", 0.45359237 * FT * FT), "hp": ("power", 550 * LBF * FT),
     "kg·m²": ("moment of inertia", 1.0), "lbf·in·s²": ("moment of inertia", LBF * 0.0254), "ozf·in·s²": ("moment of inertia", LBF / 16 * 0.0254), "m/s²": ("acceleration", 1.0), "kg": ("mass", 1.0), "in": ("length", 0.0254), "°": ("angle", PI / 180),
     "rad/s": ("angular velocity", 1.0), "rpm": ("angular velocity", 2 * PI / 60), "rev/s": ("angular velocity", 2 * PI),
     "rad/s²": ("angular acceleration", 1.0), "rev/s²": ("angular acceleration", 2 * PI),
+    "m": ("length", 1.0), "N": ("force", 1.0),
 }  # fmt: skip
 
 
@@ -80,6 +82,11 @@ WAYS = {
         None,
         (("spin-down", "--inertia", "1"), "torque", "alpha0"),  # α = τ/I
     ),
+    "power": Way(
+        (("spin-down", "--inertia", "2", "--until-omega", "100rpm"), "power"),
+        None,
+        None,
+    ),
     "angle": Way(
         (("spin-down", "--inertia", "1", "--force", "1N", "--lever", "1m"), "push_angle"),
         (("impulse", "--inertia", "1", "--omega0", "0rad/s"), "particle", "mass=1kg speed=1m/s radius=1m angle={}", "particle1_angle"),
@@ -89,6 +96,11 @@ WAYS = {
         (("atwood", "--m2", "1kg"), "m1"),
         (("inertia", "disc", "--mass", "1kg", "--radius", "1m"), "part", "point mass={} offset=1m", "part2_mass"),
         (("inertia", "disc", "--radius", "1m", "--part", "point mass=0.5kg offset=1m"), "mass", "mass"),  # the total mass
+    ),
+    "force": Way(
+        (("spin-down", "--inertia", "1", "--lever", "1m"), "force"),
+        (("spin-down", "--inertia", "1", "--omega0", "10rad/s"), "brake", "force={} mu=0.5 radius=1m", "brake1_force"),
+        (("pendulum", "--shape", "rod", "--length", "1m", "--axis", "end", "--angle0", "90deg"), "mass", "pivot_force0"),  # mg/4 at the release
     ),
     "length": Way(
         (("atwood", "--m1", "4kg", "--m2", "1kg"), "distance"),

@@ -4,13 +4,13 @@ The scenes' tables (one module each) and the tools'. Plain data: importing this 
 no solver, no typer, no rich and no pint, so ``--help`` and completion can read it at once.
 """
 
-from taucli.options import atwood, drive, gyro, impulse, inertia, pendulum, rolling, spin_down, tools, torque
+from taucli.options import atwood, drive, fit, flywheel, gyro, impulse, inertia, pendulum, rolling, spin_down, tools, torque
 from taucli.table import Command
 
 SCENES: dict[str, Command] = {
-    module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive)
+    module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive, flywheel)
 }
-COMMANDS: dict[str, Command] = {**SCENES, "bench": tools.BENCH, "completions": tools.COMPLETIONS}
+COMMANDS: dict[str, Command] = {**SCENES, "fit": fit.COMMAND, "bench": tools.BENCH, "completions": tools.COMPLETIONS}
 
 
 def scene(name: str) -> Command:

@@ -31,7 +31,9 @@ COMMAND = Command(
         Option("same_side", FLAG, "m2's string wound on m1's side of the pulley, the same way: the two torques add and both blocks go down together "
                "(a stepped pulley, or one drum at --pulley-radius).", panel=PULLEY),
         Option("rim_mu", "dimensionless", "Friction coefficient between the string and the rim: past the capstan limit the string slides.", sign="nonnegative", panel=PULLEY),
-        Option("wrap", "angle", "Angle of rim the string wraps, with --rim-mu.", default="180deg", panel=PULLEY),
+        Option("wrap", "angle", "Angle of rim the string wraps, with --rim-mu (or of drum, with --fixed-drum).", default="180deg", panel=PULLEY),
+        Option("fixed_drum", FLAG, "The rope passes over a drum that cannot turn (a rod, a bollard): held while m1/m2 is within e^(±μs·wrap), "
+               "sliding with T_tight = e^(μk·wrap)·T_slack beyond; the coefficient from --rim-mu, or --mu-s and --mu-k.", panel=PULLEY),
         Option("side1", SIDE, 'Where m1 is: "hang" (the default), "table mu-s=… mu-k=…" or "incline angle=… mu-s=… mu-k=…" '
                "(its own slope, the pulley at the top; no coefficient: smooth).", panel=SIDES, metavar='"hang|table|incline key=value ..."'),
         Option("side2", SIDE, 'Where m2 is, as --side1 (--incline, --mu-s and --mu-k say the same for m2, and are not given beside it).',
@@ -59,6 +61,7 @@ COMMAND = Command(
         Result("a_rim", "m/s**2", "tangential acceleration of the rim (m1's side moving down positive)"),
         Result("grips", None, "the string grips the rim (does not slide over it)"),
         Result("rim_mu_min", "", "least rim coefficient for the string to grip"),
+        Result("holds", None, "the rope holds on the fixed drum (does not slide)"),
         Result("a_massless", "m/s**2", "acceleration with a massless pulley, for comparison"),
         Result("t", "s", "time to travel…"),
         Result("v", "m/s", "velocity…"),

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from taucli.names import METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
+from taucli.names import FORMATS, METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
 from dataclasses import replace
 
-from taucli.table import BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
+from taucli.table import BAND, BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
 
 BODY = "Body (shape and dimensions)"
 MOTION = "Motion and method"
@@ -104,6 +104,15 @@ ANSWER = (
     ),
     Option("jsonl", FLAG, "Like --json, but a sweep's documents one per line rather than one array.", panel=OUTPUT),
     Option(
+        "format",
+        CHOICE,
+        "Write the answer as a document: md (GitHub Markdown), latex (siunitx units, the steps in align*), html (a fragment), "
+        "or csv (a header with units, a row per point of a sweep).",
+        panel=OUTPUT,
+        choices=FORMATS,
+        metavar="md|latex|html|csv",
+    ),
+    Option(
         "plot",
         FLAG,
         "Draw the motion against time (a list: one curve per value; a range: its chart), leaving out a sweep's table. With --json: the samples.",
@@ -136,18 +145,29 @@ POINT_RESULTS = (  # taucli.scenes.point
 )
 
 
-# Contacts pressed against the body (#24): spin-down and impulse. taucli.scenes.contact
+# Contacts pressed against the body (#24, #35): spin-down and impulse. taucli.scenes.contact
 BRAKE_OPTION = Option(
     "brake", BRAKE,
     'A brake shoe (or a tool) pressed against the body, e.g. "force=100N mu=0.4 radius=0.5m": torque μ·N·r, like --friction; '
-    "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius (repeatable).",
+    "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius. On a lever (a block brake): "
+    '"force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3": force= at lever= from the lever\'s pivot, the shoe at pivot= from it, '
+    "the friction's line at offset= from it (positive: self-energizing), N = F·lever/(pivot − μ·offset) (repeatable).",
     repeatable=True, metavar='"force=… mu=… radius=…"',
 )
 FACE_OPTION = Option(
     "face", FACE,
     'A flat face pressed on a surface, e.g. "mu=0.2" (the body lying on its face: its weight, its radii) or '
-    '"mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm pressure=uniform|wear surfaces=2" (a clutch plate) (repeatable).',
+    '"mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm model=uniform|wear surfaces=2" (a clutch plate); '
+    "pmax= (the largest lining pressure) in place of force= (repeatable).",
     repeatable=True, metavar='"mu=… [force=…]"',
+)
+BAND_OPTION = Option(
+    "band", BAND,
+    'A band brake round the body, T₁/T₂ = e^(μθ), torque (T₁ − T₂)·r, e.g. "mu=0.25 wrap=270deg radius=0.3m tension=500N" '
+    "(tension= pulls the slack end) or \"mu=0.25 wrap=270deg force=400N lever=750mm slack-arm=125mm\" "
+    "(a lever: force= at lever= from its pivot, the slack end at slack-arm=, the tight end at tight-arm=; both: differential); "
+    "width= for the lining pressure; the tight end is the one the drum drags the band towards (repeatable).",
+    repeatable=True, metavar='"mu=… wrap=… tension=…|force=… lever=…"',
 )
 CONTACT_RESULTS = (
     Result("torque_brake", "N*m", "friction torque of the brakes"),
@@ -156,4 +176,13 @@ CONTACT_RESULTS = (
     Result("torque_face", "N*m", "friction torque of the faces"),
     Result("work_face", "J", "energy the faces take…"),
     Result("power_face", "W", "power the faces take…"),
+    Result("force_brake", "N", "normal force on the brake shoe, from its lever"),
+    Result("force_face", "N", "clamp force on the face"),
+    Result("pressure_face", "Pa", "largest lining pressure of the face"),
+    Result("torque_band", "N*m", "friction torque of the band brakes"),
+    Result("work_band", "J", "energy the band brakes take…"),
+    Result("power_band", "W", "power the band brakes take…"),
+    Result("tension_tight", "N", "band tension at its tight end, T₁"),
+    Result("tension_slack", "N", "band tension at its slack end, T₂"),
+    Result("pressure_band", "Pa", "largest lining pressure under the band, T₁/(r·w)"),
 )

@@ -1,9 +1,17 @@
 """taucli gyro: a spinning top or gyroscope on a pivot, and the precession of its axis."""
 
 from taucli.options.common import ANSWER, BODY, BODY_OPTIONS, GRAVITY
-from taucli.table import Command, Option, Result
+from taucli.table import CHOICE, ROTOR, Command, Option, Result
 
 PIVOT = "Pivot and torque"
+MACHINE = "A rotor on a machine whose axis is turned (--precession)"
+
+# How a book states a rotor's sense: clockwise or counter-clockwise seen from one end of the
+# vehicle (rear: stern, tail; front: bow, nose). scenes.gyro.machine gives each its direction.
+SPIN_SENSES = tuple(f"{turn}-from-{end}" for end in ("rear", "front", "left", "right", "above", "below") for turn in ("cw", "ccw"))
+# How the vehicle turns the rotor's axis: a turn seen from above, a pitch of its front, a roll.
+TURNS = ("left", "right", "pitch-up", "pitch-down", "roll-left", "roll-right")
+CRAFTS = ("vehicle", "ship", "aircraft")
 
 COMMAND = Command(
     name="gyro",
@@ -13,7 +21,10 @@ COMMAND = Command(
         "dimensions), its centre of mass --cm-distance from the pivot, the axis at --tilt from the upward "
         "vertical. The weight's torque turns the angular momentum, not the body: the axis precesses. "
         "--inertia-perp (taken from the shape where one is given) adds the exact steady precession rates, "
-        "the roots of I⊥Ω²cos θ − Iω_sΩ + mgr = 0."
+        "the roots of I⊥Ω²cos θ − Iω_sΩ + mgr = 0, the orbit of the centre of mass and the pivot's force. "
+        "A rotor on a machine whose axis is turned at a given rate (--precession: a ship or aircraft in a turn, "
+        "v/R on a curve, a pitching rate) feels the gyroscopic couple Iω_sΩ; --spin-sense and --turn give its effect "
+        "in words, --bearing-span the bearings' forces."
     ),
     example="taucli gyro --shape disc --mass 0.3kg --radius 5cm --spin 4000rpm --cm-distance 5cm",
     options=(
@@ -41,6 +52,25 @@ COMMAND = Command(
             "Moment of inertia about an axis through the pivot perpendicular to the spin axis (from the shape and --cm-distance where a shape is given).",
             panel=BODY,
         ),
+        Option(
+            "precession",
+            "angular velocity",
+            "The rate Ω at which the rotor's axis is turned (a rotor on a machine): a turn v/R, e.g. '(100 km/h)/(75 m)', or a pitching rate.",
+            sign="nonnegative",
+            panel=MACHINE,
+        ),
+        Option("spin_sense", CHOICE, "The rotor's sense as a book states it: clockwise (cw) or counter-clockwise (ccw) seen from the rear "
+               "(stern, tail), front (bow, nose), left, right, above or below, e.g. cw-from-rear.", choices=SPIN_SENSES, panel=MACHINE, metavar="SENSE"),
+        Option("turn", CHOICE, "How the vehicle turns the rotor's axis: left, right (seen from above), pitch-up, pitch-down (the front rising, "
+               "falling), roll-left, roll-right (that side going down).", choices=TURNS, panel=MACHINE, metavar="TURN"),
+        Option("lean", "angle", "The vehicle's lean (bank) about its fore-and-aft axis, positive with its right side down, e.g. 20deg "
+               "(a two-wheeler leaning into a right-hand curve).", sign="any", panel=MACHINE),
+        Option("craft", CHOICE, "The words for the effect: vehicle (front, rear, left, right), ship (bow, stern, port, starboard), "
+               "aircraft (nose, tail, left, right).", choices=CRAFTS, default="vehicle", panel=MACHINE, metavar="vehicle|ship|aircraft"),
+        Option("rotor", ROTOR, 'Another rotor the vehicle turns with the first, e.g. "inertia=0.3kg*m^2 spin=5000rpm sense=cw-from-right" '
+               '(an engine beside the road wheels; repeatable): the angular momenta add as vectors.', repeatable=True, panel=MACHINE,
+               metavar='"inertia=… spin=… sense=…"'),
+        Option("bearing_span", "length", "The distance between the rotor shaft's two bearings: each carries the couple as a force C/l.", panel=MACHINE),
         GRAVITY,
     ),
     results=(
@@ -50,6 +80,12 @@ COMMAND = Command(
         Result("omega_p_slow", "rad/s", "slow steady precession (exact)"),
         Result("omega_p_fast", "rad/s", "fast steady precession (exact)"),
         Result("spin_min", "rad/s", "least spin for a steady precession"),
+        Result("L_orbital", "kg*m**2/s", "angular momentum of the centre of mass's orbit…"),
+        Result("pivot_force_vertical", "N", "pivot's force on the body, vertical (up)"),
+        Result("pivot_force_horizontal", "N", "pivot's force on the body, horizontal (towards the axis)…"),
+        Result("couple", "N*m", "gyroscopic couple…"),
+        Result("effect", None, "effect of the couple on the vehicle"),
+        Result("bearing_force", "N", "force on each bearing C/l…"),
     ),
     output=ANSWER,
     headline="omega_p",

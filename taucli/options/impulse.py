@@ -1,7 +1,7 @@
 """taucli impulse: angular impulse and momentum, τΔt = IΔω."""
 
 from taucli.names import QUADRATURE_NAMES
-from taucli.options.common import ANSWER, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
+from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
 from taucli.table import CHOICE, COUPLE, FILE, PARTICLE, Command, Option, Result
 
 MEETS = "Particles and bodies that meet it (L conserved)"
@@ -19,6 +19,7 @@ COMMAND = Command(
         Option("duration", "time", "How long the torque acts."),
         BRAKE_OPTION,
         FACE_OPTION,
+        BAND_OPTION,
         GRAVITY,
         Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
         Option("torque_profile", FILE, "CSV 't [ms], torque [N*m]' then rows; - for stdin.", metavar="FILE"),
@@ -28,7 +29,8 @@ COMMAND = Command(
                "it sticks, or leaves with speed-after= (negative: it rebounds), or rebounds with e= (restitution); "
                "no speed=: it rides on the body, radius-after= where it moves to (repeatable).",
                repeatable=True, metavar='"mass=… speed=… radius=…"', panel=MEETS),
-        Option("couple", COUPLE, 'Another body on the same axis that locks to it, e.g. "inertia=3kg*m^2 omega0=0" or "disc mass=2kg radius=0.1m omega0=100rpm" (repeatable).',
+        Option("couple", COUPLE, 'Another body on the same axis that locks to it, e.g. "inertia=3kg*m^2 omega0=0" or "disc mass=2kg radius=0.1m omega0=100rpm" '
+               '(repeatable); with torque=, through a clutch that slips passing that torque until the speeds meet, e.g. "inertia=3kg*m^2 torque=50N*m".',
                repeatable=True, metavar='"inertia=… omega0=…"', panel=MEETS),
         Option("method", CHOICE, "Quadrature for a profile: " + " | ".join(QUADRATURE_NAMES) + ".", choices=QUADRATURE_NAMES, default="auto", metavar="METHOD"),
         point_option("(at the start, and at the end of the impulse)"),
@@ -50,6 +52,8 @@ COMMAND = Command(
         Result("KE_lost", "J", "kinetic energy lost (KE0 − KE1)…"),
         Result("KE_lost_fraction", "", "fraction of the kinetic energy lost"),
         Result("J_net", "N*m*s", "net angular impulse, drive and friction (IΔω)"),
+        Result("t_slip", "s", "time the clutch slips"),
+        Result("heat", "J", "energy the clutch turns to heat"),
         *CONTACT_RESULTS,
         *POINT_RESULTS,
     ),

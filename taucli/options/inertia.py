@@ -1,6 +1,6 @@
 """taucli inertia: the moment of inertia of a shape, shifted, or of a body of several parts."""
 
-from taucli.options.common import ANSWER, AXIS, DIMENSIONS, GRAVITY_FOR_WEIGHTS, MASS, OFFSET, PARTS, SHAPE_WORDS
+from taucli.options.common import ANSWER, AXIS, BODY, DIMENSIONS, GRAVITY_FOR_WEIGHTS, MASS, OFFSET, PARTS, SHAPE_WORDS
 from taucli.table import CHOICE, Command, Option, Result
 from taucli.names import SHAPE_NAMES
 
@@ -15,6 +15,8 @@ COMMAND = Command(
         AXIS,
         OFFSET,
         PARTS,
+        Option("body_offset", "length", "Distance to move the whole body, its parts centred on the axis, to a parallel axis: "
+               "I = I_cm + Md² on the total mass (--offset moves the shape alone).", sign="nonnegative", panel=BODY),
         GRAVITY_FOR_WEIGHTS,
     ),
     results=(

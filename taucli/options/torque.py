@@ -12,12 +12,13 @@ COMMAND = Command(
     description=(
         "Give each force as a vector with its point of application (--r then --force, repeated in pairs), "
         "or in the plane as a size with --lever and --angle (positive counter-clockwise). "
-        "A particle is --r, --mass and --velocity, repeated in triples. Where forces and particles share a run, "
-        "the --r values go to the forces first, then to the particles (or, one each, to both)."
+        "A particle is --r, --mass and --velocity, repeated in triples, or --r and --momentum in pairs. Where forces and particles share a run, "
+        "the --r values go to the forces first, then to the particles (or, one each, to both). "
+        "--about moves the point the torques and angular momenta are taken about: --r is then measured from the origin."
     ),
     example='taucli torque --r "0.3,0.4,0 m" --force "0,0,10 N"',
     options=(
-        Option("r", VECTOR, 'Position from the point to where the force acts (or of the particle), e.g. "0.3,0.4,0 m" (repeatable).',
+        Option("r", VECTOR, 'Position from the point (or from the origin, with --about) to where the force acts (or of the particle), e.g. "0.3,0.4,0 m" (repeatable).',
                repeatable=True, of="length", metavar='"X,Y,Z UNIT"', sign="any"),
         Option("force", VECTOR, 'A force as a vector, e.g. "0,0,10 N"; or a size, e.g. 20N, with --lever and --angle (repeatable).',
                repeatable=True, of="force", metavar='"X,Y,Z UNIT"', sign="any", panel=FORCES),
@@ -28,6 +29,10 @@ COMMAND = Command(
         Option("mass", "mass", "A particle's mass (repeatable, one for each --velocity).", repeatable=True, panel=PARTICLES),
         Option("velocity", VECTOR, 'A particle\'s velocity, e.g. "0,2,0 m/s" (repeatable).',
                repeatable=True, of="velocity", metavar='"X,Y,Z UNIT"', sign="any", panel=PARTICLES),
+        Option("momentum", VECTOR, 'A particle\'s momentum p, instead of --mass and --velocity, e.g. "2,0,0 kg*m/s" (repeatable).',
+               repeatable=True, of="momentum", metavar='"X,Y,Z UNIT"', sign="any", panel=PARTICLES),
+        Option("about", VECTOR, 'The point the torques and angular momenta are about, from the origin --r is measured from, e.g. "1,0,0 m" (default the origin).',
+               of="length", metavar='"X,Y,Z UNIT"', sign="any"),
         GRAVITY_FOR_WEIGHTS,
     ),
     results=(

@@ -1,10 +1,22 @@
-"""Friction torques of contacts pressed against a turning body: brake shoes and flat faces (#24).
+"""Friction torques of contacts pressed against a turning body: brake shoes, flat faces (#24)
+and band brakes (#35, taucli.scenes.band).
 
-A brake shoe pressed with force N at radius r takes τ = μ·N·r; a flat annular face pressed
-with force F between radii Ri and Ro takes, per contact surface,
+A brake shoe pressed with force N at radius r takes τ = μ·N·r. On a lever (a block brake), the
+force F acts at ℓ from the lever's pivot, the shoe at x from it, and the line of the shoe's
+friction force μN passes at c from the pivot; moments about the pivot:
+
+    F·ℓ = N·x − μN·c   →   N = F·ℓ/(x − μ·c)
+
+c > 0 where the friction's moment turns the lever the way F does (self-energizing: the drum
+pulls the shoe on), c < 0 where it pushes the shoe off, c = 0 where its line passes through the
+pivot. Where x ≤ μ·c the brake locks itself.
+
+A flat annular face pressed with force F between radii Ri and Ro takes, per contact surface,
 
     uniform pressure:  τ = (2/3)·μ·F·(Ro³ − Ri³)/(Ro² − Ri²) = (2/3)·μ·F·(Ro² + Ro·Ri + Ri²)/(Ro + Ri)
+                       F = p_max·π·(Ro² − Ri²)          (p the same everywhere)
     uniform wear:      τ = μ·F·(Ro + Ri)/2
+                       F = 2π·p_max·Ri·(Ro − Ri)        (p·r the same everywhere, p_max at Ri)
 
 (the second form of the first keeps its digits as Ri → Ro, where both tend to μ·F·R). Each is a
 constant Coulomb torque: kinetic μ while the body turns, static μ (at least the kinetic) holding it.
@@ -13,11 +25,13 @@ constant Coulomb torque: kinetic μ while the body turns, static μ (at least th
 from __future__ import annotations
 
 from collections.abc import Sequence
+import math
 from dataclasses import dataclass
 
 from taucli.errors import InputError
-from taucli.report import Step, fmt, quantity_text
-from taucli.scenes.given import Brake, Face
+from taucli.report import Step, fmt, quantity_text, term
+from taucli.scenes.band import band_torques
+from taucli.scenes.given import Band, Brake, Face
 
 def face_radius_factor(inner: float, outer: float, pressure: str) -> float:
     """The effective radius of an annular face per unit μF: τ = μ·F·(this) per surface."""
@@ -62,22 +76,33 @@ class Contacts:
     steps: tuple[Step, ...] = ()
     models: tuple[str, ...] = ()
     notes: tuple[str, ...] = ()
+    band: float = 0.0
+    band_static: float = 0.0
+    details: tuple[tuple[str, float | None, str], ...] = ()  # (result key, value, label part): forces, tensions, pressures
 
     @property
     def kinetic(self) -> float:
-        return self.brake + self.face
+        return self.brake + self.face + self.band
 
     @property
     def static(self) -> float:
-        return self.brake_static + self.face_static
+        return self.brake_static + self.face_static + self.band_static
+
+    @property
+    def shares(self) -> tuple[tuple[str, str, float], ...]:
+        """(name, symbol, torque) of each kind of contact present."""
+        return tuple((name, symbol, torque) for name, symbol, torque in
+                     (("brake", "τ_b", self.brake), ("face", "τ_face", self.face), ("band", "τ_band", self.band)) if torque)
 
 
-def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict, mass: float | None, g: float | None) -> Contacts:
-    """The torques of the brakes and faces on a body (its radius, radii and weight where they are not given)."""
+def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict, mass: float | None, g: float | None,
+             bands: Sequence[Band] = ()) -> Contacts:
+    """The torques of the brakes, faces and bands on a body (its radius, radii and weight where they are not given)."""
     steps: list[Step] = []
     models: list[str] = []
     notes: list[str] = []
-    brake = brake_static = face = face_static = 0.0
+    details: list[tuple[str, float | None, str]] = []
+    brake = brake_static = face = face_static = band = band_static = 0.0
     rim = body_rim(body_options)
     for shoe in brakes:
         radius = shoe.radius if shoe.radius is not None else rim
@@ -85,11 +110,16 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
             raise InputError(shoe.source, "needs radius= (the body has no radius to take)", example='{brake} "force=100N mu=0.4 radius=0.5m"')
         if shoe.radius is None:
             notes.append(f"{shoe.source}: pressed at the body's radius r = {quantity_text(radius, 'm')}")
-        torque = shoe.mu_k * shoe.force * radius
+        normal, normal_static = shoe.force, shoe.force
+        if shoe.lever is not None:
+            normal, normal_static = _lever_normal(shoe, steps, notes)
+            if len(brakes) == 1:
+                details.append(("force_brake", normal, ""))
+        torque = shoe.mu_k * normal * radius
         brake += torque
-        brake_static += (shoe.mu_s if shoe.mu_s is not None else shoe.mu_k) * shoe.force * radius
+        brake_static += (shoe.mu_s if shoe.mu_s is not None else shoe.mu_k) * normal_static * radius
         steps.append(Step(f"Friction torque of the {_name(shoe.source)}", "τ_b = μ·N·r",
-                          f"{fmt(shoe.mu_k)} × {quantity_text(shoe.force, 'N')} × {quantity_text(radius, 'm')}", quantity_text(torque, "N*m"),
+                          f"{fmt(shoe.mu_k)} × {quantity_text(normal, 'N')} × {quantity_text(radius, 'm')}", quantity_text(torque, "N*m"),
                           "the shoe's friction force μN acts along the rim, at lever arm r from the axle"))
     if brakes:
         models.append("brake friction μNr")
@@ -105,7 +135,9 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
         if inner > outer:
             raise InputError(plate.source, "has inner-radius= above outer-radius=", got=f"{fmt(inner)} m > {fmt(outer)} m")
         force = plate.force
-        if force is None:
+        if plate.pmax is not None:
+            force = _clamp_from_pressure(plate, inner, outer, steps)
+        elif force is None:
             if mass is None or g is None:
                 raise InputError(plate.source, "needs force= (or a body's mass, whose weight presses the face)", example='{face} "mu=0.2 force=50N"')
             force = mass * g
@@ -126,4 +158,92 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
                           f"μ = {fmt(plate.mu_k)}, F = {quantity_text(force, 'N')}, Ro = {quantity_text(outer, 'm')}, Ri = {quantity_text(inner, 'm')}{times}",
                           quantity_text(torque, "N*m"), why))
         models.append(f"face friction under uniform {'wear' if plate.pressure == 'wear' else 'pressure'}")
-    return Contacts(brake, brake_static, face, face_static, tuple(steps), tuple(dict.fromkeys(models)), tuple(notes))
+        if len(faces) == 1:
+            details.append(("force_face", force, ""))
+            details.append(("pressure_face", _face_pressure(plate, force, inner, outer, steps, notes), ""))
+    for strap in bands:
+        radius = strap.radius if strap.radius is not None else rim
+        if radius is None:
+            raise InputError(strap.source, "needs radius= (the body has no radius to take)", example='{band} "mu=0.25 wrap=270deg radius=0.3m tension=500N"')
+        if strap.radius is None:
+            notes.append(f"{strap.source}: wrapped round the body's rim, r = {quantity_text(radius, 'm')}")
+        sliding, holding, band_steps, band_notes = band_torques(strap, radius)
+        band += sliding.torque
+        band_static += holding
+        steps.extend(band_steps)
+        notes.extend(band_notes)
+        if len(bands) == 1:
+            details.extend((("tension_tight", sliding.tight, ""), ("tension_slack", sliding.slack, "")))
+            details.append(("pressure_band", None if strap.width is None else sliding.tight / (radius * strap.width), ""))
+            if strap.width is None:
+                notes.append(f"pressure_band: null, because {strap.source} has no width= (the lining pressure is T/(r·w))")
+    if bands:
+        models.append("band brake T₁/T₂ = e^(μθ)")
+    return Contacts(brake, brake_static, face, face_static, tuple(steps), tuple(dict.fromkeys(models)), tuple(notes), band, band_static, tuple(details))
+
+
+def _lever_normal(shoe: Brake, steps: list[Step], notes: list[str]) -> tuple[float, float]:
+    """N on a shoe from the force on its lever, sliding and holding: N = F·ℓ/(x − μ·c) (module docstring)."""
+    name = _name(shoe.source)
+    margin = shoe.pivot - shoe.mu_k * shoe.offset
+    if margin <= 0:
+        raise InputError(shoe.source, "locks itself: with pivot= x ≤ μ × offset= c the friction alone holds the shoe on, so N is not set by force= "
+                         "(move the shoe further from the pivot, or the friction's line nearer it)",
+                         example='{brake} "force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.2m"',
+                         got=f"x = {fmt(shoe.pivot)} m, μc = {fmt(shoe.mu_k * shoe.offset)} m")
+    normal = shoe.force * shoe.lever / margin
+    mu_s = shoe.mu_s if shoe.mu_s is not None else shoe.mu_k
+    margin_static = shoe.pivot - mu_s * shoe.offset
+    normal_static = math.inf if margin_static <= 0 else shoe.force * shoe.lever / margin_static
+    if margin_static <= 0:
+        notes.append(f"{shoe.source}: at rest it locks itself (x ≤ μs·c): it holds the body against any torque")
+    if shoe.offset:
+        how = ("self-energizing: the friction's moment about the pivot turns the lever the way F does" if shoe.offset > 0 else
+               "the friction's moment about the pivot works against F, pushing the shoe off")
+        equation, numbers = "F·ℓ = N·x − μN·c  →  N = F·ℓ/(x − μ·c)", (
+            f"{term(shoe.force, 'N')} × {term(shoe.lever, 'm')} / ({term(shoe.pivot, 'm')} − {fmt(shoe.mu_k)} × {term(shoe.offset, 'm')})")
+    else:
+        how = "the friction's line passes through the pivot: it has no moment about it"
+        equation, numbers = "F·ℓ = N·x  →  N = F·ℓ/x", f"{term(shoe.force, 'N')} × {term(shoe.lever, 'm')} / {term(shoe.pivot, 'm')}"
+    steps.append(Step(f"Normal force on the {name} from its lever", equation, numbers, quantity_text(normal, "N"), f"moments about the lever's pivot; {how}"))
+    return normal, normal_static
+
+
+def _clamp_from_pressure(plate: Face, inner: float, outer: float, steps: list[Step]) -> float:
+    """The clamp force that gives the largest lining pressure pmax (module docstring)."""
+    name = _name(plate.source)
+    if plate.pressure == "wear":
+        if inner <= 0:
+            raise InputError(plate.source, "pmax= with model=wear needs inner-radius= above 0 (worn in, p·r is the same everywhere, so p_max is at Ri)",
+                             example='{face} "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm model=wear"')
+        force = 2 * math.pi * plate.pmax * inner * (outer - inner)
+        steps.append(Step(f"Clamp force of the {name} (uniform wear)", "F = 2π·p_max·Ri·(Ro − Ri)",
+                          f"2π × {term(plate.pmax, 'Pa')} × {term(inner, 'm')} × ({term(outer, 'm')} − {term(inner, 'm')})", quantity_text(force, "N"),
+                          "worn in, p = p_max·Ri/r; each ring carries p·2πr·dr = 2π·p_max·Ri·dr"))
+    else:
+        force = math.pi * plate.pmax * (outer - inner) * (outer + inner)
+        steps.append(Step(f"Clamp force of the {name} (uniform pressure)", "F = p_max·π·(Ro² − Ri²)",
+                          f"{term(plate.pmax, 'Pa')} × π × ({term(outer, 'm')}² − {term(inner, 'm')}²)", quantity_text(force, "N"),
+                          "the same pressure over the whole annulus"))
+    return force
+
+
+def _face_pressure(plate: Face, force: float, inner: float, outer: float, steps: list[Step], notes: list[str]) -> float | None:
+    """The largest lining pressure of a face pressed with ``force``; None where it is unbounded (noted)."""
+    if plate.pmax is not None:
+        return plate.pmax
+    area_factor = (outer - inner) * (outer + inner)
+    if plate.pressure == "wear" and inner <= 0 or area_factor <= 0:
+        notes.append(f"pressure_face: null, because {plate.source} has " + (
+            "Ri = 0: worn in, p = p_max·Ri/r grows without bound at the centre" if area_factor > 0 else "no area (Ri = Ro)"))
+        return None
+    if plate.pressure == "wear":
+        pressure = force / (2 * math.pi * inner * (outer - inner))
+        equation, numbers = "p_max = F/(2π·Ri·(Ro − Ri))", f"{term(force, 'N')} / (2π × {term(inner, 'm')} × ({term(outer, 'm')} − {term(inner, 'm')}))"
+        why = "worn in, p·r is the same everywhere, so the pressure is largest at the inner radius"
+    else:
+        pressure = force / (math.pi * area_factor)
+        equation, numbers = "p = F/(π·(Ro² − Ri²))", f"{term(force, 'N')} / (π × ({term(outer, 'm')}² − {term(inner, 'm')}²))"
+        why = "the same pressure over the whole annulus"
+    steps.append(Step(f"Largest lining pressure of the {_name(plate.source)}", equation, numbers, quantity_text(pressure, "Pa"), why))
+    return pressure

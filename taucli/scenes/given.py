@@ -69,31 +69,72 @@ class Particle:
 
 @dataclass(frozen=True)
 class Couple:
-    """Another body on the same axis (--couple) that locks to the first: I, or a shape, and its ω₀."""
+    """Another body on the same axis (--couple) that locks to the first: I, or a shape, and its ω₀;
+    with ``torque``, through a clutch that slips until the speeds meet, passing that torque."""
 
     source: str
     inertia: float | None = None
     part: Part | None = None  # where a shape is given
     omega0: float | None = None
+    torque: float | None = None
 
 
-PRESSURES = ("uniform", "wear")
+@dataclass(frozen=True)
+class Rotor:
+    """Another rotor on the vehicle (gyro --rotor): its I, its spin and the sense a book gives it."""
+
+    source: str
+    inertia: float
+    spin: float
+    sense: str
+
+
+PRESSURES = ("uniform", "wear")  # a face's pressure models (model=)
 
 
 @dataclass(frozen=True)
 class Brake:
-    """A shoe pressed with ``force`` at ``radius`` (None: the body's radius); μ kinetic and static."""
+    """A shoe pressed at ``radius`` (None: the body's radius); μ kinetic and static. Without
+    ``lever``, ``force`` is the normal force N on the shoe; with it, ``force`` is the force F
+    applied to a lever at ``lever`` from the lever's pivot, the shoe at ``pivot`` from it, and the
+    line of the shoe's friction force at ``offset`` from the pivot (positive where its moment
+    adds to F's: self-energizing)."""
 
     source: str
     force: float
     mu_k: float
     mu_s: float | None = None
     radius: float | None = None
+    lever: float | None = None
+    pivot: float | None = None
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
+class Band:
+    """A band brake: a band wrapped ``wrap`` radians round a drum of ``radius`` (None: the body's),
+    μ kinetic and static, ``width`` (None: not given). Pulled by ``tension`` at its slack end, or
+    by a lever: ``force`` at ``lever`` from the lever's pivot, the slack end at ``slack_arm`` and
+    the tight end at ``tight_arm`` from it (None: that end is fixed at the pivot; both: a
+    differential band brake, the ends on opposite sides of the pivot)."""
+
+    source: str
+    mu_k: float
+    wrap: float
+    mu_s: float | None = None
+    radius: float | None = None
+    width: float | None = None
+    tension: float | None = None
+    force: float | None = None
+    lever: float | None = None
+    slack_arm: float | None = None
+    tight_arm: float | None = None
 
 
 @dataclass(frozen=True)
 class Face:
-    """A flat face pressed with ``force`` (None: the body's weight) between the radii (None: the body's)."""
+    """A flat face pressed with ``force`` (None: the body's weight, or from ``pmax``) between the
+    radii (None: the body's)."""
 
     source: str
     mu_k: float
@@ -101,8 +142,14 @@ class Face:
     force: float | None = None
     inner_radius: float | None = None
     outer_radius: float | None = None
-    pressure: str = "uniform"
+    pressure: str = "uniform"  # the model: uniform pressure or uniform wear
     surfaces: int = 1
+    pmax: float | None = None  # the largest lining pressure, giving the clamp force with the radii
+
+    @property
+    def by_weight(self) -> bool:
+        """Pressed by the body's weight (no force=, no pmax=): it needs gravity."""
+        return self.force is None and self.pmax is None
 
 
 SURFACES = ("hang", "table", "incline")  # where a block of the Atwood machine is (--side1, --side2)

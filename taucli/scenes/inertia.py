@@ -243,15 +243,21 @@ def _subscript(n: int) -> str:
     return str(n).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
-def solve(parts: Sequence[Part]) -> Report:
-    """The inertia scene: I about the axis, the radius of gyration k = √(I/M), I_cm when shifted."""
-    body = body_inertia(parts)
+def solve(parts: Sequence[Part], body_offset: float | None = None) -> Report:
+    """The inertia scene: I about the axis, the radius of gyration k = √(I/M), I_cm when shifted;
+    with ``body_offset`` d the whole body, built about an axis through its centre of mass, moved
+    to a parallel axis d away: I = I_cm + Md²."""
+    body = built = body_inertia(parts)
+    if body_offset is not None:
+        body = _moved(built, body_offset)
     gyration = math.sqrt(body.inertia / body.mass) if body.mass else None
     results = Results(TABLE)
     results.put("I", body.inertia)
     results.put("k", gyration)
     single = body.parts[0] if len(body.parts) == 1 else None
-    if single is not None and single.shape.name != "point" and single.part.offset is not None:
+    if body_offset is not None:
+        results.put("I_cm", math.fsum(r.inertia for r in body.parts))
+    elif single is not None and single.shape.name != "point" and single.part.offset is not None:
         results.put("I_cm", single.inertia_centre)
     if single is None:
         results.put("mass", body.mass)
@@ -265,8 +271,30 @@ def solve(parts: Sequence[Part]) -> Report:
             "the distance from the axis at which the whole mass, gathered in a ring, would have the same I",
         )
     )
-    tables = {} if single is not None else {"parts": parts_table(body)}
+    tables = {} if single is not None else {"parts": parts_table(built)}  # each part's share of I about the axis it was built on
     return Report("inertia", body.description, "closed form", results, steps, [], {}, tables)
+
+
+def _moved(body: BodyInertia, distance: float) -> BodyInertia:
+    """The whole body moved to a parallel axis ``distance`` away: I = I_cm + Md², M the total mass.
+    Its axis must pass through its centre of mass, which distances alone show only for parts centred
+    on it (offset 0: not a point off the axis, a part moved by offset=, a rod about its end)."""
+    for number, found in enumerate(body.parts, start=1):
+        if found.offset:
+            where = "the shape" if number == 1 else f"{{part}} {number - 1}"
+            raise InputError("body_offset", f"needs every part centred on the axis, and {where} is {fmt(found.offset)} m off it: the parallel-axis "
+                             "theorem moves a body from an axis through its centre of mass, which distances alone do not give",
+                             example='disc {mass} 20kg {radius} 0.3m {part} "ring mass=5kg radius=0.3m" {body_offset} 0.5m')
+        if found.part.mass is None:
+            raise InputError("body_offset", "needs the mass of every part (the parallel-axis theorem takes the total mass)", example='{part} "inertia=0.2kg*m^2 mass=3kg"')
+    moved = body.inertia + body.mass * distance**2
+    units.check_bounds(moved, "moment of inertia", "{body_offset}", got=f"I = {moved:g} kg*m**2")
+    step = Step("Move the whole body (parallel-axis theorem)", "I = I_cm + Md²",
+                f"{quantity_text(body.inertia, 'kg*m**2')} + {quantity_text(body.mass, 'kg')} × ({quantity_text(distance, 'm')})²",
+                quantity_text(moved, "kg*m**2"),
+                "the parts are centred on the axis they were built about, so it passes through the body's centre of mass; "
+                "a parallel axis d away adds the whole mass at d")
+    return BodyInertia(moved, body.mass, body.parts, (*body.steps, step), f"{body.description}, the whole shifted {fmt(distance)} m (parallel-axis theorem)")
 
 
 def parts_table(body: BodyInertia) -> Table:
@@ -297,12 +325,17 @@ def main_part(shape: str | None, mass: float | None, axis: str | None, offset: f
 
 
 def inertia(*, shape: str | None = None, mass: float | None = None, axis: str | None = None, offset: float | None = None, part: Sequence[Part] = (),
-            g: float | None = None, **dims: float | None) -> Report:
-    """``taucli inertia``: a shape's moment of inertia (shifted by --offset), or a body of parts.
-    --g serves only to read a weight given for a mass (--mass 490N)."""
+            body_offset: float | None = None, g: float | None = None, **dims: float | None) -> Report:
+    """``taucli inertia``: a shape's moment of inertia (shifted by --offset), or a body of parts
+    (the whole moved by --body-offset: I = I_cm + Md² on the total mass). --g serves only to read
+    a weight given for a mass (--mass 490N)."""
     if g is not None:
         raise Unused("g", "is used only to read a weight given for a mass", example="{mass} 490N {g} 9.8m/s^2")
-    return solve([main_part(shape, mass, axis, offset, dims), *part])
+    report = solve([main_part(shape, mass, axis, offset, dims), *part], body_offset)
+    if offset is not None and part:
+        report.notes.append(f"--offset moves the {shape} alone (the first part); each --part keeps its own offset=; "
+                            "--body-offset moves the whole body (the parallel-axis theorem on its total mass)")
+    return report
 
 
 def body_table(

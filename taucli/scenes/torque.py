@@ -76,14 +76,19 @@ def _vec(v: Sequence[float]) -> str:
     return "(" + ", ".join(fmt(c) for c in v) + ")"
 
 
-def _determinant_step(title: str, name: str, row1: Vector, row2: Vector, result: Vector, unit: str, why: str, mass: float | None = None) -> Step:
-    """r × B as the determinant |x̂ ŷ ẑ; r; B| expanded along its first row (times m for L)."""
+def _determinant_step(title: str, name: str, row1: Vector, row2: Vector, result: Vector, unit: str, why: str, mass: float | None = None,
+                      letter: str | None = None) -> Step:
+    """r × B as the determinant |x̂ ŷ ẑ; r; B| expanded along its first row (times m for L from a
+    velocity; ``letter`` "p" for L from a momentum)."""
     a, b = [term(c) for c in row1], [term(c) for c in row2]
-    letter, row_unit = ("v", "m/s") if mass is not None else ("F", "N")
+    if letter is None:
+        letter, row_unit = ("v", "m/s") if mass is not None else ("F", "N")
+    else:
+        row_unit = "kg·m/s"
     expanded = (f"x̂({a[1]}×{b[2]} − {a[2]}×{b[1]}) + ŷ({a[2]}×{b[0]} − {a[0]}×{b[2]}) "
                 f"+ ẑ({a[0]}×{b[1]} − {a[1]}×{b[0]})")
     rows = f"|x̂ ŷ ẑ; {' '.join(a)} m; {' '.join(b)} {row_unit}|"
-    product = pretty_unit("m**2/s" if mass is not None else "N*m")
+    product = pretty_unit("m**2/s" if mass is not None else "kg*m**2/s" if letter == "p" else "N*m")
     numbers = (f"{term(mass, 'kg')} × {rows} = {term(mass, 'kg')} × [{expanded}] {product}" if mass is not None
                else f"{rows} = [{expanded}] {product}")
     return Step(title, f"{name} = {'m ' if mass is not None else ''}|x̂ ŷ ẑ; rₓ r_y r_z; {letter}ₓ {letter}_y {letter}_z|", numbers, f"{_vec(result)} {unit}", why)
@@ -113,14 +118,25 @@ def torque(
     angle: tuple | None = None,
     mass: tuple | None = None,
     velocity: tuple | None = None,
+    momentum: tuple | None = None,
+    about: tuple | None = None,
     g: float | None = None,
 ) -> Report:
     """``taucli torque``: τ = r × F for each force and their sum; L = r × mv for each particle and
-    their sum; or τ = r F sin θ in the plane. --g serves only to read a weight given for a mass."""
+    their sum (or r × p for a momentum given); or τ = r F sin θ in the plane; about the origin, or
+    about a point a given (--about), with r − a for each r. --g serves only to read a weight given for a mass."""
     if g is not None:
         raise Unused("g", "is used only to read a weight given for a mass", example="{mass} 10N {g} 9.8m/s^2")
-    r, force, lever, angle, mass, velocity = (tuple(x or ()) for x in (r, force, lever, angle, mass, velocity))
-    if not force and not velocity:
+    r, force, lever, angle, mass, velocity, momentum = (tuple(x or ()) for x in (r, force, lever, angle, mass, velocity, momentum))
+    point = _about(about)
+    if momentum:
+        if velocity or mass:
+            raise InputError("momentum", "conflicts with {velocity} and {mass}: a particle is given by its momentum, or by its mass and velocity",
+                             example='{r} "2,0,0 m" {momentum} "0,12,0 kg*m/s"')
+        for value in momentum:
+            if not isinstance(value, tuple):
+                raise InputError("momentum", "expected a vector x,y,z with a unit", example='{momentum} "0,12,0 kg*m/s"', got=fmt(value))
+    if not force and not velocity and not momentum:
         if mass:
             raise InputError("velocity", "is required with {mass}: a particle is {r}, {mass} and {velocity}", example='{r} "2,0,0 m" {mass} 3kg {velocity} "0,4,0 m/s"')
         raise InputError("force", "or {velocity} is required: a torque needs a force, an angular momentum a particle", example=_EXAMPLE_FORCE)
@@ -140,7 +156,12 @@ def torque(
             raise InputError("angle", f"is given {len(angle)} times for {len(planar_forces)} force(s) given as a size: one each, or none (90°)", example="{force} 20N {lever} 0.5m {angle} 60deg")
     elif lever or angle:
         raise InputError("lever" if lever else "angle", "goes with a force given as a size (a vector force takes {r})", example="{force} 20N {lever} 0.5m {angle} 60deg")
-    force_r, particle_r = _pairs(r, vector_forces, velocity)
+    if point is not None and planar_forces:
+        raise InputError("about", "goes with forces given as vectors: a force given as a size in the plane has its own lever", example='{about} "1,0,0 m" {r} "3,0,0 m" {force} "0,10,0 N"')
+    force_r, particle_r = _pairs(r, vector_forces, velocity or momentum)
+    given_r = [*force_r, *particle_r]
+    if point is not None:
+        force_r, particle_r = [_from(where, point) for where in force_r], [_from(where, point) for where in particle_r]
 
     notes: list[str] = []
     steps: list[Step] = []
@@ -193,32 +214,66 @@ def torque(
             columns = (("force", None, "force"), ("tau_x", "N*m", "τₓ"), ("tau_y", "N*m", "τ_y"), ("tau_z", "N*m", "τ_z"),
                        ("tau", "N*m", "|τ|"), ("lever_arm", "m", "r⊥"))
             tables["forces"] = Table(columns, tuple((n, *t, size(t), arm) for n, (t, arm) in enumerate(zip(torques, arms), start=1)))
-    if velocity:
+    particles = velocity or momentum
+    if particles:
         momenta = []
-        for number, (where, m, v) in enumerate(zip(particle_r, mass, velocity), start=1):
-            spin = cross(where, v)
-            momentum = tuple(m * c for c in spin)
-            momenta.append(momentum)
-            label = f" {number}" if len(velocity) > 1 else ""
-            steps.append(_determinant_step(f"Angular momentum of particle{label}: the determinant", "L = r × mv", tuple(where), tuple(v), momentum,
-                                           "kg·m²/s", "a particle's angular momentum about the point is r × p, p = mv: the rows are the unit vectors, "
-                                           "r and v, times m", mass=m))
+        for number, where in enumerate(particle_r, start=1):
+            label = f" {number}" if len(particles) > 1 else ""
+            if velocity:
+                m, v = mass[number - 1], velocity[number - 1]
+                spin = tuple(m * c for c in cross(where, v))
+                steps.append(_determinant_step(f"Angular momentum of particle{label}: the determinant", "L = r × mv", tuple(where), tuple(v), spin,
+                                               "kg·m²/s", "a particle's angular momentum about the point is r × p, p = mv: the rows are the unit vectors, "
+                                               "r and v, times m", mass=m))
+            else:
+                spin = cross(where, momentum[number - 1])
+                steps.append(_determinant_step(f"Angular momentum of particle{label}: the determinant", "L = r × p", tuple(where), tuple(momentum[number - 1]), spin,
+                                               "kg·m²/s", "a particle's angular momentum about the point is r × p: the rows are the unit vectors, r and p", letter="p"))
+            momenta.append(spin)
         total = tuple(math.fsum(p[i] for p in momenta) for i in range(3))
-        part = f" (total of {len(velocity)} particles)" if len(velocity) > 1 else ""
+        part = f" (total of {len(particles)} particles)" if len(particles) > 1 else ""
         for key, value in zip(("L_x", "L_y", "L_z"), total):
             results.put(key, value, part)
         results.put("L", size(total), part)
-        steps.append(_size_step("Size of the total angular momentum" if len(velocity) > 1 else "Size of the angular momentum", "L", total, "kg*m**2/s"))
+        steps.append(_size_step("Size of the total angular momentum" if len(particles) > 1 else "Size of the angular momentum", "L", total, "kg*m**2/s"))
         results.put("L_sense", sense(total))
-        if len(velocity) > 1:
-            steps.append(Step("The total angular momentum", "L = Σ rᵢ × mᵢvᵢ", " + ".join(_vec(p) for p in momenta), f"{_vec(total)} kg·m²/s",
+        if len(particles) > 1:
+            steps.append(Step("The total angular momentum", "L = Σ rᵢ × pᵢ", " + ".join(_vec(p) for p in momenta), f"{_vec(total)} kg·m²/s",
                               "angular momenta about the same point add as vectors"))
             columns = (("particle", None, "particle"), ("L_x", "kg*m**2/s", "Lₓ"), ("L_y", "kg*m**2/s", "L_y"), ("L_z", "kg*m**2/s", "L_z"),
                        ("L", "kg*m**2/s", "|L|"))
             tables["particles"] = Table(columns, tuple((n, *p, size(p)) for n, p in enumerate(momenta, start=1)))
-    what = [w for w, given in (("τ = r × F", vector_forces), ("τ = r F sin θ in the plane", planar_forces), ("L = r × mv", velocity)) if given]
-    model = " and ".join(what) + (", about the point r is measured from" if r else "")
+    what = [w for w, given in (("τ = r × F", vector_forces), ("τ = r F sin θ in the plane", planar_forces), ("L = r × mv", velocity),
+                               ("L = r × p", momentum)) if given]
+    if point is not None:
+        model = " and ".join(what) + f", about the point {_vec(point)} m"
+        steps.insert(0, Step("Positions from the point", f"r' = r − a,  a = {_vec(point)} m", "; ".join(f"{_signed_vec(w)} − {_signed_vec(point)}" for w in given_r),
+                             "; ".join(_vec(w) + " m" for w in [*force_r, *particle_r]),
+                             "a torque or an angular momentum is about a point: each position is measured from it, r' = r − a "
+                             "(a force through the point has no torque about it)"))
+    else:
+        model = " and ".join(what) + (", about the point r is measured from" if r else "")
     return Report("torque", model, "closed form", results, steps, notes, {}, tables)
+
+
+def _about(about) -> Vector | None:
+    """The point of --about, a vector (Python may give three SI numbers)."""
+    if about is None:
+        return None
+    points = about if about and isinstance(about[0], tuple) else (about,)
+    if len(points) != 1 or not isinstance(points[0], tuple) or len(points[0]) != 3:
+        raise InputError("about", "expected one point x,y,z with a unit", example='{about} "1,0,0 m"')
+    return points[0]
+
+
+def _signed_vec(v: Sequence[float]) -> str:
+    """(0, 0.5, −2): a vector in a numbers line, its minus signs true minus signs."""
+    return "(" + ", ".join("−" + fmt(c)[1:] if fmt(c).startswith("-") else fmt(c) for c in v) + ")"
+
+
+def _from(where: Vector, point: Vector) -> Vector:
+    """r − a, the position from the point a."""
+    return tuple(w - a for w, a in zip(where, point))
 
 
 def _net_arm(net: Vector, net_force, arms: list, planar_forces: list, several: bool, notes: list[str], steps: list[Step]) -> tuple[float | None, str]:

@@ -126,7 +126,45 @@ def draw_atwood(rng: random.Random) -> tuple[dict, list[str]]:
     if rng.random() < 0.3:
         kw["at"] = "rim" if rng.random() < 0.3 else radius * rng.uniform(0, 1.5)
         tags.append("at")
+    side = random.Random(str(rng.getstate()))  # #35's draws, leaving the stream the older draws see as it was
+    if side.random() < 0.08:
+        return _fixed_drum(side)
     return kw, tags
+
+
+def _fixed_drum(rng: random.Random) -> tuple[dict, list[str]]:
+    """A rope over a drum that cannot turn (--fixed-drum): two hanging masses, μ, the wrap, a start and a target."""
+    kw: dict = {"m1": mag(rng, -1, 2), "m2": mag(rng, -1, 2), "fixed_drum": True, "wrap": (rng.uniform(0.2, 4) * math.pi, "rad")}
+    kw["wrap"] = f"{kw['wrap'][0]!r}rad"
+    tags = ["fixed drum"]
+    if rng.random() < 0.5:
+        kw["rim_mu"] = rng.uniform(0, 0.6)
+    else:
+        kw["mu_k"] = rng.uniform(0, 0.5)
+        kw["mu_s"] = kw["mu_k"] * rng.uniform(1, 1.5)
+    if rng.random() < 0.3:
+        kw["v0"] = rng.uniform(-3, 3)
+    if rng.random() < 0.5:
+        kw["distance"] = mag(rng, -1, 1)
+    return kw, tags
+
+
+def check_fixed_drum(res: dict, inp: dict, c: Checker) -> None:
+    """The rope's capstan limit and the masses' Newton's laws: held within e^{±μs β} (T = weights),
+    sliding with T_tight = e^{μk β} T_slack towards the side it moves to."""
+    g, m1, m2, wrap = inp.get("g", G0), inp["m1"], inp["m2"], inp["wrap"]
+    mu_k = inp.get("rim_mu", inp.get("mu_k"))
+    mu_s = inp.get("rim_mu", inp.get("mu_s", mu_k))
+    c.eq("rim_mu_min = |ln(m₁/m₂)|/β", res.get("rim_mu_min"), abs(math.log(m1 / m2)) / wrap)
+    c.true("holds ⇔ |ln(m₁/m₂)| ≤ μs β (from rest)", inp.get("v0", 0.0) != 0 or res["holds"] == (abs(math.log(m1 / m2)) <= mu_s * wrap), str(res["holds"]))
+    a, t1, t2 = res.get("a"), res.get("T1"), res.get("T2")
+    if a is None:
+        return
+    c.eq("m₁g − T₁ = m₁a", m1 * g - t1, m1 * a, m1 * g, t1)
+    c.eq("T₂ − m₂g = m₂a", t2 - m2 * g, m2 * a, m2 * g, t2)
+    if not res["holds"] or inp.get("v0", 0.0):
+        tight, slack = (t1, t2) if (inp.get("v0", 0.0) or a) > 0 else (t2, t1)
+        c.eq("T_tight = e^{μk β} T_slack", tight, slack * math.exp(mu_k * wrap))
 
 
 def _place(kw: dict, inp: dict, number: str) -> tuple[float, float | None, float | None]:
@@ -158,6 +196,9 @@ def _pulls(kw: dict, inp: dict) -> dict[str, list[float]]:
 
 def check_atwood(kw: dict, report, c: Checker) -> None:
     res, inp = values(report), inputs(report)
+    if kw.get("fixed_drum"):
+        check_fixed_drum(res, inp, c)
+        return
     a = res.get("a")
     if a is None:
         return  # μk not given where it slides: nothing is known but that it moves

@@ -199,7 +199,10 @@ def contact_torques(inp: dict, kw: dict, rim: float | None, weight_mass: float |
     for n in range(1, len(kw.get("brake") or ()) + 1):
         key = f"brake{n}_"
         mu = inp.get(key + "mu", inp.get(key + "mu_k"))
-        brake += mu * inp[key + "force"] * inp.get(key + "radius", rim)
+        normal = inp[key + "force"]
+        if key + "lever" in inp:  # a block brake: moments about the lever's pivot, F ℓ + μN c = N x
+            normal = inp[key + "force"] * inp[key + "lever"] / (inp[key + "pivot"] - mu * inp.get(key + "offset", 0.0))
+        brake += mu * normal * inp.get(key + "radius", rim)
     for n, text in enumerate(kw.get("face") or (), start=1):
         key = f"face{n}_"
         mu = inp.get(key + "mu", inp.get(key + "mu_k"))
@@ -210,12 +213,34 @@ def contact_torques(inp: dict, kw: dict, rim: float | None, weight_mass: float |
             inner = outer = rim
         else:
             inner, outer = inp.get("inner_radius", 0.0), rim
-        if "pressure=wear" in text:
+        wear = "pressure=wear" in text or "model=wear" in text
+        if key + "pmax" in inp:  # the clamp force: ∫p dA, p = p_max (uniform) or p_max Ri/r (worn in)
+            p = inp[key + "pmax"]
+            force = 2 * math.pi * p * inner * (outer - inner) if wear else math.pi * p * (outer * outer - inner * inner)
+        if wear:
             lever = (outer + inner) / 2
         else:
             lever = 2 * (outer ** 3 - inner ** 3) / (3 * (outer * outer - inner * inner)) if outer != inner else outer
         face += mu * force * lever * inp.get(key + "surfaces", 1)
     return brake, face
+
+def band_torque(inp: dict, kw: dict, rim: float | None) -> float:
+    """A band brake's (T₁ − T₂) r with T₁ = T₂ e^{μθ}, its tensions from the lever's moments about
+    its pivot (F ℓ = T₂ b − T₁ a; an end not on the lever is at the pivot), from the inputs' echo."""
+    total = 0.0
+    for n in range(1, len(kw.get("band") or ()) + 1):
+        key = f"band{n}_"
+        mu, wrap = inp.get(key + "mu", inp.get(key + "mu_k")), inp[key + "wrap"]
+        ratio = math.exp(mu * wrap)
+        moment = inp.get(key + "force", 0.0) * inp.get(key + "lever", 0.0)
+        if key + "tension" in inp:
+            slack = inp[key + "tension"]
+        elif key + "slack_arm" not in inp:  # the tight end alone on the lever, the slack end at the pivot: F ℓ = T₁ a
+            slack = moment / inp[key + "tight_arm"] / ratio
+        else:  # the slack end on F's side, the tight end (if on the lever) on the other: F ℓ = T₂ b − T₁ a
+            slack = moment / (inp[key + "slack_arm"] - ratio * inp.get(key + "tight_arm", 0.0))
+        total += (ratio * slack - slack) * inp.get(key + "radius", rim)
+    return total
 
 BODY_KEYS = ("inertia", "shape", "mass", "radius", "inner_radius", "outer_radius", "length", "width", "height", "depth", "axis", "offset", "part")
 

@@ -12,6 +12,7 @@ from definitions.check import (
     G0,
     Checker,
     body_moment,
+    band_torque,
     contact_torques,
     draw_body,
     inputs,
@@ -87,6 +88,10 @@ def draw_impulse(rng: random.Random, folder) -> tuple[dict, list[str]]:
             else:
                 couples.append("disc " + spec(mass=(mag(rng, -1, 1), "kg"), radius=(mag(rng, -1.5, 0), "m"), omega0=omega))
             tags.append("couple")
+        side = random.Random(str(rng.getstate()))  # #35's draws, leaving the stream the older draws see as it was
+        if len(couples) == 1 and not particles and side.random() < 0.4:  # through a clutch that slips
+            couples[0] += " " + spec(torque=(inertia * W / T * mag(side, -1, 0.5), "N*m"))
+            tags.append("clutch")
         if particles:
             kw["particle"] = particles
         if couples:
@@ -112,6 +117,17 @@ def draw_impulse(rng: random.Random, folder) -> tuple[dict, list[str]]:
             else:
                 kw["face"] = [spec(mu=(mu, ""), force=(scale / (mu * outer) * mag(rng, -1, 0.3), "N"), outer_radius=(outer, "m"))]
                 tags.append("face")
+        side = random.Random(str(rng.getstate()))  # #35's draws, leaving the stream the older draws see as it was
+        if side.random() < 0.3 and kw["omega0"] * kw["torque"] >= 0:  # a band brake's geometry is for one sense of turning
+            mu, wrap, radius = side.uniform(0.05, 0.6), side.uniform(0.3, 2.5) * math.pi, mag(rng, -1.5, 0)
+            fields = {"mu": (mu, ""), "wrap": (wrap, "rad"), "radius": (radius, "m")}
+            pull = scale / radius * mag(rng, -1, 0.3)
+            if side.random() < 0.5:
+                fields["tension"] = (pull, "N")
+            else:
+                fields.update(force=(pull, "N"), lever=(1.0, "m"), slack_arm=(mag(rng, -0.5, 0.3), "m"))
+            kw["band"] = [spec(**fields)]
+            tags.append("band")
     else:  # a sampled torque
         count = rng.randint(2, 12)
         start = rng.choice((0.0, T * rng.random()))
@@ -181,7 +197,7 @@ def check_impulse(kw: dict, report, c: Checker) -> None:
         c.eq("KE_lost = KE0 − KE1", res.get("KE_lost"), res["KE0"] - res["KE1"], res["KE1"], res["KE0"])
         if res.get("KE_lost") is not None and res["KE0"] > 0:
             c.eq("KE_lost_fraction = KE_lost / KE0", res.get("KE_lost_fraction"), res["KE_lost"] / res["KE0"])
-    if res.get("L0") is not None and res.get("L1") is not None and res.get("J") is not None and not kw.get("brake") and not kw.get("face"):
+    if res.get("L0") is not None and res.get("L1") is not None and res.get("J") is not None and not kw.get("brake") and not kw.get("face") and not kw.get("band"):
         if kw.get("particle") or kw.get("couple"):
             c.eq("J = I(ω₁ − ω₀), the body's", res["J"], inertia * (w1 - w0), inertia * w0, inertia * w1)
         elif model.startswith("changing"):
@@ -194,7 +210,7 @@ def check_impulse(kw: dict, report, c: Checker) -> None:
         parts = report.tables["parts"].rows if "parts" in report.tables else ()
         c.eq("L0 = L1 with no torque about the axis", res.get("L1"), res.get("L0"), *(abs(row[1]) for row in parts), *(abs(row[2]) for row in parts))
 
-    if kw.get("brake") or kw.get("face"):
+    if kw.get("brake") or kw.get("face") or kw.get("band"):
         c.eq("J = τ Δt", res.get("J"), inp["torque"] * inp["duration"])
         c.eq("J_net = I Δω", res.get("J_net"), inertia * (w1 - w0), inertia * w0, inertia * w1)
         c.eq("L0 = I ω₀", res.get("L0"), inertia * w0)
@@ -204,14 +220,16 @@ def check_impulse(kw: dict, report, c: Checker) -> None:
         brake, face = contact_torques(inp, kw, rim_of(inp), total_mass(inp), inp.get("g", G0))
         c.eq("torque_brake = Σ μNr", res.get("torque_brake"), brake if kw.get("brake") else None)
         c.eq("torque_face = μF r_eff", res.get("torque_face"), face if kw.get("face") else None)
-        kinetic = brake + face
+        band = band_torque(inp, kw, rim_of(inp))
+        c.eq("torque_band = (T₁ − T₂) r, T₁ = T₂ e^{μθ}", res.get("torque_band"), band if kw.get("band") else None)
+        kinetic = brake + face + band
         omega, theta, swept, alpha_end = braked_motion(inertia, w0, inp["torque"], inp["duration"], kinetic, kinetic)
         c.eq("omega1: constant α in each stretch, held at rest", w1, omega, w0, inp["torque"] * inp["duration"] / inertia, kinetic * inp["duration"] / inertia)
-        for name, torque in (("brake", brake), ("face", face)):
+        for name, torque in (("brake", brake), ("face", face), ("band", band)):
             if res.get(f"torque_{name}") is not None:
                 c.eq(f"power_{name} = τ |ω₀|", res.get(f"power_{name}"), torque * abs(w0))
                 c.eq(f"work_{name} = τ × the angle swept", res.get(f"work_{name}"), torque * swept, torque * abs(theta))
-        works = [res.get("work_brake") or 0.0, res.get("work_face") or 0.0]
+        works = [res.get("work_brake") or 0.0, res.get("work_face") or 0.0, res.get("work_band") or 0.0]
         c.eq("KE1 − KE0 = τθ − the friction's work", res["KE1"] - res["KE0"], inp["torque"] * theta - math.fsum(works),
              res["KE1"], res["KE0"], inp["torque"] * theta, *works)
 
@@ -246,7 +264,7 @@ def check_impulse(kw: dict, report, c: Checker) -> None:
     if kw.get("at") is not None and w0 is not None and w1 is not None:
         r = rim_of(inp) if kw["at"] == "rim" else inp["at"]
         torque, duration = res.get("torque", inp.get("torque")), res.get("duration", inp.get("duration"))
-        if kw.get("brake") or kw.get("face"):
+        if kw.get("brake") or kw.get("face") or kw.get("band"):
             alpha, alpha0 = alpha_end, (inp["torque"] - ((w0 > 0) - (w0 < 0)) * kinetic) / inertia if w0 else None  # θ: braked_motion's
         elif torque is not None and inertia and duration is not None:
             alpha = alpha0 = torque / inertia
@@ -302,6 +320,11 @@ def check_meeting(kw, report, res, inp, inertia, w0, w1, c: Checker) -> None:
     for name, l0, l1, j, speed_after in rows:
         c.eq("a part's J = L₁ − L₀", j, l1 - l0, l0, l1)
     c.eq("the parts' J add to zero", math.fsum(row[3] for row in rows), 0.0, *(row[1] for row in rows), *(row[2] for row in rows))
+    if "couple1_torque" in inp:  # a clutch that slips: each body's angular impulse is the clutch's T t_slip
+        torque, slip = inp["couple1_torque"], res.get("t_slip")
+        c.eq("T t_slip = I₁|ω₁ − ω_f| (the body's angular impulse)", torque * slip, abs(rows[0][2] - rows[0][1]), abs(rows[0][1]), abs(rows[0][2]))
+        c.eq("T t_slip = I₂|ω_f − ω₂| (the couple's)", torque * slip, abs(rows[1][2] - rows[1][1]), abs(rows[1][1]), abs(rows[1][2]))
+        c.eq("heat = KE0 − KE1 (the clutch's work over the angle slipped)", res.get("heat"), res["KE0"] - res["KE1"], res["KE0"])
     for n, (m, v1, arm) in after.items():
         row = next(row for row in rows if row[0] in (f"particle {n}", "particle"))
         c.eq("a particle's speed after (given, or v′ = ω₁r⊥ − e(v − ω₀r⊥))", row[4], v1, w1 * arm)

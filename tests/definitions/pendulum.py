@@ -58,6 +58,16 @@ def draw_pendulum(rng: random.Random) -> tuple[dict, list[str]]:
         kw["angle0"] = rng.uniform(-math.pi, math.pi)
     if rng.random() < 0.5:
         kw["omega0"] = signed(rng, math.sqrt(G0 / size) * mag(rng, -1, 0.5), 0.5)
+    if rng.random() < 0.15:  # #34: from the bottom at a given speed
+        kw.pop("angle0", None)
+        kw["omega_bottom"] = kw.pop("omega0", None) or signed(rng, math.sqrt(G0 / size) * mag(rng, -1, 0.5), 0.5)
+        tags.append("omega_bottom")
+    elif "torsion" not in kw and rng.random() < 0.2:  # #34: angles from the top
+        kw["from_top"] = True
+        tags.append("from the top")
+    if rng.random() < 0.5:
+        kw["components"] = True
+        tags.append("components")
     if rng.random() < 0.4:
         kw["angle"] = rng.uniform(-math.pi, math.pi)
         tags.append("angle")
@@ -81,6 +91,16 @@ def check_pendulum(kw: dict, report, c: Checker) -> None:
     kappa = inp.get("torsion", 0.0)
     G = (m or 0.0) * g * d  # gravity's torque at 90°
     theta0, omega0 = inp.get("angle0", 0.0), inp.get("omega0", 0.0)
+    top = bool(kw.get("from_top"))  # a flag: not echoed among the inputs
+    # angles from the top (gravity alone): φ is the same place as θ = φ ± 180° from the bottom
+    # (the one in [−180°, 180°], so that φ = ±180° is the bottom exactly), which every formula below
+    # takes; the horizontal's sense turns with the zero
+    def bottom_angle(phi):
+        return phi if not top else phi - math.pi if phi > 0 else phi + math.pi
+
+    theta0 = bottom_angle(theta0)
+    if "omega_bottom" in inp:
+        theta0, omega0 = 0.0, inp["omega_bottom"]
 
     def potential(theta):  # U(θ) = mgd(1 − cos θ) + ½κθ²
         return 2 * G * math.sin(theta / 2) ** 2 + kappa * theta * theta / 2
@@ -97,7 +117,7 @@ def check_pendulum(kw: dict, report, c: Checker) -> None:
     if res.get("omega_bottom") is not None:
         c.eq("½Iω_bottom² = ½Iω₀² + U(θ₀)", inertia * res["omega_bottom"] ** 2 / 2, energy)
     if inp.get("angle") is not None and res.get("omega") is not None:
-        c.eq("½Iω² + U(θ) = ½Iω₀² + U(θ₀) at --angle", inertia * res["omega"] ** 2 / 2 + potential(inp["angle"]), energy, potential(inp["angle"]))
+        c.eq("½Iω² + U(θ) = ½Iω₀² + U(θ₀) at --angle", inertia * res["omega"] ** 2 / 2 + potential(bottom_angle(inp["angle"])), energy, potential(bottom_angle(inp["angle"])))
     if G:
         rise = potential(math.pi) - potential(theta0)
         c.eq("½Iω_over² = U(180°) − U(θ₀)", inertia * res["omega0_over"] ** 2 / 2, max(rise, 0.0), potential(math.pi), potential(theta0))
@@ -111,6 +131,32 @@ def check_pendulum(kw: dict, report, c: Checker) -> None:
         c.eq("pivot force at the start = m|a_cm − g|", res["pivot_force0"], pivot(theta0, abs(omega0)), scale)
         if res.get("omega_bottom") is not None:
             c.eq("pivot force at the bottom = m|a_cm − g|", res.get("pivot_force_bottom"), pivot(0.0, res["omega_bottom"]), m * g)
+    # #34 item 5: the swing's reach
+    if res.get("KE_bottom") is not None and res.get("omega_bottom") is not None:
+        c.eq("KE_bottom = ½Iω_b²", res["KE_bottom"], inertia * res["omega_bottom"] ** 2 / 2)
+    if res.get("amplitude") is not None and (omega0 or accel(theta0)):
+        amp = bottom_angle(res["amplitude"])
+        c.eq("U(θₐ) = ½Iω₀² + U(θ₀): it turns where its kinetic energy is spent", potential(amp), energy, energy, G * abs(math.sin(amp)))
+        if G and res.get("rise") is not None:
+            c.eq("rise = d(cos θ₀ − cos θₐ)", res["rise"], d * (math.cos(theta0) - math.cos(amp)), d)
+            if not kappa:
+                c.eq("m g rise = ½Iω₀² (gravity alone)", (m or 0.0) * g * res["rise"], inertia * omega0 * omega0 / 2)
+    # #34 item 6: the pivot's force as components, from the centre of mass's x'' and y''
+    if m is not None and d and res.get("pivot_radial0") is not None:
+        def components(theta, w):
+            a = accel(theta)
+            fx = m * d * (a * math.cos(theta) - w * w * math.sin(theta))
+            fy = m * d * (a * math.sin(theta) + w * w * math.cos(theta)) + m * g
+            return (-fx * math.sin(theta) + fy * math.cos(theta), fx * math.cos(theta) + fy * math.sin(theta), -fx if top else fx, fy)
+        places = [("0", theta0, omega0), ("_bottom", 0.0, res.get("omega_bottom"))]
+        if inp.get("angle") is not None:
+            places.append(("", bottom_angle(inp["angle"]), res.get("omega")))
+        for suffix, theta, w in places:
+            if w is None or res.get("pivot_radial" + suffix) is None:
+                continue
+            scale = m * (g + d * abs(accel(theta)) + d * w * w)
+            for name, want in zip(("radial", "tangential", "horizontal", "vertical"), components(theta, w)):
+                c.eq(f"pivot_{name}{suffix} = m a_cm − m g, resolved", res["pivot_" + name + suffix], want, scale)
     exact = report.method.startswith("closed form")
     small = kw.get("method") == "small-angle"
     if inp.get("time") is not None and res.get("theta") is not None and res.get("omega") is not None and inp.get("angle") is None:
@@ -119,7 +165,7 @@ def check_pendulum(kw: dict, report, c: Checker) -> None:
             harmonic = lambda th, w: inertia * w * w / 2 + (G + kappa) * th * th / 2
             c.eq("small-angle: ½Iω² + ½(mgd + κ)θ² kept at --time", harmonic(theta, omega), harmonic(theta0, omega0))
         elif exact:
-            c.eq("½Iω² + U(θ) kept at --time (exact)", inertia * omega * omega / 2 + potential(theta), energy, potential(theta), G)
+            c.eq("½Iω² + U(θ) kept at --time (exact)", inertia * omega * omega / 2 + potential(bottom_angle(theta)), energy, potential(bottom_angle(theta)), G)
     if exact and not G and kappa and res.get("period") is not None:
         c.eq("a torsion pendulum's period 2π√(I/κ)", res["period"], TWO_PI * math.sqrt(inertia / kappa))
     if small and res.get("period") is not None:
@@ -129,7 +175,7 @@ def check_pendulum(kw: dict, report, c: Checker) -> None:
         c.eq("a_t0 = r α₀ along the motion", res.get("a_t0"), r * _along(accel(theta0), omega0))
         if inp.get("angle") is not None and res.get("omega") is not None:  # ω at --angle signed, as the body first gets there
             c.eq("v_t = r |ω| at --angle", res.get("v_t"), r * abs(res["omega"]))
-            c.eq("a_t = r α along the motion at --angle", res.get("a_t"), r * _along(accel(inp["angle"]), res["omega"]))
+            c.eq("a_t = r α along the motion at --angle", res.get("a_t"), r * _along(accel(bottom_angle(inp["angle"])), res["omega"]))
             c.eq("a_c = r ω² at --angle", res.get("a_c"), r * res["omega"] ** 2)
 
 

@@ -10,6 +10,7 @@ from definitions.check import (
     REL,
     TWO_PI,
     Checker,
+    band_torque,
     contact_torques,
     draw_body,
     inputs,
@@ -49,12 +50,17 @@ def draw_spin(rng: random.Random) -> tuple[dict, list[str]]:
     def contacts():
         if inertia is None:
             return
+        side = random.Random(str(rng.getstate()))  # #35's draws, leaving the stream the older draws see as it was
         if rng.random() < 0.15:
             mu = rng.uniform(0.1, 0.8)
             radius = rim if rim is not None and rng.random() < 0.5 else mag(rng, -1.5, 0)
             fields = {"force": (torque_scale / (mu * radius) * mag(rng, -1, 0), "N"), "mu": (mu, "")}
             if radius != rim:
                 fields["radius"] = (radius, "m")
+            if side.random() < 0.3:  # on a lever: N = F ℓ/(x − μc), not self-locking
+                fields["lever"], fields["pivot"] = (mag(side, -0.5, 0.5), "m"), (mag(side, -0.5, 0.5), "m")
+                fields["offset"] = (fields["pivot"][0] / mu * side.uniform(-1, 0.9), "m")
+                tags.append("brake lever")
             kw["brake"] = [spec(**fields)]
             tags.append("brake")
         if rng.random() < 0.1:
@@ -67,11 +73,36 @@ def draw_spin(rng: random.Random) -> tuple[dict, list[str]]:
                 fields = {"mu": (mu, ""), "force": (torque_scale / (mu * outer) * mag(rng, -1, 0), "N"),
                           "inner_radius": (outer * rng.uniform(0, 0.9), "m"), "outer_radius": (outer, "m")}
                 if rng.random() < 0.4:
-                    fields["pressure"] = "wear"
+                    fields["model"] = "wear"
                 if rng.random() < 0.3:
                     fields["surfaces"] = "2"
+                if side.random() < 0.3 and fields["inner_radius"][0] > 0:
+                    del fields["force"]
+                    fields["pmax"] = (torque_scale / (mu * outer ** 3) * mag(side, -1, 0), "Pa")
+                    tags.append("face pmax")
                 kw["face"] = [spec(**fields)]
                 tags.append("face")
+
+        if side.random() < 0.1 and mode == "laws":
+            mu, wrap = side.uniform(0.05, 0.6), side.uniform(0.3, 2.5) * math.pi
+            radius = rim if rim is not None and side.random() < 0.5 else mag(rng, -1.5, 0)
+            fields = {"mu": (mu, ""), "wrap": (wrap, "rad")}
+            if radius != rim:
+                fields["radius"] = (radius, "m")
+            pull = torque_scale / radius * mag(rng, -1, 0)
+            if side.random() < 0.4:
+                fields["tension"] = (pull, "N")
+            else:
+                fields["force"], fields["lever"] = (pull, "N"), (1.0, "m")
+                arms = side.choice(("slack", "tight", "both"))
+                if arms != "tight":
+                    fields["slack_arm"] = (mag(rng, -0.5, 0.3), "m")
+                if arms != "slack":
+                    fields["tight_arm"] = (mag(rng, -0.5, 0.3) if arms == "tight" else fields["slack_arm"][0] / math.exp(mu * wrap) * side.uniform(0.1, 0.9), "m")
+            if side.random() < 0.3:
+                fields["width"] = (mag(rng, -2, 0.5), "m")
+            kw["band"] = [spec(**fields)]
+            tags.append("band")
 
     def targets(p_time, p_omega, p_angle):
         maybe("time", p_time, T * mag(rng, -1, 0.5))
@@ -192,8 +223,8 @@ def check_spin(kw: dict, report, c: Checker) -> None:
     g = inp.get("g", G0)
     n = inp.get("drag_exponent", 2.0)
     b, k, axle = inp.get("viscous", 0.0), inp.get("drag", 0.0), inp.get("friction", 0.0)
-    brake, face = res.get("torque_brake", 0.0), res.get("torque_face", 0.0)
-    f = axle + brake + face
+    brake, face, band = res.get("torque_brake", 0.0), res.get("torque_face", 0.0), res.get("torque_band", 0.0)
+    f = axle + brake + face + band
     if mode == "bisection":
         drive = res["torque"]
     elif "force" in inp:
@@ -227,6 +258,14 @@ def check_spin(kw: dict, report, c: Checker) -> None:
             c.eq("torque_brake = Σ μNr", res.get("torque_brake"), want_brake)
         if kw.get("face"):
             c.eq("torque_face = μF r_eff (its weight the body's)", res.get("torque_face"), want_face)
+    if kw.get("band"):
+        c.eq("torque_band = (T₁ − T₂) r, T₁ = T₂ e^{μθ}", res.get("torque_band"), band_torque(inp, kw, rim))
+        mu, wrap = inp.get("band1_mu", inp.get("band1_mu_k")), inp["band1_wrap"]
+        c.eq("tension_tight = tension_slack e^{μθ}", res.get("tension_tight"), res["tension_slack"] * math.exp(mu * wrap))
+        c.eq("torque_band = (T₁ − T₂) r", res.get("torque_band"), (res["tension_tight"] - res["tension_slack"]) * inp.get("band1_radius", rim),
+             res["tension_tight"] * inp.get("band1_radius", rim))
+        if "band1_width" in inp:
+            c.eq("pressure_band = T₁/(r w)", res.get("pressure_band"), res["tension_tight"] / (inp.get("band1_radius", rim) * inp["band1_width"]))
 
     # revolutions, and the angle both ways
     for revs, theta in (("revs", "theta"), ("revs_stop", "theta_stop"), ("revs_total", "theta_total")):
@@ -270,7 +309,7 @@ def check_spin(kw: dict, report, c: Checker) -> None:
         c.eq("KE0 = ½ I ω₀²", res.get("KE0"), inertia * w0 * w0 / 2)
         if res.get("KE") is not None and omega_end is not None:
             c.eq("KE = ½ I ω² at the end", res["KE"], inertia * omega_end * omega_end / 2)
-    works = [res.get(name) for name in ("work_friction", "work_viscous", "work_drag", "work_brake", "work_face")]
+    works = [res.get(name) for name in ("work_friction", "work_viscous", "work_drag", "work_brake", "work_face", "work_band")]
     # The balance is an identity of the exact motion. A stepped one (rk45: a motor against losses, a drag
     # exponent other than 1 or 2) keeps it to its own accuracy, rtol 1e-10 by default: 1e-9 here; euler and
     # rk4 answers are good to 1e-3 by design (their error estimate withholds worse), so not to this.
@@ -281,7 +320,7 @@ def check_spin(kw: dict, report, c: Checker) -> None:
              rel=1e-9 if stepped else REL)
     if res.get("work_drive") is not None and t_end:
         c.eq("power_mean = work_drive / t", res.get("power_mean"), res["work_drive"] / t_end)
-    contact_work = [(torque, res.get(name)) for torque, name in ((axle, "work_friction"), (brake, "work_brake"), (face, "work_face")) if torque]
+    contact_work = [(torque, res.get(name)) for torque, name in ((axle, "work_friction"), (brake, "work_brake"), (face, "work_face"), (band, "work_band")) if torque]
     if len(contact_work) > 1 and all(w is not None for _, w in contact_work):
         swept = math.fsum(w for _, w in contact_work) / f
         for torque, w in contact_work:
@@ -300,7 +339,7 @@ def check_spin(kw: dict, report, c: Checker) -> None:
             net, swept = res["theta_stop"], abs(res["theta_stop"])
         else:
             net = swept = None
-        friction_work = [w for w in (res.get("work_friction"), res.get("work_brake"), res.get("work_face")) if w is not None]
+        friction_work = [w for w in (res.get("work_friction"), res.get("work_brake"), res.get("work_face"), res.get("work_band")) if w is not None]
         if swept is not None and friction_work:
             c.eq("the friction's work = τ_f × the angle swept", math.fsum(friction_work), f * swept)
         if net is not None and mode in ("laws", "bisection") and kw.get("method") is None:
@@ -309,7 +348,7 @@ def check_spin(kw: dict, report, c: Checker) -> None:
         driving = min(t_end, res["t_stop"]) if res.get("t_stop") is not None else t_end
         c.eq("work_drive = P t (while it turns)", res["work_drive"], power * driving)
     if omega_at is not None:
-        for name, torque in (("power_friction", axle), ("power_brake", brake), ("power_face", face)):
+        for name, torque in (("power_friction", axle), ("power_brake", brake), ("power_face", face), ("power_band", band)):
             if torque:
                 c.eq(f"{name} = τ |ω|", res.get(name), torque * abs(omega_at))
         c.eq("power_viscous = b ω²", res.get("power_viscous"), b * omega_at * omega_at)

@@ -51,6 +51,12 @@ def draw_torque(rng: random.Random) -> tuple[dict, list[str]]:
         if mode == "both" and len(kw["force"]) == count and rng.random() < 0.5:
             kw["r"] = kw["r"][:count]  # one --r each, to both
             tags.append("shared r")
+    if mode in ("particles", "both") and rng.random() < 0.3:  # the particles by their momenta, p = mv
+        kw["momentum"] = [tuple(m * x for x in v) for m, v in zip(kw.pop("mass"), kw.pop("velocity"))]
+        tags.append("momentum")
+    if mode != "plane" and rng.random() < 0.25:
+        kw["about"] = vector(mag(rng, -2, 1))
+        tags.append("about")
     for key in ("r", "force"):
         if not kw[key]:
             del kw[key]
@@ -64,8 +70,10 @@ def check_torque(kw: dict, report, c: Checker) -> None:
     forces = kw.get("force", [])
     vectors = [f for f in forces if isinstance(f, tuple)]
     planar = [f for f in forces if not isinstance(f, tuple)]
-    rs = kw.get("r", [])
-    velocities = kw.get("velocity", [])
+    about = kw.get("about", (0.0, 0.0, 0.0))
+    rs = [tuple(x - a for x, a in zip(r, about)) for r in kw.get("r", [])]  # the positions from the point (--about)
+    momenta = kw.get("momentum") or [tuple(m * x for x in v) for m, v in zip(kw.get("mass", []), kw.get("velocity", []))]
+    velocities = momenta
     force_r, particle_r = (rs, rs) if vectors and velocities and len(rs) == len(vectors) == len(velocities) else (rs[:len(vectors)], rs[len(vectors):])
     if forces:
         terms = [cross(r, f) for r, f in zip(force_r, vectors)]
@@ -83,10 +91,10 @@ def check_torque(kw: dict, report, c: Checker) -> None:
             else:
                 c.eq("lever_arm = r |sin θ|", res["lever_arm"], kw["lever"][0] * abs(math.sin(angles[0])), kw["lever"][0])
     if velocities:
-        terms = [tuple(m * x for x in cross(r, v)) for r, m, v in zip(particle_r, kw["mass"], velocities)]
-        scale = math.fsum(m * math.hypot(*r) * math.hypot(*v) for r, m, v in zip(particle_r, kw["mass"], velocities))
+        terms = [cross(r, p) for r, p in zip(particle_r, momenta)]
+        scale = math.fsum(math.hypot(*r) * math.hypot(*p) for r, p in zip(particle_r, momenta))
         for i, key in enumerate(("L_x", "L_y", "L_z")):
-            c.eq(f"{key} = Σ m (r × v){key[-1]}", res[key], math.fsum(t[i] for t in terms), scale)
+            c.eq(f"{key} = Σ ((r − a) × p){key[-1]}", res[key], math.fsum(t[i] for t in terms), scale)
         c.eq("L = |L|", res["L"], math.hypot(res["L_x"], res["L_y"], res["L_z"]))
     for table in ("forces", "particles"):
         for row in report.tables[table].rows if table in report.tables else ():
@@ -123,7 +131,61 @@ def draw_gyro(rng: random.Random) -> tuple[dict, list[str]]:
         kw.pop("tilt")
     if rng.random() < 0.15:
         kw["g"] = rng.uniform(1, 25)
+    if rng.random() < 0.25:  # a rotor on a machine: the vehicle turns its axis at a given rate
+        for key in ("torque", "cm_distance", "inertia_perp", "g"):
+            kw.pop(key, None)
+        if "inertia" in kw:
+            kw.pop("mass", None)
+        kw["spin"] = signed(rng, kw["spin"], 0.2)
+        kw["precession"] = mag(rng, -3, 1)
+        if rng.random() < 0.6:
+            kw.pop("tilt", None)
+            kw["spin_sense"] = rng.choice([f"{t}-from-{e}" for t in ("cw", "ccw") for e in ("rear", "front", "left", "right", "above", "below")])
+            kw["turn"] = rng.choice(("left", "right", "pitch-up", "pitch-down", "roll-left", "roll-right"))
+            if rng.random() < 0.4:
+                kw["lean"] = rng.uniform(-1.2, 1.2)
+            tags.append("senses")
+            if rng.random() < 0.3:
+                sense = rng.choice([f"{t}-from-{e}" for t in ("cw", "ccw") for e in ("rear", "front", "left", "right", "above", "below")])
+                kw["rotor"] = [f"inertia={mag(rng, -2, 1)!r}kg*m^2 spin={signed(rng, mag(rng, 0, 3), 0.2)!r}rad/s sense={sense}"]
+                tags.append("rotors")
+        if rng.random() < 0.5:
+            kw["bearing_span"] = mag(rng, -1, 1)
+        tags.append("precession")
     return kw, tags
+
+
+# A rotor's spin axis, and the axis of each turn, in the vehicle's axes (x forward, y left, z up),
+# by the right-hand rule: a rotor turning clockwise seen from behind spins forward.
+VIEWER = {"rear": (-1, 0, 0), "front": (1, 0, 0), "left": (0, 1, 0), "right": (0, -1, 0), "above": (0, 0, 1), "below": (0, 0, -1)}
+TURNED_ABOUT = {"left": (0, 0, 1), "right": (0, 0, -1), "pitch-up": (0, -1, 0), "pitch-down": (0, 1, 0), "roll-right": (1, 0, 0), "roll-left": (-1, 0, 0)}
+
+
+def check_machine(kw: dict, inp: dict, res: dict, inertia: float, c: Checker) -> None:
+    """C = |L × Ω| = Iω_sΩ sin θ, θ between the spin axis and the turn's; F = C/l at each bearing."""
+    L, rate = res["L"], inp["precession"]
+    if "spin_sense" in kw:
+        turn, _, viewer = kw["spin_sense"].split("-", 2)
+        axis = tuple((-1 if turn == "cw" else 1) * x for x in VIEWER[viewer])
+        lean = inp.get("lean", 0.0)
+        axis = (axis[0], axis[1] * math.cos(lean) - axis[2] * math.sin(lean), axis[1] * math.sin(lean) + axis[2] * math.cos(lean))
+        momentum = [inertia * inp["spin"] * x for x in axis]
+        scale = abs(L)
+        for text in kw.get("rotor", []):  # "inertia=… spin=… sense=…": each rotor's Iω along its own sense, after the lean
+            fields = dict(item.split("=") for item in text.split())
+            turn, _, viewer = fields["sense"].split("-", 2)
+            other = tuple((-1 if turn == "cw" else 1) * x for x in VIEWER[viewer])
+            other = (other[0], other[1] * math.cos(lean) - other[2] * math.sin(lean), other[1] * math.sin(lean) + other[2] * math.cos(lean))
+            spin_i = float(fields["inertia"].removesuffix("kg*m^2")) * float(fields["spin"].removesuffix("rad/s"))
+            momentum = [m + spin_i * x for m, x in zip(momentum, other)]
+            scale += abs(spin_i)
+        c.eq("couple = |ΣL × Ω|", res.get("couple"), math.hypot(*cross(momentum, TURNED_ABOUT[kw["turn"]])) * rate, scale * rate)
+    else:
+        sine = math.sin(inp.get("tilt", math.pi / 2))
+        c.eq("couple = Iω_sΩ sin θ", res.get("couple"), abs(inertia * inp["spin"]) * rate * sine, abs(L) * rate)
+    if "bearing_span" in inp:
+        c.eq("bearing_force = couple / span", res.get("bearing_force"), res["couple"] / inp["bearing_span"])
+
 
 def check_gyro(kw: dict, report, c: Checker) -> None:
     res, inp = values(report), inputs(report)
@@ -131,6 +193,9 @@ def check_gyro(kw: dict, report, c: Checker) -> None:
     inertia = body_moment(kw, inp)
     L = res["L"]
     c.eq("L = I ω_s", L, inertia * spin)
+    if "precession" in inp:
+        check_machine(kw, inp, res, inertia, c)
+        return
     if "torque" in inp:
         c.eq("omega_p = τ/(L sin θ)", res.get("omega_p"), inp["torque"] / (L * math.sin(tilt)))
         if res.get("omega_p"):
@@ -139,6 +204,14 @@ def check_gyro(kw: dict, report, c: Checker) -> None:
     weight_torque = inp["mass"] * g * inp["cm_distance"]
     c.eq("omega_p = mgr/(I ω_s)", res.get("omega_p"), weight_torque / L)
     slow, fast = res.get("omega_p_slow"), res.get("omega_p_fast")
+    steady = slow if "omega_p_slow" in res else res.get("omega_p")
+    if steady is not None and res.get("L_orbital") is not None:
+        # The centre of mass goes round a circle of radius r sin θ at Ω: L_orb = |r × mv| = m r (Ω r sin θ)
+        circle, m = inp["cm_distance"] * math.sin(tilt), inp["mass"]
+        # sin θ is taken exact at 180° (math.sin(π) is 1.2e-16): the scale is the size at sin θ = 1
+        c.eq("L_orbital = m r (Ω r sin θ)", res["L_orbital"], m * inp["cm_distance"] * abs(steady) * circle, m * inp["cm_distance"] ** 2 * abs(steady))
+        c.eq("pivot_force_vertical = mg", res["pivot_force_vertical"], m * g)
+        c.eq("pivot_force_horizontal = mΩ²(r sin θ)", res["pivot_force_horizontal"], m * steady * steady * circle, m * steady * steady * inp["cm_distance"])
     if slow is not None:
         c.eq("period_p = 2π/|Ω_slow|", res.get("period_p"), TWO_PI / abs(slow))
     elif "omega_p_slow" not in res and res.get("omega_p"):

@@ -35,6 +35,16 @@ so E(θ) = ½Iω² + mgd(1 − cos θ) + ½κθ² is constant. Then:
       tangential (along +θ)        F·t̂ = m d θ'' + m g sin θ
                                         = [m g sin θ (I − m d²) − m d κ θ] / I
   and the size √(radial² + tangential²).
+- The pivot's force as components (#34 item 6), from Newton's second law for the centre of mass
+  written in x (horizontal, towards positive θ) and y (up), with no radial/tangential split:
+      x = d sin θ, y = −d cos θ;  x'' = d(θ'' cos θ − ω² sin θ), y'' = d(θ'' sin θ + ω² cos θ)
+      F_h = m x'',  F_v = m y'' + m g,  F_r = F·(−sin θ, cos θ),  F_t = F·(cos θ, sin θ)
+  with θ'' from the equation of motion at that angle.
+- The swing's reach (#34 item 5): amplitude = the first turning angle along the motion
+  (turning(s)); rise = d(cos θ₀ − cos θₐ), the height the centre of mass climbs from the start;
+  KE_bottom = ½ I ω_b² = ½ I ω₀² + mgd(1 − cos θ₀) + ½ κ θ₀².
+- Angles from the upward vertical (Toppling, gravity alone): φ, the centre of mass at
+  d(sin φ, cos φ) (x towards positive φ); energy ½Iω² + mgd cos φ is constant, θ'' = mgd sin φ/I.
 - equivalent_length = centre_of_percussion = I/(m d); period_small = 2π √(I/(mgd + κ)).
 - A point at r from the pivot: v_t = |ω| r, a_c = ω² r, a_t = r θ'' along the motion
   (r θ'' sgn ω; from rest, the sense θ'' starts it in), a_total = √(a_t² + a_c²).
@@ -438,10 +448,81 @@ class Pendulum:
             tangential = (m * g * mpmath.sin(theta) * (inertia - m * d * d) - m * d * self.kappa * theta) / inertia
             return radial, tangential
 
+    def components(self, theta, omega):
+        """(radial, tangential, horizontal, vertical) force of the pivot, from x'' and y'' of the centre of mass."""
+        with mp.workdps(DPS + GUARD):
+            theta, omega = mpf(theta), mpf(omega)
+            accel = -self.dU1(theta)
+            x2 = self.d * (accel * mpmath.cos(theta) - omega**2 * mpmath.sin(theta))
+            y2 = self.d * (accel * mpmath.sin(theta) + omega**2 * mpmath.cos(theta))
+            fx, fy = self.m * x2, self.m * y2 + self.m * self.g
+            radial = -fx * mpmath.sin(theta) + fy * mpmath.cos(theta)
+            tangential = fx * mpmath.cos(theta) + fy * mpmath.sin(theta)
+            return radial, tangential, fx, fy
+
+    def amplitude(self):
+        """The first turning angle along the motion (None: it never turns)."""
+        if self.omega0 == 0 and self.dU1(self.theta0) == 0:
+            return self.theta0
+        return self.turning(self.s)
+
+    def rise(self):
+        """d(cos θ₀ − cos θₐ): how far the centre of mass climbs from the start to the turning angle."""
+        turn = self.amplitude()
+        if turn is None:
+            return None
+        with mp.workdps(DPS + GUARD):
+            return self.d * (mpmath.cos(self.theta0) - mpmath.cos(turn))
+
     def pivot_size(self, theta, omega):
         radial, tangential = self.pivot(theta, omega)
         with mp.workdps(DPS + GUARD):
             return mpmath.hypot(radial, tangential)
+
+
+class Toppling:
+    """A body on a pivot under gravity alone, its angle φ from the upward vertical (a falling
+    chimney or stick): the centre of mass at d(sin φ, cos φ), x towards positive φ, y up. Written
+    from the physics in φ, with no use of the bottom's θ."""
+
+    def __init__(self, inertia, mass, d, g=9.80665, phi0=0, omega0=0):
+        with mp.workdps(DPS + GUARD):
+            self.I, self.m, self.d, self.g = (mpf(x) for x in (inertia, mass, d, g))
+            self.phi0, self.omega0 = mpf(phi0), mpf(omega0)
+            self.G = self.m * self.g * self.d
+
+    def omega2(self, phi):
+        """ω² at φ: ½Iω² + mgd cos φ = ½Iω₀² + mgd cos φ₀."""
+        with mp.workdps(DPS + GUARD):
+            return self.omega0**2 + 2 * self.G * (mpmath.cos(self.phi0) - mpmath.cos(mpf(phi))) / self.I
+
+    def alpha(self, phi):
+        """φ'' = mgd sin φ / I: gravity tips it further from the top."""
+        with mp.workdps(DPS + GUARD):
+            return self.G * mpmath.sin(mpf(phi)) / self.I
+
+    def pivot(self, phi, omega2):
+        """(radial towards the pivot, tangential towards larger φ, horizontal towards positive φ, vertical up)."""
+        with mp.workdps(DPS + GUARD):
+            phi = mpf(phi)
+            a = self.alpha(phi)
+            x2 = self.d * (a * mpmath.cos(phi) - omega2 * mpmath.sin(phi))  # x = d sin φ
+            y2 = self.d * (-a * mpmath.sin(phi) - omega2 * mpmath.cos(phi))  # y = d cos φ
+            fx, fy = self.m * x2, self.m * y2 + self.m * self.g
+            radial = -(fx * mpmath.sin(phi) + fy * mpmath.cos(phi))  # towards the pivot: −(sin φ, cos φ)
+            tangential = fx * mpmath.cos(phi) - fy * mpmath.sin(phi)  # along larger φ: (cos φ, −sin φ)
+            return radial, tangential, fx, fy
+
+    def turning(self):
+        """The first φ along the motion where ω = 0, None where it goes over the top. Turning angles
+        are ±φₐ with cos φₐ = cos φ₀ + Iω₀²/(2mgd); the body swings through the bottom (φ = ±180°),
+        so moving towards larger φ it turns at −φₐ, towards smaller at +φₐ."""
+        with mp.workdps(DPS + GUARD):
+            c = mpmath.cos(self.phi0) + self.I * self.omega0**2 / (2 * self.G)
+            if c > 1:
+                return None
+            sense = _sign(self.omega0) or _sign(mpmath.sin(self.phi0))
+            return -sense * mpmath.acos(c)
 
 
 def _taylor_solve(lam, mu, theta0, omega0, t, order=60):

@@ -71,6 +71,7 @@ def draw_pendulum(rng, kind=None):
     kw["angle"] = rad(target)
     at = log_uniform(rng, -2, 2)
     kw["at"] = at
+    kw["components"] = True
     ref = Pendulum(I, m, d, g, kappa, theta0, omega0)
     return kw, ref, dict(kind=kind, target=target, at=at, theta0=theta0, omega0=omega0, kappa=kappa, cycles=cycles, stepped=bool(kappa and m and d))
 
@@ -121,8 +122,7 @@ def check_pendulum(kw, ref, extra, with_time=False):
         # the bottom
         bottom = ref.reach(0)
         wb = None if bottom is None else mpmath.sqrt(ref.omega0**2 + 2 * ref.U(ref.theta0))
-        never = "an angle never reached gets an ω" if bottom is None else ""
-        rows.append(Row("omega_bottom", value(report, "omega_bottom"), wb, closed, never))
+        rows.append(Row("omega_bottom", value(report, "omega_bottom"), wb, closed))
         if bottom is not None and m and d:
             rows.append(Row("pivot_force_bottom", value(report, "pivot_force_bottom"), ref.pivot_size(0, wb), closed))
         if bottom is not None and bottom[0] != 0:
@@ -133,6 +133,11 @@ def check_pendulum(kw, ref, extra, with_time=False):
             spread = mpmath.hypot(m * d * ref.omega0**2 + m * ref.g * abs(mpmath.cos(ref.theta0)),
                                   m * ref.g * abs(mpmath.sin(ref.theta0)) + m * d * ref.kappa * abs(ref.theta0) / inertia)
             rows.append(Row("pivot_force0", value(report, "pivot_force0"), size, closed * max(1.0, float(spread / size)) if size else closed))
+        rows += _reach_rows(report, ref, closed)
+        if m and d:
+            rows += _component_rows(report, ref, "0", ref.theta0, ref.omega0)
+            if bottom is not None:
+                rows += _component_rows(report, ref, "_bottom", 0, wb)
         # the period
         if period is not None and not (ref.omega0 == 0 and ref.dU1(ref.theta0) == 0):
             rows.append(Row("period", value(report, "period"), period, timed))
@@ -145,14 +150,16 @@ def check_pendulum(kw, ref, extra, with_time=False):
         target = mpf(extra["target"])
         hit = ref.reach(target)
         if hit is None:
-            rows.append(Row("omega", value(report, "omega"), None, 0.0, "an angle never reached gets an ω"))
-            rows.append(Row("t_angle", value(report, "t_angle"), None, 0.0, "an angle never reached gets an ω"))
+            rows.append(Row("omega", value(report, "omega"), None, 0.0))
+            rows.append(Row("t_angle", value(report, "t_angle"), None, 0.0))
         elif hit[0] != 0 and hit[1] != 0:
             t, w = hit
             scale = _energy_scale(ref, target)
             got = value(report, "omega")
             rows.append(Row("omega", got, w, closed * scale))
             rows.append(Row("t_angle", value(report, "t_angle"), t, timed * scale**0.5))
+            if m and d:
+                rows += _component_rows(report, ref, "", target, w, scale)
             if r:
                 a = -ref.dU1(target)
                 rows.append(Row("v_t", value(report, "v_t"), abs(w) * r, closed * scale))
@@ -161,6 +168,44 @@ def check_pendulum(kw, ref, extra, with_time=False):
     if with_time:
         rows += check_time(kw, ref, extra)
     return rows
+
+
+def _turning_scale(ref, turn) -> float:
+    """Condition of the turning angle θₐ (U(θₐ) = E) to a rounding of the energies, relative to θₐ."""
+    with mp.workdps(DPS):
+        slope = abs(ref.dU1(turn)) * max(abs(turn), mpf(1e-300))
+        if slope == 0:
+            return math.inf
+        return max(1.0, float((ref.omega0**2 + 2 * abs(ref.U(ref.theta0)) + 2 * abs(ref.U(turn))) / (2 * slope)))
+
+
+def _reach_rows(report, ref, closed) -> list[Row]:
+    """amplitude (the first turning angle along the motion), rise, KE_bottom (#34 item 5)."""
+    rows = []
+    with mp.workdps(DPS):
+        bottom = ref.reach(0)
+        ke = None if bottom is None else ref.I * (ref.omega0**2 + 2 * ref.U(ref.theta0)) / 2
+        rows.append(Row("KE_bottom", value(report, "KE_bottom"), ke, closed, "" if bottom is not None else "an angle never reached gets an ω"))
+        if ref.lam and abs(ref.theta0) < mpmath.pi and abs(ref.E / ref.U(mpmath.pi) - 1) < 1e-11:
+            return rows  # just the energy to reach the top: which side of it the rounding puts it is a toss
+        turn = ref.amplitude()
+        scale = _turning_scale(ref, turn) if turn is not None else 1.0
+        rows.append(Row("amplitude", value(report, "amplitude"), turn, closed * scale, floor=abs(ref.theta0) / 1e3))
+        if ref.lam:
+            rise = ref.rise()
+            reach = mpf(0) if turn is None else ref.d * (abs(mpmath.cos(ref.theta0)) + abs(mpmath.cos(turn)))
+            rows.append(Row("rise", value(report, "rise"), rise, closed * scale * 10, floor=reach * 1e-3))
+    return rows
+
+
+def _component_rows(report, ref, suffix, theta, omega, scale=1.0) -> list[Row]:
+    """The pivot's force along and across the line to the centre of mass, horizontal and vertical."""
+    with mp.workdps(DPS):
+        forces = ref.components(theta, omega)
+        size = ref.m * (ref.g + ref.d * abs(ref.dU1(mpf(theta))) + ref.d * mpf(omega) ** 2)
+        names = ("radial", "tangential", "horizontal", "vertical")
+        return [Row(f"pivot_{name}{suffix}", value(report, f"pivot_{name}{suffix}"), force, CLOSED * 4 * scale, floor=size)
+                for name, force in zip(names, forces)]
 
 
 def check_time(kw, ref, extra, time=None):

@@ -11,7 +11,6 @@ from references.point import atwood, constant_alpha, point, viscous_drive
 
 CLOSED = 1e-13
 KINDS = ("torque", "torque_from_rest", "alpha", "steady", "impulse", "atwood_time", "atwood_distance")
-REST = "a point under a negative torque from rest: a_angle0 = −π/2 (its a_t taken against +θ, not along the motion it starts)"
 
 
 def _cond(*terms) -> float:
@@ -91,7 +90,6 @@ def check_point(kw, extra):
         rows = []
         if kind not in ("atwood_time", "atwood_distance"):
             rows.append(Row("omega" if kind != "impulse" else "omega1", value(report, "omega" if kind != "impulse" else "omega1"), w, CLOSED * cw))
-        rest = REST if w0 == 0 and a0 < 0 else ""
         rows += [Row("v_t", value(report, "v_t"), end["v_t"], CLOSED * cw), Row("a_c", value(report, "a_c"), end["a_c"], 2 * CLOSED * cw),
                  Row("a_t", value(report, "a_t"), end["a_t"], CLOSED),
                  Row("a_total", value(report, "a_total"), end["a_total"], 2 * CLOSED * cw),
@@ -100,6 +98,6 @@ def check_point(kw, extra):
             rows.append(Row("s", value(report, "s"), end["s"], CLOSED * cth))
         rows += [Row("v_t0", value(report, "v_t0"), first["v_t"], CLOSED), Row("a_c0", value(report, "a_c0"), first["a_c"], CLOSED),
                  Row("a_total0", value(report, "a_total0"), first["a_total"], CLOSED),
-                 Row("a_angle0", value(report, "a_angle0"), first["a_angle"], CLOSED, rest)]
+                 Row("a_angle0", value(report, "a_angle0"), first["a_angle"], CLOSED)]
     return [row for row in rows if not (row.got is None and row.exact is not None and row.name in ("s",) and kind == "impulse")]
 

@@ -9,7 +9,6 @@ from references.spin import PowerMotion, in_time_torque
 
 STEPPED = 1e-8  # rk45 at rtol 1e-10 (a power against losses has no closed form)
 CLOSED = 1e-13
-SPLIT = "under --power, work_viscous and work_drag are split wrongly where both act (their sum holds)"
 KINDS = ("power_until", "power_time", "power_near_steady", "load_stop", "power_lossless", "in_time", "in_time_friction")
 
 
@@ -117,8 +116,7 @@ def check_spin(kw, extra):
         energy = max(abs(motion.I * w0 * w0 / 2), abs(ref["KE"]), abs(ref["work_drive"]))
         for name in names:  # each work is held to the budget of the whole energy (the stepper's norm)
             if ref[name] != 0:
-                known = SPLIT if name in ("work_viscous", "work_drag") and extra["b"] and extra["k"] else ""
-                rows.append(Row(name, value(report, name), ref[name], budget * slow, known, floor=energy if not lossless else 0))
+                rows.append(Row(name, value(report, name), ref[name], budget * slow, floor=energy if not lossless else 0))
     return rows
 
 

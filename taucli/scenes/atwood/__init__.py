@@ -8,6 +8,7 @@ function that reads the options, picks the model and solves it:
     steps.py          the machine's worked steps
     stepped.py        a stepped pulley, each string on its own step (solve_stepped)
     capstan.py        a string that may slide over the rim (solve_rim)
+    fixed_drum.py     a rope over a drum that cannot turn (solve_fixed_drum)
     travel.py         the motion after --distance or at --time, and the trajectory
     pulley_point.py   --at r: a point on the pulley
 """
@@ -21,6 +22,7 @@ from taucli.errors import InputError
 from taucli.report import Report
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.atwood.capstan import solve_rim
+from taucli.scenes.atwood.fixed_drum import solve_fixed_drum
 from taucli.scenes.atwood.machine import Machine, solve, solve_machine
 from taucli.scenes.atwood.pulley import Pulley, with_parts
 from taucli.scenes.atwood.pulley_point import on_the_pulley
@@ -55,6 +57,7 @@ def atwood(
     same_side: bool = False,
     rim_mu: float | None = None,
     wrap: float | None = None,
+    fixed_drum: bool = False,
     part: Sequence = (),
     at: float | None = None,
 ) -> Report:
@@ -62,8 +65,13 @@ def atwood(
     table or a slope; pulls on them (--pull) and a drive on the pulley (--torque); the pulley is
     massless unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia;
     a stepped pulley with --radius1/--radius2, both strings on one side with --same-side; a
-    string that may slide with --rim-mu; --at r, a point on the pulley; t_stop and distance_stop
-    with --v0."""
+    string that may slide with --rim-mu; a rope over a drum that cannot turn with --fixed-drum;
+    --at r, a point on the pulley; t_stop and distance_stop with --v0."""
+    if fixed_drum:
+        return _over_a_fixed_drum(m1, m2, g, rim_mu, mu_k, mu_s, wrap, v0, distance, time, at=at, pulley_mass=pulley_mass, pulley_radius=pulley_radius,
+                                  pulley_inertia=pulley_inertia,
+                                  axle_friction=axle_friction, part=part or None, radius1=radius1, radius2=radius2, same_side=same_side or None,
+                                  torque=torque, side1=side1, side2=side2, incline=incline, pull=pull or None)
     if at is not None:  # the machine, then the point on its pulley (#34: every option passed on, --wrap was left out)
         machine = dict(m1=m1, m2=m2, pulley_mass=pulley_mass, pulley_radius=pulley_radius, pulley_shape=pulley_shape, pulley_inertia=pulley_inertia,
                        axle_friction=axle_friction, side1=side1, side2=side2, incline=incline, mu_k=mu_k, mu_s=mu_s, pull=pull, torque=torque, g=g,
@@ -120,6 +128,24 @@ def atwood(
         None if not stepped else (r1, r2), same_side, ("side1", option2),
     )
     return assumed.applied(solve_machine(built, v0=v0 or 0.0, distance=distance, time=time, stop=v0 is not None))
+
+
+def _over_a_fixed_drum(m1, m2, g, rim_mu, mu_k, mu_s, wrap, v0, distance, time, **others) -> Report:
+    """Two hanging masses on a rope over a drum that cannot turn (fixed_drum.py): the coefficient
+    from --rim-mu (static and kinetic alike) or --mu-s and --mu-k; nothing of a pulley that turns."""
+    _refuse("does not apply with {fixed_drum}: the drum does not turn, and the rope's two hanging masses are the whole machine", **others)
+    if rim_mu is not None and (mu_k is not None or mu_s is not None):
+        raise InputError("mu_k" if mu_k is not None else "mu_s", "conflicts with {rim_mu}: give the drum's coefficient once (--rim-mu, or --mu-s and --mu-k)",
+                         example="{fixed_drum} {mu_s} 0.3 {mu_k} 0.25")
+    if rim_mu is None and mu_k is None and mu_s is None:
+        raise InputError("fixed_drum", "needs the rope's friction on the drum: {rim_mu}, or {mu_s} and {mu_k}", example="{fixed_drum} {rim_mu} 0.2")
+    if m1 is None or m2 is None:
+        raise InputError("m1" if m1 is None else "m2", "is required with {fixed_drum}", example="{m1} 250kg {m2} 100kg")
+    assumed = Assumed()
+    gravity = assumed.gravity(g)
+    kinetic, static = (rim_mu, rim_mu) if rim_mu is not None else (mu_k, mu_s)
+    return assumed.applied(solve_fixed_drum(m1, m2, gravity, kinetic, static, math.pi if wrap is None else wrap, v0=v0 or 0.0, distance=distance,
+                                            time=time, stop=v0 is not None))
 
 
 def _pulls(pulls) -> tuple[float, float]:

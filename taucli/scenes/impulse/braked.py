@@ -13,22 +13,28 @@ from taucli.options.impulse import COMMAND as TABLE
 from taucli.report import Report, Step, quantity_text, term
 from taucli.scenes.inertia import body_mass
 from taucli.scenes.contact import contacts
-from taucli.scenes.given import Brake, Face
+from taucli.errors import InputError
+from taucli.scenes.given import Band, Brake, Face
 from taucli.scenes.motion import Evolver, Loads, Method, evolve
 from taucli.table import Results
 
 
-def _motion(inertia: float, omega0: float, torque: float, brakes, faces, gravity, body_options: dict):
+def _motion(inertia: float, omega0: float, torque: float, brakes, faces, gravity, body_options: dict, bands=()):
     """The contacts' torques, and the motion under the torque against them (closed form)."""
-    contact = contacts(brakes, faces, body_options, body_mass(**body_options) if faces else body_options.get("mass"), gravity)
+    sided = [spec.source for spec in (*bands, *(shoe for shoe in brakes if shoe.lever is not None and shoe.offset))]
+    if sided and omega0 and torque and (omega0 > 0) != (torque > 0):
+        raise InputError(sided[0], "takes the torque for the sense the body turns, and a torque against ω₀ would stop it and turn it back "
+                         "(the tight and slack ends, or the friction's moment, change over): give a torque along ω₀, or work the turn back in a second run",
+                         example="{torque} 5N*m {omega0} 100rpm")
+    contact = contacts(brakes, faces, body_options, body_mass(**body_options) if faces else body_options.get("mass"), gravity, bands)
     loads = Loads(drive=torque, friction=contact.kinetic, static=contact.static)
     return contact, evolve(inertia, loads, omega0, Evolver(Method("exact")))
 
 
-def braked_kinematics(inertia: float, omega0: float, torque: float, duration: float, brakes, faces, gravity, body_options: dict) -> dict:
+def braked_kinematics(inertia: float, omega0: float, torque: float, duration: float, brakes, faces, gravity, body_options: dict, bands=()) -> dict:
     """α at the start and at the end of Δt (friction against the motion; held: 0), and the net
     angle turned, for a point on the body (--at)."""
-    _, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options)
+    _, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options, bands)
     return {"alpha0": motion.initial_rate, "alpha": motion.rate_at(duration), "theta": motion.state_at(duration)[1]}
 
 
@@ -43,13 +49,14 @@ def solve_braked(
     body_options: dict,
     *,
     inertia_steps: Sequence[Step] = (),
+    bands: Sequence[Band] = (),
 ) -> Report:
     """A constant torque τ over Δt against a constant Coulomb torque τ_f of the brakes and faces
     (static μ holding the body at rest): I dω/dt = τ − τ_f·sgn ω in each stretch of motion one
     way; ω₁ at Δt, J = τΔt applied, J_net = I(ω₁ − ω₀), and each friction's torque, work over the
     angle swept both ways, and power at the start. ``gravity`` gives the weight on a face with no
     force= (None where every face has one); ``body_options`` give the radii the contacts take."""
-    contact, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options)
+    contact, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options, bands)
     omega_end, theta = motion.state_at(duration)
     stop = motion.stop if motion.stop is not None and motion.stop[0] < duration else None
     # the angle swept both ways: to the stop, then (turned back) from there
@@ -67,11 +74,13 @@ def solve_braked(
     results.put("KE1", energy1, " Δt")
     results.put("work", energy1 - energy0)
     speed0 = abs(omega0)
-    for name, share in (("brake", contact.brake), ("face", contact.face)):
-        if (name == "brake" and brakes) or (name == "face" and faces):
+    for name, share, given in (("brake", contact.brake, brakes), ("face", contact.face, faces), ("band", contact.band, bands)):
+        if given:
             results.put(f"torque_{name}", share)
             results.put(f"work_{name}", share * swept, " during Δt")
             results.put(f"power_{name}", share * speed0, " at the start")
+    for key, value, part in contact.details:
+        results.put(key, value, part)
     notes = list(contact.notes)
     if motion.held_from_start:
         notes.append(f"static friction holds the body: |τ| = {quantity_text(abs(torque), 'N*m')} does not exceed {quantity_text(contact.static, 'N*m')}")
@@ -79,8 +88,8 @@ def solve_braked(
         notes.append(f"the body stops at t = {quantity_text(stop[0], 's')} within Δt"
                      + (", and the torque turns it back, friction reversed" if motion.second is not None else ", and static friction holds it"))
     steps = [*inertia_steps, *contact.steps]
-    steps.append(Step("Friction torques add", "τ_f = " + " + ".join(s for s, v in (("τ_b", contact.brake), ("τ_face", contact.face)) if v),
-                      " + ".join(term(v, "N*m") for v in (contact.brake, contact.face) if v), quantity_text(contact.kinetic, "N*m"),
+    steps.append(Step("Friction torques add", "τ_f = " + " + ".join(symbol for _, symbol, _ in contact.shares),
+                      " + ".join(term(torque, "N*m") for _, _, torque in contact.shares), quantity_text(contact.kinetic, "N*m"),
                       "each is a constant torque against the motion: together one friction torque τ_f"))
     if not motion.held_from_start:
         alpha = motion.initial_rate

@@ -7,10 +7,11 @@ from collections.abc import Iterable, Sequence
 from taucli.errors import InputError, Unused
 from taucli.report import Report, Step
 from taucli.scenes.assumed import Assumed
-from taucli.scenes.given import Brake, Couple, Face, Particle
+from taucli.scenes.given import Band, Brake, Couple, Face, Particle
 from taucli.scenes.impulse.balance import solve_balance
 from taucli.scenes.impulse.braked import braked_kinematics, solve_braked
 from taucli.scenes.impulse.changing_inertia import solve_changing_inertia
+from taucli.scenes.impulse.clutch import solve_clutch
 from taucli.scenes.impulse.meeting import solve_meeting
 from taucli.scenes.impulse.point import point_after
 from taucli.scenes.impulse.sampled import solve_profile
@@ -35,6 +36,7 @@ def impulse(
     at: float | str | None = None,
     brake: Sequence[Brake] = (),
     face: Sequence[Face] = (),
+    band: Sequence[Band] = (),
     g: float | None = None,
     **body_options,
 ) -> Report:
@@ -43,30 +45,32 @@ def impulse(
     point of the body before and after.
 
     The model, by what is given: --brake or --face, a constant torque against friction
-    (braked); --particle or --couple, L conserved as they meet the body (meeting);
+    (braked); --particle or --couple, L conserved as they meet the body (meeting; a couple
+    with torque=, through a clutch that slips: clutch);
     --inertia-final, I₀ω₀ = I₁ω₁ (changing_inertia); --torque-profile, J = ∫τ dt (sampled);
     else τΔt = I(ω₁ − ω₀) (balance). Each refuses what does not belong to it, then solves.
     A push (--force at --lever) adds its torque F r sin φ to --torque's."""
     if at is not None:
         report = impulse(omega0=omega0, omega1=omega1, torque=torque, force=force, lever=lever, push_angle=push_angle, duration=duration, inertia_final=inertia_final,
-                         torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, g=g, **body_options)
+                         torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, band=band, g=g, **body_options)
         given = {"omega0": omega0, "omega1": omega1, "torque": _with_push(torque, force, lever, push_angle)[0], "duration": duration, "inertia": _body(body_options)[0]}
-        if brake or face:  # friction acts too: α and the angle from the braked motion (it may stop, or turn back)
+        if brake or face or band:  # friction acts too: α and the angle from the braked motion (it may stop, or turn back)
             w0 = report.inputs["omega0"].value if "omega0" in report.inputs else omega0
             g_face = g if g is not None else (report.inputs["g"].value if "g" in report.inputs else None)
-            given.update(braked_kinematics(given["inertia"], w0, given["torque"], duration, tuple(brake), tuple(face), g_face, body_options))
+            given.update(braked_kinematics(given["inertia"], w0, given["torque"], duration, tuple(brake), tuple(face), g_face, body_options, tuple(band)))
         return point_after(report, at, body_options.get("radius", body_options.get("outer_radius")), given)
 
     inertia, inertia_steps = _body(body_options)
     torque, formed = _with_push(torque, force, lever, push_angle)
     inertia_steps = (*inertia_steps, *formed)
-    if brake or face:
+    if brake or face or band:
         _check_braked(method, g, face, inertia, omega1, torque, duration,
                       {"inertia_final": inertia_final, "torque_profile": torque_profile, "particle": particle or None, "couple": couple or None})
         assumed = Assumed()
         omega0 = _at_rest_unless_given(omega0, assumed)
-        gravity = assumed.gravity(g) if any(plate.force is None for plate in face) else None
-        return assumed.applied(solve_braked(inertia, omega0, torque, duration, tuple(brake), tuple(face), gravity, body_options, inertia_steps=inertia_steps))
+        gravity = assumed.gravity(g) if any(plate.by_weight for plate in face) else None
+        return assumed.applied(solve_braked(inertia, omega0, torque, duration, tuple(brake), tuple(face), gravity, body_options,
+                                            inertia_steps=inertia_steps, bands=tuple(band)))
     if g is not None:
         raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     if particle or couple:
@@ -74,6 +78,11 @@ def impulse(
                        {"omega1": omega1, "torque": torque, "duration": duration, "inertia_final": inertia_final, "torque_profile": torque_profile})
         assumed = Assumed()
         omega0 = _at_rest_unless_given(omega0, assumed)
+        if any(c.torque is not None for c in couple):
+            if particle or len(couple) > 1:
+                raise InputError("couple", "with torque= (a clutch that slips) is solved for one {couple} and the body alone: "
+                                 "give the other bodies and the particles a run each", example='{couple} "inertia=3kg*m^2 omega0=0 torque=50N*m"')
+            return assumed.applied(solve_clutch(inertia, omega0, couple[0], inertia_steps=inertia_steps))
         return assumed.applied(solve_meeting(inertia, omega0, tuple(particle), tuple(couple), inertia_steps=inertia_steps))
     if inertia_final is None and torque_profile is None:
         if method != "auto":
@@ -121,16 +130,16 @@ def _check_braked(method: str, g: float | None, faces: Sequence[Face], inertia: 
     needs I, τ and Δt; it takes none of ``others``."""
     if method != "auto":
         raise InputError("method", "applies to {torque_profile} (trapezoid or simpson); a braked impulse has a closed form")
-    if g is not None and not any(plate.force is None for plate in faces):
+    if g is not None and not any(plate.by_weight for plate in faces):
         raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     for name, value in others.items():
         if value is not None:
-            raise InputError(name, "does not combine with {brake} or {face} here: they act with a constant {torque} over {duration}")
+            raise InputError(name, "does not combine with {brake}, {face} or {band} here: they act with a constant {torque} over {duration}")
     if omega1 is not None:
-        raise InputError("omega1", "is what {brake} and {face} let this solve for: leave it out")
+        raise InputError("omega1", "is what {brake}, {face} and {band} let this solve for: leave it out")
     for name, value in (("inertia", inertia), ("torque", torque), ("duration", duration)):
         if value is None:
-            raise InputError(name, "is required with {brake} or {face}: the friction's share is worked out over the motion, from the start",
+            raise InputError(name, "is required with {brake}, {face} or {band}: the friction's share is worked out over the motion, from the start",
                              example={"inertia": "{inertia} 0.5kg*m^2", "torque": "{torque} 5N*m", "duration": "{duration} 2s"}[name])
 
 

@@ -23,21 +23,26 @@ motion.py picks the model for --method and asks it; body.py reads the body, poin
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
+from taucli.errors import InputError
 from taucli.options.pendulum import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, deferred
+from taucli.options.pendulum import COMPONENTS
+from taucli.report import DeferredSteps, Report, deferred, fmt
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.pendulum.body import on_pivot, read_body
 from taucli.scenes.pendulum.exact import exact_model
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.motion import choose, pick_model, put_motion, put_state, solve, trajectory
 from taucli.scenes.pendulum.pivot import put_pivot
+from taucli.scenes.pendulum.reach import put_reach
 from taucli.scenes.pendulum.point import put_point
 from taucli.scenes.pendulum.small_angle import small_angle_note
 from taucli.scenes.pendulum.stepped import DEFAULT_DT, DEFAULT_RTOL, BlewUp, Stepped, withhold_if_off
 from taucli.scenes.pendulum.steps import method_words, model_words, worked_steps
 from taucli.scenes.pendulum.swing import Swing, put_energy
+from taucli.scenes.pendulum.zero import Zero
 from taucli.table import Results
 
 __all__ = ["BlewUp", "Harmonic", "Stepped", "Swing", "exact_model", "pendulum"]
@@ -54,19 +59,34 @@ def pendulum(
     cm_distance: float | None = None,
     angle0: float | None = None,
     omega0: float | None = None,
+    omega_bottom: float | None = None,
+    from_top: bool | None = None,
     torsion: float | None = None,
     g: float | None = None,
     angle: float | None = None,
     time: float | None = None,
     at: float | None = None,
+    components: bool | None = None,
     method: str | None = None,
     dt: float | None = None,
     rtol: float | None = None,
     **dims: float | None,
 ) -> Report:
     """``taucli pendulum``: the body (--inertia with --mass and --cm-distance, or --shape ...), its
-    start (--angle0 from the downward vertical, --omega0), gravity and --torsion, what to report."""
+    start (--angle0 from the downward vertical, or the upward one --from-top; --omega0, or
+    --omega-bottom from the bottom), gravity and --torsion, what to report."""
     assumed = Assumed()
+    zero = Zero(bool(from_top))
+    if from_top and torsion:
+        raise InputError("from_top", "is for a body under gravity alone: a spring's torque κθ is zero at the bottom, where θ is measured from")
+    for name, given in (("angle0", angle0), ("angle", angle)):
+        if from_top and given is not None and abs(given) > math.pi:
+            raise InputError(name, "expected an angle from −180 to 180 deg from the top", got=f"{fmt(math.degrees(given))} deg")
+    if from_top and angle0 is None and omega_bottom is None:
+        angle0 = 0.0  # --angle0's default, 0: from the top, the top
+    angle0, angle = zero.inward(angle0), zero.inward(angle)
+    if omega_bottom is not None:
+        angle0, omega0 = start_at_the_bottom(omega_bottom, angle0, omega0, zero)
     body = read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion, assumed)
     swing, gravity = on_pivot(body, torsion, g, angle0, omega0, angle, assumed)
     method = choose(method or "auto", swing.gravity_torque > 0, swing.torsion > 0)
@@ -75,23 +95,39 @@ def pendulum(
     notes: list[str] = []
 
     exact = exact_model(swing)
-    put_energy(results, notes, swing, body.cm_distance, angle, exact)  # energy and the exact motion: the same for every method
+    put_energy(results, notes, swing, body.cm_distance, angle, exact, zero)  # energy and the exact motion: the same for every method
+    put_reach(results, notes, swing, body.cm_distance, exact, zero)
     model = pick_model(swing, method, exact, dt, rtol)
     motion = solve(model, exact, method, angle, time, notes)
 
-    put_motion(results, notes, swing, exact, method, motion, angle)
-    put_pivot(results, swing, body.mass, body.cm_distance, gravity)
-    put_state(results, notes, motion.state, angle, time)
+    put_motion(results, notes, swing, exact, method, motion, angle, zero)
+    speed_at_angle = results["omega"].value if angle is not None else None
+    put_pivot(results, swing, body.mass, body.cm_distance, gravity, angle, None if speed_at_angle is None else abs(speed_at_angle), zero)
+    if not components:
+        for key in COMPONENTS:
+            results.pop(key, None)
+    put_state(results, notes, motion.state, angle, time, zero)
     if method == "small-angle" and swing.gravity_torque:
         notes.append(small_angle_note(swing, exact))
     if isinstance(model, Stepped):
-        withhold_if_off(results, notes, model, exact, motion.period, motion.t_bottom, motion.state, time, angle)
+        withhold_if_off(results, notes, model, exact, motion.period, motion.t_bottom, motion.state, time, angle, zero)
 
-    steps = DeferredSteps(worked_steps, swing, body.mass, body.cm_distance, gravity, body.steps, dict(results), exact, method, angle)
+    steps = DeferredSteps(worked_steps, swing, body.mass, body.cm_distance, gravity, body.steps, dict(results), exact, method, angle, zero)
     report = Report(
         "pendulum", model_words(swing, method, exact, body.words), method_words(swing, method, dt, rtol), results, steps, notes,
-        trajectory=deferred(trajectory, model, time, motion.period, motion.t_bottom),
+        trajectory=deferred(trajectory, model, time, motion.period, motion.t_bottom, zero),
     )
     if at is not None:
-        put_point(report, swing, at, angle, gravity)
+        put_point(report, swing, at, angle, gravity, zero)
     return assumed.applied(report)
+
+
+def start_at_the_bottom(omega_bottom: float, angle0: float | None, omega0: float | None, zero: Zero) -> tuple[float, float]:
+    """(θ₀, ω₀) for --omega-bottom: the body starts at the bottom with that angular velocity."""
+    if omega0 is not None:
+        raise InputError("omega_bottom", "conflicts with {omega0}: give the speed at the start or at the bottom", example="{omega_bottom} 3rad/s")
+    if angle0 is not None and angle0 != 0:
+        bottom = "180deg" if zero.top else "0"
+        raise InputError("omega_bottom", f"starts the body at the bottom: {{angle0}} is then {bottom}; for a start elsewhere give {{angle0}} with {{omega0}}",
+                         example="{angle0} 30deg {omega0} 2rad/s")
+    return 0.0, omega_bottom

@@ -11,7 +11,6 @@ Each model gives state(t) = (θ, ω), time_to(θ) (the first time it reaches an 
 
 from __future__ import annotations
 
-import math
 from typing import NamedTuple
 
 from taucli import numerics
@@ -22,6 +21,7 @@ from taucli.scenes.pendulum.exact import Circulation, Separatrix
 from taucli.scenes.pendulum.small_angle import small_angle_model
 from taucli.scenes.pendulum.stepped import STEPPERS, BlewUp, Stepped
 from taucli.scenes.pendulum.swing import Swing
+from taucli.scenes.pendulum.zero import Zero
 from taucli.table import Results
 
 
@@ -86,54 +86,61 @@ def solve(model, exact, method: str, angle: float | None, time: float | None, no
     return Motion(period, t_bottom, t_angle, state)
 
 
-def put_motion(results: Results, notes: list[str], swing: Swing, exact, method: str, motion: Motion, angle: float | None) -> None:
+def put_motion(results: Results, notes: list[str], swing: Swing, exact, method: str, motion: Motion, angle: float | None, zero: Zero) -> None:
     """The period (of one turn where it goes over the top), the time to the bottom and to --angle."""
     circulating = isinstance(exact, Circulation)
     label = " of one turn (it goes over the top)" if circulating else " of the swing" + (" at this amplitude" if method != "small-angle" else ", small-angle model")
     results.put("period", motion.period, label)
     results.put("t_bottom", motion.t_bottom)
     balanced = isinstance(exact, Separatrix) and exact.balanced
-    if motion.t_bottom is None and not balanced and swing.speed_at(0.0) is not None and motion.period is not None:
+    if motion.t_bottom is None and not balanced and results["omega_bottom"].value is not None and motion.period is not None:
         notes.append("t_bottom: not found")
     if balanced:
         notes.append("balanced at the top: speeds at an angle are those of a body that has just left the top; it takes forever to leave")
     if angle is not None:
-        results.put("t_angle", motion.t_angle, f" θ = {fmt(math.degrees(angle))}°")
+        results.put("t_angle", motion.t_angle, f" {zero.text(angle)}")
 
 
-def put_state(results: Results, notes: list[str], state: tuple[float, float] | None, angle: float | None, time: float | None) -> None:
-    """θ at --time, and ω there unless --angle has ω already."""
+def put_state(results: Results, notes: list[str], state: tuple[float, float] | None, angle: float | None, time: float | None, zero: Zero) -> None:
+    """θ at --time (in the user's angles), and ω there unless --angle has ω already."""
     if time is None:
         return
     theta_t, omega_t = state if state is not None else (None, None)
-    results.put("theta", theta_t, f" at t = {fmt(time)} s")
+    results.put("theta", zero.outward(theta_t), f" from the {'upward' if zero.top else 'downward'} vertical at t = {fmt(time)} s")
     if angle is None:
         results.put("omega", omega_t, f" at t = {fmt(time)} s")
     else:
         notes.append("omega is given at --angle; theta at --time (run without --angle for ω at the time)")
 
 
-def trajectory(model, time: float | None, period: float | None, t_bottom: float | None) -> Trajectory:
-    """θ(t) and ω(t) to --time, else for two periods, else for 10 s; a stepper is stepped once
-    through 200 samples, within a budget of its own, and stops where it cannot go further."""
+def trajectory(model, time: float | None, period: float | None, t_bottom: float | None, zero: Zero) -> Trajectory:
+    """θ(t) and ω(t) to --time, else for two periods, else for 10 s (θ in the user's angles); a
+    stepper is stepped once through 200 samples, within a budget of its own, and stops where it
+    cannot go further."""
     if time:
         t_end, note = time, ""
     elif period:
         t_end, note = 2 * period, "plotted for two periods; --time to change"
     else:
         t_end, note = 10.0, "plotted for 10 s; --time to change"
-    curves = (("theta", "rad", "angle θ from the downward vertical"), ("omega", "rad/s", "angular velocity ω"))
+    curves = (("theta", "rad", f"angle from the {'upward' if zero.top else 'downward'} vertical"), ("omega", "rad/s", "angular velocity ω"))
     if isinstance(model, Stepped):
         stepper = Stepped(model.swing, model.method, model.dt, model.rtol, model.horizon)
-        points = [(0.0, stepper.swing.theta0, stepper.swing.omega0)]
+        points = [(0.0, zero.outward(stepper.swing.theta0), stepper.swing.omega0)]
         for i in range(1, 201):
             t = t_end * i / 200
             try:
-                points.append((t, *stepper.state(t)))
+                theta, omega = stepper.state(t)
+                points.append((t, zero.outward(theta), omega))
             except (numerics.TooManySteps, BlewUp):
                 t_end, note = points[-1][0], f"plotted for {fmt(points[-1][0])} s: {stepper.method} cannot go further"
                 break
         marks = ((t_bottom, "at the bottom"),) if t_bottom and t_bottom <= t_end else ()
         return Trajectory(curves, t_end, None, points=tuple(points), marks=marks, note=note)
     marks = ((t_bottom, "at the bottom"),) if t_bottom else ()
-    return Trajectory(curves, t_end, model.state, marks=marks, note=note)
+    state = model.state if not zero.top else lambda t: _outward(zero, *model.state(t))
+    return Trajectory(curves, t_end, state, marks=marks, note=note)
+
+
+def _outward(zero: Zero, theta: float, omega: float) -> tuple[float, float]:
+    return zero.outward(theta), omega

@@ -9,16 +9,16 @@ there; α from the torque there). a_t is taken along the motion, as everywhere
 
 from __future__ import annotations
 
-import math
 
 from taucli.options.pendulum import COMMAND as TABLE
 from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text
 from taucli.scenes.pendulum.swing import Swing, sine
+from taucli.scenes.pendulum.zero import Zero
 from taucli.scenes.point import along
 from taucli.table import Results
 
 
-def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravity: float) -> None:
+def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravity: float, zero: Zero) -> None:
     """A point at r from the pivot: a_t = rα along the motion, v_t = r|ω|, a_c = rω², at the start
     and at --angle; with a step that says why a rod's far end falls faster than g."""
     results = Results(TABLE)
@@ -42,7 +42,7 @@ def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravi
     ]
     if angle is not None:
         omega = report.results["omega"].value  # signed: as the body first gets there; None where it never does
-        where_at_angle = f"{where} at θ = {fmt(math.degrees(angle))}°"
+        where_at_angle = f"{where} at {zero.text(angle)}"
         alpha = None if omega is None else along(swing.accel(angle), omega)
         results.put("v_t", None if omega is None else r * abs(omega), where_at_angle)
         results.put("a_t", None if omega is None else r * alpha, where_at_angle)

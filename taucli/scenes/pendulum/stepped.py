@@ -14,6 +14,7 @@ import math
 from taucli import numerics
 from taucli.report import fmt
 from taucli.scenes.pendulum.swing import TWO_PI, Swing
+from taucli.scenes.pendulum.zero import Zero
 from taucli.table import Results
 
 STEPPERS = ("euler", "rk4", "rk45", "verlet")
@@ -121,7 +122,7 @@ def state_error(swing: Swing, exact, model: Stepped, time: float, state: tuple[f
 
 
 def withhold_if_off(results: Results, notes: list[str], model: Stepped, exact, period: float | None, t_bottom: float | None,
-                    state: tuple[float, float] | None, time: float | None, angle: float | None) -> None:
+                    state: tuple[float, float] | None, time: float | None, angle: float | None, zero: Zero = Zero()) -> None:
     """The stepper's error (period_error, then state_error at --time), with a note each; where it
     is more than WITHHELD_ABOVE its answers are withheld (null), with a note of what it gave and,
     for a fixed-step method of order p, the dt that would do: dt × (WITHHELD_ABOVE/10/error)^(1/p)."""
@@ -135,7 +136,7 @@ def withhold_if_off(results: Results, notes: list[str], model: Stepped, exact, p
         return
     order = {"euler": 1, "verlet": 2, "rk4": 4}.get(model.method)
     shown = "no full swing" if period is None else f"a period of {fmt(period, 6)} s"
-    shown += f" and θ = {fmt(state[0], 6)} rad at t = {fmt(time)} s" if state is not None else ""
+    shown += f" and {'φ' if zero.top else 'θ'} = {fmt(zero.outward(state[0]), 6)} rad at t = {fmt(time)} s" if state is not None else ""
     better = f"; --dt {fmt(model.dt * (WITHHELD_ABOVE / 10 / error) ** (1 / order), 2)}s would do" if order and math.isfinite(error) else ""
     notes.append(
         f"{model.method}'s answers are withheld: it gave {shown}, {fmt(error, 2) if math.isfinite(error) else 'far'} off the "

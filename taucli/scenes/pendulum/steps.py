@@ -15,6 +15,7 @@ from taucli.scenes.pendulum.by_energy import ByEnergy
 from taucli.scenes.pendulum.exact import Circulation, Libration, Separatrix
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.stepped import STEPPERS
+from taucli.scenes.pendulum.pivot import pivot_force
 from taucli.scenes.pendulum.swing import Swing, sine
 
 
@@ -41,7 +42,7 @@ def method_words(swing: Swing, method: str, dt: float, rtol: float) -> str:
     )
 
 
-def worked_steps(swing: Swing, mass, cm_distance, gravity, body_steps, results, exact, method, angle) -> list[Step]:
+def worked_steps(swing: Swing, mass, cm_distance, gravity, body_steps, results, exact, method, angle, zero) -> list[Step]:
     """The body's steps, then: τ₀ = −(mgd sin θ₀ + κθ₀) and α₀ = |τ₀|/I; ω at the bottom (and at
     --angle) from energy; T₀ = 2π√(I/(mgd + κ)); the period by the method used; the pivot's force
     at the start and at the bottom; L = I/(md); ω₀,over. Each shows the result as the solver put
@@ -50,6 +51,17 @@ def worked_steps(swing: Swing, mass, cm_distance, gravity, body_steps, results, 
     inertia, big_g, kappa, theta0, omega0 = swing.inertia, swing.gravity_torque, swing.torsion, swing.theta0, swing.omega0
     steps = list(body_steps)
     deg0 = f"{fmt(math.degrees(theta0))}°"
+    if zero.top:
+        steps.append(
+            Step(
+                "Angles from the top, worked from the bottom",
+                "θ = φ − 180° (φ > 0), φ + 180° (φ ≤ 0)",
+                f"φ₀ = {fmt(math.degrees(zero.outward(theta0)))}°",
+                f"θ₀ = {deg0}",
+                "the steps measure θ from the downward vertical, where the potential energy is least; "
+                "the results give every angle from the top again, in the same sense (ω is the same in both)",
+            )
+        )
     terms, numbers = [], []
     if big_g:
         terms.append("mgd sin θ₀")
@@ -101,6 +113,7 @@ def worked_steps(swing: Swing, mass, cm_distance, gravity, body_steps, results, 
                 "U(θ) = mgd(1 − cos θ) + ½κθ², the potential energy of gravity and the spring",
             )
         )
+    steps += reach_steps(swing, cm_distance, results, zero)
     steps.append(
         Step(
             "Period of small swings",
@@ -184,7 +197,7 @@ def worked_steps(swing: Swing, mass, cm_distance, gravity, body_steps, results, 
             Step(
                 "Force of the pivot on the body at the start",
                 "F_r = m(dω² + g cos θ), F_t = m(dα + g sin θ), F = √(F_r² + F_t²)",
-                f"√(({fmt(mass * (cm_distance * omega0 * omega0 + gravity * math.cos(theta0)))} N)² + ({fmt(mass * (cm_distance * swing.accel(theta0) + gravity * sine(theta0)))} N)²)",
+                "√(({}N)² + ({}N)²)".format(*(fmt(x) + " " for x in pivot_force(swing, mass, cm_distance, gravity, theta0, abs(omega0))[:2])),
                 quantity_text(value("pivot_force0"), "N"),
                 f"with m = {fmt(mass)} kg, d = {fmt(cm_distance)} m, ω = {fmt(abs(omega0))} rad/s, θ = {deg0}; Newton's second law for the centre of mass, which moves on a circle of radius d: F + mg = m a_cm",
             )
@@ -197,6 +210,19 @@ def worked_steps(swing: Swing, mass, cm_distance, gravity, body_steps, results, 
                     f"{fmt(mass)} kg × ({fmt(cm_distance)} m × ({fmt(value('omega_bottom'))} rad/s)² + {fmt(gravity)} m/s²)",
                     quantity_text(value("pivot_force_bottom"), "N"),
                     "at the bottom α = 0 (gravity has no lever arm), so the pivot holds up the weight and supplies the centripetal force",
+                )
+            )
+    for where, key in (("at the start", "0"), ("at the bottom", "_bottom"), ("at --angle", "")):
+        if value("pivot_radial" + key) is not None:
+            steps.append(
+                Step(
+                    f"The pivot's force as components {where}",
+                    "F_h = F_t cos θ − F_r sin θ, F_v = F_r cos θ + F_t sin θ",
+                    f"F_r = {quantity_text(value('pivot_radial' + key), 'N')} (towards the pivot), "
+                    f"F_t = {quantity_text(value('pivot_tangential' + key), 'N')} (towards larger angles)",
+                    f"F_h = {quantity_text(value('pivot_horizontal' + key), 'N')}, F_v = {quantity_text(value('pivot_vertical' + key), 'N')} (up)",
+                    "F_r and F_t are along and across the line from the pivot to the centre of mass, which turns with the body; "
+                    "F_h is positive towards the side of positive angles" + (" (from the top)" if zero.top else ""),
                 )
             )
     if value("equivalent_length") is not None:
@@ -220,3 +246,44 @@ def worked_steps(swing: Swing, mass, cm_distance, gravity, body_steps, results, 
             )
         )
     return steps
+
+
+def reach_steps(swing: Swing, cm_distance: float, results, zero) -> list[Step]:
+    """The turning angle from energy, the rise of the centre of mass, KE at the bottom."""
+    value = lambda key: results[key].value if key in results else None  # noqa: E731
+    steps = []
+    amplitude = value("amplitude")
+    if amplitude is not None and (swing.omega0 or swing.theta0):
+        steps.append(
+            Step(
+                "How far it swings: the turning angle (energy)",
+                "U(θₐ) = ½Iω₀² + U(θ₀), the first θₐ along the motion",
+                f"½ × {quantity_text(swing.inertia, 'kg*m**2')} × ({quantity_text(abs(swing.omega0), 'rad/s')})² + {quantity_text(swing.potential(swing.theta0), 'J')}",
+                f"{'φ' if zero.top else 'θ'}ₐ = {fmt(math.degrees(amplitude))}°" + (" from the top" if zero.top else ""),
+                "it turns where all its kinetic energy has gone into potential energy"
+                + (": sin(θₐ/2) = k, k² = sin²(θ₀/2) + Iω₀²/(4mgd)" if swing.gravity_torque and not swing.torsion else ""),
+            )
+        )
+        if value("rise") is not None:
+            steps.append(
+                Step(
+                    "Rise of the centre of mass to the turning angle",
+                    "h = d(cos θ₀ − cos θₐ)" + (" = Iω₀²/(2mg)" if not swing.torsion else ""),
+                    f"{fmt(cm_distance)} m × (cos {_degrees(swing.theta0)} − cos {_degrees(zero.inward(amplitude))})",
+                    quantity_text(value("rise"), "m"),
+                    "measured from the start; under gravity alone mgh is the kinetic energy it started with",
+                )
+            )
+    if value("KE_bottom") is not None:
+        steps.append(
+            Step("Kinetic energy at the bottom", "KE_b = ½Iω_b²",
+                 f"½ × {quantity_text(swing.inertia, 'kg*m**2')} × ({quantity_text(value('omega_bottom'), 'rad/s')})²",
+                 quantity_text(value("KE_bottom"), "J"), "all the potential energy it loses on the way down, beside what it started with")
+        )
+    return steps
+
+
+def _degrees(angle: float) -> str:
+    """An angle in degrees for a numbers line, a negative one in parentheses with a true minus."""
+    text = f"{fmt(math.degrees(angle))}°"
+    return f"(−{text[1:]})" if text.startswith("-") else text

@@ -11,7 +11,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.report import fmt
 from taucli.table import Results
 
 TWO_PI = 2 * math.pi
@@ -61,12 +60,22 @@ def first_sense(exact, angle: float, arrives: float) -> float:
     return -1.0 if omega < 0 else 1.0
 
 
+def reached_speed(swing: Swing, exact, theta: float) -> float | None:
+    """|ω| at θ from energy where the exact motion gets there; None where it never does, for too
+    little energy or for a top it cannot pass between (a spring's well beyond the bottom)."""
+    speed = swing.speed_at(theta)
+    if speed is None or getattr(exact, "balanced", False):
+        return speed
+    reaches = exact.reaches(theta) if hasattr(exact, "reaches") else exact.time_to(theta) is not None
+    return speed if reaches else None
+
+
 def sine(theta: float) -> float:
     """sin θ, with the double nearest 180° (math.pi) read as 180° itself: 0, not 1.2e-16."""
     return 0.0 if abs(theta) == math.pi else math.sin(theta)
 
 
-def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: float, angle: float | None, exact) -> None:
+def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: float, angle: float | None, exact, zero) -> None:
     """I (and d under gravity); α₀ = |τ₀|/I; ω at the bottom from energy, and at --angle from
     energy with the sign it has when the body first gets there (from the exact motion, which also
     says whether it gets there: energy at the angle is not enough where a top lies between); T₀;
@@ -77,7 +86,10 @@ def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: fl
     if swing.gravity_torque:
         results.put("cm_distance", cm_distance)
     results.put("alpha0", abs(swing.accel(swing.theta0)))
-    results.put("omega_bottom", swing.speed_at(0.0))
+    bottom = reached_speed(swing, exact, 0.0)
+    results.put("omega_bottom", bottom)
+    if bottom is None and swing.speed_at(0.0) is not None:
+        notes.append("omega_bottom: the body never reaches the bottom (θ = 0): a top it cannot pass lies between")
     if angle is not None:
         speed_at_angle = swing.speed_at(angle)
         balanced = getattr(exact, "balanced", False)  # at rest on the top: the speeds of a body that has just left it, either way
@@ -86,16 +98,16 @@ def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: fl
             pass
         elif speed_at_angle is not None and arrives is None:
             speed_at_angle = None
-            notes.append(f"the body never reaches θ = {fmt(math.degrees(angle))}°: a top it cannot pass lies between")
+            notes.append(f"the body never reaches {zero.text(angle)}: a top it cannot pass lies between")
         elif speed_at_angle is None:
-            notes.append(f"the body never reaches θ = {fmt(math.degrees(angle))}°: it has too little energy")
+            notes.append(f"the body never reaches {zero.text(angle)}: it has too little energy")
         else:
             speed_at_angle *= first_sense(exact, angle, arrives)
-        results.put("omega", speed_at_angle, f" at θ = {fmt(math.degrees(angle))}°, when it first gets there")
+        results.put("omega", speed_at_angle, f" at {zero.text(angle)}, when it first gets there")
     results.put("period_small", swing.small_period())
     if swing.gravity_torque:
         theta0, omega0 = swing.theta0, swing.omega0
-        half = math.cos(theta0 / 2)  # correctly rounded for the double θ₀, near the top too
+        half = 0.0 if abs(theta0) == math.pi else math.cos(theta0 / 2)  # correctly rounded for the double θ₀, near the top too; the double nearest 180° is the top
         rise = 2 * swing.gravity_torque * half * half + swing.torsion * (math.pi - abs(theta0)) * (math.pi + abs(theta0)) / 2
         omega0_over = math.sqrt(2 * max(rise, 0.0) / swing.inertia)
         if swing.torsion == 0:

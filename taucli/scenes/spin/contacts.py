@@ -1,5 +1,6 @@
-"""Brakes and pressed faces on a wheel (#24): their Coulomb torques (taucli.scenes.contact) added
-to the axle's friction before the motion, and their shares of its work and power after it.
+"""Brakes, pressed faces and band brakes on a wheel (#24, #35): their Coulomb torques
+(taucli.scenes.contact) added to the axle's friction before the motion, and their shares of its
+work and power after it.
 """
 
 from __future__ import annotations
@@ -29,13 +30,17 @@ def split_contacts(report: Report, axle: float, contact) -> Report:
             continue
         kind = key.partition("_")[0]
         part = value.label.partition("takes")[2]
+        if value.value is None:  # withheld (a stepper's error estimate): so is each share
+            results[key] = value
+            for name, _, _ in contact.shares:
+                results.put(f"{kind}_{name}", None, part)
+            continue
         share = value.value / total  # the angle swept, or |ω|
         if axle:
             results.put(key, axle * share, part)
-        for name, torque in (("brake", contact.brake), ("face", contact.face)):
+        for name, symbol, torque in contact.shares:
             if torque:
                 results.put(f"{kind}_{name}", torque * share, part)
-                symbol = "τ_b" if name == "brake" else "τ_face"
                 if kind == "work":
                     steps.append(Step(f"Energy the {name}s take", f"W_{name} = {symbol} × angle swept",
                                       f"{quantity_text(torque, 'N*m')} × {quantity_text(share, 'rad')}", quantity_text(torque * share, "J"),
@@ -44,23 +49,28 @@ def split_contacts(report: Report, axle: float, contact) -> Report:
                     steps.append(Step(f"Power the {name}s take", f"P_{name} = {symbol}·|ω|",
                                       f"{quantity_text(torque, 'N*m')} × {quantity_text(share, 'rad/s')}", quantity_text(torque * share, "W"),
                                       "power is torque times angular speed"))
-    steps = [replace(step, title="Energy all friction takes (axle, brakes, faces)") if step.title == "Energy friction takes" else step for step in steps]
+    steps = [replace(step, title="Energy all friction takes (axle, brakes, faces, bands)") if step.title == "Energy friction takes" else step for step in steps]
     return Report(report.scene, report.model, report.method, results, steps, report.notes, report.inputs, report.tables, report.trajectory)
 
 
-def put_contacts(brakes, faces, body_options: dict, rim: float | None, assumed: Assumed, g: float | None, results: Results, steps: list[Step], notes: list[str], axle: float):
-    """The brakes' and faces' torques (contact.py), put among the results, steps and notes before the motion."""
+def put_contacts(brakes, faces, body_options: dict, rim: float | None, assumed: Assumed, g: float | None, results: Results, steps: list[Step], notes: list[str],
+                 axle: float, bands=()):
+    """The brakes', faces' and bands' torques (contact.py), put among the results, steps and notes before the motion."""
     shape_rim = body_rim(body_options)
     options = body_options if shape_rim is not None or rim is None else {**body_options, "shape": "disc", "radius": rim}
-    g = assumed.gravity(g) if any(face.force is None for face in faces) else None
-    contact = contacts(brakes, faces, options, body_mass(**body_options) if faces else body_options.get("mass"), g)
+    g = assumed.gravity(g) if any(face.by_weight for face in faces) else None
+    contact = contacts(brakes, faces, options, body_mass(**body_options) if faces else body_options.get("mass"), g, bands)
     if brakes:
         results.put("torque_brake", contact.brake)
     if faces:
         results.put("torque_face", contact.face)
+    if bands:
+        results.put("torque_band", contact.band)
+    for key, value, part in contact.details:
+        results.put(key, value, part)
     steps.extend(contact.steps)
     notes.extend(contact.notes)
-    terms = [(symbol, value) for symbol, value in (("τ_axle", axle), ("τ_b", contact.brake), ("τ_face", contact.face)) if value]
+    terms = [(symbol, value) for symbol, value in (("τ_axle", axle), ("τ_b", contact.brake), ("τ_face", contact.face), ("τ_band", contact.band)) if value]
     if terms:
         steps.append(Step("Friction torques add", "τ_f = " + " + ".join(symbol for symbol, _ in terms),
                           " + ".join(quantity_text(value, "N*m") for _, value in terms), quantity_text(axle + contact.kinetic, "N*m"),

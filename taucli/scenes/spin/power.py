@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from taucli import numerics
 from taucli.errors import InputError
-from taucli.numerics import falling_root, gauss_legendre
+from taucli.numerics import adaptive_gauss, falling_root, gauss_legendre
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.report import Report, Step, deferred, fmt, quantity_text, term
 from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Method
@@ -99,9 +99,9 @@ class PowerMotion:
                 net = -self.power  # a load drains at least P; the losses only add to it
             else:
                 steady = self.steady_speed()
-                if steady is not None and event >= steady:
+                if steady is not None and (event - steady) * (u - steady) <= 0:  # at or past the steady speed: never
                     return None
-                net = event * self.inertia * self.rate(event)  # P − ω·losses(ω), least at the event
+                net = event * self.inertia * abs(self.rate(event))  # |P − ω·losses(ω)|, least at the event
             t_end = 1.01 * span / net
         try:
             return numerics.integrate(
@@ -132,8 +132,11 @@ class PowerMotion:
     def time_to(self, target: float) -> tuple[float, float] | None:
         """(t, θ) when |ω| = target, or None."""
         u1 = target * self.sense
-        if u1 < 0 or (u1 > self.u0) != (self.power > 0) or u1 == self.u0:
-            return (0.0, 0.0) if u1 == self.u0 else None
+        if u1 == self.u0:
+            return 0.0, 0.0
+        rising = self.rate(self.u0) > 0  # above a motor's steady speed the wheel slows
+        if u1 < 0 or (u1 > self.u0) != rising:
+            return None
         if self.lossless:
             t = self.inertia * (u1 - self.u0) * (u1 + self.u0) / (2 * self.power)
             return t, self.sense * self.lossless_state(t)[1]
@@ -145,6 +148,27 @@ class PowerMotion:
         if solution is None or not solution.event:
             return None
         return t0 + solution.t, self.sense * (theta0 + solution.theta)
+
+    def viscous_work(self, end: float, u_end: float) -> float:
+        """b∫ω²dt over [0, end], the wheel at u_end then. dω/dt = f(ω) alone, so ω is monotone and
+        the integral is b∫ω²/f(ω) dω from u₀ to u_end, where a fast fall from a high speed (drag)
+        is resolved however short it is; the last approach to a steady speed ω*, where f → 0 and
+        that integral turns ill-conditioned, is taken in time instead."""
+        viscous, u0 = self.torques.viscous, self.u0
+        steady = self.steady_speed()
+        if steady is not None and u0 == steady:
+            return viscous * u0 * u0 * end
+
+        def per_speed(u: float) -> float:  # ω²/f(ω): dt = dω/f(ω)
+            return u * u / self.rate(u) if u > 0 else 0.0
+
+        if steady is None or abs(u_end - steady) > 1e-3 * abs(u0 - steady):
+            return viscous * adaptive_gauss(per_speed, u0, u_end)
+        near = steady + 1e-3 * (u0 - steady)
+        reached = self.time_to(self.sense * near)
+        if reached is None:  # the stepper does not resolve the approach: the time integral throughout
+            return viscous * gauss_legendre(lambda t: self.state(t)[0] ** 2, 0.0, end, panels=16)
+        return viscous * (adaptive_gauss(per_speed, u0, near) + gauss_legendre(lambda t: self.state(t)[0] ** 2, reached[0], end, panels=16))
 
     def steady_speed(self) -> float | None:
         """Where P/u balances the losses (P > 0 with losses), by bisection; None otherwise."""
@@ -235,8 +259,7 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
             results.put("work_friction", friction, by)
         rest = inertia * omega0 * omega0 / 2 - ke + work - friction
         if torques.viscous and torques.drag:
-
-            viscous = torques.viscous * gauss_legendre(lambda t: motion.state(t)[0] ** 2, 0.0, end, panels=16)
+            viscous = motion.viscous_work(end, abs(omega_end))
             results.put("work_viscous", viscous, by)
             results.put("work_drag", max(0.0, rest - viscous), by)
         elif torques.viscous:

@@ -61,6 +61,7 @@ def spin_down(
     friction: float | None = None,
     brake: Sequence | None = None,
     face: Sequence | None = None,
+    band: Sequence | None = None,
     g: float | None = None,
     at: float | None = None,
     viscous: float | None = None,
@@ -91,7 +92,7 @@ def spin_down(
     """
     if power == 0:
         power = None  # a motor of no power is no motor
-    if g is not None and not any(plate.force is None for plate in face or ()):
+    if g is not None and not any(plate.by_weight for plate in face or ()):
         raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     wheel = _wheel(body_options, rim_speed, until_arc, at)
     front = Front()
@@ -101,7 +102,9 @@ def spin_down(
     push = _push(force, lever, push_angle)
     drive = (torque or 0.0) + (push.torque if push is not None else 0.0)
     assumed, axle = Assumed(), friction or 0.0
-    contact = put_contacts(brake or (), face or (), body_options, wheel.rim, assumed, g, front.results, front.steps, front.notes, axle) if brake or face else None
+    _one_sense(brake, band, omega0, drive, in_time, in_angle)
+    contact = (put_contacts(brake or (), face or (), body_options, wheel.rim, assumed, g, front.results, front.steps, front.notes, axle, band or ())
+               if brake or face or band else None)
     friction = axle + contact.kinetic if contact is not None else friction
     static = None if contact is None or contact.static == contact.kinetic else axle + contact.static
     torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent, static)
@@ -273,6 +276,21 @@ def _under_torques(wheel: Wheel, torques: Torques, omega0, targets: dict, front:
     if "torque" in front.results:
         front.results.put("torque_net", report.results["alpha0"].value * wheel.inertia, " at the start")
     return _with_front(report, front.results, front.notes, front.steps)
+
+
+def _one_sense(brakes, bands, omega0: float | None, drive: float, in_time, in_angle) -> None:
+    """A band brake, or a shoe whose friction has a moment about its lever's pivot, takes another
+    torque when the wheel turns the other way: refuse where it might turn back."""
+    sided = [spec.source for spec in (*(bands or ()), *(shoe for shoe in brakes or () if shoe.lever is not None and shoe.offset))]
+    if not sided:
+        return
+    if in_time is not None or in_angle is not None:
+        raise InputError("in_time" if in_time is not None else "in_angle", f"does not combine with {sided[0]}: its torque depends on the sense the wheel turns, "
+                         "and the drive this solves for may turn it back")
+    if omega0 and drive and (omega0 > 0) != (drive > 0):
+        raise InputError(sided[0], "takes the torque for the sense the wheel turns, and a drive against ω₀ would stop it and turn it back "
+                         "(the tight and slack ends, or the friction's moment, change over): give a drive along ω₀, or work the turn back in a second run",
+                         example='{torque} 5N*m {omega0} 100rpm')
 
 
 def _with_parts(report: Report, parts: Table | None) -> Report:

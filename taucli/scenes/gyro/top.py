@@ -30,73 +30,13 @@ from collections.abc import Callable, Mapping, Sequence
 
 from taucli.errors import InputError
 from taucli.options.gyro import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text, term
+from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
-from taucli.table import Results
+from taucli.scenes.gyro.roots import APPROXIMATION_NOTED, HALF_PI, TILT_SLACK, TWO_PI, approximation_error, finite as _finite, least_spin, precession_roots, tilt_cos_sin
+from taucli.scenes.gyro.steps import orbit_steps, top_steps, torque_steps
 from taucli.scenes.inertia import body
 from taucli.scenes.shapes import SHAPES
-
-TWO_PI = 2.0 * math.pi
-HALF_PI = 0.5 * math.pi
-TILT_SLACK = 4.5e-16  # two ulps of π/2: "90deg" and "0.25rev" read as the float nearest π/2, or next to it
-APPROXIMATION_NOTED = 1e-3  # the approximation's relative error is noted above this
-
-
-def tilt_cos_sin(theta: float) -> tuple[float, float]:
-    """cos θ and sin θ, exact at 0, 90 and 180 degrees (a float near π/2 has cos 6e-17, not 0:
-    that would turn "one root at 90°" into a fast root of 1e16)."""
-    if abs(theta - HALF_PI) <= TILT_SLACK:
-        return 0.0, 1.0
-    if abs(theta - math.pi) <= 2 * TILT_SLACK:
-        return -1.0, 0.0
-    if theta == 0:
-        return 1.0, 0.0
-    return math.cos(theta), math.sin(theta)
-
-
-def discriminant_ratio(a: float, c: float, b: float) -> float:
-    """ρ = 4ac/b², from mantissas and exponents: b² and ac are never formed, so nothing
-    overflows or underflows on the way to a ρ that is in range (±inf and 0 where ρ is not)."""
-    if a == 0 or c == 0:
-        return 0.0
-    ma, ea = math.frexp(a)
-    mc, ec = math.frexp(c)
-    mb, eb = math.frexp(b)
-    try:
-        return math.ldexp(4.0 * ma * mc / (mb * mb), ea + ec - 2 * eb)
-    except OverflowError:
-        return math.copysign(math.inf, a * c)
-
-
-def precession_roots(inertia_perp_cos: float, angular_momentum: float, weight_torque: float) -> tuple[float, float | None] | None:
-    """The roots (slow, fast) of I⊥cosθ·Ω² − LΩ + mgr = 0 for L > 0 and mgr ≥ 0; fast is None
-    where the equation is linear (cos θ = 0) or the root is out of range; None where no real
-    root exists (ρ > 1: no steady precession)."""
-    rho = discriminant_ratio(inertia_perp_cos, weight_torque, angular_momentum)
-    if rho > 1:
-        return None
-    s = math.sqrt(1.0 - rho)
-    slow = (weight_torque / angular_momentum) * (2.0 / (1.0 + s))
-    if inertia_perp_cos == 0:
-        return slow, None
-    fast = angular_momentum * (1.0 + s) / (2.0 * inertia_perp_cos)
-    return slow, fast if math.isfinite(fast) else None
-
-
-def approximation_error(inertia_perp_cos: float, angular_momentum: float, weight_torque: float) -> float:
-    """mgr/(Iω_s) over the slow root, less 1: (s − 1)/2 = −ρ/(2(1 + s)), free of cancellation.
-    It equals −I⊥Ω_slow cos θ/(Iω_s), the share of the term the approximation leaves out."""
-    rho = discriminant_ratio(inertia_perp_cos, weight_torque, angular_momentum)
-    return -rho / (2.0 * (1.0 + math.sqrt(1.0 - rho)))
-
-
-def least_spin(inertia: float, inertia_perp_cos: float, weight_torque: float) -> float:
-    """ω_min = √(4·I⊥·mgr·cos θ)/I (cos θ > 0), as a product of square roots (no overflow)."""
-    return 2.0 * math.sqrt(inertia_perp_cos) * math.sqrt(weight_torque) / inertia
-
-
-def _finite(x: float | None) -> float | None:
-    return x if x is not None and math.isfinite(x) else None
+from taucli.table import Results
 
 
 # I about a perpendicular axis through the centre of mass, for the shapes that spin about an
@@ -127,7 +67,7 @@ def _perpendicular_centre(shape: str, mass: float, dims: Mapping[str, float]) ->
 _SYMBOLS = {"radius": "R", "inner_radius": "R1", "outer_radius": "R2", "length": "L", "width": "W", "height": "H", "depth": "D"}
 
 
-def gyro(
+def top(
     *,
     inertia: float | None = None,
     shape: str | None = None,
@@ -149,7 +89,7 @@ def gyro(
     inertia_perp: float | None = None,
     g: float | None = None,
 ) -> Report:
-    """``taucli gyro``: the body (--inertia or --shape ...), its --spin, and the torque on it:
+    """A top or gyroscope on a pivot: the body (--inertia or --shape ...), its --spin, and the torque on it:
     the weight (--mass at --cm-distance, with --g) or --torque; the axis at --tilt (default
     90°, horizontal) from the upward vertical."""
     dims = {"radius": radius, "inner_radius": inner_radius, "outer_radius": outer_radius, "length": length, "width": width, "height": height, "depth": depth}
@@ -190,7 +130,7 @@ def gyro(
         results.put("omega_p", rate, " τ/(L sin θ)")
         period = _period(rate, notes)
         results.put("period_p", period, " 2π/Ω")
-        steps = DeferredSteps(_torque_steps, moment, spin, angular_momentum, torque, theta, sin_t, rate, period, body_steps)
+        steps = DeferredSteps(torque_steps, moment, spin, angular_momentum, torque, theta, sin_t, rate, period, body_steps)
         model = "steady precession under a given torque: Ω = τ/(L sin θ) (gyroscopic approximation)"
         return assumed.applied(Report("gyro", model, "closed form", results, steps, notes))
 
@@ -216,7 +156,8 @@ def gyro(
         )
         period = _period(rate, notes)
         results.put("period_p", period, " 2π/Ω")
-        steps = DeferredSteps(_steps, moment, spin, angular_momentum, body_mass, gravity, cm_distance, theta, sin_t, cos_t, rate, None, None, None, period, body_steps, perp_steps)
+        orbit = _orbit(results, body_mass, gravity, cm_distance, sin_t, rate, "Ω", notes)
+        steps = DeferredSteps(_with_orbit, (moment, spin, angular_momentum, body_mass, gravity, cm_distance, theta, sin_t, cos_t, rate, None, None, None, period, body_steps, perp_steps), orbit)
         model = "gyroscopic approximation Ω = mgr/(Iω_s) (no I⊥: exact rates not formed)"
         return assumed.applied(Report("gyro", model, "closed form", results, steps, notes))
 
@@ -257,12 +198,37 @@ def gyro(
     results.put("omega_p_fast", _finite(fast))
     if minimum is not None:
         results.put("spin_min", _finite(minimum))
+    orbit = _orbit(results, body_mass, gravity, cm_distance, sin_t, slow, "Ω_slow", notes)
     steps = DeferredSteps(
-        _steps, moment, spin, angular_momentum, body_mass, gravity, cm_distance, theta, sin_t, cos_t, rate, perp, roots, minimum, period, body_steps, perp_steps
+        _with_orbit, (moment, spin, angular_momentum, body_mass, gravity, cm_distance, theta, sin_t, cos_t, rate, perp, roots, minimum, period, body_steps, perp_steps), orbit
     )
     where = "above" if cos_t > 0 else "level with" if cos_t == 0 else "below"
     model = f"heavy symmetric top in steady precession, centre of mass {where} the pivot: the exact rates beside Ω = mgr/(Iω_s)"
     return assumed.applied(Report("gyro", model, "closed form", results, steps, notes))
+
+
+def _orbit(results: Results, mass: float, g: float, r: float, sin_t: float, rate: float | None, symbol: str, notes: list[str]) -> tuple | None:
+    """The centre of mass's orbit in steady precession at ``rate``: it goes round a horizontal
+    circle of radius r sin θ, so its angular momentum about the pivot is m(r sin θ)Ω·r (r ⊥ v),
+    and the pivot pushes up with mg (the height is steady) and in with mΩ²r sin θ (the
+    centripetal force). Returns what the steps need, or None where there is no steady rate."""
+    if rate is None:
+        for key in ("L_orbital", "pivot_force_horizontal"):
+            results.put(key, None)
+        results.put("pivot_force_vertical", None)
+        notes.append("L_orbital, pivot_force_vertical, pivot_force_horizontal: no steady precession, so no steady orbit of the centre of mass")
+        return None
+    circle = r * sin_t
+    orbital = _finite(mass * r * circle * abs(rate))
+    inward = _finite(mass * rate * rate * circle)
+    results.put("L_orbital", orbital, f", m r²{symbol} sin θ")
+    results.put("pivot_force_vertical", _finite(mass * g))
+    results.put("pivot_force_horizontal", inward, f", m{symbol}²r sin θ")
+    return mass, g, r, circle, rate, symbol, orbital, inward
+
+
+def _with_orbit(top_args: tuple, orbit: tuple | None) -> list[Step]:
+    return top_steps(*top_args) + (orbit_steps(*orbit) if orbit is not None else [])
 
 
 def _period(rate: float | None, notes: list[str]) -> float | None:
@@ -326,172 +292,3 @@ def _check_perp(perp: float, moment: float, mass: float, r: float) -> None:
             "is less than I/2 + mr², the least a body symmetric about its spin axis can have about a perpendicular axis through the pivot",
             got=f"{fmt(perp)} kg·m² < {fmt(least)} kg·m²",
         )
-
-
-def _degrees(theta: float) -> str:
-    return f"{fmt(math.degrees(theta))}°"
-
-
-def _common_steps(moment, spin, angular_momentum, body_steps) -> list[Step]:
-    steps = list(body_steps)
-    steps.append(
-        Step(
-            "Spin angular momentum",
-            "L = Iω_s",
-            f"{quantity_text(moment, 'kg*m**2')} × {quantity_text(spin, 'rad/s')}",
-            quantity_text(angular_momentum, "kg*m**2/s"),
-            "the body spins about its symmetry axis, so L points along that axis",
-        )
-    )
-    return steps
-
-
-def _turning_steps(angular_momentum, theta, sin_t, about: str = "the vertical") -> list[Step]:
-    level = sin_t == 1.0
-    across = "horizontal and at right angles to L" if about == "the vertical" else f"at right angles to L and to {about}"
-    return [
-        Step(
-            "The torque changes L's direction, not its size",
-            "τ = dL/dt",
-            "",
-            "",
-            f"the torque is {across}, so in dt it adds dL = τ dt across L: "
-            "L swings round without changing its size, and the axis follows it instead of falling",
-        ),
-        Step(
-            "How far L turns",
-            "|dL| = L dφ" if level else "|dL| = L sin θ dφ",
-            "" if level else f"{quantity_text(angular_momentum, 'kg*m**2/s')} × sin {_degrees(theta)} × dφ",
-            "" if level else f"{quantity_text(angular_momentum * sin_t, 'kg*m**2/s')} × dφ",
-            f"the part of L across {about} (all of it at 90°) turns through dφ about {about}; the arc it sweeps is its length times dφ",
-        ),
-    ]
-
-
-def _torque_steps(moment, spin, angular_momentum, torque, theta, sin_t, rate, period, body_steps) -> list[Step]:
-    steps = _common_steps(moment, spin, angular_momentum, body_steps)
-    steps.append(
-        Step(
-            "The torque on the body (given)",
-            f"τ = {quantity_text(torque, 'N*m')}",
-            "",
-            "",
-            "the Sun's and Moon's pull on the Earth's equatorial bulge, or any torque across the spin axis, turning it about the axis it precesses round",
-        )
-    )
-    steps += _turning_steps(angular_momentum, theta, sin_t, "the axis it precesses round")
-    steps.append(
-        Step(
-            "Precession rate",
-            "Ω = dφ/dt = τ/(L sin θ)",
-            f"{quantity_text(torque, 'N*m')} / ({quantity_text(angular_momentum, 'kg*m**2/s')} × sin {_degrees(theta)})",
-            "out of range" if rate is None else quantity_text(rate, "rad/s"),
-            "divide |dL| = τ dt by L sin θ dt",
-        )
-    )
-    if period is not None:
-        steps.append(Step("Precession period", "T = 2π/Ω", f"2π / {quantity_text(rate, 'rad/s')}", _period_text(period), "one full turn of the spin axis round its cone"))
-    return steps
-
-
-def _period_text(period: float) -> str:
-    text = quantity_text(period, "s")
-    year = 365.25 * 86400.0
-    if period >= 10 * year:
-        text += f" ({fmt(period / year)} years)"
-    return text
-
-
-def _steps(moment, spin, angular_momentum, mass, g, r, theta, sin_t, cos_t, rate, perp, roots, minimum, period, body_steps, perp_steps) -> list[Step]:
-    steps = _common_steps(moment, spin, angular_momentum, body_steps)
-    weight_torque = mass * g * r
-    steps.append(
-        Step(
-            "Torque of the weight about the pivot",
-            "τ = mgr sin θ",
-            f"{quantity_text(mass, 'kg')} × {quantity_text(g, 'm/s**2')} × {quantity_text(r, 'm')}" + ("" if sin_t == 1.0 else f" × sin {_degrees(theta)}"),
-            quantity_text(weight_torque * sin_t, "N*m"),
-            "the weight acts at the centre of mass, r along the axis from the pivot; its lever arm is r sin θ",
-        )
-    )
-    steps += _turning_steps(angular_momentum, theta, sin_t)
-    steps.append(
-        Step(
-            "Precession rate (gyroscopic approximation)",
-            "Ω = τ/(L sin θ) = mgr/(Iω_s)",
-            f"{quantity_text(weight_torque, 'N*m')} / {quantity_text(angular_momentum, 'kg*m**2/s')}",
-            "out of range" if rate is None else quantity_text(rate, "rad/s"),
-            "sin θ cancels: the rate is the same at every tilt; this takes L to be the spin's alone",
-        )
-    )
-    if perp is None:
-        if period is not None:
-            steps.append(Step("Precession period", "T = 2π/Ω", f"2π / {quantity_text(rate, 'rad/s')}", _period_text(period), "one full turn of the axis about the vertical"))
-        return steps
-    for write in perp_steps:
-        steps += write()
-    a = perp * cos_t
-    steps.append(
-        Step(
-            "The exact steady precession",
-            "mgr = Ω(Iω_s − I⊥Ω cos θ)",
-            f"Ω({term(angular_momentum, 'kg*m**2/s')} − {term(a, 'kg*m**2')} × Ω)",
-            quantity_text(weight_torque, "N*m"),
-            "the precession turns the body too, adding I⊥Ω sin θ across the axis to L; the horizontal part of L is then "
-            "(Iω_s − I⊥Ω cos θ) sin θ, and turning it at Ω takes τ = mgr sin θ: a quadratic, I⊥Ω²cos θ − Iω_sΩ + mgr = 0"
-            + ("; at 90° cos θ = 0 and its one root is mgr/(Iω_s) exactly" if cos_t == 0 else ""),
-        )
-    )
-    if roots is None:
-        steps.append(
-            Step(
-                "No real root: the spin is too slow",
-                "ω_min = √(4·I⊥·mgr·cos θ)/I",
-                f"√(4 × {term(perp, 'kg*m**2')} × {term(weight_torque, 'N*m')} × {term(cos_t)}) / {term(moment, 'kg*m**2')}",
-                quantity_text(minimum, "rad/s"),
-                f"the discriminant (Iω_s)² − 4I⊥ cos θ·mgr is negative below ω_min; at ω_s = {fmt(spin)} rad/s no steady precession exists",
-            )
-        )
-        return steps
-    slow, fast = roots
-    if cos_t == 0:
-        if period is not None:
-            steps.append(Step("Precession period", "T = 2π/Ω", f"2π / {quantity_text(slow, 'rad/s')}", _period_text(period), "one full turn of the axis about the vertical"))
-        return steps
-    root_d = angular_momentum * math.sqrt(1.0 - discriminant_ratio(a, weight_torque, angular_momentum))
-    steps.append(
-        Step(
-            "The slow root, written without cancellation",
-            "Ω_slow = 2mgr / (Iω_s + √D),  D = (Iω_s)² − 4I⊥ cos θ·mgr",
-            f"2 × {term(weight_torque, 'N*m')} / ({term(angular_momentum, 'kg*m**2/s')} + {term(root_d, 'kg*m**2/s')})",
-            quantity_text(slow, "rad/s"),
-            "the usual (Iω_s − √D)/(2I⊥ cos θ) subtracts two nearly equal numbers when the spin is fast; this form adds them",
-        )
-    )
-    if fast is not None:
-        steps.append(
-            Step(
-                "The fast root",
-                "Ω_fast = (Iω_s + √D) / (2I⊥ cos θ)",
-                f"({term(angular_momentum, 'kg*m**2/s')} + {term(root_d, 'kg*m**2/s')}) / (2 × {term(a, 'kg*m**2')})",
-                quantity_text(fast, "rad/s"),
-                "the other steady motion: a precession so fast that I⊥Ω²cos θ carries the torque almost alone, "
-                "Ω ≈ Iω_s/(I⊥ cos θ); a top seldom settles into it"
-                if cos_t > 0
-                else "negative: below the pivot the second steady motion goes round the other way",
-            )
-        )
-    neglected = a * slow / angular_momentum
-    steps.append(
-        Step(
-            "Why the approximation holds",
-            "ε = I⊥Ω_slow cos θ / (Iω_s)",
-            f"{term(a * slow, 'kg*m**2/s')} / {term(angular_momentum, 'kg*m**2/s')}",
-            fmt(neglected),
-            "in mgr = Ω(Iω_s − I⊥Ω cos θ), where Iω_s ≫ I⊥Ω cos θ (ε ≪ 1) the second term drops out and Ω ≈ mgr/(Iω_s); "
-            "mgr/(Iω_s) = Ω_slow(1 − ε) exactly",
-        )
-    )
-    if period is not None:
-        steps.append(Step("Precession period", "T = 2π/Ω_slow", f"2π / {quantity_text(slow, 'rad/s')}", _period_text(period), "one full turn of the axis about the vertical"))
-    return steps

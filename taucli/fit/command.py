@@ -1,0 +1,120 @@
+"""The command line of ``taucli fit SCENE FILE… [SCENE OPTIONS]``: no physics here.
+
+The words after SCENE are data files and the scene's own options (``--inertia 0.1kg*m^2``), read
+with the scene's table as ``taucli SCENE`` reads them; fit's own options (``--fit``, ``--x``,
+``--json``) typer has read already. Then: the tables -> the samples -> the fit -> the report ->
+the writer, and the chart where asked for.
+"""
+
+from __future__ import annotations
+
+from taucli import render
+from taucli.errors import InputError, did_you_mean
+from taucli.fit import chart, data, results, samples, solve
+from taucli.inputs import read
+from taucli.options import SCENES
+from taucli.options.fit import COMMAND as FIT
+from taucli.report import Report
+from taucli.table import FLAG, Command
+
+
+def _scene(name: str | None) -> Command:
+    if name is None or name.replace("_", "-") not in SCENES:
+        raise InputError("scene", f"expected a scene: {', '.join(SCENES)}", example="taucli fit spin-down coast.csv --inertia '0.1 kg*m^2' --fit friction",
+                         got=None if name is None else repr(name), hint=did_you_mean(str(name), list(SCENES)) if name else None)
+    return SCENES[name.replace("_", "-")]
+
+
+def split_words(command: Command, words: list[str]) -> tuple[list[str], dict[str, object]]:
+    """(the data files, the scene's options) from the words after SCENE."""
+    files: list[str] = []
+    given: dict[str, object] = {}
+    flags = {option.flag: option for option in command.options if not option.positional}
+    position = [option for option in command.options if option.positional]
+    items = iter(words)
+    for word in items:
+        if word.startswith("--") and len(word) > 2:
+            flag, equals, value = word.partition("=")
+            option = flags.get(flag)
+            if option is None:
+                own = {o.flag for o in (*FIT.options, *FIT.output)}
+                known = sorted(flags) + sorted(own)
+                raise InputError("", f"{flag} is not an option of fit, nor an input of {command.name}", hint=did_you_mean(flag, known))
+            if option.kind == FLAG:
+                given[option.name] = True
+                continue
+            if not equals:
+                value = next(items, None)
+                if value is None:
+                    raise InputError("", f"{flag} expects a value", example=f"taucli fit {command.name} FILE {flag} {option.shown_metavar}")
+            if option.repeatable:
+                given.setdefault(option.name, []).append(value)
+            elif option.name in given:
+                raise InputError("", f"{flag} is given twice")
+            else:
+                given[option.name] = value
+        elif position and word in position[0].choices and position[0].name not in given:
+            given[position[0].name] = word  # a scene's SHAPE (rolling sphere), where it takes one
+        else:
+            files.append(word)
+    if not files:
+        raise InputError("data", "expected a data file (CSV) after the scene", example=f"taucli fit {command.name} runs.csv --fit NAME")
+    return files, given
+
+
+def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> Report:
+    """The fit's report (what the Python API returns)."""
+    return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, stdin=stdin, spell=spell)[0]
+
+
+def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> tuple[Report, solve.Fit]:
+    """The fit's report, and the fit itself (for the chart)."""
+    command = _scene(scene)
+    spell = spell or command.flag
+    tables = [data.read(source, stdin) for source in files]
+    names = solve.names_of(fit)
+    gravity = read(command, {"g": given["g"]})[0].get("g") if given.get("g") is not None else None
+    found_samples = samples.build(command, tables, x=x, y=y, sigma=sigma, ranges=ranges, every=every, fitted=names, given=set(given), gravity=gravity)
+    model, starts, notes = solve.model_of(command, given, names, found_samples, stdin=stdin, spell=spell)
+    found = solve.fit(model, starts)
+    report = results.written(found)
+    report.notes[:0] = notes
+    return report, found
+
+
+def run(env, given: dict) -> int:
+    """taucli fit: read, fit, write."""
+    command = _scene(given.get("scene"))
+    files, scene_given = split_words(command, list(given.get("data") or []))
+    output = render.Output(
+        json=bool(given.get("json")), get=tuple(given.get("get") or ()), to=tuple(given.get("to") or ()), steps=not given.get("no_steps"),
+        uncertainty=bool(given.get("uncertainty")),
+    )
+    if given.get("plot") and output.get:
+        raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
+    if given.get("out") is not None:
+        from taucli import plot  # deferred: charts, only for --out
+
+        plot.check_file(given["out"])
+    try:
+        report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
+                               sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin)
+    except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
+        raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
+    if output.json:
+        shown = render.prepared(report, output)
+        document = chart.document(found) if given.get("plot") else None
+        env.stdout.write(render.document_text(shown, steps=output.steps, plot=document) + "\n")
+    else:
+        render.render(report, output, env.stdout, env.stderr)
+        if given.get("plot"):
+            from taucli import plot  # deferred: charts, only for --plot
+
+            columns, colour = render.terminal_style(env.stdout)
+            env.stdout.write("\n" + plot.terminal(chart.chart(found), columns, colour=colour))
+    if given.get("out") is not None:
+        from taucli import plot  # deferred: matplotlib, only for --out
+
+        plot.write_file(chart.chart(found), given["out"])
+    env.stdout.flush()
+    return 0

@@ -1,0 +1,190 @@
+"""Reading a table of measured samples: CSV as phone sensor apps, data loggers and spreadsheets
+write it.
+
+- The first line that is neither blank nor a comment (``#``) names the columns; a header may carry
+  its unit in parentheses or brackets, ``Time (s)`` or ``t [ms]``.
+- Columns are separated by tabs, else semicolons, else commas (the header says which).
+- A decimal comma is read where the file shows that it is one (docs/units.md: a comma that could
+  be a thousands separator is refused, never guessed): the columns are separated by semicolons or
+  tabs, no number has a decimal point, and some number has other than three digits after its
+  comma. A file whose every comma is followed by three digits (``1,500``) is refused.
+- Every cell of a row is a finite number: a row with an empty cell, NaN, infinity or text is
+  refused with its line, not skipped.
+- A binary file, a file that is not UTF-8 or Windows-1252 text, ragged rows, an empty table and
+  a line longer than csv's limit are refused, one line each.
+
+Plain Python (csv): no numpy, no pint.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import os
+import re
+from dataclasses import dataclass
+
+from taucli.errors import InputError
+
+OPTION = "data"  # the argument the messages name (DATA)
+MAX_BYTES = 200 * 1024 * 1024
+MAX_ROWS = 2_000_000
+
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_COMMA_NUMBER = re.compile(r"[+-]?\d*,(\d+)(?:[eE][+-]?\d+)?")
+_WITH_UNIT = re.compile(r"^(.*?)\s*[(\[]\s*([^()\[\]]*?)\s*[)\]]\s*$")
+_NOT_FINITE = {"nan", "inf", "-inf", "+inf", "infinity", "-infinity", "+infinity"}
+
+
+@dataclass(frozen=True)
+class Column:
+    """One column of a table: its header as written, the name and unit the header gives, and its
+    numbers as the file writes them (in the header's unit)."""
+
+    header: str
+    name: str
+    unit: str  # "" where the header names none
+    values: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class DataTable:
+    source: str  # the file's name, or "stdin"
+    columns: tuple[Column, ...]
+    lines: tuple[int, ...]  # the line of the file each row is on
+    delimiter: str
+    decimal_comma: bool
+
+    def column(self, header: str) -> Column:
+        return next(column for column in self.columns if column.header == header)
+
+
+def split_header(header: str) -> tuple[str, str]:
+    """("Time", "s") from "Time (s)" or "Time [s]"; (header, "") where it names no unit."""
+    found = _WITH_UNIT.match(header)
+    if found is None or not found[1].strip():
+        return header.strip(), ""
+    return found[1].strip(), found[2].strip()
+
+
+def read(source: str, stdin=None) -> DataTable:
+    """The table in the file ``source`` (``-``: stdin), or a usage error naming what is wrong."""
+    name = "stdin" if source == "-" else source
+    text = _text(source, stdin)
+    lines = text.splitlines()
+    start = next((i for i, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("#")), None)
+    if start is None:
+        raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
+                         example="t (s),omega (rad/s)")
+    delimiter = "\t" if "\t" in lines[start] else ";" if ";" in lines[start] else ","
+    rows = _rows(lines, start, delimiter, name)
+    if not rows:
+        raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
+                         example="t (s),omega (rad/s)")
+    headers = [cell.strip() for cell in rows[0][1]]
+    if any(not header for header in headers):
+        raise InputError(OPTION, f"{name} line {rows[0][0]}: expected a name for every column", got=repr(lines[start][:80]))
+    if len(set(headers)) != len(headers):
+        twice = sorted({header for header in headers if headers.count(header) > 1})
+        raise InputError(OPTION, f"{name} line {rows[0][0]}: names a column twice: {', '.join(twice)}")
+    if all(_NUMBER.fullmatch(header) for header in headers):
+        raise InputError(OPTION, f"{name} line {rows[0][0]}: expected a header naming the columns before the numbers", example="t (s),omega (rad/s)")
+    body = rows[1:]
+    if not body:
+        raise InputError(OPTION, f"{name} has a header and no rows of numbers")
+    for line, cells in body:
+        if len(cells) != len(headers):
+            raise InputError(OPTION, f"{name} line {line}: expected {len(headers)} cells, as the header names, got {len(cells)}")
+    decimal_comma = _decimal_comma(body, delimiter, name)
+    numbers = [[_number(cell, line, header, name, decimal_comma) for cell, header in zip(cells, headers)] for line, cells in body]
+    columns = tuple(Column(header, *split_header(header), tuple(row[i] for row in numbers)) for i, header in enumerate(headers))
+    return DataTable(name, columns, tuple(line for line, _ in body), delimiter, decimal_comma)
+
+
+def _text(source: str, stdin) -> str:
+    name = "stdin" if source == "-" else source
+    if source == "-":
+        if stdin is None:
+            raise InputError(OPTION, "cannot be - here: no stdin to read it from")
+        raw = stdin.buffer.read() if hasattr(stdin, "buffer") else stdin.read()
+    else:
+        try:
+            if os.path.getsize(source) > MAX_BYTES:
+                raise InputError(OPTION, f"{name} is larger than {MAX_BYTES // 1024 // 1024} MB: give a part of it (fit takes at most 5000 samples)")
+            with open(source, "rb") as handle:
+                raw = handle.read()
+        except OSError as err:
+            raise InputError(OPTION, "expected a readable data file (or - for stdin)", got=f"{source!r}: {err.strerror or err}") from None
+    if isinstance(raw, str):
+        return raw
+    if b"\x00" in raw[:65536]:
+        raise InputError(OPTION, f"{name} is not a text table (it holds NUL bytes: a binary file?)", hint="export the data as CSV")
+    for encoding in ("utf-8-sig", "cp1252"):
+        try:
+            return raw.decode(encoding)
+        except UnicodeDecodeError:
+            continue
+    raise InputError(OPTION, f"{name} is not text in UTF-8 or Windows-1252", hint="export the data as CSV in UTF-8")
+
+
+def _rows(lines: list[str], start: int, delimiter: str, name: str) -> list[tuple[int, list[str]]]:
+    """(line number, cells) of the header and each row after it, blank lines and comments left out."""
+    rows = []
+    reader = csv.reader(io.StringIO("\n".join(lines[start:])), delimiter=delimiter)
+    try:
+        for cells in reader:
+            line = start + reader.line_num
+            if not cells or all(not cell.strip() for cell in cells) or cells[0].lstrip().startswith("#"):
+                continue
+            rows.append((line, cells))
+            if len(rows) > MAX_ROWS:
+                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows: give a part of it (fit takes at most 5000 samples)")
+    except csv.Error as err:
+        raise InputError(OPTION, f"{name} line {start + reader.line_num}: cannot be read as a table ({err})") from None
+    return rows
+
+
+def _decimal_comma(body: list[tuple[int, list[str]]], delimiter: str, name: str) -> bool:
+    """Whether the numbers use a decimal comma (see the module's rule), or a usage error where a
+    comma could be a thousands separator."""
+    with_comma = with_point = None
+    decimal = False
+    for line, cells in body:
+        for cell in cells:
+            cell = cell.strip()
+            if "," in cell:
+                with_comma = with_comma or (line, cell)
+                found = _COMMA_NUMBER.fullmatch(cell)
+                if found is not None and len(found[1]) != 3:
+                    decimal = True
+            if "." in cell and _NUMBER.fullmatch(cell):
+                with_point = with_point or (line, cell)
+    if with_comma is None:
+        return False
+    line, cell = with_comma
+    if delimiter == ",":
+        raise InputError(OPTION, f"{name} line {line}: a comma inside a cell of a comma-separated table could be a decimal comma or a thousands separator",
+                         got=repr(cell), hint="write 4.5, or separate the columns with ; for a decimal comma")
+    if with_point is not None:
+        raise InputError(OPTION, f"{name} line {line}: numbers with a comma beside numbers with a point ({with_point[1]!r} on line {with_point[0]}): "
+                         "the comma could be a thousands separator", got=repr(cell), hint="write every number with a point")
+    if not decimal:
+        raise InputError(OPTION, f"{name} line {line}: every comma is followed by three digits, so it could be a thousands separator "
+                         "or a decimal comma", got=repr(cell), hint="write 1.5 or 1500")
+    return True
+
+
+def _number(cell: str, line: int, header: str, name: str, decimal_comma: bool) -> float:
+    text = cell.strip()
+    if decimal_comma:
+        text = text.replace(",", ".", 1) if text.count(",") == 1 else text
+    if not text or text.lower() in _NOT_FINITE:
+        what = "is empty" if not text else f"is {text}"
+        raise InputError(OPTION, f"{name} line {line}: column {header!r} {what}, not a finite number; a row is refused, not skipped",
+                         hint="remove the row, or fill the cell")
+    if not _NUMBER.fullmatch(text):
+        raise InputError(OPTION, f"{name} line {line}: expected a number in column {header!r}", got=repr(cell.strip()[:40]))
+    value = float(text)
+    if value in (float("inf"), float("-inf")):
+        raise InputError(OPTION, f"{name} line {line}: column {header!r} holds a number too large for a double", got=repr(cell.strip()[:40]))
+    return value

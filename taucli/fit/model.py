@@ -1,0 +1,133 @@
+"""The model a fit matches to the samples: the scene itself, solved for each sample.
+
+f(xᵢ; p) is the result measured (``omega``, ``period``, ``t``) as the scene gives it with the
+options held (``--inertia 0.1kg*m^2``), sample i's own inputs (its time, its masses) and the
+fitted inputs p in their places (an option, or a key of a spec, as ``--find`` names them:
+taucli.unknowns). Every value goes through ``pipeline.solve``, so the model is exactly what
+``taucli SCENE`` answers for those options; a sample where the scene refuses the inputs, or has no
+value for the result, is NaN here, and the reason is kept.
+
+An option held with an uncertainty (``--inertia "0.100+/-0.002 kg*m^2"``) is held at its value;
+``moved`` shifts it (SI) to find how the fit moves with it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+import numpy as np
+
+from taucli import pipeline
+from taucli.errors import InputError
+from taucli.fit.samples import Samples
+from taucli.inputs import read
+from taucli.measurement import split
+from taucli.report import Report
+from taucli.table import Command, spelled
+from taucli.unknowns import Unknown
+
+REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError)
+
+
+def held(command: Command, given: Mapping[str, object], spell, unknowns: list[Unknown] = ()) -> tuple[dict, dict[str, float], dict[str, float], list[str]]:
+    """The options held: (each as given, "value ± σ" as its value; each σ in SI; each quantity's
+    SI value; notes), as taucli.answer reads uncertain options. A spec with a key fitted is read
+    with a stand-in there (a spec without a key it needs is refused)."""
+    readable = dict(given)
+    for unknown in unknowns:
+        if unknown.key is not None:
+            readable = unknown.given_with(readable, 1.0 if unknown.sign == "positive" else 0.0)
+    arguments, inputs = read(command, readable)
+    central = dict(given)
+    spreads: dict[str, float] = {}
+    notes: list[str] = []
+    for key, sigma in (inputs.uncertainties or {}).items():
+        option = command.option(key)
+        if option is None or not option.is_quantity or option.repeatable:
+            notes.append(spelled(f"the uncertainty given in {key} is not carried through: only a scene's own single quantity options carry one", spell, command.option))
+            continue
+        central[key] = split(given[key])[0]
+        if sigma > 0:
+            spreads[key] = sigma
+    si = {name: value for name, value in arguments.items() if isinstance(value, float)}
+    return central, spreads, si, notes
+
+
+class Model:
+    """f(xᵢ; p) for every sample i: the scene's result ``samples.y_key``."""
+
+    def __init__(self, command: Command, held_options: dict, unknowns: list[Unknown], samples: Samples, *, si: dict[str, float] | None = None,
+                 spreads: dict[str, float] | None = None, stdin=None, spell=None):
+        self.command, self.held, self.unknowns, self.samples = command, held_options, unknowns, samples
+        self.si = dict(si or {})  # the held quantities in SI (to move an uncertain one)
+        self.spreads = dict(spreads or {})
+        self.stdin, self.spell = stdin, spell or command.flag
+        self.solves = 0
+        self.refusal: Exception | None = None
+        self._cache: dict[tuple, np.ndarray] = {}
+        self._rows = [samples.row(i) for i in range(samples.count)]
+
+    @property
+    def names(self) -> list[str]:
+        return [unknown.name for unknown in self.unknowns]
+
+    def given(self, p, row: Mapping[str, float] | None = None, moved: Mapping[str, float] | None = None) -> dict:
+        """The scene's options for one sample (``row``: its inputs) with the fitted inputs at p."""
+        given = {**self.held, **(moved or {}), **(row or {})}
+        for unknown, x in zip(self.unknowns, p):
+            given = unknown.given_with(given, float(x))
+        return given
+
+    def report(self, p, row: Mapping[str, float] | None = None, moved: Mapping[str, float] | None = None) -> Report:
+        self.solves += 1
+        return pipeline.solve(self.command, self.given(p, row, moved), stdin=self.stdin, spell=self.spell)
+
+    def value(self, p, i: int, moved: Mapping[str, float] | None = None) -> float:
+        """f(xᵢ; p), or NaN where the scene refuses or has no value (the reason kept)."""
+        try:
+            result = self.report(p, self._rows[i], moved).results.get(self.samples.y_key)
+        except REFUSALS as err:
+            self.refusal = err
+            return math.nan
+        value = None if result is None else result.value
+        if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
+            self.refusal = None
+            return math.nan
+        return float(value)
+
+    def predict(self, p, moved: Mapping[str, float] | None = None) -> np.ndarray:
+        """f(xᵢ; p) for every sample (kept: the same p is asked for again by the steps and the chart)."""
+        key = (tuple(float(x) for x in p), tuple(sorted((moved or {}).items())))
+        found = self._cache.get(key)
+        if found is None:
+            found = np.array([self.value(p, i, moved) for i in range(self.samples.count)])
+            if len(self._cache) < 4096:
+                self._cache[key] = found
+        return found
+
+    def at(self, p, row: Mapping[str, float]) -> float:
+        """f at inputs ``row`` that are no sample's (a point of the chart's curve)."""
+        try:
+            result = self.report(p, row).results.get(self.samples.y_key)
+        except REFUSALS:
+            return math.nan
+        value = None if result is None else result.value
+        return float(value) if isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value) else math.nan
+
+    def sign(self, j: int) -> str:
+        return self.unknowns[j].sign
+
+    def lower(self, j: int) -> float:
+        """The least value p_j may take (its option's sign): 0, or −∞."""
+        return -math.inf if self.sign(j) == "any" else 0.0
+
+    def allowed(self, j: int, x: float) -> bool:
+        low = self.lower(j)
+        return math.isfinite(x) and (x > low if self.sign(j) == "positive" else x >= low)
+
+    def why_refused(self) -> str:
+        err = self.refusal
+        if err is None:
+            return f"the scene gives no {self.samples.y_key} there"
+        return err.spelled(self.spell) if isinstance(err, InputError) else str(err)

@@ -1,0 +1,201 @@
+"""How well the fitted inputs are known, and how well the model fits: the covariance and the
+diagnostics.
+
+- The Jacobian J = ∂f(xᵢ; p)/∂pⱼ at the solution, by central differences with Richardson
+  extrapolation (one-sided where pⱼ is near its bound), each sample's row weighted by 1/σᵢ where
+  uncertainties are given.
+- Its singular values, the columns scaled to unit length: where the smallest is below
+  ``DEGENERATE`` of the largest, the columns are dependent (the samples change the same way when
+  some inputs move together) and those inputs cannot be told apart: refused, naming them. Below
+  ``NEARLY`` a note says they are barely told apart.
+- The covariance C = (JᵀWJ)⁻¹ with W = diag(1/σᵢ²) where the samples' uncertainties are given; else
+  s²(JᵀJ)⁻¹, s² = Σrᵢ²/(n − m) the residual variance standing in for them. The correlation
+  ρⱼₖ = Cⱼₖ/√(CⱼⱼCₖₖ).
+- The residual RMS √(Σrᵢ²/n), R² = 1 − Σrᵢ²/Σ(yᵢ − ȳ)², and with uncertainties χ²/ν (ν = n − m)
+  and the chance of a χ² this large for a model that fits.
+- Two tests of the residuals in the order of the samples' input, for a shape the model does not
+  have (a line through a curve): the runs test (Wald–Wolfowitz) of their signs, which change at
+  random for a model that fits (far fewer runs than expected: z < −3.3), and their lag-1
+  autocorrelation r₁, near −1/n for a model that fits (r₁ ~ N(−1/n, 1/n): z = (r₁ + 1/n)√n > 3.3).
+  Either is p < 0.05 %: a model that fits is seldom flagged, and one flagged is said to be wrong.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from taucli.errors import InputError
+from taucli.fit.model import Model
+
+DEGENERATE = 1e-7  # smallest singular value / largest (columns scaled): below, the inputs cannot be told apart
+NEARLY = 1e-3  # below: barely told apart (a note)
+FLAT = 1e-9  # an input whose relative change moves f by less than this of f: the samples do not depend on it
+INVOLVED = 1e-4  # of the weakest direction's largest component: an input it moves (one it leaves is rounding there)
+RUNS_Z = -3.3  # the runs test's z below which the residuals are structured (one-sided p ≈ 0.0005)
+LAG_Z = 3.3  # the lag-1 autocorrelation's z above which they are
+CHI2_P = 1e-3  # a χ² this unlikely for a model that fits: a note
+RUNS_LEAST = 10  # fewer samples than this: no runs test
+STEP = 1e-3  # relative step of the differences for the Jacobian
+
+
+def jacobian(model: Model, p: np.ndarray, moved=None, *, rough: bool = False) -> np.ndarray:
+    """∂f(xᵢ; p)/∂pⱼ: n × m, by differences (central with Richardson; one-sided near a bound);
+    ``rough``: forward differences, one solve per input (enough to see dependent columns)."""
+    columns = []
+    base = model.predict(p, moved)
+    for j in range(len(p)):
+        h = max(STEP * abs(p[j]), 1e-300)
+
+        def f(x: float) -> np.ndarray:
+            q = np.array(p, dtype=float)
+            q[j] = x
+            return model.predict(q, moved)
+
+        if rough:
+            columns.append((f(p[j] + h) - base) / h)
+            continue
+        if model.allowed(j, p[j] - 2 * h):
+            coarse = (f(p[j] + 2 * h) - f(p[j] - 2 * h)) / (4 * h)
+            fine = (f(p[j] + h) - f(p[j] - h)) / (2 * h)
+        else:
+            coarse = (-3 * base + 4 * f(p[j] + 2 * h) - f(p[j] + 4 * h)) / (4 * h)
+            fine = (-3 * base + 4 * f(p[j] + h) - f(p[j] + 2 * h)) / (2 * h)
+        columns.append((4 * fine - coarse) / 3)
+    return np.column_stack(columns) if columns else np.zeros((len(base), 0))
+
+
+@dataclass
+class Degeneracy:
+    ratio: float  # smallest singular value / largest, columns scaled
+    involved: list[str]  # the inputs of the weakest direction
+    flat: list[str]  # inputs the samples do not depend on at all
+
+
+def degeneracy(J: np.ndarray, names: list[str], p: np.ndarray, f: np.ndarray) -> Degeneracy:
+    """How near the columns of J are to dependent (scaled to unit length: the ratio does not depend
+    on the inputs' units), and which inputs the weakest direction moves (where the columns are
+    dependent, an input outside the dependence has a component of rounding size there). An input
+    that moves f (weighted as J is) by less than FLAT of f for a relative change is one the samples
+    do not depend on: its column is rounding."""
+    norms = np.linalg.norm(J, axis=0)
+    size = float(np.linalg.norm(f)) if np.all(np.isfinite(f)) else 0.0
+    flat = [name for name, norm, x in zip(names, norms, p) if not norm > 0 or (x != 0 and norm * abs(x) <= FLAT * size)]
+    if flat or J.shape[1] == 0:
+        return Degeneracy(0.0, flat, flat)
+    s, vt = np.linalg.svd(J / norms, full_matrices=False)[1:]
+    weakest = np.abs(vt[-1])
+    involved = [name for name, v in zip(names, weakest) if v > INVOLVED * np.max(weakest)]
+    if len(involved) < 2:  # a dependence takes two: the two that move most
+        involved = [names[j] for j in sorted(np.argsort(weakest)[-2:])]
+    return Degeneracy(float(s[-1] / s[0]), involved, [])
+
+
+def refuse_degenerate(found: Degeneracy, what: str, said: str = "") -> None:
+    """A usage error naming the inputs the samples cannot tell apart (``said``: what the scene gives there)."""
+    if found.flat:
+        names = _listed(found.flat)
+        raise InputError("fit", f"the samples do not depend on {names}, so they cannot determine {'it' if len(found.flat) == 1 else 'them'}{said}",
+                         hint=f"is an input missing? Else leave {names} out of --fit")
+    names = _listed(found.involved)
+    raise InputError("fit", f"the samples cannot tell {names} apart: they change the same way when these move together "
+                     f"(the Jacobian's columns are dependent: smallest singular value {found.ratio:.1e} of the largest)",
+                     hint=f"give one of {names} (or samples where they act differently), and fit the others")
+
+
+def _listed(names: list[str]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+@dataclass
+class Quality:
+    n: int
+    m: int
+    residuals: np.ndarray  # measured − fitted, SI
+    covariance: np.ndarray  # of the fitted inputs, from the samples' scatter alone
+    scaled: bool  # the covariance is scaled by the residual variance (no uncertainties given)
+    s2: float  # Σr²/ν (unweighted), or χ²/ν (weighted)
+    rms: float
+    r2: float | None
+    chi2: float | None
+    chi2_dof: float | None
+    chi2_p: float | None
+    runs: tuple[int, float, float, float] | None  # (runs, expected, its σ, z)
+    lag: tuple[float, float] | None  # (r₁, z)
+    degeneracy: Degeneracy
+
+    @property
+    def structured(self) -> bool:
+        """The residuals have a shape: the runs test or the autocorrelation says so."""
+        return (self.runs is not None and self.runs[3] < RUNS_Z) or (self.lag is not None and self.lag[1] > LAG_Z)
+
+    @property
+    def dof(self) -> int:
+        return self.n - self.m
+
+    @property
+    def sigma(self) -> np.ndarray:
+        return np.sqrt(np.diag(self.covariance))
+
+    @property
+    def correlation(self) -> np.ndarray:
+        s = self.sigma
+        with np.errstate(divide="ignore", invalid="ignore"):
+            rho = self.covariance / np.outer(s, s)
+        return np.where(np.isfinite(rho), rho, 0.0)
+
+
+def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray | None, order: np.ndarray, names: list[str], p: np.ndarray) -> Quality:
+    """The covariance and the diagnostics of a fit (J unweighted; ``sigma`` each sample's σ or None)."""
+    n, m = J.shape
+    r = y - fitted
+    weights = 1.0 / sigma if sigma is not None else np.ones(n)
+    Jw = J * weights[:, None]
+    found = degeneracy(Jw, names, p, fitted * weights)
+    if found.flat or found.ratio < DEGENERATE:
+        refuse_degenerate(found, "the result")
+    norms = np.linalg.norm(Jw, axis=0)
+    u, s, vt = np.linalg.svd(Jw / norms, full_matrices=False)
+    inverse = (vt.T / s**2) @ vt / np.outer(norms, norms)  # (JᵀWJ)⁻¹, columns unscaled again
+    rss = float(np.sum(r**2))
+    chi2 = float(np.sum((r * weights) ** 2)) if sigma is not None else None
+    dof = n - m
+    s2 = (chi2 if chi2 is not None else rss) / dof
+    covariance = inverse if sigma is not None else inverse * s2
+    tss = float(np.sum((y - np.mean(y)) ** 2))
+    chi2_p = None
+    if chi2 is not None:
+        from scipy.stats import chi2 as chi2_distribution  # deferred: scipy.stats (about 150 ms), only with uncertainties given
+
+        chi2_p = float(chi2_distribution.sf(chi2, dof))
+    ordered = r[np.argsort(order, kind="stable")]
+    return Quality(n, m, r, covariance, sigma is None, s2, math.sqrt(rss / n), 1.0 - rss / tss if tss > 0 else None, chi2,
+                   chi2 / dof if chi2 is not None else None, chi2_p, runs_test(ordered), lag_test(ordered), found)
+
+
+def lag_test(residuals: np.ndarray) -> tuple[float, float] | None:
+    """(r₁, z) of the residuals in order, or None for fewer than RUNS_LEAST samples (or all 0)."""
+    n = len(residuals)
+    total = float(np.sum(residuals**2))
+    if n < RUNS_LEAST or not total > 0:
+        return None
+    r1 = float(np.sum(residuals[1:] * residuals[:-1])) / total
+    return r1, (r1 + 1 / n) * math.sqrt(n)
+
+
+def runs_test(residuals: np.ndarray) -> tuple[int, float, float, float] | None:
+    """(runs, expected, σ, z) of the signs of ``residuals`` in order (zeros left out), or None for
+    fewer than RUNS_LEAST samples."""
+    signs = np.sign(residuals[residuals != 0])
+    if len(signs) < RUNS_LEAST:
+        return None
+    plus, minus = int(np.sum(signs > 0)), int(np.sum(signs < 0))
+    if not plus or not minus:
+        return 1, 1.0, 0.0, -math.inf  # every residual of one sign: as structured as they come
+    runs = 1 + int(np.sum(signs[1:] != signs[:-1]))
+    total = plus + minus
+    expected = 2 * plus * minus / total + 1
+    spread = math.sqrt((expected - 1) * (expected - 2) / (total - 1))
+    return runs, expected, spread, (runs - expected) / spread if spread > 0 else 0.0

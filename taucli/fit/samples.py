@@ -1,0 +1,373 @@
+"""The samples a fit matches: which column is which input of the scene and which is the result
+measured, in SI, with the window (--range) and thinning (--every) applied.
+
+Each row of a table is a sample: the scene run with that row's inputs gives a result to compare
+with the row's measurement. A column is matched to the scene:
+
+- named by ``--x COLUMN[=OPTION]`` (OPTION defaults to ``time``) or ``--y COLUMN[=RESULT]``;
+  either may carry a unit for a header that has none: ``--y "w=omega (rad/s)"``;
+- else by its name (the header without its unit): an option's name (``m1``, ``angle0``,
+  ``pulley_mass`` or ``pulley-mass``) is an input; ``t`` or ``time`` is ``--time`` where the
+  scene has no result called so; a result's name (``period``, ``omega``) is what was measured,
+  where ``--y`` does not say;
+- a column matched to nothing is left out, with a note.
+
+A header's unit converts its column to SI with taucli's rules (``Time (ms)``; ``rpm`` is
+revolutions, with a note). A column of angles or angular speeds with no unit is refused, as a
+bare number for ``--angle`` is.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+from taucli import units
+from taucli.errors import InputError, did_you_mean
+from taucli.fit.data import Column, DataTable, split_header
+from taucli.report import fmt, pretty_unit
+from taucli.table import Command
+
+MAX_SAMPLES = 5000  # each sample is a solve of the scene, many times over: beyond this, --every or --range
+AMBIGUOUS = frozenset({"angle", "angular velocity", "angular acceleration"})  # a bare number is refused (docs/units.md)
+TIME_NAMES = ("t", "time")
+
+
+@dataclass(frozen=True)
+class Mapped:
+    """A column matched to the scene: an input option (``is_result`` False) or the result measured."""
+
+    column: Column
+    target: str  # the option's name or the result's key
+    is_result: bool
+    factor: float  # SI per unit of the column
+    si_unit: str
+
+
+@dataclass
+class Samples:
+    """The samples, in SI: each row's inputs (``inputs``: option name -> one value per sample),
+    the result measured, and its standard uncertainty where given."""
+
+    y_key: str
+    y_unit: str
+    y: list[float]
+    inputs: dict[str, list[float]]
+    sigma: list[float] | None = None
+    sigma_source: str = ""  # "column u (rad/s)", "0.05 rad/s"
+    columns: list[Mapped] = field(default_factory=list)
+    y_column: Mapped | None = None
+    places: list[tuple[str, int]] = field(default_factory=list)  # (file, line) of each sample
+    outside: int = 0  # left out by --range
+    thinned: int = 0  # left out by --every
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def count(self) -> int:
+        return len(self.y)
+
+    @property
+    def dropped(self) -> int:
+        return self.outside + self.thinned
+
+    def row(self, i: int) -> dict[str, float]:
+        return {name: values[i] for name, values in self.inputs.items()}
+
+    @property
+    def varying(self) -> list[str]:
+        """The inputs that differ between samples, in the order of the columns."""
+        return [name for name, values in self.inputs.items() if len(set(values)) > 1]
+
+
+def _key(name: str) -> str:
+    return name.strip().lower().replace("-", "_").replace(" ", "_")
+
+
+def _spec(text: str, option: str) -> tuple[str, str | None, str]:
+    """(COLUMN, TARGET or None, the unit TARGET carries) from "COLUMN[=TARGET [(UNIT)]]"."""
+    column, sep, target = str(text).rpartition("=") if "=" in str(text) else (str(text), "", "")
+    column, target = column.strip(), target.strip()
+    if not column or (sep and not target):
+        raise InputError(option, "expected COLUMN or COLUMN=NAME", example=f'{{{option}}} "Time (s)"' if option == "x" else '{y} "w (rad/s)=omega"', got=repr(text))
+    if not sep:
+        return column, None, ""
+    name, unit = split_header(target)
+    return column, name, unit
+
+
+def _find(tables: list[DataTable], wanted: str, option: str) -> str:
+    """The header of the column ``wanted`` names: its header, or its name without the unit."""
+    headers = list(dict.fromkeys(column.header for column in tables[0].columns))
+    for match in (lambda c: c.header == wanted, lambda c: c.name == wanted, lambda c: c.header.lower() == wanted.lower() or c.name.lower() == wanted.lower()):
+        found = [column.header for column in tables[0].columns if match(column)]
+        if len(found) == 1:
+            return found[0]
+    raise InputError(option, f"expected a column of {tables[0].source}: {', '.join(repr(h) for h in headers)}", got=repr(wanted),
+                     hint=did_you_mean(wanted, headers))
+
+
+def _factor(column: Column, unit: str, kind: str | None, si_unit: str, label: str, notes: list[str]) -> float:
+    """SI per unit of the column (its header's unit, or the unit its mapping gives)."""
+    if not unit:
+        if kind in AMBIGUOUS:
+            example = {"angle": "theta (rad)", "angular velocity": "omega (rad/s)"}.get(kind, "alpha (rad/s^2)")
+            raise InputError("data", f"column {column.header!r} ({label}) has no unit, and a bare number is ambiguous for {units.article(kind)} "
+                             "(radians or degrees, rad/s or rpm)", hint=f"write its unit in the header, e.g. {example}")
+        return 1.0
+    where = f"column {column.header!r}"
+    if kind is not None:
+        parsed = units.parse(f"1 {unit}", where, kind, sign="positive")
+    else:
+        one = units.converted(1.0, si_unit, unit, where)
+        parsed = units.Parsed(1.0 / one.value, one.note)
+    if parsed.note:
+        notes.append(parsed.note.replace(f"{where} 1 {unit}:", f"{where}:"))
+    return parsed.value
+
+
+def _kind_of_result(si_unit: str) -> str | None:
+    return next((kind.name for kind in units.KINDS.values() if kind.si_unit == si_unit), None)
+
+
+def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = None, sigma: str | None = None,
+          ranges=(), every: str | None = None, fitted=(), given=(), gravity: float | None = None) -> Samples:
+    """The samples of ``tables`` for ``command``, every column matched and converted to SI."""
+    notes: list[str] = []
+    headers = [column.header for column in tables[0].columns]
+    for table in tables[1:]:
+        if [column.header for column in table.columns] != headers:
+            raise InputError("data", f"{table.source} names other columns than {tables[0].source}: every file of one fit has the same columns",
+                             got=", ".join(repr(column.header) for column in table.columns))
+    chosen: dict[str, tuple[str, bool, str]] = {}  # header -> (target, is_result, unit given by the mapping)
+    for text in x or ():
+        column, target, unit = _spec(text, "x")
+        header = _find(tables, column, "x")
+        target = _option_target(command, target or "time", text)
+        chosen[header] = (target, False, unit)
+    if y is not None:
+        column, target, unit = _spec(y, "y")
+        header = _find(tables, column, "y")
+        key = target or tables[0].column(header).name
+        if command.result(_key(key)) is None and command.result(key) is None:
+            raise InputError("y", f"expected a result of {command.name} for column {header!r}: {command.results_line()}", got=repr(key),
+                             example='{y} "w (rad/s)=omega"', hint=did_you_mean(key, [r.key for r in command.results]))
+        chosen[header] = (key if command.result(key) is not None else _key(key), True, unit)
+    sigma_header = _sigma_column(tables, sigma)
+    unused = _match_the_rest(command, tables[0], chosen, sigma_header, y is not None, notes)
+    results = [header for header, (_, is_result, _) in chosen.items() if is_result]
+    if not results:
+        names = ", ".join(repr(h) for h in headers)
+        raise InputError("y", f"names the column that was measured, and no column is named like a result of {command.name} ({names})",
+                         example='{y} "Gyroscope z (rad/s)=omega"')
+    if len(results) > 1:
+        raise InputError("y", f"says which column was measured: {', '.join(repr(h) for h in results)} are each named like a result",
+                         example=f"{{y}} {results[0]!r}")
+    mapped = []
+    for header, (target, is_result, unit) in chosen.items():
+        mapped.append(_mapped(command, tables[0].column(header), target, is_result, unit, fitted, given, notes))
+    y_column = next(m for m in mapped if m.is_result)
+    inputs_mapped = [m for m in mapped if not m.is_result]
+    found = _collected(command, tables, y_column, inputs_mapped, sigma, sigma_header, ranges, every, gravity, notes)
+    _refuse_one_run_beside_unused(command, tables, found, unused)
+    return found
+
+
+def _refuse_one_run_beside_unused(command: Command, tables: list[DataTable], found: Samples, unused: list[str]) -> None:
+    """Samples that are all one run of the scene (no input column, or none that varies) beside a
+    column that varies and is not used: that column is most likely the input the runs differ by
+    (an amplitude, a mass), and fitting the runs as repeats of one would give a wrong number."""
+    if found.varying or found.count < 2:
+        return
+    varies = [header for header in unused if len({value for table in tables for value in table.column(header).values}) > 1]
+    if varies:
+        listed = ", ".join(repr(header) for header in varies)
+        raise InputError("x", f"is needed: every sample is the same run of {command.name} (no column gives an input that differs between them), "
+                         f"and {listed} differ{'s' if len(varies) == 1 else ''} between them but {'is' if len(varies) == 1 else 'are'} not used",
+                         hint=f"say which input {'it is' if len(varies) == 1 else 'each is'}: {{x}} {_quoted(varies[0] + '=OPTION')}, "
+                         "or leave the column out of the table")
+
+
+def _quoted(text: str) -> str:
+    return f"'{text}'" if re.search(r"[\s()\[\]*^?'\"]", text) else text
+
+
+def _option_target(command: Command, name: str, text: str) -> str:
+    option = command.option(_key(name)) or command.option(name)
+    if option is None or option.name not in command.input_names or not option.is_quantity or option.repeatable:
+        quantities = [o.name for o in command.options if o.is_quantity and not o.repeatable and o.name in command.input_names]
+        if name == "time" and command.option("time") is None:
+            raise InputError("x", f"names the option a column is: {command.name} has no --time, so say which: {{x}} \"COLUMN=OPTION\"", got=repr(text))
+        raise InputError("x", f"expected an input of {command.name} that takes one quantity: {', '.join(quantities)}", got=repr(name),
+                         hint=did_you_mean(name, quantities))
+    return option.name
+
+
+def _sigma_column(tables: list[DataTable], sigma: str | None) -> str | None:
+    if sigma is None:
+        return None
+    headers = [column.header for column in tables[0].columns]
+    names = [column.name for column in tables[0].columns]
+    return sigma.strip() if sigma.strip() in headers else headers[names.index(sigma.strip())] if sigma.strip() in names else None
+
+
+def _match_the_rest(command: Command, table: DataTable, chosen: dict, sigma_header: str | None, y_given: bool, notes: list[str]) -> list[str]:
+    """Match the columns --x and --y leave by their names; the headers of those left unused."""
+    unused = []
+    for column in table.columns:
+        if column.header in chosen or column.header == sigma_header:
+            continue
+        key = _key(column.name)
+        option = command.option(key)
+        result = command.result(column.name) or command.result(key)
+        if option is not None and option.name in command.input_names and option.is_quantity and not option.repeatable:
+            chosen[column.header] = (option.name, False, "")
+        elif key in TIME_NAMES and result is None and command.option("time") is not None and "time" not in {t for t, r, _ in chosen.values() if not r}:
+            chosen[column.header] = ("time", False, "")
+        elif result is not None and not y_given:
+            chosen[column.header] = (result.key, True, "")
+        else:
+            unused.append(column.header)
+    if unused:
+        notes.append(f"columns not used: {', '.join(repr(header) for header in unused)} (neither an input of {command.name} nor the result measured)")
+    return unused
+
+
+def _mapped(command: Command, column: Column, target: str, is_result: bool, unit: str, fitted, given, notes: list[str]) -> Mapped:
+    if column.unit and unit and column.unit != unit:
+        raise InputError("x" if not is_result else "y", f"gives column {column.header!r} the unit {unit}, and its header says {column.unit}", got=repr(unit))
+    unit = column.unit or unit
+    if is_result:
+        result = command.result(target)
+        if result.unit is None:
+            raise InputError("y", f"expected a result that is a number; {target} is yes or no", got=repr(column.header))
+        kind = _kind_of_result(result.unit)
+        try:
+            factor = _factor(column, unit, kind, result.unit, f"the result {target}", notes)
+        except InputError as err:
+            if not unit or err.option != f"column {column.header!r}":
+                raise
+            raise InputError("y", f"reads column {column.header!r} as the result {target}, and its unit {unit} is not "
+                             + (units.article(kind) if kind else f"one of {pretty_unit(result.unit)}"),
+                             hint=f"say which result it is: {{y}} {_quoted(column.header + '=RESULT')}") from None
+        return Mapped(column, target, True, factor, result.unit)
+    if target in fitted:
+        raise InputError("fit", f"fits {target}, and column {column.header!r} gives it for each sample: one or the other", got=repr(target))
+    if target in given:
+        raise InputError("data", f"column {column.header!r} gives {{{target}}} for each sample, and {{{target}}} is given as well: one or the other")
+    option = command.option(target)
+    try:
+        factor = _factor(column, unit, option.kind, units.KINDS[option.kind].si_unit, f"--{target.replace('_', '-')}", notes)
+    except InputError as err:
+        if not unit or err.option != f"column {column.header!r}":
+            raise
+        said = " (--x COLUMN alone is the time)" if target == "time" else ""
+        raise InputError("x", f"reads column {column.header!r} as {{{target}}}{said}, and its unit {unit} is not {units.article(option.kind)}",
+                         hint=f"say which input it is: {{x}} {_quoted(column.header + '=OPTION')}") from None
+    return Mapped(column, target, False, factor, units.KINDS[option.kind].si_unit)
+
+
+def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[Mapped], sigma, sigma_header, ranges, every, gravity, notes) -> Samples:
+    windows = [_window(command, text, [y_column, *inputs_mapped], gravity) for text in ranges or ()]
+    step = _every(every)
+    sigma_value, sigma_factor, sigma_source = _sigma(tables[0], sigma, sigma_header, y_column, gravity)
+    samples = Samples(y_column.target, y_column.si_unit, [], {m.target: [] for m in inputs_mapped}, [] if sigma is not None else None,
+                      sigma_source, inputs_mapped, y_column, notes=notes)
+    kept_in_window = 0
+    for table in tables:
+        for i, line in enumerate(table.lines):
+            cells = {m.target: table.column(m.column.header).values[i] * m.factor for m in (y_column, *inputs_mapped)}
+            if any(not low <= cells[name] <= high for name, low, high in windows):
+                samples.outside += 1
+                continue
+            kept_in_window += 1
+            if (kept_in_window - 1) % step:
+                samples.thinned += 1
+                continue
+            for m in inputs_mapped:
+                option = command.option(m.target)
+                _check_input(option, cells[m.target], table.source, line, m.column.header)
+                samples.inputs[m.target].append(cells[m.target])
+            samples.y.append(cells[y_column.target])
+            if sigma_header is not None:
+                spread = table.column(sigma_header).values[i] * sigma_factor
+                if not spread > 0:
+                    raise InputError("sigma", f"{table.source} line {line}: expected an uncertainty greater than 0 in column {sigma_header!r}", got=fmt(spread))
+                samples.sigma.append(spread)
+            elif sigma_value is not None:
+                samples.sigma.append(sigma_value)
+            samples.places.append((table.source, line))
+    if samples.count > MAX_SAMPLES:
+        raise InputError("data", f"gives {samples.count} samples, and fit takes at most {MAX_SAMPLES} (each is a solve of the scene, many times over)",
+                         hint=f"thin them with --every {math.ceil(samples.count / MAX_SAMPLES)}, or fit a window with --range")
+    return samples
+
+
+def _check_input(option, value: float, source: str, line: int, header: str) -> None:
+    try:
+        units.si_number(value, option.name, option.kind, sign=option.sign)
+    except InputError as err:
+        raise InputError("data", f"{source} line {line}: column {header!r} ({option.flag}) {err.expected}", got=fmt(value)) from None
+
+
+def _every(text: str | None) -> int:
+    if text is None:
+        return 1
+    try:
+        step = int(str(text).strip())
+    except ValueError:
+        step = 0
+    if step < 1:
+        raise InputError("every", "expected a whole number of 1 or more", example="{every} 10", got=repr(text))
+    return step
+
+
+def _sigma(table: DataTable, sigma: str | None, sigma_header: str | None, y_column: Mapped, gravity) -> tuple[float | None, float, str]:
+    """(one σ for every sample, or None; SI per unit of a σ column; how the output names it)."""
+    if sigma is None:
+        return None, 1.0, ""
+    unit = pretty_unit(y_column.si_unit)
+    if sigma_header is not None:
+        column = table.column(sigma_header)
+        factor = y_column.factor if not column.unit else _factor(column, column.unit, _kind_of_result(y_column.si_unit), y_column.si_unit, "an uncertainty", [])
+        return None, factor, f"column {sigma_header!r}" + ("" if column.unit else f" (in {y_column.column.unit or unit}, as {y_column.column.header!r})")
+    value = _quantity(sigma, "sigma", y_column.si_unit, gravity)
+    if not value > 0:
+        raise InputError("sigma", "expected an uncertainty greater than 0, or a column", example=f"{{sigma}} 0.05{unit.replace('²', '^2')}", got=repr(sigma))
+    return value, 1.0, f"{fmt(value)} {unit}".rstrip()
+
+
+def _quantity(text: str, option: str, si_unit: str, gravity) -> float:
+    kind = _kind_of_result(si_unit)
+    if kind is not None:
+        return units.parse(text, f"{{{option}}}", kind, sign="any", gravity=gravity).value
+    found = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*", text)
+    if found is None:
+        raise InputError(option, f"expected a number with a unit of {si_unit or 'no unit'}", got=repr(text))
+    number, unit = float(found[1]), found[2]
+    return number / units.converted(1.0, si_unit, unit, f"{{{option}}}").value if unit else number
+
+
+def _window(command: Command, text: str, mapped: list[Mapped], gravity) -> tuple[str, float, float]:
+    """(target, low, high) in SI from "NAME=FROM..TO" (either end may be left open)."""
+    name, sep, span = str(text).partition("=")
+    low_text, dots, high_text = span.partition("..")
+    if not sep or not dots:
+        raise InputError("range", "expected COLUMN=FROM..TO", example="{range} t=2s..30s", got=repr(text))
+    name = name.strip()
+    found = [m for m in mapped if name in (m.column.header, m.column.name, m.target) or (name in TIME_NAMES and m.target == "time")]
+    if not found:
+        names = sorted({m.column.name for m in mapped} | {m.target for m in mapped})
+        raise InputError("range", f"expected a column of the fit: {', '.join(names)}", got=repr(name), example="{range} t=2s..30s")
+    m = found[0]
+    bounds = []
+    for part, default in ((low_text, -math.inf), (high_text, math.inf)):
+        if not part.strip():
+            bounds.append(default)
+        elif m.is_result:
+            bounds.append(_quantity(part, "range", m.si_unit, gravity))
+        else:
+            bounds.append(units.parse(part, "{range}", command.option(m.target).kind, sign="any", gravity=gravity).value)
+    if bounds[0] > bounds[1]:
+        raise InputError("range", "expected FROM below TO", example="{range} t=2s..30s", got=repr(text))
+    return m.target, bounds[0], bounds[1]

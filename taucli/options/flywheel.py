@@ -1,0 +1,56 @@
+"""taucli flywheel: the fluctuation of a flywheel's speed and energy over a cycle, and its rim."""
+
+from taucli.options.common import ANSWER, BODY_OPTIONS
+from taucli.table import Command, Option, Result
+
+SPEED = "Speed and its fluctuation"
+ENERGY = "Energy"
+RIM = "Rim (a flywheel whose mass is in its rim)"
+
+COMMAND = Command(
+    name="flywheel",
+    summary="A flywheel's fluctuation of speed: Cs = (ω_max − ω_min)/ω_mean and ΔE = Iω²Cs, any two of I, ΔE, Cs; its rim's stress.",
+    description=(
+        "The mean speed (--omega-mean, or the band --omega-max and --omega-min, or a rim's --rim-speed) and two of the "
+        "flywheel's moment of inertia (--inertia, --shape, --part), the energy it gives up and takes back each cycle "
+        "(--energy-swing, or a punch's --energy-per-cycle with --punch-fraction) and the coefficient of fluctuation "
+        "(--fluctuation, or ± --speed-variation) give the third. With the rim's mean radius, its mass; with its "
+        "--density, the hoop stress ρv² the rim speed puts in it, against --allowable-stress."
+    ),
+    example="taucli flywheel --omega-mean 300rpm --fluctuation 0.02 --energy-swing 5kJ --rim-radius 0.6m --density '7200kg/m^3'",
+    options=(
+        *BODY_OPTIONS,
+        Option("omega_mean", "angular velocity", "Mean speed ω_mean, e.g. 300rpm.", panel=SPEED),
+        Option("omega_max", "angular velocity", "Greatest speed in the cycle (with --omega-min: the mean is their average).", panel=SPEED),
+        Option("omega_min", "angular velocity", "Least speed in the cycle.", sign="nonnegative", panel=SPEED),
+        Option("fluctuation", "dimensionless", "Coefficient of fluctuation of speed Cs = (ω_max − ω_min)/ω_mean, e.g. 0.02.", panel=SPEED),
+        Option("speed_variation", "dimensionless", "The speed's swing either side of the mean, as a fraction: 0.01 for ±1% (Cs = 0.02).", panel=SPEED),
+        Option("energy_swing", "energy", "Maximum fluctuation of energy ΔE: what the flywheel gives up and takes back each cycle, e.g. 5kJ.", panel=ENERGY),
+        Option("energy_per_cycle", "energy", "Energy a punch or shear takes each cycle, which the motor supplies evenly over the cycle.", panel=ENERGY),
+        Option("punch_fraction", "dimensionless", "Share of the cycle during which the punch takes that energy (0 to 1): ΔE = E(1 − f).",
+               sign="nonnegative", default="0", panel=ENERGY),
+        Option("rim_radius", "length", "Mean radius of the rim, taken as the radius of gyration (the arms and hub neglected): the rim's mass I/R².", panel=RIM),
+        Option("rim_speed", "velocity", "Mean speed of the rim, v = ω_mean R (instead of --omega-mean; alone, the rim's mass from ΔE = mv²Cs).", panel=RIM),
+        Option("density", "density", "Density of the rim, for its hoop stress ρv² and cross-section, e.g. '7200kg/m^3'.", panel=RIM),
+        Option("allowable_stress", "stress", "The stress the rim's material may carry, against the hoop stress at the top speed, e.g. 6MPa.", panel=RIM),
+    ),
+    results=(
+        Result("cs", "", "coefficient of fluctuation of speed…"),
+        Result("energy_swing", "J", "maximum fluctuation of energy ΔE…"),
+        Result("I", "kg*m**2", "moment of inertia of the flywheel…"),
+        Result("omega_mean", "rad/s", "mean speed"),
+        Result("omega_max", "rad/s", "greatest speed, ω_mean(1 + Cs/2)"),
+        Result("omega_min", "rad/s", "least speed, ω_mean(1 − Cs/2)"),
+        Result("KE_mean", "J", "kinetic energy at the mean speed, ½Iω²"),
+        Result("mass", "kg", "mass of the rim…"),
+        Result("rim_speed", "m/s", "mean rim speed v = ω_mean R"),
+        Result("rim_speed_max", "m/s", "rim speed at ω_max"),
+        Result("hoop_stress", "Pa", "hoop stress in the rim at the mean speed, ρv²"),
+        Result("hoop_stress_max", "Pa", "hoop stress at the top speed, ρv_max²"),
+        Result("rim_area", "m**2", "cross-section of the rim, m/(2πRρ)"),
+        Result("stress_margin", "", "allowable stress over the hoop stress at the top speed"),
+    ),
+    output=ANSWER,
+    headline="energy_swing",
+    library="taucli.scenes.flywheel:flywheel",
+)

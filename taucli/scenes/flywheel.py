@@ -1,0 +1,213 @@
+"""A flywheel's fluctuation of speed and energy over a cycle, and the stress in its rim.
+
+Over a cycle (an engine's, a punch's) the flywheel's speed swings between ω_max and ω_min about
+the mean ω_mean = (ω_max + ω_min)/2; the coefficient of fluctuation of speed is
+
+    Cs = (ω_max − ω_min)/ω_mean,
+
+and the energy it gives up between the two, the maximum fluctuation of energy, is exactly
+
+    ΔE = ½I(ω_max² − ω_min²) = I·ω_mean·(ω_max − ω_min) = I·ω_mean²·Cs,
+
+so any two of I, ΔE and Cs give the third. A flywheel whose mass is in its rim, of mean radius
+R, has I = mR² and its rim moves at v = ω_mean R: ΔE = m v² Cs, and a thin rim carries the hoop
+stress σ = ρv² (the centripetal force of each element, taken by the tension around the ring),
+greatest at the top speed. A punch taking E each cycle during a share f of it, from a motor
+that supplies E evenly over the cycle, leaves the flywheel to give ΔE = E(1 − f).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from taucli.errors import InputError
+from taucli.options.flywheel import COMMAND as TABLE
+from taucli.report import Report, Step, fmt, quantity_text
+from taucli.scenes.inertia import body
+from taucli.table import Results
+
+_EXAMPLE = "{omega_mean} 300rpm {fluctuation} 0.02 {energy_swing} 5kJ"
+
+
+def flywheel(
+    *,
+    inertia: float | None = None,
+    shape: str | None = None,
+    mass: float | None = None,
+    axis: str | None = None,
+    offset: float | None = None,
+    part: Sequence = (),
+    omega_mean: float | None = None,
+    omega_max: float | None = None,
+    omega_min: float | None = None,
+    fluctuation: float | None = None,
+    speed_variation: float | None = None,
+    energy_swing: float | None = None,
+    energy_per_cycle: float | None = None,
+    punch_fraction: float | None = None,
+    rim_radius: float | None = None,
+    rim_speed: float | None = None,
+    density: float | None = None,
+    allowable_stress: float | None = None,
+    **dims: float | None,
+) -> Report:
+    """``taucli flywheel``: the mean speed (or the band, or a rim's speed) and two of I, ΔE, Cs."""
+    steps: list[Step] = []
+    notes: list[str] = []
+    results = Results(TABLE)
+    given_body = inertia is not None or shape is not None or bool(part)
+    moment = None
+    if given_body:
+        moment, body_steps = body(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, **dims)
+        steps += body_steps
+    elif mass is not None or offset is not None or any(v is not None for v in dims.values()):
+        raise InputError("shape", "is required with the body's mass and dimensions (or give {inertia})", example="{shape} ring {mass} 500kg {radius} 0.6m")
+
+    mean, cs = _speeds(omega_mean, omega_max, omega_min, rim_speed, rim_radius, fluctuation, speed_variation, steps)
+    swing = _swing(energy_swing, energy_per_cycle, punch_fraction, steps)
+    rim_only = mean is None  # a rim's speed alone: ΔE = m v² Cs, the rim's mass in place of I
+    if rim_only and given_body:
+        raise InputError("rim_speed", "without {rim_radius} goes with the rim's mass, not a body: give {rim_radius} (ω = v/R) or {omega_mean}",
+                         example="{rim_speed} 25m/s {rim_radius} 0.5m")
+    square = rim_speed**2 if rim_only else mean**2
+    symbol, unknown = ("v²", "m") if rim_only else ("ω_mean²", "I")
+    known = {"I": moment, "energy_swing": swing, "cs": cs}
+    missing = [name for name, value in known.items() if value is None]
+    if not missing:
+        raise InputError("energy_swing" if energy_swing is not None else "energy_per_cycle",
+                         "is one too many: ΔE = Iω²Cs, so two of the body (I), the energy swing and the fluctuation give the third",
+                         example=_EXAMPLE)
+    if len(missing) > 1:
+        wanted = {"I": "the body ({inertia} or {shape})", "energy_swing": "{energy_swing} (or {energy_per_cycle})", "cs": "{fluctuation} (or the speed band)"}
+        raise InputError(missing[0] if missing[0] != "I" else "inertia", "and " + " or ".join(wanted[m] for m in missing[1:])
+                         + " are not given: ΔE = Iω²Cs needs two of I, ΔE and Cs", example=_EXAMPLE)
+    if missing == ["I"]:
+        moment = swing / (square * cs)
+        steps.append(Step("The flywheel it takes" if not rim_only else "The rim's mass it takes", f"{unknown} = ΔE/({symbol}Cs)",
+                          f"{quantity_text(swing, 'J')} / (({_speed_text(rim_only, rim_speed, mean)})² × {fmt(cs)})",
+                          quantity_text(moment, "kg" if rim_only else "kg*m**2"),
+                          "ΔE = ½I(ω_max² − ω_min²) = I·ω_mean·(ω_max − ω_min) = Iω_mean²Cs: the energy between the top and the bottom speed"
+                          + ("; for a rim, Iω² = mR²ω² = mv²" if rim_only else "")))
+    elif missing == ["energy_swing"]:
+        swing = moment * square * cs
+        steps.append(Step("Maximum fluctuation of energy", f"ΔE = {unknown}{symbol}Cs",
+                          f"{quantity_text(moment, 'kg*m**2')} × ({_speed_text(rim_only, rim_speed, mean)})² × {fmt(cs)}", quantity_text(swing, "J"),
+                          "the kinetic energy between the top and the bottom speed: ½I(ω_max² − ω_min²) = Iω_mean(ω_max − ω_min)"))
+    else:
+        cs = swing / (moment * square)
+        steps.append(Step("Coefficient of fluctuation of speed", f"Cs = ΔE/({unknown}{symbol})",
+                          f"{quantity_text(swing, 'J')} / ({quantity_text(moment, 'kg*m**2')} × ({_speed_text(rim_only, rim_speed, mean)})²)", fmt(cs),
+                          "ΔE = Iω_mean²Cs read the other way"))
+        if cs >= 2:
+            raise InputError("energy_swing", f"is more than the flywheel holds over that speed: Cs = {fmt(cs)} would take ω_min below 0", example=_EXAMPLE)
+    results.put("cs", cs, " (ω_max − ω_min)/ω_mean")
+    results.put("energy_swing", swing, ", Iω²Cs" if not rim_only else ", mv²Cs")
+    if not rim_only:
+        results.put("I", moment)
+        results.put("omega_mean", mean)
+        results.put("omega_max", mean * (1 + cs / 2))
+        results.put("omega_min", mean * (1 - cs / 2))
+        results.put("KE_mean", 0.5 * moment * mean * mean)
+    rim_mass = moment if rim_only else (moment / rim_radius**2 if rim_radius is not None else None)
+    if rim_mass is not None:
+        results.put("mass", rim_mass, ", I/R²" if not rim_only else ", ΔE/(v²Cs)")
+        if not rim_only:
+            steps.append(Step("Mass of the rim", "m = I/R²", f"{quantity_text(moment, 'kg*m**2')} / ({quantity_text(rim_radius, 'm')})²",
+                              quantity_text(rim_mass, "kg"), "the rim's mass sits at its mean radius (the arms and hub are left out, as the books do)"))
+        speed = rim_speed if rim_speed is not None else mean * rim_radius
+        results.put("rim_speed", speed)
+        results.put("rim_speed_max", speed * (1 + cs / 2))
+    _rim_stress(results, steps, notes, rim_mass, rim_radius, rim_speed if rim_speed is not None else (mean * rim_radius if rim_radius is not None else None),
+                cs, density, allowable_stress)
+    model = ("a rim flywheel: ΔE = mv²Cs" if rim_only else "flywheel fluctuation: ΔE = Iω_mean²Cs") + ", Cs = (ω_max − ω_min)/ω_mean"
+    return Report("flywheel", model, "closed form", results, steps, notes)
+
+
+def _speed_text(rim_only: bool, rim_speed: float | None, mean: float | None) -> str:
+    return quantity_text(rim_speed, "m/s") if rim_only else quantity_text(mean, "rad/s")
+
+
+def _speeds(omega_mean, omega_max, omega_min, rim_speed, rim_radius, fluctuation, speed_variation, steps) -> tuple[float | None, float | None]:
+    """The mean speed (None where a rim's speed stands alone) and Cs where the speeds give it."""
+    if (omega_max is None) != (omega_min is None):
+        raise InputError("omega_min" if omega_min is None else "omega_max", "goes with {omega_max}/{omega_min}: the band needs both ends", example="{omega_max} 303rpm {omega_min} 297rpm")
+    given = [name for name, value in (("omega_mean", omega_mean), ("omega_max", omega_max), ("rim_speed", rim_speed)) if value is not None]
+    if len(given) > 1:
+        raise InputError(given[1], f"conflicts with {{{given[0]}}}: give the mean speed one way (the band's mean is its ends' average)", example=_EXAMPLE)
+    if not given:
+        raise InputError("omega_mean", "is required (or {omega_max} and {omega_min}, or {rim_speed})", example=_EXAMPLE)
+    if fluctuation is not None and speed_variation is not None:
+        raise InputError("speed_variation", "conflicts with {fluctuation}: ±x of the mean is Cs = 2x; give one")
+    cs = fluctuation if fluctuation is not None else (2 * speed_variation if speed_variation is not None else None)
+    if speed_variation is not None:
+        steps.append(Step("Coefficient of fluctuation from the ± swing", "Cs = 2 × (±x)", f"2 × {fmt(speed_variation)}", fmt(cs),
+                          "the speed goes from ω_mean(1 − x) to ω_mean(1 + x): their difference over the mean is 2x"))
+    if omega_max is not None:
+        if cs is not None:
+            raise InputError("fluctuation" if fluctuation is not None else "speed_variation", "conflicts with the band {omega_max} and {omega_min}, which gives Cs")
+        if omega_max <= omega_min:
+            raise InputError("omega_max", "must be above {omega_min}", example="{omega_max} 303rpm {omega_min} 297rpm")
+        mean = (omega_max + omega_min) / 2
+        cs = (omega_max - omega_min) / mean
+        steps.append(Step("Mean speed and coefficient of fluctuation", "ω_mean = (ω_max + ω_min)/2,  Cs = (ω_max − ω_min)/ω_mean",
+                          f"({quantity_text(omega_max, 'rad/s')} + {quantity_text(omega_min, 'rad/s')})/2", f"{quantity_text(mean, 'rad/s')}, Cs = {fmt(cs)}",
+                          "the mean of the two ends, and the band's width over it"))
+        return mean, cs
+    if cs is not None and not 0 < cs < 2:
+        raise InputError("fluctuation" if fluctuation is not None else "speed_variation", "expected Cs between 0 and 2 (ω_min = ω_mean(1 − Cs/2) ≥ 0), e.g. 0.02",
+                         got=fmt(cs))
+    if rim_speed is not None:
+        if rim_radius is None:
+            return None, cs
+        mean = rim_speed / rim_radius
+        steps.append(Step("Mean speed from the rim's", "ω_mean = v/R", f"{quantity_text(rim_speed, 'm/s')} / {quantity_text(rim_radius, 'm')}",
+                          quantity_text(mean, "rad/s"), "the rim moves at ω R"))
+        return mean, cs
+    return omega_mean, cs
+
+
+def _swing(energy_swing, energy_per_cycle, punch_fraction, steps) -> float | None:
+    """ΔE given, or left by a punch: the motor gives E evenly, so during the share f it gives Ef and the flywheel E(1 − f)."""
+    if energy_per_cycle is None:
+        if punch_fraction is not None:
+            raise InputError("punch_fraction", "goes with {energy_per_cycle}", example="{energy_per_cycle} 26.7kJ {punch_fraction} 0.16")
+        return energy_swing
+    if energy_swing is not None:
+        raise InputError("energy_per_cycle", "conflicts with {energy_swing}: the punch's energy gives ΔE")
+    share = punch_fraction or 0.0
+    if not 0 <= share < 1:
+        raise InputError("punch_fraction", "expected a share of the cycle from 0 to below 1", example="{punch_fraction} 0.16", got=fmt(share))
+    swing = energy_per_cycle * (1 - share)
+    steps.append(Step("Energy the flywheel gives during the punch", "ΔE = E − E·f = E(1 − f)", f"{quantity_text(energy_per_cycle, 'J')} × (1 − {fmt(share)})",
+                      quantity_text(swing, "J"),
+                      "the motor supplies E evenly over the cycle, so while the punch works (a share f of the cycle) it gives only Ef; "
+                      "the flywheel gives the rest, slowing from its top speed to its least"))
+    return swing
+
+
+def _rim_stress(results, steps, notes, rim_mass, rim_radius, speed, cs, density, allowable) -> None:
+    """The hoop stress ρv² in a thin rim at the mean and top speeds, its section m/(2πRρ), the margin."""
+    if density is None:
+        if allowable is not None:
+            raise InputError("allowable_stress", "goes with {density}: the hoop stress is ρv²", example="{density} 7200kg/m^3 {allowable_stress} 6MPa")
+        return
+    if speed is None:
+        raise InputError("density", "needs the rim's speed: {rim_radius} (with the mean speed) or {rim_speed}", example="{rim_radius} 0.6m {density} 7200kg/m^3")
+    top = speed * (1 + cs / 2)
+    stress, stress_max = density * speed**2, density * top**2
+    results.put("hoop_stress", stress)
+    results.put("hoop_stress_max", stress_max)
+    steps.append(Step("Hoop stress in the rim", "σ = ρv²", f"{quantity_text(density, 'kg/m**3')} × ({quantity_text(speed, 'm/s')})²", quantity_text(stress, "Pa"),
+                      "each element of a thin rim needs a centripetal force ρAv²/R, which the tension σA around the ring gives: σ = ρv², "
+                      "whatever the section; at the top speed it is (1 + Cs/2)² as much"))
+    if rim_mass is not None and rim_radius is not None:
+        area = rim_mass / (2 * math.pi * rim_radius * density)
+        results.put("rim_area", area)
+        steps.append(Step("Cross-section of the rim", "A = m/(2πRρ)", f"{quantity_text(rim_mass, 'kg')} / (2π × {quantity_text(rim_radius, 'm')} × {quantity_text(density, 'kg/m**3')})",
+                          quantity_text(area, "m**2"), "the rim's mass is its volume 2πR·A times ρ"))
+    if allowable is not None:
+        margin = allowable / stress_max
+        results.put("stress_margin", margin)
+        if margin < 1:
+            notes.append(f"stress_margin {fmt(margin)}: the rim's hoop stress at the top speed is above the allowable stress; it would burst first")
