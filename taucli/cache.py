@@ -87,16 +87,6 @@ def file_checksum(path: str | None) -> str:
         return "?"
 
 
-def pint_version(init: str | None) -> str:
-    """pint's version, from the name of its .dist-info beside the package (importlib.metadata
-    costs milliseconds), or "?"."""
-    try:
-        site = os.path.dirname(os.path.dirname(init))
-        return next((name[5:-10] for name in os.listdir(site) if name.startswith("pint-") and name.endswith(".dist-info")), "?")
-    except (OSError, TypeError):
-        return "?"
-
-
 def stamp(*origins: str | None) -> str:
     """What stored answers depend on: taucli's version, and the size and time of each file."""
     parts = [__version__]
@@ -230,6 +220,56 @@ def _no_constants(name: str):
     raise ValueError(name)
 
 
+# pint's answers for the units taucli's help, docs and kinds use, built when taucli is released
+# and shipped in the package, so that a first run (an empty cache folder) reads "4 kg" without
+# importing pint, as a warm run does. Used only for the exact rules and pint it was built with:
+# the text of the modules that make a key and read a unit, and pint's version. Rebuilt by
+# ``python -m taucli.shipped``; tests/test_first_run.py checks it is current and agrees with pint.
+SHIPPED = "units-shipped.json"
+RULES = ("units.py", "registry.py", "screen.py", "spellings.py", "kinds.py")
+
+
+def pint_version() -> str | None:
+    """The installed pint's version, from its dist-info folder's name (importlib.metadata costs
+    tens of milliseconds), or None where it cannot be found that way."""
+    origin = package_file("pint")
+    if origin is None:
+        return None
+    site = os.path.dirname(os.path.dirname(origin))
+    try:
+        names = os.listdir(site)
+    except OSError:
+        return None
+    found = [name[5:-10] for name in names if name.startswith("pint-") and name.endswith(".dist-info")]
+    return found[0] if len(found) == 1 else None
+
+
+def rules_stamp() -> str:
+    """What the shipped factors hold for: the text of taucli's reading rules, and pint's version."""
+    parts = []
+    for name in RULES:
+        try:
+            with open(own_file(name), "rb") as handle:
+                parts.append(f"{name}:{zlib.crc32(handle.read()):08x}")
+        except OSError:
+            parts.append(f"{name}:?")
+    return "|".join([*parts, f"pint {pint_version()}"])
+
+
+@lru_cache(maxsize=1)
+def shipped_unit_factors() -> dict:
+    """The factors shipped in the package (key -> [SI factor, how]), or {} where they do not hold
+    for these rules and this pint, or cannot be read."""
+    try:
+        with open(own_file(SHIPPED), encoding="utf-8") as handle:
+            stored = json.load(handle, parse_constant=_no_constants)
+    except (OSError, ValueError):
+        return {}
+    if not isinstance(stored, dict) or not isinstance(stored.get("entries"), dict) or stored.get("stamp") != rules_stamp():
+        return {}
+    return stored["entries"]
+
+
 @lru_cache(maxsize=1)
 def unit_factors() -> Store:
     """(unit text, kind) -> [SI factor, how it was read]: pint's answers under taucli's rules, for
@@ -241,5 +281,5 @@ def _units_stamp() -> str:
     """taucli's version and rules, pint's version, and a checksum of the definitions pint reads."""
     init = package_file("pint")
     definitions = [os.path.join(os.path.dirname(init), name) for name in ("default_en.txt", "constants_en.txt")] if init else []
-    return "|".join([stamp(own_file("units.py"), own_file("registry.py"), init), f"pint {pint_version(init)}",
+    return "|".join([stamp(own_file("units.py"), own_file("registry.py"), init), f"pint {pint_version() or '?'}",
                      *(f"{os.path.basename(path)}:{file_checksum(path)}" for path in definitions)])

@@ -19,7 +19,7 @@ from typing import Annotated, Optional, TextIO
 
 import typer
 
-from taucli import answer, help, pipeline, render
+from taucli import answer, help, pipeline, render, usage
 from taucli.errors import ExitStatus, InputError, TaucliError, bounded, did_you_mean, out_of_range
 from taucli.names import FORMATS
 from taucli.options import COMMANDS
@@ -309,6 +309,10 @@ def main(argv: list[str] | None = None, env: Environment | None = None) -> int:
         return answered
     at = command_at(args)
     command = COMMANDS.get(args[at]) if at < len(args) else None
+    misread = usage.explain(command, args, at)  # --m1 --m2 1kg, --torque 2 N m, -help: the fix
+    if misread is not None:
+        where = f" (see 'taucli {command.name} --help')" if command is not None else " (see 'taucli --help')"
+        return _fail(env, ExitStatus.USAGE, misread + where)
     try:
         result = build_app(env, command.name if command else None)(args=args, prog_name="taucli", standalone_mode=False)
     except TaucliError as err:

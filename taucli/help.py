@@ -2,6 +2,7 @@
 
     taucli --help          the commands, taucli's own options, the exit statuses
     taucli atwood --help   the command's summary, results, example and options by panel
+    taucli help [COMMAND]  the same as --help
 
 ``requested`` finds a help request in the arguments as click would: -h or --help where it is not
 the value of an option that takes one, before any ``--``.
@@ -10,9 +11,9 @@ the value of an option that takes one, before any ``--``.
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import sys
-import textwrap
 
 from taucli.version import __version__
 from taucli.options import COMMANDS, SCENES
@@ -33,6 +34,8 @@ def requested(args: list[str]) -> Command | None:
         return ROOT
     if at == len(args):
         return None
+    if args[at] == "help":  # taucli help, taucli help atwood: as --help
+        return COMMANDS.get(args[at + 1], ROOT) if at + 1 < len(args) else ROOT
     command = COMMANDS.get(args[at])
     if command is None:
         return None
@@ -41,46 +44,116 @@ def requested(args: list[str]) -> Command | None:
     for word in words:
         if word == "--":
             return None
-        if word in HELP_WORDS:
-            return command
+        if word in HELP_WORDS or (word == "help" and not any(option.positional for option in command.options)):
+            return command  # (taucli atwood help: as --help, where "help" cannot be an argument)
         if word in takes_value:
             next(words, None)
     return None
 
 
+NARROW = 60  # below this many columns an option's help goes under its name, not beside it
+
+
 def width() -> int:
-    """As click's formatter: the terminal's width less 2, at most 78, at least 50."""
-    return max(min(shutil.get_terminal_size((80, 24)).columns, 80) - 2, 50)
+    """The columns help may fill: the terminal's width less 2 (at most 78), at least 20.
+
+    Every line fits: help breaks only at spaces, so a value (``'0.1kg*m^2'``) is never split.
+    """
+    return max(min(shutil.get_terminal_size((80, 24)).columns, 80) - 2, 20)
+
+
+def _wrap(text: str, columns: int, indent: str, later: str | None = None) -> list[str]:
+    """``text`` in lines of at most ``columns``, broken at spaces, never inside a word: a value
+    (``'0.1kg*m^2'``) stays whole. A list of choices too long for a line (``a|b|c``) may break
+    after a ``|``; any other word longer than a line stands alone on its line."""
+    later = indent if later is None else later
+    pieces: list[tuple[str, bool]] = []  # (piece, whether a space goes before it)
+    for word in text.split():
+        if len(word) + len(later) > columns and "|" in word:
+            parts = word.split("|")
+            pieces += [(part + "|", i == 0) for i, part in enumerate(parts[:-1])] + [(parts[-1], False)]
+        else:
+            pieces.append((word, True))
+    lines: list[str] = []
+    line = ""
+    for piece, spaced in pieces:
+        lead = indent if not lines else later
+        joined = f"{line} {piece}" if line and spaced else line + piece
+        if line and len(lead) + len(joined) > columns:
+            lines.append(lead + line)
+            line = piece
+        else:
+            line = joined
+    if line:
+        lines.append((indent if not lines else later) + line)
+    return lines
 
 
 def _paragraph(text: str, columns: int) -> list[str]:
-    return textwrap.wrap(text, columns, initial_indent="  ", subsequent_indent="  ", break_on_hyphens=False) + [""]
+    return _wrap(text, columns, "  ") + [""]
 
 
 def _definitions(rows: list[tuple[str, str]], columns: int) -> list[str]:
-    """Two columns, the second wrapped beside the first (or below it when the first is long)."""
+    """Two columns, the second wrapped beside the first (or below it when the first is long, or
+    the terminal narrow)."""
     first = min(max(len(term) for term, _ in rows), 30) + 2
+    if columns < NARROW:
+        first = 0
     lines = []
     for term, text in rows:
-        wrapped = textwrap.wrap(text, max(columns - first - 2, 20), break_on_hyphens=False) or [""]
-        if len(term) + 2 > first:
-            lines.append(f"  {term}")
-            lines.extend(" " * (first + 2) + part for part in wrapped)
+        if not first or len(term) + 2 > first:
+            lines.extend(_wrap(term, columns, "  ", "      "))
+            lines.extend(_wrap(text, columns, " " * (first + 2 if first else 6)))
         else:
+            wrapped = _wrap(text, columns - first - 2, "") or [""]
             lines.append(f"  {term.ljust(first)}{wrapped[0]}".rstrip())
             lines.extend(" " * (first + 2) + part for part in wrapped[1:])
     return lines
 
 
+def example_lines(example: str, columns: int) -> list[str]:
+    """``Example:`` and a command line that fits: broken before an option with a backslash, which
+    bash, zsh and fish all read as the line going on, so it can be copied as shown."""
+    one = f"  Example: {example}"
+    if len(one) <= columns:
+        return [one]
+    words = []
+    for word in _shell_words(example):  # an option and its value part only where the pair is too long for a line
+        words += word.split(" ", 1) if len(word) + 8 > columns and not word.startswith(("'", '"')) else [word]
+    lines, line = [], "    " + words[0]
+    for word in words[1:]:
+        joined = f"{line} {word}"
+        # keep an option with its value: break before a word that starts an option
+        if len(joined) + 2 > columns and line.strip():
+            lines.append(line + " \\")
+            line = "      " + word
+        else:
+            line = joined
+    return ["  Example:", *lines, line]
+
+
+def _shell_words(command: str) -> list[str]:
+    """The words of a command line as typed, quotes kept, an option joined to its value where the
+    pair fits (``--m1 4kg``), and a redirection to its target (``> FILE``)."""
+    words = re.findall(r"""(?:'[^']*'|"[^"]*"|[^\s'"])+""", command)
+    joined: list[str] = []
+    for word in words:
+        if joined and (not word.startswith("-") and (joined[-1].startswith("-") and " " not in joined[-1] or joined[-1] in ("|",))):
+            joined[-1] += " " + word
+        else:
+            joined.append(word)
+    return joined
+
+
 def _term(option: Option) -> str:
-    return option.flag if not option.takes_value else f"{option.flag} {option.shown_metavar}"
+    return option.flag if option.positional or not option.takes_value else f"{option.flag} {option.shown_metavar}"
 
 
 def text(command: Command) -> str:
     """The help of ``command`` (ROOT: taucli's own), as lines ending in a newline."""
     columns = width()
     if command is ROOT:
-        lines = ["Usage: taucli [OPTIONS] COMMAND [ARGS]...", ""]
+        lines = [*_wrap("Usage: taucli [OPTIONS] COMMAND [ARGS]...", columns, "", "  "), ""]
         for paragraph in (command.summary, command.description, EXIT_STATUSES):
             lines += _paragraph(paragraph, columns)
         lines.append("Options:")
@@ -89,20 +162,20 @@ def text(command: Command) -> str:
         lines += _definitions([(c.name, c.summary) for c in COMMANDS.values()], columns)
         return "\n".join(lines) + "\n"
     arguments = " ".join(option.flag for option in command.options if option.positional)
-    lines = [f"Usage: taucli {command.name} [OPTIONS]{' ' + arguments if arguments else ''}", ""]
+    lines = [*_wrap(f"Usage: taucli {command.name} [OPTIONS]{' ' + arguments if arguments else ''}", columns, "", "  "), ""]
     lines += _paragraph(command.summary, columns)
     if command.description:
         lines += _paragraph(command.description, columns)
     if command.results:
         lines += _paragraph(f"Results: {command.results_line()}.", columns)
-    lines += [f"  Example: {command.example}", ""]
+    lines += [*example_lines(command.example, columns), ""]
     sections: dict[str, list[tuple[str, str]]] = {}
     for option in (*command.options, *command.output):
         title = "Arguments" if option.positional else option.panel or "Options"
         sections.setdefault(title, []).append((_term(option), option.help_text()))
     sections.setdefault("Options", []).append(HELP_LINE)
     for title, rows in sections.items():
-        lines.append(f"{title}:")
+        lines += _wrap(f"{title}:", columns, "", "  ")
         lines += _definitions(rows, columns)
         lines.append("")
     lines += _paragraph(EXIT_STATUSES, columns)

@@ -59,7 +59,7 @@ KINDS: dict[str, Kind] = {
         Kind("linear density", "kg/m", "0.5 kg/m", ("kg/m", "g/cm", "g/m")),  # a rod's or ring's mass per length
         Kind("pressure", "Pa", "1 MPa", ("Pa", "kPa", "MPa", "bar", "psi")),
         Kind("stress", "Pa", "200 MPa", ("Pa", "kPa", "MPa", "GPa", "psi", "N/mm^2")),
-        Kind("torsion constant", "N*m/rad", "0.5 N*m/rad", ("N*m/rad", "N*m/deg", "mN*m/rad")),
+        Kind("torsion constant", "N*m/rad", "'0.5 N*m/rad'", ("N*m/rad", "N*m/deg", "mN*m/rad")),
         Kind("lead", "m/rev", "5 mm", ("mm", "in", "mm/rev", "in/rev")),  # a screw's advance per turn: a length alone is per revolution
     )
 }

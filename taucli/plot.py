@@ -240,8 +240,9 @@ def _matplotlib_folder() -> None:
     os.environ["MPLCONFIGDIR"] = folder
 
 
-def write_file(chart: Chart, path: str) -> None:
-    """The chart as an SVG or PNG file (matplotlib, Agg backend)."""
+def write_file(chart: Chart, path: str, said_to=None) -> None:
+    """The chart as an SVG or PNG file (matplotlib, Agg backend); where it went is said on
+    ``said_to`` (stderr: stdout holds the answer alone)."""
     _matplotlib_folder()
     import matplotlib  # deferred: matplotlib (hundreds of ms), only for a file
 
@@ -272,6 +273,8 @@ def write_file(chart: Chart, path: str) -> None:
         _replace_atomically(path, lambda temporary: figure.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()))
     finally:
         pyplot.close(figure)
+    if said_to is not None:
+        said_to.write(f"taucli: wrote the chart to {path}\n")
 
 
 def _replace_atomically(path: str, write) -> None:

@@ -20,8 +20,9 @@ from typing import NamedTuple, TextIO
 from taucli import units
 from taucli.version import __version__
 from taucli.errors import InputError, did_you_mean
+from taucli.display import equation_text, minus_signs, wrap_expression
 from taucli.measurement import with_uncertainty
-from taucli.written import shown as shown  # a value as a person reads it (the sweep's table, the tests)
+from taucli.written import DIGITS, shown as written_shown
 from taucli.report import Report, Table, Value, pretty_unit
 
 
@@ -67,7 +68,7 @@ def clamped(columns: int) -> int:
 
 def terminal_style(stream: TextIO) -> tuple[int, bool]:
     """(columns, colour) for text drawn on ``stream``: no colour under NO_COLOR, TERM=dumb or a pipe."""
-    columns = shutil.get_terminal_size((100, 24)).columns
+    columns = shutil.get_terminal_size((80, 24)).columns  # in a pipe, 80: the width tables are drawn at
     colour = stream.isatty() and not os.environ.get("NO_COLOR") and os.environ.get("TERM") != "dumb"
     return clamped(columns), colour
 
@@ -134,7 +135,7 @@ def apply_conversions(report: Report, to: Sequence[str]) -> Report:
         if value.unit is None or not isinstance(value.value, (float, int)) or isinstance(value.value, bool):
             if value.value is None:
                 continue
-            raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to I=g*cm^2")
+            raise InputError("--to", f"expected a result with a unit; {name} has none", example="--to 'I=g*cm^2'")
         converted, note = units.converted(float(value.value), value.unit, unit, "--to")[:2]
         results[name] = value._replace(value=converted, unit=unit)
         spreads = getattr(report, "uncertainties", None)
@@ -291,7 +292,7 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
         from taucli import plot  # deferred: charts (2 ms, and plotille or matplotlib when drawn), only for --plot or --out
     chart = plot.motion_chart([("", report)], chart_units(report, output.to)) if output.drawn else None
     if output.out is not None:  # the file first: one that cannot be written (a full disk) is refused before any answer
-        plot.write_file(chart, output.out)
+        plot.write_file(chart, output.out, said_to=notes_to)
     if output.get:
         if output.uncertainty:  # #22: a second column, the result's standard uncertainty
             spreads = getattr(report, "uncertainties", None) or {}
@@ -347,17 +348,30 @@ def _spread(report: Report, name: str, spreads: Mapping[str, float]) -> str:
     if name in spreads:
         return bare(spreads[name])
     value = report.results[name].value
-    return "0.0" if isinstance(value, (int, float)) and not isinstance(value, bool) else "null"
+    return "0" if isinstance(value, (int, float)) and not isinstance(value, bool) else "null"
+
+
+GET_DIGITS = 15  # --get: the digits a double holds for sure; --json keeps the repr, every digit
 
 
 def bare(value) -> str:
+    """A value as --get prints it, for a person and a script alike: at most 15 significant digits
+    (``10``, not ``10.000000000000002``: the last digits of a double are rounding), no trailing
+    ``.0``; ``null``, ``true``, ``false``. ``--json`` keeps every digit (the repr round-trips)."""
     if value is None:
         return "null"
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
-        return repr(value)
+        return format(value, f".{GET_DIGITS}g")
     return str(value)
+
+
+def shown(value, digits: int = DIGITS) -> str:
+    """A value as the human view shows it (the tables, the sweep's table): as taucli.written
+    writes it for every format, with one minus sign, − (taucli.display). md, LaTeX and HTML keep
+    written's ASCII."""
+    return minus_signs(written_shown(value, digits))
 
 
 NARROW = 60  # columns below which results are listed rather than tabled
@@ -372,7 +386,9 @@ def drawing(stream: TextIO):
     from rich.console import Console  # deferred: rich (about 30 ms), only for the human view
 
     plain = bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
-    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain else "auto")
+    # rich takes a dumb terminal to be 80 columns; it has a width as any other (help uses it too)
+    width = shutil.get_terminal_size((80, 24)).columns if os.environ.get("TERM") == "dumb" and stream.isatty() else None
+    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain else "auto", width=width)
     if console.width != clamped(console.width):
         console.width = clamped(console.width)
     if console.is_terminal:  # a terminal, or FORCE_COLOR
@@ -437,13 +453,13 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
     from rich.padding import Padding  # deferred: rich, as in drawing()
     from rich.text import Text
 
-    console.print(Text.assemble((f"{report.scene}", "bold"), f": {report.model}"))
+    console.print(Text.assemble((f"{report.scene}", "bold"), f": {minus_signs(report.model)}"))
     console.print(Text(f"method: {report.method}", style="dim"))
 
     rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items() if name not in report.tables]
     spreads = getattr(report, "uncertainties", None)
     if spreads:  # #22: 4.90 ± 0.08, digits matched to the uncertainty
-        rows = [(name, with_uncertainty(report.results[name].value, spreads[name]) if name in spreads else value, unit, label) for name, value, unit, label in rows]
+        rows = [(name, minus_signs(with_uncertainty(report.results[name].value, spreads[name])) if name in spreads else value, unit, label) for name, value, unit, label in rows]
     widths = [max((len(row[i]) for row in rows), default=0) for i in range(3)]
     if console.width < NARROW or sum(widths) + LABEL_MIN + 6 > console.width:  # one result to a line, numbers whole
         for name, value, unit, label in rows:
@@ -462,18 +478,29 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
     if show_steps and report.steps:
         console.print(Text("Steps", style="bold underline"))
         for number, step in enumerate(report.steps, start=1):
-            console.print(Text.assemble((f"{number}. ", "bold"), (step.title, "bold")))
-            indent = " " * 4
-            console.print(Padding(Text(step.equation), (0, 0, 0, len(indent)), expand=False))
-            align = len(indent) + max(step.equation.find("="), 0)
+            console.print(Text.assemble((f"{number}. ", "bold"), (minus_signs(step.title), "bold")))
+            indent = 4
+            equation = equation_text(step.equation)
+            _expression(console, equation, indent)
+            align = indent + max(equation.find("="), 0)
+            if align + 20 > console.width:  # a long left-hand side: the numbers under its start
+                align = indent + 2
             if step.numbers:
-                console.print(Padding(Text(f"= {step.numbers}"), (0, 0, 0, align), expand=False))
+                _expression(console, f"= {equation_text(step.numbers)}", align)
             if step.result and step.result != step.numbers:
-                console.print(Padding(Text(f"= {step.result}"), (0, 0, 0, align), expand=False))
+                _expression(console, f"= {equation_text(step.result)}", align)
             if step.why:
-                console.print(Padding(Text.assemble(("why: ", "italic"), step.why, style="dim"), (0, 0, 0, len(indent)), expand=False))
+                console.print(Padding(Text.assemble(("why: ", "italic"), minus_signs(step.why), style="dim"), (0, 0, 0, indent), expand=False))
     for note in report.notes:
-        console.print(Text.assemble(("note: ", "yellow"), note))
+        console.print(Text.assemble(("note: ", "yellow"), minus_signs(note)))
+
+
+def _expression(console, text: str, indent: int) -> None:
+    """An equation's line at ``indent``, broken between its terms where it does not fit (taucli.display)."""
+    from rich.text import Text  # deferred: rich, as in drawing()
+
+    for line in wrap_expression(text, console.width, indent):
+        console.print(Text(line), soft_wrap=True)
 
 
 def attach_inputs(report: Report, inputs: Mapping[str, Value], notes: Sequence[str]) -> Report:

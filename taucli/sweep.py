@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 from taucli import formats, plot
 from taucli import render as renderer
+from taucli.display import minus_signs
 from taucli.errors import InputError, did_you_mean
 from taucli.options import scene
 from taucli.report import Report, pretty_unit
@@ -252,7 +253,7 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
         runs = [(swept_list.label(p.list_index), p.report) for p in points]
         chart = plot.motion_chart(runs, renderer.chart_units(points[0].report, output.to))
     if output.out is not None and chart is not None:  # the file first: one that cannot be written is refused before any answer
-        plot.write_file(chart, output.out)
+        plot.write_file(chart, output.out, said_to=notes_to)
     if output.get:
         for point in points:
             values = [point.report.inputs[s.name].value for s in swept]
@@ -274,6 +275,33 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
             columns, colour = renderer.terminal_style(stream)
             stream.write(("" if output.plot else "\n") + plot.terminal(chart, columns, colour=colour))
     stream.flush()
+
+
+def _notes_where(points: list[Point], swept: list[Swept]) -> list[str]:
+    """Each distinct note of the points, once; a note not true at every point says where it is
+    ("at m2 = 4 kg: nothing moves"), or at how many points and between which values."""
+    where: dict[str, list[int]] = {}
+    for row, point in enumerate(points):
+        for note in point.report.notes:
+            rows = where.setdefault(note, [])
+            if not rows or rows[-1] != row:
+                rows.append(row)
+    if len(points) < 2:
+        return list(where)
+
+    def at(row: int) -> str:
+        point = points[row]
+        return ", ".join(pretty_unit(s.texts[point.range_index if s.is_range else point.list_index]).join((f"{s.name} = ", "")) for s in reversed(swept))
+
+    said = []
+    for note, rows in where.items():
+        if len(rows) == len(points):
+            said.append(note)
+        elif len(rows) <= 3:
+            said.append(f"at {'; '.join(at(row) for row in rows)}: {note}")
+        else:
+            said.append(f"at {len(rows)} of the {len(points)} points, {at(rows[0])} to {at(rows[-1])}: {note}")
+    return said
 
 
 def _swept_values(swept: Swept, points: list[Point]) -> tuple[str, str | None, list]:
@@ -299,7 +327,7 @@ def grid(points: list[Point], swept: list[Swept]) -> formats.Grid:
         + tuple(point.report.results[name].value if name in point.report.results else None for name in names)
         for row, point in enumerate(points)
     )
-    notes = list(dict.fromkeys(n for p in points for n in p.report.notes))
+    notes = _notes_where(points, swept)  # a note true at some points only says at which
     if len(notes) > MAX_NOTES:
         notes = notes[:MAX_NOTES] + [f"… and {len(notes) - MAX_NOTES} more notes that differ from point to point (see --json)"]
     return formats.Grid(f"{first.scene}: {what}", model, columns, rows, tuple(notes))
@@ -341,5 +369,5 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
             if note.startswith("… and "):
                 console.print(Text(note, style="dim"))
             else:
-                console.print(Text.assemble(("note: ", "yellow"), note))
+                console.print(Text.assemble(("note: ", "yellow"), minus_signs(note)))
         console.print(Text("steps: run one point alone to see its worked solution", style="dim"))

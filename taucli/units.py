@@ -54,6 +54,8 @@ def _cached_factor(unit: str, kind: Kind) -> tuple[float, int] | None:
     found = _FACTORS.get(key)
     if found is None:
         stored = cache.unit_factors().get(key)
+        if stored is None:  # a first run: the factors shipped with taucli, if they hold for this pint
+            stored = cache.shipped_unit_factors().get(key)
         if isinstance(stored, list) and len(stored) == 2 and isinstance(stored[0], float) and isinstance(stored[1], int):
             if math.isfinite(stored[0]) and stored[0] and stored[1] in HOWS:
                 found = _FACTORS[key] = (stored[0], stored[1])
@@ -75,6 +77,24 @@ def unit_factor(unit: str, text: str, option: str, kind: Kind) -> tuple[float, i
         if math.isfinite(found[0]) and found[0] != 0:
             cache.unit_factors().put(_factor_key(unit, kind), list(found))
     return found
+
+
+def factor_entry(text: str, kind_name: str) -> tuple[str, list] | None:
+    """(cache key, [SI factor, how]) of the unit in ``text`` ("1 rpm") as pint reads it for
+    ``kind_name``, asking pint itself (for building the shipped table), or None where the text
+    is not a number times a unit of that kind."""
+    kind = KINDS[kind_name]
+    try:
+        cleaned = screen(text, "unit", kind)
+        split = number_times_unit(cleaned)
+        if split is None or not split[1]:
+            return None
+        found = from_pint(split[1], text, "unit", kind)
+    except InputError:  # (Ambiguous too: 1/s for an angular velocity)
+        return None
+    if not (math.isfinite(found[0]) and found[0]):
+        return None
+    return _factor_key(split[1], kind), [float(found[0]), int(found[1])]
 
 
 class Reading(NamedTuple):

@@ -13,7 +13,7 @@ def test_article_potters_wheel_with_its_steps(taucli):
     result = taucli(*WHEEL)
     assert result.code == 0, result.err
     out = result.out
-    for text in ("I = ½MR²", "τ_net = − τ_f", "α = τ_net / I", "= -3 rad/s²", "t = ω₀/|α|", "= 30 rad/s / 3 rad/s²", "= 10 s", "uniform deceleration"):
+    for text in ("I = ½MR²", "τ_net = − τ_f", "α = τ_net / I", "= −3 rad/s²", "t = ω₀/|α|", "= 30 rad/s / 3 rad/s²", "= 10 s", "uniform deceleration"):
         assert text in out, text
 
 

@@ -180,3 +180,71 @@ def test_tab_in_the_real_shell(shell, case, tmp_path):
     for word in expected:
         assert word in shown, (shell, typed, shown)
     assert not (tmp_path / "taucli-ran").exists(), "pressing TAB ran taucli"
+
+
+# --- #36 item 6 -------------------------------------------------------------------------------
+
+
+def _bash_without_the_package(home: Path) -> tuple[list[str], dict[str, str], list[str], str]:
+    """bash with no bash-completion package: the script saved where README says and sourced, as
+    the line README adds to ~/.bashrc does (bash --norc: nothing else is loaded)."""
+    bin_dir = _stub_taucli(home)
+    shutil.copy(COMPLETIONS / completions.FILE_NAMES["bash"], home / ".taucli.bash")
+    env = {"HOME": str(home), "PATH": f"{bin_dir}:/usr/bin:/bin", "TERM": "xterm", "LANG": "C.UTF-8", "PS1": "$ "}
+    return [_shell_or_skip("bash"), "--norc", "--noprofile", "-i"], env, ["source ~/.taucli.bash"], "echo READY$((40+2))"
+
+
+def test_bash_without_the_bash_completion_package(tmp_path):
+    argv, env, setup, ready = _bash_without_the_package(tmp_path)
+    shown = _press_tab(argv, env, setup, ready, "type _init_completion >/dev/null 2>&1 || echo NO-PACKAGE; complete -p taucli\n")
+    assert "NO-PACKAGE" in shown and "complete -F _taucli taucli" in shown
+    for typed, expected in (CASES["a command"], CASES["units after a number"], CASES["the shapes"], ("taucli inertia rod --axis \t\t", ["center", "end"])):
+        shown = _press_tab(argv, env, setup, ready, typed)
+        assert all(word in shown for word in expected), (typed, shown)
+    assert not (tmp_path / "taucli-ran").exists()
+
+
+def test_readme_says_how_to_source_the_bash_script():
+    readme = (COMPLETIONS.parent / "README.md").read_text(encoding="utf-8")
+    shell_page = (COMPLETIONS.parent / "docs/shell.md").read_text(encoding="utf-8")
+    for text in (readme, shell_page):
+        assert "taucli completions bash > ~/.taucli.bash" in text and "source ~/.taucli.bash" in text and "~/.bashrc" in text
+
+
+AXES = {
+    # typed -> (axes offered, axes not offered)
+    "taucli inertia rod --axis \t\t": (["center", "end"], ["diameter", "edge-width", "central"]),
+    "taucli inertia plate --mass 1kg --axis \t\t": (["center-width", "edge-height", "normal"], ["diameter", "central "]),
+    "taucli spin-down --shape box --axis \t\t": (["height", "width", "depth"], ["diameter", "center-width"]),
+    "taucli pendulum --shape disc --axis \t\t": (["central", "diameter"], ["edge-width", "depth"]),
+}
+
+
+@pytest.mark.parametrize("shell", completions.SHELLS)
+@pytest.mark.parametrize("typed", list(AXES))
+def test_axis_offers_the_axes_of_the_shape_typed(shell, typed, tmp_path):
+    argv, env, setup, ready = _install(shell, tmp_path) if shell != "bash" else _bash_without_the_package(tmp_path)
+    shown = _press_tab(argv, env, setup, ready, typed)
+    offered, not_offered = AXES[typed]
+    tail = shown.split("--axis", 1)[-1]
+    assert all(axis in tail for axis in offered), (shell, typed, shown)
+    assert not any(axis in tail for axis in not_offered), (shell, typed, shown)
+
+
+def test_axis_with_no_shape_typed_offers_every_axis():
+    _, commands = completions.spec()
+    axis = next(option for command in commands if command.name == "inertia" for option in command.options if option.flag == "--axis")
+    assert axis.axes
+    bash = completions.script("bash")
+    assert '*) axes="distance central diameter center end' in bash
+
+
+@pytest.mark.parametrize("shell", ["fish", "zsh"])
+def test_each_result_of_get_has_its_own_label(shell, tmp_path):
+    argv, env, setup, ready = _install(shell, tmp_path)
+    shown = _press_tab(argv, env, setup, ready, "taucli atwood --get T\t")
+    assert "tension on m1's side" in shown and "tension on m2's side" in shown, shown
+    script = completions.script("fish")
+    gets = [line for line in script.splitlines() if "from atwood'" in line and " -l get " in line]
+    labels = [line.rsplit(" -d ", 1)[1] for line in gets]
+    assert len(gets) == len(completions.COMMANDS["atwood"].results) and len(set(labels)) == len(labels)

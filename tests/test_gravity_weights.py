@@ -31,7 +31,7 @@ def test_the_python_api_and_a_batch_line_read_it_the_same_way():
     done = run_taucli("torque", "--batch", stdin=line)
     assert done.code == 0, done.out
     assert done.json()["results"]["L"]["value"] == pytest.approx(2.0, rel=1e-15)  # 19.6 N / 9.8 m/s² = 2 kg at 1 m, 1 m/s
-    assert run_taucli("torque", "--r", "1,0,0 m", "--mass", "19.6N", "--velocity", "0,1,0 m/s", "--g", "9.8", "--get", "L").out.strip() == "2.0"
+    assert run_taucli("torque", "--r", "1,0,0 m", "--mass", "19.6N", "--velocity", "0,1,0 m/s", "--g", "9.8", "--get", "L").out.strip() == "2"
 
 
 @pytest.mark.parametrize("scene,args", [

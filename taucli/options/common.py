@@ -64,7 +64,7 @@ GYRATION = Option("gyration", "length", "The body's radius of gyration k, with -
 
 # A body on an axle: its moment of inertia, or a shape with its mass and dimensions.
 BODY_OPTIONS = (
-    Option("inertia", "moment of inertia", "Moment of inertia about the axle, e.g. 0.1kg*m^2 (or give --shape).", panel=BODY),
+    Option("inertia", "moment of inertia", "Moment of inertia about the axle, e.g. '0.1kg*m^2' (or give --shape).", panel=BODY),
     Option("shape", CHOICE, f"The body's shape, with --mass and its dimensions: {SHAPE_WORDS}.", panel=BODY, choices=SHAPE_NAMES, metavar="SHAPE"),
     MASS,
     DENSITY,
@@ -93,7 +93,7 @@ RTOL = Option("rtol", "dimensionless", "Relative tolerance for rk45.", panel=MOT
 FIND = "Solve for an input, and uncertainty (any quantity may be given as 4.0+/-0.1kg)"
 UNCERTAIN = (
     Option("find", TEXT, "Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.", panel=FIND, metavar="NAME"),
-    Option("want", TEXT, "The target of --find, e.g. --want a=4.0m/s^2 (may carry an uncertainty).", panel=FIND, metavar="RESULT=VALUE"),
+    Option("want", TEXT, "The target of --find, e.g. --want 'a=4.0m/s^2' (may carry an uncertainty).", panel=FIND, metavar="RESULT=VALUE"),
     Option("uncertainty", FLAG, "With --get: each result's standard uncertainty in a second column.", panel=FIND),
     Option("mc", COUNT, "Check the uncertainties by Monte Carlo with N draws.", panel=FIND, metavar="N"),
     Option("no_limit", FLAG, "Run --find or --mc however long it is estimated to take (else refused past 60 s).", panel=FIND),
@@ -103,7 +103,7 @@ UNCERTAIN = (
 ANSWER = (
     Option("json", FLAG, "Print one strict JSON document on stdout.", panel=OUTPUT),
     Option("get", TEXT, "Print only this result's number (repeatable, one per line).", panel=OUTPUT, repeatable=True, metavar="NAME"),
-    Option("to", TEXT, "Show a result in this unit, e.g. --to I=g*cm^2 (repeatable).", panel=OUTPUT, repeatable=True, metavar="NAME=UNIT"),
+    Option("to", TEXT, "Show a result in this unit, e.g. --to 'I=g*cm^2' (repeatable).", panel=OUTPUT, repeatable=True, metavar="NAME=UNIT"),
     Option("no_steps", FLAG, "Leave out the worked steps (the human view, and --json's steps list).", panel=OUTPUT),
     Option(
         "batch",

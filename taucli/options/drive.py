@@ -30,12 +30,12 @@ COMMAND = Command(
     ),
     example="taucli drive --motor-inertia '1.2 kg*cm^2' --ratio 10 --load-inertia '0.05 kg*m^2' --until-omega 3000rpm --in-time 0.2s",
     options=(
-        Option("motor_inertia", "moment of inertia", "Moment of inertia of the motor's rotor, e.g. 1.2kg*cm^2 or 0.0012lb*in*s^2.",
+        Option("motor_inertia", "moment of inertia", "Moment of inertia of the motor's rotor, e.g. '1.2kg*cm^2' or '0.0012lb*in*s^2'.",
                sign="nonnegative", panel=MOTOR),
         Option("stall_torque", "torque", "Torque at standstill of a motor whose torque falls on a line to zero at --no-load-speed, "
-               "τ = τ_s(1 − ω/ω_nl), e.g. 2N*m.", panel=MOTOR),
+               "τ = τ_s(1 − ω/ω_nl), e.g. '2N*m'.", panel=MOTOR),
         Option("no_load_speed", "angular velocity", "Speed at which that line reaches zero torque, e.g. 3000rpm.", panel=MOTOR),
-        Option("motor_torque", "torque", "A motor that gives a constant torque from rest (instead of the line), e.g. 1.5N*m.", panel=MOTOR),
+        Option("motor_torque", "torque", "A motor that gives a constant torque from rest (instead of the line), e.g. '1.5N*m'.", panel=MOTOR),
         Option("rated_torque", "torque", "The motor's rated (continuous) torque, held against the RMS torque of a move.", panel=MOTOR),
         Option("peak_torque", "torque", "The most torque the motor and its drive give for a short time, held against the peak of a move.",
                panel=MOTOR),
@@ -55,7 +55,7 @@ COMMAND = Command(
         Option("lead", "lead", "Lead of a screw that moves the mass, the travel per turn: its inertia m(p/2π)² at the output shaft, "
                "e.g. 10mm or 0.2in/rev.", panel=LOAD),
         Option("load_torque", "torque", "Torque the load resists with at the output shaft while it moves (friction, a process), "
-               "against the motion; negative where it drives, e.g. 2N*m.", sign="any", panel=LOAD),
+               "against the motion; negative where it drives, e.g. '2N*m'.", sign="any", panel=LOAD),
         Option("load_force", "force", "Force on the moving mass against its motion while it moves (a cutting force, a seal's "
                "friction); negative where it pushes it along, e.g. 50N.", sign="any", panel=LOAD),
         Option("incline", "angle", "Angle of the mass's travel above the horizontal, gravity m·g·sin θ against it: 90deg lifts, "
@@ -69,8 +69,8 @@ COMMAND = Command(
         Option("in_time", "time", "Reach --until-omega (or --speed) in this time: the acceleration and the torque that do it.",
                panel=MOTION),
         Option("alpha", "angular acceleration", "The motor's angular acceleration (a move's acceleration and deceleration), "
-               "e.g. 3000rad/s^2.", panel=MOTION),
-        Option("accel", "acceleration", "Acceleration of the moving mass, instead of --alpha, e.g. 2.5m/s^2.", panel=MOTION),
+               "e.g. '3000rad/s^2'.", panel=MOTION),
+        Option("accel", "acceleration", "Acceleration of the moving mass, instead of --alpha, e.g. '2.5m/s^2'.", panel=MOTION),
         Option("accel_time", "time", "Time to accelerate from rest to the top speed.", panel=PROFILE),
         Option("run_time", "time", "Time at the top speed.", sign="nonnegative", default="0s", panel=PROFILE),
         Option("decel_time", "time", "Time to decelerate to rest (default --accel-time).", panel=PROFILE),

@@ -17,7 +17,7 @@ COMMAND = Command(
         "(--fluctuation, or ± --speed-variation) give the third. With the rim's mean radius, its mass; with its "
         "--density, the hoop stress ρv² the rim speed puts in it, against --allowable-stress."
     ),
-    example="taucli flywheel --omega-mean 300rpm --fluctuation 0.02 --energy-swing 5kJ --rim-radius 0.6m --density 7200kg/m^3",
+    example="taucli flywheel --omega-mean 300rpm --fluctuation 0.02 --energy-swing 5kJ --rim-radius 0.6m --density '7200kg/m^3'",
     options=(
         # its --density is the rim's, for the hoop stress; its --rim-radius is the radius of gyration
         *(option for option in BODY_OPTIONS if option.name not in ("density", "gyration")),
@@ -32,7 +32,7 @@ COMMAND = Command(
                sign="nonnegative", default="0", panel=ENERGY),
         Option("rim_radius", "length", "Mean radius of the rim, taken as the radius of gyration (the arms and hub neglected): the rim's mass I/R².", panel=RIM),
         Option("rim_speed", "velocity", "Mean speed of the rim, v = ω_mean R (instead of --omega-mean; alone, the rim's mass from ΔE = mv²Cs).", panel=RIM),
-        Option("density", "density", "Density of the rim, for its hoop stress ρv² and cross-section, e.g. 7200kg/m^3.", panel=RIM),
+        Option("density", "density", "Density of the rim, for its hoop stress ρv² and cross-section, e.g. '7200kg/m^3'.", panel=RIM),
         Option("allowable_stress", "stress", "The stress the rim's material may carry, against the hoop stress at the top speed, e.g. 6MPa.", panel=RIM),
     ),
     results=(

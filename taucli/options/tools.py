@@ -25,8 +25,8 @@ BENCH = Command(
 COMPLETIONS = Command(
     name="completions",
     summary="Print the completion script for SHELL: commands, options, shapes, methods, and units after a number.",
-    description="The scripts are static: pressing TAB never starts Python. docs/shell.md says where each goes.",
-    example="taucli completions bash > ~/.local/share/bash-completion/completions/taucli",
+    description="The scripts are static: pressing TAB never starts Python. For bash, save it and source it from ~/.bashrc (source ~/.taucli.bash); docs/shell.md says where zsh's and fish's go.",
+    example="taucli completions bash > ~/.taucli.bash",
     options=(Option("shell", CHOICE, "bash, zsh or fish.", choices=SHELLS, positional=True, metavar="SHELL"),),
     handler="taucli.tools:completions",
 )
@@ -39,7 +39,7 @@ EXIT_STATUSES = (
 ROOT = Command(
     name="taucli",
     summary="Rigid-body rotation about a fixed axis: τ_net = Iα and what follows from it.",
-    description="Quantities take units: 4kg, 300 rpm, 0.3 N*m, 30deg. A bare number is SI, except for an angle, an angular velocity or an angular acceleration, which need their unit.",
+    description="Quantities take units: 4kg, 300rpm, '0.3 N*m', 30deg. A bare number is SI, except for an angle, an angular velocity or an angular acceleration, which need their unit.",
     example="taucli atwood --m1 4kg --m2 1kg --pulley-mass 2kg",
     options=(
         Option("version", FLAG, "Print the version and exit."),

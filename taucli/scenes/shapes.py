@@ -157,12 +157,33 @@ SHAPES: dict[str, Shape] = {
 }  # fmt: skip
 
 
+# Other words for a shape, answered with "did you mean" and never taken in its place: a word a
+# reader may mean otherwise ("cylinder": solid, or a thin-walled can?) is refused, not guessed.
+OTHER_NAMES = {
+    "cylinder": "disc", "solid-cylinder": "disc", "disk": "disc", "wheel": "disc",
+    "hollow-cylinder": "tube", "pipe": "tube", "cylindrical-shell": "tube",
+    "hoop": "ring", "ball": "sphere", "solid-sphere": "sphere", "hollow-sphere": "shell", "spherical-shell": "shell",
+    "bar": "rod", "stick": "rod", "particle": "point", "mass": "point", "cube": "box", "cuboid": "box", "block": "box",
+    "sheet": "plate", "rectangle": "plate", "slab": "plate",
+}
+_WHY = {"disc": " (a solid cylinder; a hollow one is tube)", "tube": " (a hollow cylinder)", "shell": " (a thin spherical shell)"}
+
+
 def lookup_shape(name: str, option: str = "SHAPE") -> Shape:
-    """The shape of that name, or a usage error listing the shapes."""
+    """The shape of that name, or a usage error listing the shapes, with "did you mean" for a
+    near miss or another word for one of them (``cylinder``: disc)."""
     try:
         return SHAPES[name]
     except KeyError:
-        raise InputError(option, f"expected a shape: {', '.join(SHAPES)}", example="disc", got=repr(name), hint=did_you_mean(name, SHAPES)) from None
+        hint = did_you_mean(name, SHAPES)
+        if hint is None:
+            import difflib  # deferred: only a mistyped shape asks for it
+
+            close = difflib.get_close_matches(name.lower().replace("_", "-").replace(" ", "-"), list(OTHER_NAMES), n=1, cutoff=0.75)
+            if close:
+                meant = OTHER_NAMES[close[0]]
+                hint = f"did you mean {meant!r}?{_WHY.get(meant, '')}"
+        raise InputError(option, f"expected a shape: {', '.join(SHAPES)}", example="disc", got=repr(name), hint=hint) from None
 
 
 def fill(template: str, mass: float, dims: Mapping[str, float]) -> str:
