@@ -15,6 +15,7 @@ import re
 import shutil
 import sys
 
+from taucli.errors import bounded, did_you_mean
 from taucli.version import __version__
 from taucli.options import COMMANDS, SCENES
 from taucli.options.tools import EXIT_STATUSES, ROOT
@@ -22,6 +23,7 @@ from taucli.report import pretty_unit
 from taucli.table import Command, Option
 
 HELP_WORDS = ("-h", "--help")
+UNKNOWN = object()  # taucli help WORD where WORD names no command
 HELP_LINE = ("-h, --help", "Show this message and exit.")
 
 
@@ -34,8 +36,8 @@ def requested(args: list[str]) -> Command | None:
         return ROOT
     if at == len(args):
         return None
-    if args[at] == "help":  # taucli help, taucli help atwood: as --help
-        return COMMANDS.get(args[at + 1], ROOT) if at + 1 < len(args) else ROOT
+    if args[at] == "help":  # taucli help, taucli help atwood: as --help; taucli help nonsense: no help to give
+        return COMMANDS.get(args[at + 1], UNKNOWN) if at + 1 < len(args) else ROOT
     command = COMMANDS.get(args[at])
     if command is None:
         return None
@@ -198,6 +200,12 @@ def answer(args: list[str], stdout, stderr) -> int | None:
     command = requested(args)
     if command is None and "--version" not in args[:at]:
         return None
+    if command is UNKNOWN:
+        word = args[at + 1]
+        guess = did_you_mean(word, list(COMMANDS))
+        stderr.write(f"taucli: error: help: expected a command ({', '.join(COMMANDS)}), got {bounded(repr(word))}"
+                     f"{'; ' + guess if guess else ''} (e.g. taucli help atwood)\n")
+        return 2
     stream = stderr if not args else stdout
     try:
         if command is None:

@@ -206,7 +206,7 @@ def check_file(path: str) -> None:
     if os.path.isdir(path):
         raise InputError("--out", "expected a file, not a folder", example="--out chart.svg", got=repr(path))
     if importlib.util.find_spec("matplotlib") is None:
-        raise InputError("--out", "needs matplotlib to draw files", hint="pip install 'taucli[plot]'")
+        raise InputError("--out", "needs matplotlib to draw files", hint="pip install 'taucli[plot]' (from a checkout: pip install '.[plot]')")
     try:
         handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
     except OSError as err:

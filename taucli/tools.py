@@ -23,7 +23,7 @@ def bench(*, env, scene=None, quick: bool = False, out: str | None = None, json:
         try:
             import matplotlib  # noqa: F401  # deferred: matplotlib, only asked whether it is there
         except ImportError:
-            raise InputError("out", "needs matplotlib", hint="pip install 'taucli[plot]'") from None
+            raise InputError("out", "needs matplotlib", hint="pip install 'taucli[plot]' (from a checkout: pip install '.[plot]')") from None
     points = workbench.run(chosen, quick=quick)
     if out is not None:
         workbench.write_image(points, out)

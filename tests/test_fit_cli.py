@@ -125,12 +125,12 @@ def test_without_scipy_fit_says_which_extra_to_install(monkeypatch):
     monkeypatch.setattr(taucli.fit.importlib.util, "find_spec", lambda name, *a: None if name == "scipy" else real(name, *a))
     err = io.StringIO()
     assert main(["fit", "spin-down", "coast.csv", "--fit", "friction"], Environment(stdout=io.StringIO(), stderr=err)) == 2
-    assert err.getvalue() == "taucli: error: taucli fit needs scipy (not installed); pip install 'taucli[fit]'\n"
+    assert err.getvalue() == "taucli: error: taucli fit needs scipy (not installed); pip install 'taucli[fit]' (from a checkout: pip install '.[fit]')\n"
 
 
 @pytest.mark.parametrize("blocked,said", [
-    (("scipy",), "taucli: error: taucli fit needs scipy (not installed); pip install 'taucli[fit]'\n"),
-    (("numpy", "scipy"), "taucli: error: taucli fit needs numpy and scipy (not installed); pip install 'taucli[fit]'\n"),
+    (("scipy",), "taucli: error: taucli fit needs scipy (not installed); pip install 'taucli[fit]' (from a checkout: pip install '.[fit]')\n"),
+    (("numpy", "scipy"), "taucli: error: taucli fit needs numpy and scipy (not installed); pip install 'taucli[fit]' (from a checkout: pip install '.[fit]')\n"),
 ])
 def test_the_command_line_without_the_fit_extra_exits_2_in_one_line_naming_it(blocked, said, coast):
     """The real entry point in a Python where numpy or scipy cannot be imported (as where the

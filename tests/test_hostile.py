@@ -178,7 +178,8 @@ def test_rk4_blown_up_by_stiff_drag_says_it_went_unstable(taucli):
     in the stiffness, |ω|^1.5 past a double; the Python API raised it bare)."""
     args = ("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--drag", "1e10", "--drag-exponent", "2.5", "--method", "rk4", "--time", "1s")
     done = taucli(*args, "--no-steps")
-    assert done.code == 0 and "rk4 went unstable" in " ".join(done.out.split()) and "Use --dt below 3.5e-12 s" in " ".join(done.out.split())
+    said = " ".join(done.out.split()).replace("\u2212", "-")  # the table's notes write one minus sign, U+2212 (#36)
+    assert done.code == 0 and "rk4 went unstable" in said and "Use --dt below 3.5e-12 s" in said
     # stiffness at ω₀ = 10 rad/s: n k ω^(n−1)/I = 2.5e10 · 10^1.5; rk4's limit 2.785 over it
     assert 2.785 / (2.5e10 * 10**1.5) == pytest.approx(3.5e-12, rel=0.01)
     report = taucli_api().spin_down(inertia=1, omega0="10rad/s", drag=1e10, drag_exponent=2.5, method="rk4", time="1s")

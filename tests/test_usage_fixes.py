@@ -62,6 +62,12 @@ def test_help_as_a_command(args, command):
         assert "Commands:" in run.out and "atwood" in run.out
 
 
+def test_help_for_a_command_that_does_not_exist_is_refused():
+    """taucli help atwod printed taucli's own help with exit 0, as if asked for it."""
+    err = _refused("help", "atwod")
+    assert "help: expected a command" in err and "did you mean 'atwood'?" in err
+
+
 @pytest.mark.parametrize("word,meant", [("cylinder", "disc"), ("Cylinder", "disc"), ("cilinder", "disc"), ("hoop", "ring"), ("hollow-cylinder", "tube"), ("ball", "sphere")])
 def test_another_word_for_a_shape_is_refused_with_the_name_to_use(word, meant):
     """Refused, never taken: docs/inertia.md says why."""

@@ -18,7 +18,7 @@ import importlib.util
 
 from taucli.errors import InputError
 
-EXTRA = "pip install 'taucli[fit]'"
+EXTRA = "pip install 'taucli[fit]' (from a checkout: pip install '.[fit]')"
 
 
 def _installed(name: str) -> bool:

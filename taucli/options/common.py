@@ -58,7 +58,7 @@ SIGNED_PARTS = replace(PARTS, sign="any", help=PARTS.help.replace("(repeatable)"
 
 # A body by its density (read by its unit: per volume, area or length) or its radius of gyration (#34).
 DENSITY = Option("density", "density", "The body's density instead of --mass, with its shape and dimensions, read by its unit: kg/m^3 for a solid, "
-                 "kg/m^2 for a disc, plate, washer (tube) or thin shell, kg/m for a rod or ring, e.g. 7800kg/m^3.", panel=BODY,
+                 "kg/m^2 for a disc, plate, washer (tube) or thin shell, kg/m for a rod or ring, e.g. '7800kg/m^3'.", panel=BODY,
                  also=("areal density", "linear density"))
 GYRATION = Option("gyration", "length", "The body's radius of gyration k, with --mass and no shape: I = Mk², e.g. 0.3m.", panel=BODY)
 

@@ -51,7 +51,7 @@ COMMAND = Command(
         Option("vehicle_mass", "mass", "A vehicle the wheel's stored energy sets moving from rest as the wheel comes to rest (or slows to --until-omega): "
                "its speed, ½mv² = ηE, e.g. 1200kg.", panel=ENERGY),
         Option("efficiency", "dimensionless", "Efficiency η, 0 to 1, with which the stored energy reaches --lift-mass or --vehicle-mass.", default="1", panel=ENERGY),
-        Option("rim_accel", "acceleration", "Tangential acceleration of the rim, giving α = a_t/R (R the body's radius, or --radius), e.g. 0.5m/s^2.", sign="any", panel=MOTION),
+        Option("rim_accel", "acceleration", "Tangential acceleration of the rim, giving α = a_t/R (R the body's radius, or --radius), e.g. '0.5m/s^2'.", sign="any", panel=MOTION),
         Option("rim_speed", "velocity", "Initial speed of the rim, giving ω₀ = v/R (R the body's radius, or --radius with --inertia).", sign="any", panel=MOTION),
         point_option("(at --time or the target, else the start)"),
         Option(
