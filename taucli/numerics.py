@@ -418,22 +418,35 @@ def integrate_angle(
             return AngleSolution(t + step, math.nan, math.nan, False, steps)
         if event is not None:
             after = event(new_theta, new_omega)
-            if before != 0 and (after == 0 or (after > 0) != (before > 0)):
-                low, high = 0.0, step
-                for _ in range(200):  # bisection: the event's sign is all it needs
-                    mid = (low + high) / 2
-                    if not low < mid < high:
-                        break
-                    mid_theta, mid_omega, _ = _angle_step_or_nan(method, accel, theta, omega, mid)
-                    if (event(mid_theta, mid_omega) > 0) == (before > 0):
-                        low = mid
-                    else:
-                        high = mid
+            crossed = after == 0 or (after > 0) != (before > 0)
+            end = step
+            if not crossed and before != 0 and (new_omega > 0) != (omega > 0) and omega != 0:
+                # the step holds a turning point: θ may go past a target and come back within it
+                end = _bisect(lambda h: _angle_step_or_nan(method, accel, theta, omega, h)[1] > 0, omega > 0, step)
+                turning = event(*_angle_step_or_nan(method, accel, theta, omega, end)[:2])
+                crossed = turning == 0 or (turning > 0) != (before > 0)
+            if before != 0 and crossed:
+                high = _bisect(lambda h: event(*_angle_step_or_nan(method, accel, theta, omega, h)[:2]) > 0, before > 0, end)
                 new_theta, new_omega, _ = _angle_step_or_nan(method, accel, theta, omega, high)
                 return AngleSolution(t + high, new_theta, new_omega, True, steps)
             before = after if after != 0 else before
         t, theta, omega = t + step, new_theta, new_omega
     return AngleSolution(t, theta, omega, False, steps)
+
+
+def _bisect(positive: Callable[[float], bool], start_positive: bool, high: float) -> float:
+    """The least h in (0, high] where ``positive(h)`` differs from ``start_positive``, by
+    bisection to the last double (the sign is all it needs); ``positive(high)`` differs."""
+    low = 0.0
+    for _ in range(200):
+        mid = (low + high) / 2
+        if not low < mid < high:
+            break
+        if positive(mid) == start_positive:
+            low = mid
+        else:
+            high = mid
+    return high
 
 
 def falling_root(rate: Callable[[float], float]) -> float:

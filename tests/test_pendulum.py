@@ -9,7 +9,7 @@ import random
 
 import mpmath as mp
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 import taucli
@@ -359,6 +359,7 @@ def test_the_bench_charts_every_pendulum_method():
     st.floats(-3.1, 3.1).filter(lambda x: x == 0 or abs(x) > 1e-6),
     st.floats(0.0, 5.0).filter(lambda x: x == 0 or x > 1e-6),
 )
+@example(0.0, 0.0078125, 0.0078125, 0.0)  # #40: an angle 2.5e-6 short of the turning point, passed and left within one rk45 step (t_angle was null)
 def test_the_exact_motion_and_rk45_agree_swinging_or_going_over(theta0, omega0, angle, t):
     """Times to the bottom and to an angle, the period, θ and ω at a time: the elliptic closed
     forms against rk45 at rtol 1e-12, events located, over the top and back (θ ≡ θ + 2π there)."""
