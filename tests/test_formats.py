@@ -12,11 +12,13 @@ from __future__ import annotations
 import csv
 import io
 import json
+import os
 import re
 import shlex
 import shutil
 import subprocess
 from html.parser import HTMLParser
+from pathlib import Path
 
 import pytest
 from markdown_it import MarkdownIt
@@ -29,6 +31,22 @@ from taucli.report import Report, Step, Table, Value
 
 FORMATS = ("md", "latex", "html", "csv")
 TEX = next((program for program in ("pdflatex", "lualatex") if shutil.which(program)), None)
+TEX_FILES = ("siunitx.sty", "amsmath.sty", "fontenc.sty", "t1enc.def")  # what the test document below loads
+
+
+def tex_missing() -> list[str]:
+    """What compiling the LaTeX needs and this machine lacks: the program, then each file the
+    document loads that kpsewhich cannot find (pdflatex comes without siunitx in texlive-latex-base)."""
+    if TEX is None:
+        return ["pdflatex or lualatex"]
+    found = subprocess.run(["kpsewhich", *TEX_FILES], capture_output=True, text=True) if shutil.which("kpsewhich") else None
+    if found is None:
+        return ["kpsewhich"]
+    seen = {Path(line).name for line in found.stdout.splitlines()}
+    return [name for name in TEX_FILES if name not in seen]
+
+
+_TEX_MISSING = tex_missing()
 
 
 def _docs_example(scene: str) -> str:
@@ -181,8 +199,12 @@ def latex_balanced(text: str) -> None:
 
 
 def latex_compiles(fragment: str, tmp_path) -> None:
-    if TEX is None:
-        pytest.skip("no TeX here: pdflatex or lualatex compiles the LaTeX (apt-get install texlive-latex-base texlive-science)")
+    missing = _TEX_MISSING
+    if missing:
+        why = f"LaTeX cannot be compiled here: {', '.join(missing)} not found (apt-get install texlive-latex-base texlive-science)"
+        if os.environ.get("CI"):
+            pytest.fail(why + ": .ci/run installs them")
+        pytest.skip(why)
     (tmp_path / "body.tex").write_text(fragment, encoding="utf-8")
     (tmp_path / "doc.tex").write_text(
         "\\documentclass{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath}\n\\usepackage{siunitx}\n"
