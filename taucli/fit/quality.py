@@ -101,8 +101,17 @@ def refuse_degenerate(found: Degeneracy, what: str, said: str = "") -> None:
                          hint=f"is an input missing? Else leave {names} out of --fit")
     names = _listed(found.involved)
     raise InputError("fit", f"the samples cannot tell {names} apart: they change the same way when these move together "
-                     f"(the Jacobian's columns are dependent: smallest singular value {found.ratio:.1e} of the largest)",
+                     f"(the Jacobian's columns are dependent: smallest singular value {_ratio_text(found.ratio)})",
                      hint=f"give one of {names} (or samples where they act differently), and fit the others")
+
+
+ROUNDING = 1e-10  # a singular value ratio below this is the Jacobian's rounding: its digits are noise
+
+
+def _ratio_text(ratio: float) -> str:
+    """The smallest singular value over the largest as a person reads it: its size where it is a
+    measurement's, "below 1e-10 of the largest, rounding" where its digits are the arithmetic's noise."""
+    return f"below {ROUNDING:g} of the largest, rounding" if ratio < ROUNDING else f"{ratio:.1e} of the largest"
 
 
 def _listed(names: list[str]) -> str:

@@ -236,7 +236,7 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
                      "variance (--sigma gives the samples' own, and then χ²/ν)")
     largest = float(np.max(np.abs(model.samples.y))) if model.samples.count else 0.0
     if fitted.scaled and fitted.rms <= EXACT * largest:
-        notes.append(f"the samples lie on the model to rounding (residual RMS {fmt(fitted.rms, 2)}, of {fmt(largest, 3)} measured): "
+        notes.append(f"the samples lie on the model to rounding (residual RMS at most {fmt(EXACT, 1)} of the largest measured, {fmt(largest, 3)}): "
                      "the uncertainties from their scatter are of rounding size, not a measurement's (--sigma gives the samples' own)")
     elif fitted.structured:
         notes.append(f"warning: the residuals have a shape ({_tested(fitted)}): the model does not describe these samples, "

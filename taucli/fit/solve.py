@@ -26,7 +26,7 @@ from taucli.fit import linear, nonlinear, quality, start
 from taucli.fit.model import Model, held
 from taucli.fit.samples import Samples
 from taucli.inputs import read
-from taucli.report import Step, quantity_text
+from taucli.report import Step, fmt, quantity_text
 from taucli.table import Command
 
 
@@ -121,17 +121,35 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         p = polished
         started = "a closed-form start" if "closed form" in how else "the starts given" if set(how) == {"given"} else "a start from single samples"
         method = f"bounded nonlinear least squares (trust region reflective, scipy.optimize.least_squares) from {started}"
-        steps.append(Step(
-            "Minimise the squares of the residuals within the inputs' bounds",
-            ("min Σᵢ ((yᵢ − f(xᵢ; p))/σᵢ)²" if sigma is not None else "min Σᵢ (yᵢ − f(xᵢ; p))²") + f" over {', '.join(_bound(model, j) for j in range(m))}",
-            result=", ".join(f"{u.name} = {quantity_text(value, units.KINDS[u.kind].si_unit, 10)}" for u, value in zip(model.unknowns, p)),
-            why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, {_count(outcome.evaluations, 'solve')} of the scene per sample "
-            f"(its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them",
-        ))
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
     found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p)
     covariance, from_held = _with_held(model, p, J, sigma, found.covariance)
+    if not is_linear:
+        spread = np.sqrt(np.abs(np.diag(covariance)))
+        steps.append(Step(
+            "Minimise the squares of the residuals within the inputs' bounds",
+            ("min Σᵢ ((yᵢ − f(xᵢ; p))/σᵢ)²" if sigma is not None else "min Σᵢ (yᵢ − f(xᵢ; p))²") + f" over {', '.join(_bound(model, j) for j in range(m))}",
+            result=", ".join(f"{u.name} = {quantity_text(value, units.KINDS[u.kind].si_unit, digits_known(value, uncertainty))}"
+                             for u, value, uncertainty in zip(model.unknowns, p, spread)),
+            why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, {_count(outcome.evaluations, 'solve')} of the scene per sample "
+            f"(its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them; "
+            f"shown to a thousandth of each one's uncertainty (the digits past that are the search's rounding)",
+        ))
     return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how)
+
+
+GUARD = 3  # decimal places shown past an uncertainty's leading digit: a thousandth of it
+KNOWN_DIGITS = 8  # at most: the search stops at a relative 1e-10, and the last digits of a solve are rounding
+
+
+def digits_known(value: float, uncertainty: float) -> int:
+    """Significant figures of a fitted value that its uncertainty and the search's tolerance
+    determine: down to a thousandth of the uncertainty, 3 to KNOWN_DIGITS of them. Past that the
+    digits change with numpy's and scipy's versions and the search's path, not with the samples."""
+    if not (value and math.isfinite(value) and uncertainty > 0 and math.isfinite(uncertainty)):
+        return 6
+    known = math.floor(math.log10(abs(value))) - math.floor(math.log10(uncertainty)) + GUARD + 1
+    return max(3, min(KNOWN_DIGITS, known))
 
 
 def _count(n: int, what: str) -> str:
@@ -217,7 +235,7 @@ def _linear_step(model: Model, shape: linear.Linear, n: int) -> Step:
         "The model is linear in the inputs fitted: linear least squares",
         linear.form(model.command.name, model.samples.y_key) + ",  so f(p) = f(p₀) + X(p − p₀) exactly",
         result="p − p₀ = the least-squares solution of (WX)δ = W(y − f(p₀)), by the SVD",
-        why=f"checked on the scene, not assumed: f at p₀, at p₀ + Δ and p₀ + 2Δ along each input, and with all moved; the largest second "
-        f"difference or cross term is {shape.largest_curvature:.1e} of f (rounding), so X = ∂f/∂p is exact and the least squares over "
+        why=f"checked on the scene, not assumed: f at p₀, at p₀ + Δ and p₀ + 2Δ along each input, and with all moved; every second "
+        f"difference and cross term is below {fmt(linear.TOLERANCE)} of f (rounding), so X = ∂f/∂p is exact and the least squares over "
         f"the {n} samples has one solution, with no start nor iteration; the forward solve there gives f(p₀) + Xδ again",
     )
