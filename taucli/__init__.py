@@ -13,11 +13,11 @@ result the run did not make, taucli.MissingResult (a KeyError) naming what makes
 
 from __future__ import annotations
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options import SCENES  # plain data: no solver, typer, rich or pint
-from taucli.report import Report
-from taucli.table import MissingResult
-from taucli.version import __version__ as __version__  # taucli.__version__
+from taucli.writing.report import Report
+from taucli.options.table import MissingResult
+from taucli.core.version import __version__ as __version__  # taucli.__version__
 
 __all__ = ["InputError", "MissingResult", "Report", *(command.function_name for command in SCENES.values())]
 
@@ -26,7 +26,7 @@ def __getattr__(name: str):
     """taucli.atwood and the other scenes, made from their tables when first asked for."""
     if name not in __all__:  # a submodule not imported yet, or no such name
         raise AttributeError(f"module 'taucli' has no attribute {name!r}")
-    from taucli import api  # deferred: the API's functions are made on first use, not by a plain import
+    from taucli.front import api  # deferred: the API's functions are made on first use, not by a plain import
 
     found = api.function(name)
     if found is None:

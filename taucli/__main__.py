@@ -1,12 +1,12 @@
 """``taucli`` and ``python -m taucli``: help and version at once, else the command line.
 
-A help text is written from the commands' tables (taucli.help) without importing typer, which
-alone takes longer than a help should. Everything else goes to taucli.cli.
+A help text is written from the commands' tables (taucli.front.help) without importing typer, which
+alone takes longer than a help should. Everything else goes to taucli.front.cli.
 """
 
 import sys
 
-from taucli import help
+from taucli.front import help
 
 
 SYMBOLS = "²½αωθτ·√−→₁≤μ"  # what taucli's text uses beyond ASCII
@@ -32,7 +32,7 @@ def main(argv: list[str] | None = None) -> int:
     answered = help.answer(args, sys.stdout, sys.stderr)
     if answered is not None:
         return answered
-    from taucli.cli import main as run  # deferred: typer (about 25 ms), which help and --version do without
+    from taucli.front.cli import main as run  # deferred: typer (about 25 ms), which help and --version do without
 
     return run(args)
 

@@ -16,7 +16,7 @@ import random
 import sys
 from pathlib import Path
 
-from taucli import pipeline
+from taucli.answering import pipeline
 from taucli.options import SCENES
 
 

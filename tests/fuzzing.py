@@ -159,7 +159,7 @@ class Vector:
 def command_options(scene: str) -> list[tuple[str, str | None, bool]]:
     """(flag or "" for the positional, metavar, is_flag) of each option in the scene's table."""
     from taucli.options import SCENES
-    from taucli.table import FLAG
+    from taucli.options.table import FLAG
 
     command = SCENES[scene]
     return [("" if o.positional else o.flag, o.shown_metavar, o.kind == FLAG) for o in (*command.options, *command.output)]

@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 
 import taucli
 from taucli.options import SCENES
-from taucli.report import Report
+from taucli.writing.report import Report
 
 try:
     import numpy

@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 
 MP_DPS = 40  # the references' precision, set for each test by conftest
 

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.atwood import HANGING, Pulley, Slope, solve
 
 

@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 
 import taucli
 from conftest import assert_usage_error, run_taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.atwood import HANGING, Machine, Pulley, Slope, solve, solve_machine, solve_stepped
 
 MP_DPS = 40

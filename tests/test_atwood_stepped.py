@@ -12,7 +12,7 @@ from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.atwood import Pulley, atwood, solve_rim, solve_stepped
 
 G = 9.80665

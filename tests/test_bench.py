@@ -9,7 +9,7 @@ import mpmath
 import pytest
 
 from conftest import assert_usage_error
-from taucli import bench
+from taucli.front import bench
 
 
 @pytest.mark.parametrize("name", sorted(bench.SPIN_PROBLEMS))

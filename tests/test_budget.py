@@ -11,10 +11,10 @@ import pytest
 
 import taucli
 from conftest import assert_usage_error
-from taucli import answer
-from taucli.cli import Environment, main
+from taucli.answering import answer
+from taucli.front.cli import Environment, main
 from taucli.options import SCENES
-from taucli.propagate import OverBudget
+from taucli.answering.propagate import OverBudget
 
 SLOW_MC = ("spin-down", "--inertia", "1+/-0.1 kg*m^2", "--omega0", "100rad/s", "--drag", "0.01N*m*s^2", "--drag-exponent", "2.5",
            "--until-omega", "10rad/s", "--method", "rk45", "--mc", "100000", "--get", "t_until")

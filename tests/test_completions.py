@@ -24,7 +24,8 @@ from pathlib import Path
 import pytest
 
 from conftest import run_taucli
-from taucli import completions, names
+from taucli.front import completions
+from taucli.core import names
 
 COMPLETIONS = Path(__file__).resolve().parent.parent / "completions"
 
@@ -49,7 +50,7 @@ def test_an_unknown_shell_is_a_usage_error():
 def test_every_option_of_every_command_is_offered():
     import typer.main
 
-    from taucli.cli import Environment, build_app
+    from taucli.front.cli import Environment, build_app
     from taucli.options import COMMANDS
 
     _, commands = completions.spec()

@@ -15,9 +15,9 @@ from hypothesis import strategies as st
 
 import taucli
 from taucli.options import COMMANDS
-from taucli.pipeline import solve
-from taucli.report import Report, Table, Value
-from taucli.render import STRICT_JSON, document, document_text
+from taucli.answering.pipeline import solve
+from taucli.writing.report import Report, Table, Value
+from taucli.writing.render import STRICT_JSON, document, document_text
 
 from test_table import WORKING
 
@@ -42,7 +42,7 @@ def test_every_scene_writes_the_documents_text(name, steps):
 
 
 def test_uncertainties_and_the_monte_carlo_check_are_written_as_the_dict_says():
-    from taucli.answer import solve as solve_uncertain
+    from taucli.answering.answer import solve as solve_uncertain
 
     given = {"m1": "4.0+/-0.1 kg", "m2": "1 kg", "pulley_mass": "2kg", "pulley_radius": "0.1m"}
     report = solve_uncertain(COMMANDS["atwood"], given, mc=2000)
@@ -51,7 +51,7 @@ def test_uncertainties_and_the_monte_carlo_check_are_written_as_the_dict_says():
 
 
 def test_a_plot_is_written_under_plot():
-    from taucli.plot import plot_document
+    from taucli.writing.plot import plot_document
 
     report = taucli.spin_down(inertia=0.1, omega0=30, friction=0.3)
     text = document_text(report, plot=plot_document(report))

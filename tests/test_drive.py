@@ -140,7 +140,7 @@ REFUSED = [
 
 @pytest.mark.parametrize("args,fragment", REFUSED, ids=[" ".join(a)[:60] for a, _ in REFUSED])
 def test_what_it_cannot_take_is_one_line_and_exit_2(args, fragment, capsys):
-    from taucli import cli
+    from taucli.front import cli
 
     assert cli.main(["drive", *args]) == 2
     captured = capsys.readouterr()
@@ -191,7 +191,7 @@ YASKAWA_ARGS = ["--load-mass", "250kg", "--lead", "10mm", "--part", "disc densit
 
 
 def test_batch_lines_and_the_python_api_agree():
-    from taucli import answer
+    from taucli.answering import answer
     from taucli.options import SCENES
 
     line = {"load_mass": "250 kg", "lead": "10 mm", "ratio": ["2"], "efficiency": 0.9, "mu": 0.2, "g": 9.8, "motor_inertia": 3e-5,
@@ -217,7 +217,7 @@ def test_find_solves_for_an_input_and_uncertainty_carries_through():
 
 
 def test_a_move_profile_draws_its_speed_and_torque():
-    from taucli.plot import motion_points
+    from taucli.writing.plot import motion_points
 
     report = taucli.drive(load_inertia=0.05, ratio=[10], motor_inertia=1e-4, until_omega="3000 rpm", accel_time=0.1, run_time=0.2,
                           decel_time=0.05, dwell_time=0.1)

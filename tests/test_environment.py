@@ -212,7 +212,7 @@ def test_batch_gives_one_line_per_input_line_in_order_even_when_lines_fail():
 
 
 def test_an_internal_error_shows_a_traceback_only_with_debug(monkeypatch, capsys):
-    from taucli import cli
+    from taucli.front import cli
     from taucli.scenes import atwood
 
     def broken(*args, **kwargs):

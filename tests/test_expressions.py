@@ -11,8 +11,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from conftest import assert_usage_error, run_taucli
-from taucli import units
-from taucli.errors import InputError
+from taucli.quantities import units
+from taucli.core.errors import InputError
 
 
 def _read(text: str, kind: str = "length", option: str = "radius"):

@@ -13,9 +13,9 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli import cli
-from taucli.errors import InputError
-from taucli.find import brent
+from taucli.front import cli
+from taucli.core.errors import InputError
+from taucli.answering.find import brent
 
 MP_DPS = 40  # the references' precision, set for each test by conftest
 with mpmath.workdps(MP_DPS):

@@ -1,6 +1,6 @@
 """--find finds every root, or says where it may not have (#31 items 5, 6, 7, and 2's --want note).
 
-The references are independent of taucli.roots and taucli.find: closed forms written from the
+The references are independent of taucli.numerics.steppers.roots and taucli.answering.find: closed forms written from the
 physics with mpmath, and a brute-force scan of the forward scene (its library function over a
 fine grid, each sign change bisected).
 """
@@ -15,9 +15,13 @@ import mpmath
 import pytest
 
 import taucli
-from taucli import cli, completions, options, pipeline, roots
-from taucli.errors import InputError
-from taucli.inputs import read
+from taucli import options
+from taucli.front import cli
+from taucli.front import completions
+from taucli.answering import pipeline
+from taucli.numerics import roots
+from taucli.core.errors import InputError
+from taucli.answering.inputs import read
 
 MP_DPS = 40
 with mpmath.workdps(MP_DPS):

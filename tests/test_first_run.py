@@ -1,7 +1,7 @@
 """A first run (an empty cache folder) costs no more than a warm one (#36 item 8).
 
 pint's SI factor for each common unit text is shipped in the package (taucli/units-shipped.json,
-built by ``python -m taucli.shipped``), so a first run reads "4 kg" without importing pint and
+built by ``python -m taucli.quantities.shipped``), so a first run reads "4 kg" without importing pint and
 building its registry, as a warm run does. The table is used only for the rules and the pint it
 was built with; these tests check that it is current, that each factor is pint's, and that a
 first run of README's examples never imports pint. (Timings: docs/running.md, measured by hand.)
@@ -17,8 +17,10 @@ import sys
 
 import pytest
 
-from taucli import cache, shipped, units
-from taucli.kinds import KINDS
+from taucli.quantities import cache
+from taucli.quantities import shipped
+from taucli.quantities import units
+from taucli.quantities.kinds import KINDS
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -31,7 +33,7 @@ def _shipped() -> dict:
 def test_the_shipped_table_is_current():
     if cache.pint_version() is None:
         pytest.skip("pint's version cannot be found from its dist-info folder here: the table is not used")
-    assert _shipped()["stamp"] == cache.rules_stamp(), "the reading rules or pint changed: run `python -m taucli.shipped`"
+    assert _shipped()["stamp"] == cache.rules_stamp(), "the reading rules or pint changed: run `python -m taucli.quantities.shipped`"
     assert cache.shipped_unit_factors() == _shipped()["entries"]
 
 
@@ -58,7 +60,7 @@ def test_every_unit_of_the_docs_examples_is_shipped():
             found = units.factor_entry(f"1 {text}", kind)
             if found is not None and found[0] not in entries:
                 missing.append(found[0])
-    assert not missing, f"run `python -m taucli.shipped`: {missing}"
+    assert not missing, f"run `python -m taucli.quantities.shipped`: {missing}"
 
 
 def test_a_stale_table_is_not_used(monkeypatch):
@@ -97,7 +99,7 @@ def test_the_shipped_table_and_pint_give_the_same_answers(tmp_path, monkeypatch)
     args = ("spin-down", "--shape", "disc", "--mass", "5kg", "--radius", "20cm", "--omega0", "300rpm", "--friction", "0.3N*m", "--time", "1s", "--json")
     shipped = _first_run(tmp_path, *args)
     env = {**os.environ, "TAUCLI_CACHE_DIR": ""}
-    with_pint = subprocess.run([sys.executable, "-c", "import sys; from taucli import cache; cache.shipped_unit_factors = dict;"
-                                "from taucli.cli import main; sys.exit(main(sys.argv[1:]))", *args], capture_output=True, text=True, env=env, timeout=120)
+    with_pint = subprocess.run([sys.executable, "-c", "import sys; from taucli.quantities import cache; cache.shipped_unit_factors = dict;"
+                                "from taucli.front.cli import main; sys.exit(main(sys.argv[1:]))", *args], capture_output=True, text=True, env=env, timeout=120)
     assert shipped.returncode == with_pint.returncode == 0, with_pint.stderr
     assert json.loads(shipped.stdout) == json.loads(with_pint.stdout)

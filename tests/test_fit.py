@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from fit_synthetic import COAST, coast_down, csv, solve
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.fit import command, nonlinear
 
 MP_DPS = 40

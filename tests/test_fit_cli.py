@@ -13,7 +13,7 @@ import pytest
 
 from conftest import run_taucli
 from fit_synthetic import coast_down, csv
-from taucli import help as helptext
+from taucli.front import help as helptext
 from taucli.options import COMMANDS, SCENES
 from taucli.options.fit import COMMAND as FIT
 from taucli.options.fit import SCENE_NAMES
@@ -119,7 +119,7 @@ def test_without_scipy_fit_says_which_extra_to_install(monkeypatch):
     import importlib.util
 
     import taucli.fit
-    from taucli.cli import Environment, main
+    from taucli.front.cli import Environment, main
 
     real = importlib.util.find_spec
     monkeypatch.setattr(taucli.fit.importlib.util, "find_spec", lambda name, *a: None if name == "scipy" else real(name, *a))
@@ -184,7 +184,7 @@ def test_the_python_api_fits_as_the_command_line_does(coast):
 def test_fits_page_shows_its_options_and_results_as_its_table_has_them():
     text = (ROOT / "docs" / "fit.md").read_text(encoding="utf-8")
     start, end = helptext.TABLE_START.format(name="fit"), helptext.TABLE_END.format(name="fit")
-    assert text.split(start, 1)[1].split(end, 1)[0].strip() == helptext.markdown(FIT), "docs/fit.md's table is stale: python -m taucli.help docs"
+    assert text.split(start, 1)[1].split(end, 1)[0].strip() == helptext.markdown(FIT), "docs/fit.md's table is stale: python -m taucli.front.help docs"
     assert "(docs/fit.md)" in (ROOT / "README.md").read_text(encoding="utf-8")
 
 

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.fit import data, samples
 from taucli.options import SCENES
 

@@ -20,7 +20,7 @@ import pytest
 
 pytest.importorskip("scipy")
 
-from taucli.cli import Environment, main  # noqa: E402
+from taucli.front.cli import Environment, main  # noqa: E402
 from taucli.fit import start  # noqa: E402
 from test_readme import _lines, _with_docs, fit_machine_output, fit_numbers_agree, sessions  # noqa: E402
 

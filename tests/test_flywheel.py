@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 import taucli
 from conftest import assert_usage_error, run_taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 
 RPM = 2 * math.pi / 60
 

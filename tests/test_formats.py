@@ -24,10 +24,11 @@ import pytest
 from markdown_it import MarkdownIt
 
 from conftest import ROOT
-from taucli import formats, latex
-from taucli.cli import Environment, main
+from taucli.writing import formats
+from taucli.writing import latex
+from taucli.front.cli import Environment, main
 from taucli.options import SCENES
-from taucli.report import Report, Step, Table, Value
+from taucli.writing.report import Report, Step, Table, Value
 
 FORMATS = ("md", "latex", "html", "csv")
 TEX = next((program for program in ("pdflatex", "lualatex") if shutil.which(program)), None)

@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 
 import taucli
 from conftest import run_taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes import gyro as scene
 
 G0 = 9.80665

@@ -14,7 +14,7 @@ import re
 import pytest
 
 from conftest import documents_text
-from taucli import help
+from taucli.front import help
 from taucli.options import COMMANDS
 from taucli.options.tools import ROOT
 from terminal import SHELLS, WIDTHS, Terminal
@@ -170,6 +170,6 @@ def test_each_example_as_shown_at_40_columns_runs(shell):
 
 def test_every_kinds_example_is_typed_for_every_shell():
     """The example an error message gives for a kind ("(e.g. '0.3 N*m')") works as typed."""
-    from taucli.kinds import KINDS
+    from taucli.quantities.kinds import KINDS
 
     assert not [kind.example for kind in KINDS.values() if unquoted_glob(kind.example)]

@@ -27,7 +27,7 @@ def modules(root: Path = PACKAGE) -> dict[str, Path]:
 
 
 def _imported(node: ast.AST, package: str, known: dict[str, Path]) -> set[str]:
-    """The taucli modules one import statement names (``from taucli import units`` names taucli.units)."""
+    """The taucli modules one import statement names (``from taucli.quantities import units`` names taucli.quantities.units)."""
     if isinstance(node, ast.Import):
         return {alias.name for alias in node.names if alias.name in known}
     base = node.module or ""
@@ -129,3 +129,74 @@ def test_an_import_inside_a_function_defers_a_heavy_module_and_says_which():
 def test_no_module_is_over_about_500_lines(name):
     lines = len(modules()[name].read_text(encoding="utf-8").splitlines())
     assert lines <= MOST_LINES, f"{name} has {lines} lines"
+
+
+# The layers of taucli/, lowest first: a module may import its own layer and those below it, never
+# one above (taucli/__init__.py and __main__.py, the package's faces, stand above them all).
+LAYERS = (
+    ("core", "errors, numbers as text, the names of choices, the version"),
+    ("numerics", "steppers, roots, quadrature, elliptic integrals"),
+    ("quantities", "text -> an SI float for a kind: units, spellings, expressions, the unit cache"),
+    ("writing", "Report and its writers: the human view, JSON, md/latex/html/csv, charts"),
+    ("options", "the vocabulary of a table and one table per command"),
+    ("scenes", "pure solvers: SI floats in, a Report out"),
+    ("answering", "inputs -> the scene -> Report, and how a run is answered"),
+    ("fit", "taucli fit: samples, models on arrays, least squares"),
+    ("front", "the command line, batch, the Python API, help, completions, bench"),
+)
+LAYER_OF = {name: rank for rank, (name, _) in enumerate(LAYERS)}
+MOST_TOP_ENTRIES = 11  # "at most about ten": the layers, __init__.py and __main__.py
+
+
+def layer(module: str) -> int | None:
+    """The rank of a module's layer (taucli.quantities.units: 2), None for the package's faces."""
+    parts = module.split(".")
+    return LAYER_OF.get(parts[1]) if len(parts) > 1 else None
+
+
+def upward_imports(edges: dict[str, set[str]]) -> list[str]:
+    """Each import from a lower layer into a higher one, as "importer (layer) -> imported (layer)"."""
+    found = []
+    for importer, imported in sorted(edges.items()):
+        below = layer(importer)
+        for name in sorted(imported):
+            above = layer(name)
+            if below is not None and above is not None and above > below:
+                found.append(f"{importer} ({LAYERS[below][0]}) -> {name} ({LAYERS[above][0]})")
+    return found
+
+
+def test_taucli_is_a_few_folders_one_per_layer_each_saying_what_it_owns():
+    entries = sorted(path.name for path in PACKAGE.iterdir() if not path.name.startswith((".", "__pycache__")))
+    assert entries == sorted(["__init__.py", "__main__.py", *LAYER_OF]), entries
+    assert len(entries) <= MOST_TOP_ENTRIES
+    for name in LAYER_OF:
+        doc = ast.get_docstring(ast.parse((PACKAGE / name / "__init__.py").read_text(encoding="utf-8")))
+        assert doc and "import" in doc, f"taucli/{name}/__init__.py: a docstring saying what the layer owns and what it may import"
+
+
+def test_every_module_is_in_a_layer():
+    faces = {"taucli", "taucli.__main__"}
+    assert not [name for name in modules() if name not in faces and layer(name) is None]
+
+
+def test_imports_run_down_the_layers_never_up():
+    found = upward_imports(graph())
+    assert not found, "imports from a lower layer into a higher one:\n" + "\n".join(found)
+
+
+def test_the_layer_check_finds_an_import_that_runs_up(tmp_path):
+    """The check can fail: a planted import from the quantities layer up into writing (render),
+    and one deferred into a function of a scene up into the answering layer."""
+    package = tmp_path / "taucli"
+    for folder in ("quantities", "writing", "scenes", "answering"):
+        (package / folder).mkdir(parents=True)
+        (package / folder / "__init__.py").write_text("")
+    (package / "__init__.py").write_text("")
+    (package / "writing" / "render.py").write_text("from taucli.quantities import units\n")
+    (package / "quantities" / "units.py").write_text("from taucli.writing.render import render\n")
+    (package / "answering" / "pipeline.py").write_text("from taucli.scenes import inertia\n")
+    (package / "scenes" / "inertia.py").write_text("def solve():\n    from taucli.answering import pipeline  # deferred: planted\n")
+    found = upward_imports(graph(package))
+    assert found == ["taucli.quantities.units (quantities) -> taucli.writing.render (writing)",
+                     "taucli.scenes.inertia (scenes) -> taucli.answering.pipeline (answering)"]

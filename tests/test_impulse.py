@@ -12,8 +12,8 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from conftest import assert_usage_error
-from taucli.errors import InputError
-from taucli.profile import read_profile
+from taucli.core.errors import InputError
+from taucli.answering.profile import read_profile
 from taucli.scenes.impulse import UNKNOWNS, solve_balance, solve_changing_inertia, solve_profile
 
 

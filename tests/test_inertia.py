@@ -14,7 +14,7 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.inertia import SHAPES, Part, body_inertia, part_inertia, solve
 
 mp = mpmath.mp

@@ -7,8 +7,8 @@ import sys
 
 import pytest
 
-from taucli.report import Report, Value, fmt, pretty_unit
-from taucli.render import document, finite_only
+from taucli.writing.report import Report, Value, fmt, pretty_unit
+from taucli.writing.render import document, finite_only
 
 HEAVY = ("typer", "rich", "pint")
 
@@ -49,7 +49,9 @@ def test_a_result_that_does_not_exist_is_null_with_a_note():
 
 
 def test_the_names_offered_match_the_tables_they_stand_for():
-    from taucli import bench, names, numerics
+    from taucli.front import bench
+    from taucli.core import names
+    from taucli.numerics import steppers as numerics
     from taucli.scenes.atwood import Pulley
     from taucli.scenes.inertia import SHAPES
     from taucli.scenes.rolling import K2

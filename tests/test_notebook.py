@@ -11,9 +11,9 @@ import shlex
 import pytest
 
 import taucli
-from taucli.cli import Environment, main
+from taucli.front.cli import Environment, main
 from taucli.options import SCENES
-from taucli.table import CHOICE, FLAG
+from taucli.options.table import CHOICE, FLAG
 
 
 def cli(command: str) -> str:

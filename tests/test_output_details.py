@@ -14,7 +14,7 @@ import sys
 import pytest
 
 from conftest import run_taucli
-from taucli.display import MINUS, equation_text, minus_signs, wrap_expression
+from taucli.writing.display import MINUS, equation_text, minus_signs, wrap_expression
 from terminal import SHELLS, WIDTHS, Terminal
 
 OPERATORS = ("=", "+", MINUS, "-", "×", "/", "⇒", "≈", "<", ">", "≤", "≥", "→")
@@ -162,7 +162,7 @@ def test_steps_in_a_real_terminal(shell, columns):
 def test_a_note_at_many_points_gives_their_count_and_ends():
     from types import SimpleNamespace
 
-    from taucli.sweep import Point, Swept, _notes_where
+    from taucli.answering.sweep import Point, Swept, _notes_where
 
     swept = Swept("m2", "1..8kg", tuple(f"{x} kg" for x in range(1, 9)), tuple(range(1, 9)), "kg", True)
     points = [Point(i, 0, SimpleNamespace(notes=["everywhere", *(["held"] if 2 <= i <= 6 else [])])) for i in range(8)]

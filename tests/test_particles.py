@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 import taucli
 from conftest import assert_usage_error, run_taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 
 MP_DPS = 50  # the references' precision, set for each test by conftest
 

@@ -13,9 +13,9 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli import elliptic
-from taucli.errors import InputError
-from taucli.numerics import integrate_angle
+from taucli.numerics import elliptic
+from taucli.core.errors import InputError
+from taucli.numerics.steppers import integrate_angle
 
 EPS = 2.0**-52
 G0 = 9.80665
@@ -331,7 +331,7 @@ def test_a_stepper_far_off_is_withheld_not_shown(method, dt, torsion):
 
 @pytest.mark.parametrize("name", ["pendulum at 60°", "pendulum at 179°"])
 def test_the_bench_references_are_quadrature_of_the_period(name):
-    from taucli import bench
+    from taucli.front import bench
 
     degrees, reference = bench.PENDULUM_PROBLEMS[name]
     with mp.workdps(60):
@@ -340,7 +340,7 @@ def test_the_bench_references_are_quadrature_of_the_period(name):
 
 
 def test_the_bench_charts_every_pendulum_method():
-    from taucli import bench
+    from taucli.front import bench
 
     points = bench.run(("pendulum",), quick=True)
     for name in bench.PENDULUM_PROBLEMS:

@@ -12,7 +12,7 @@ import pytest
 
 import taucli
 from conftest import assert_usage_error, run_taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 
 MP_DPS = 40
 G0 = 9.80665

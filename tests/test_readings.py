@@ -20,8 +20,10 @@ import pytest
 
 import taucli
 from conftest import assert_usage_error, run_taucli
-from taucli import answer, measurement, units
-from taucli.errors import InputError
+from taucli.answering import answer
+from taucli.quantities import measurement
+from taucli.quantities import units
+from taucli.core.errors import InputError
 
 PI = math.pi
 

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.rolling import K2, Roller, roller, solve_flat, solve_incline
 
 

@@ -17,7 +17,7 @@ from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.rolling import K2, Pull, Roller, rolling, solve_pull, solve_yoyo
 
 G = 9.80665

@@ -18,8 +18,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import assert_usage_error, run_taucli
-from taucli import cli, spellings, units
-from taucli.errors import InputError
+from taucli.front import cli
+from taucli.quantities import spellings
+from taucli.quantities import units
+from taucli.core.errors import InputError
 
 PI = math.pi
 LB = 0.45359237  # kg
@@ -382,7 +384,7 @@ def test_respell_rewrites_units_only(text, respelled):
 
 
 def test_a_respelled_unit_shares_the_cache_entry_of_its_pint_spelling(tmp_path, monkeypatch):
-    from taucli import cache
+    from taucli.quantities import cache
 
     store = cache.Store(str(tmp_path), "units", lambda: "this test")
     monkeypatch.setattr(cache, "unit_factors", lambda: store)

@@ -13,8 +13,8 @@ import pytest
 from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
-from taucli import numerics
-from taucli.errors import InputError
+from taucli.numerics import steppers as numerics
+from taucli.core.errors import InputError
 from taucli.scenes.closed_forms import ClosedFormPhase
 from taucli.scenes.spin import Torques, solve
 

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 
 CHOICES = {
     "omega0": [0, 5, -5, 100, 1e-3],

@@ -15,7 +15,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.spin.kinematics import Uniform
 
 mp = mpmath.mp

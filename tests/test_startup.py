@@ -44,14 +44,14 @@ def test_help_is_written_from_the_tables_without_typer(argv, tmp_path):
     """No typer, click, pint, rich or pydantic, no solver, and nothing kept in a cache."""
     loaded = _modules_after(argv, {"TAUCLI_CACHE_DIR": str(tmp_path)})
     assert not _top(loaded) & {"typer", "click", "pint", "rich", "pydantic"}
-    assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.numerics", "taucli.cli"))}
+    assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.numerics.steppers", "taucli.front.cli"))}
     assert not list(tmp_path.iterdir())
 
 
 def test_version_imports_no_solver_no_units_no_rich_no_pydantic(tmp_path):
     loaded = _modules_after(["--version"], {"TAUCLI_CACHE_DIR": str(tmp_path)})
     assert not _top(loaded) & {"pint", "rich", "pydantic"}
-    assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.numerics"))}
+    assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.numerics.steppers"))}
 
 
 def test_a_repeat_computation_imports_neither_pint_nor_pydantic(tmp_path):
@@ -124,7 +124,10 @@ def test_a_missing_home_still_answers(tmp_path):
 )  # fmt: skip
 def test_a_cached_unit_reads_as_pint_reads_the_whole_text(text, kind, tmp_path, monkeypatch):
     """Number times pint's factor for the unit is what pint makes of the whole text, to 1 ulp."""
-    from taucli import cache, registry, screen, units
+    from taucli.quantities import cache
+    from taucli.quantities import registry
+    from taucli.quantities import screen
+    from taucli.quantities import units
 
     store = cache.Store(str(tmp_path), "units", lambda: "this test")
     monkeypatch.setattr(cache, "unit_factors", lambda: store)
@@ -137,7 +140,7 @@ def test_a_cached_unit_reads_as_pint_reads_the_whole_text(text, kind, tmp_path, 
 
 
 def test_text_that_is_not_number_times_unit_goes_to_pint_whole():
-    from taucli import units
+    from taucli.quantities import units
 
     assert units.parse("4 kg + 200 g", "--m1", "mass").value == pytest.approx(4.2, rel=1e-15)
     assert units.parse("(4 + 1) kg", "--m1", "mass").value == 5.0
@@ -157,7 +160,7 @@ def test_help_groups_options_under_their_panels():
 
 def test_two_environments_sharing_a_cache_folder_keep_their_own_entries(tmp_path):
     """Another pint (another venv) has its own file, so neither evicts the other's answers."""
-    from taucli import cache
+    from taucli.quantities import cache
 
     one = cache.Store(str(tmp_path), "units", lambda: "pint 0.24 in venv one")
     one.put("kg|mass|lb", [0.45359237, 0])

@@ -21,8 +21,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from conftest import documents_text
-from taucli.render import shown
-from taucli.report import pretty_unit
+from taucli.writing.render import shown
+from taucli.writing.report import pretty_unit
 from test_table import WORKING
 
 NUMBER = re.compile(r"(?<![\w.^])[-−]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")

@@ -201,7 +201,7 @@ def test_the_terminal_chart_fits_the_width_and_has_no_colour_codes_in_a_pipe(col
 def test_colour_only_on_a_terminal_and_never_under_no_color():
     import io
 
-    from taucli import plot
+    from taucli.writing import plot
 
     chart = plot.Chart("t", "x", "x", "m", (plot.Panel("y", "y", "s", (plot.Series("a", (0.0, 1.0), (0.0, 1.0)), plot.Series("b", (0.0, 1.0), (1.0, 0.0)))),))
     with pytest.MonkeyPatch.context() as patch:
@@ -214,7 +214,7 @@ def test_colour_only_on_a_terminal_and_never_under_no_color():
         def isatty(self):
             return True
 
-    from taucli.render import terminal_style
+    from taucli.writing.render import terminal_style
 
     assert terminal_style(Terminal())[1] is True
     with pytest.MonkeyPatch.context() as patch:

@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 
 from conftest import run_taucli, strict_json
-from taucli import help as helptext
+from taucli.front import help as helptext
 from taucli.options import COMMANDS, SCENES
-from taucli.table import FLAG, FILLED
+from taucli.options.table import FLAG, FILLED
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENE_NAMES = list(SCENES)
@@ -40,7 +40,7 @@ WORKING = {
 def test_the_typer_command_has_exactly_the_tables_options(name):
     import typer.main
 
-    from taucli.cli import Environment, build_app
+    from taucli.front.cli import Environment, build_app
 
     command = COMMANDS[name]
     made = typer.main.get_command(build_app(Environment(), only=name)).commands[name]
@@ -69,7 +69,7 @@ def test_help_lists_every_option_and_result_of_the_table(name):
 
 
 def test_help_is_the_same_in_process_and_through_the_console_script():
-    from taucli.cli import Environment, main
+    from taucli.front.cli import Environment, main
 
     out = io.StringIO()
     assert main(["atwood", "--help"], Environment(stdout=out)) == 0
@@ -80,7 +80,7 @@ def test_help_is_the_same_in_process_and_through_the_console_script():
 def test_the_library_takes_exactly_the_tables_names(name):
     """Each option's name is a keyword of the scene's library function (directly or, for a body,
     through the inertia module's ``body``), and nothing else is."""
-    from taucli import pipeline
+    from taucli.answering import pipeline
     from taucli.scenes.inertia import body
 
     command = SCENES[name]
@@ -107,7 +107,7 @@ def test_every_result_a_scene_gives_is_in_its_table(name):
 @pytest.mark.parametrize("name", SCENE_NAMES)
 def test_the_batch_keys_are_the_option_names(name):
     """A line may use every option's name, and its answer is the single run's."""
-    from taucli.cli import Environment, main
+    from taucli.front.cli import Environment, main
 
     argv = WORKING[name]
     single = run_taucli(name, *argv, "--json").json()
@@ -127,7 +127,7 @@ def test_the_batch_keys_are_the_option_names(name):
 
 @pytest.mark.parametrize("name", SCENE_NAMES)
 def test_sweeps_take_the_tables_quantities_and_nothing_else(name):
-    from taucli import sweep
+    from taucli.answering import sweep
 
     command = SCENES[name]
     for option in command.options:
@@ -138,7 +138,7 @@ def test_sweeps_take_the_tables_quantities_and_nothing_else(name):
 
 @pytest.mark.parametrize("name", list(COMMANDS))
 def test_completions_offer_the_tables_options_choices_and_results(name):
-    from taucli import completions
+    from taucli.front import completions
 
     _, commands = completions.spec()
     offered = next(c for c in commands if c.name == name)
@@ -172,7 +172,7 @@ def test_each_scenes_page_shows_its_options_and_results_as_its_table_has_them():
         end = helptext.TABLE_END.format(name=command.name)
         assert start in text and end in text, f"{page.name} has no generated table for {command.name}"
         shown = text.split(start, 1)[1].split(end, 1)[0].strip()
-        assert shown == helptext.markdown(command), f"{page.name}'s table of {command.name} is stale: python -m taucli.help docs"
+        assert shown == helptext.markdown(command), f"{page.name}'s table of {command.name} is stale: python -m taucli.front.help docs"
 
 
 def test_each_scenes_help_ends_with_its_page_which_readme_links_to():
@@ -228,7 +228,8 @@ def test_the_command_line_spells_the_same_error_with_flags():
 
 def test_a_tables_default_is_what_the_library_assumes():
     """The default help shows is the value the library uses when the option is left out."""
-    from taucli import pipeline, units
+    from taucli.answering import pipeline
+    from taucli.quantities import units
     from taucli.scenes.assumed import STANDARD_GRAVITY
 
     assert units.parse(SCENES["atwood"].option("g").default, "g", "acceleration").value == STANDARD_GRAVITY

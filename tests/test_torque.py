@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 import taucli
 from conftest import assert_usage_error, run_taucli
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.torque import cross, difference_of_products, sin_exact
 
 MP_DPS = 40  # the references' precision, set for each test by conftest

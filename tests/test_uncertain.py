@@ -13,10 +13,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import taucli
-from taucli import cli, pipeline
+from taucli.front import cli
+from taucli.answering import pipeline
 from taucli.options import SCENES
-from taucli.render import STRICT_JSON, document
-from taucli.measurement import split, with_uncertainty
+from taucli.writing.render import STRICT_JSON, document
+from taucli.quantities.measurement import split, with_uncertainty
 
 MP_DPS = 40  # the references' precision, set for each test by conftest
 with mpmath.workdps(MP_DPS):
@@ -163,7 +164,7 @@ def test_with_uncertainty(value, sigma, shown):
 def test_without_an_uncertainty_the_plain_path_is_untouched(scene):
     command = SCENES[scene]
     options = {"m1": "4kg", "m2": "1kg", "pulley_mass": "2kg"} if scene == "atwood" else {"inertia": "0.1 kg*m^2", "omega0": "30 rad/s", "friction": "0.3 N*m"}
-    from taucli import answer
+    from taucli.answering import answer
 
     through = answer.solve(command, options)
     direct = pipeline.solve(command, options)

@@ -7,8 +7,8 @@ import time
 
 import pytest
 
-from taucli import units
-from taucli.errors import InputError
+from taucli.quantities import units
+from taucli.core.errors import InputError
 
 # (text, kind, SI value): the SI values are worked out by hand from the unit definitions.
 READINGS = [

@@ -25,8 +25,8 @@ import pytest
 
 import taucli
 from conftest import ROOT, run_taucli
-from taucli import cli
-from taucli.errors import InputError
+from taucli.front import cli
+from taucli.core.errors import InputError
 
 PI = math.pi
 G0 = 9.80665  # m/s²

@@ -10,13 +10,16 @@ package is imported only by ``taucli fit``: the other commands start as fast as 
     taucli.fit.fit("spin-down", "coast.csv", fit="friction,viscous", inertia="0.1 kg*m^2")
 
 returns the Report the command line renders.
+
+May import: every layer below the front ends (core, numerics, quantities, writing, options,
+scenes, answering).
 """
 
 from __future__ import annotations
 
 import importlib.util
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 
 EXTRA = "pip install 'taucli[fit]' (from a checkout: pip install '.[fit]')"
 

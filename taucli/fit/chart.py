@@ -1,5 +1,5 @@
 """The chart of a fit: the samples and the fitted model against the samples' input, and the
-residuals below, drawn as every chart is (taucli.plot: plotille in the terminal, matplotlib for
+residuals below, drawn as every chart is (taucli.writing.plot: plotille in the terminal, matplotlib for
 --out). The x axis is the input that varies between the samples (the time of a time series, an
 amplitude), in its column's unit; where it is the only one, the model is drawn as a curve over it,
 else at the samples. (``--json --plot`` gives the same numbers in SI.)
@@ -11,9 +11,9 @@ import math
 
 import numpy as np
 
-from taucli import units
+from taucli.quantities import units
 from taucli.fit.solve import Fit
-from taucli.plot import Chart, Panel, Series
+from taucli.writing.plot import Chart, Panel, Series
 
 CURVE = 121  # points of the fitted curve
 

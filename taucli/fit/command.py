@@ -8,14 +8,14 @@ the writer, and the chart where asked for.
 
 from __future__ import annotations
 
-from taucli import render
-from taucli.errors import InputError, did_you_mean
+from taucli.writing import render
+from taucli.core.errors import InputError, did_you_mean
 from taucli.fit import chart, data, results, samples, solve
-from taucli.inputs import read
+from taucli.answering.inputs import read
 from taucli.options import SCENES
 from taucli.options.fit import COMMAND as FIT
-from taucli.report import Report
-from taucli.table import FLAG, Command
+from taucli.writing.report import Report
+from taucli.options.table import FLAG, Command
 
 
 def _scene(name: str | None) -> Command:
@@ -93,7 +93,7 @@ def run(env, given: dict) -> int:
     if given.get("plot") and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
     if given.get("out") is not None:
-        from taucli import plot  # deferred: charts, only for --out
+        from taucli.writing import plot  # deferred: charts, only for --out
 
         plot.check_file(given["out"])
     try:
@@ -108,12 +108,12 @@ def run(env, given: dict) -> int:
     else:
         render.render(report, output, env.stdout, env.stderr)
         if given.get("plot"):
-            from taucli import plot  # deferred: charts, only for --plot
+            from taucli.writing import plot  # deferred: charts, only for --plot
 
             columns, colour = render.terminal_style(env.stdout)
             env.stdout.write("\n" + plot.terminal(chart.chart(found), columns, colour=colour))
     if given.get("out") is not None:
-        from taucli import plot  # deferred: matplotlib, only for --out
+        from taucli.writing import plot  # deferred: matplotlib, only for --out
 
         plot.write_file(chart.chart(found), given["out"])
     env.stdout.flush()

@@ -24,7 +24,7 @@ import os
 import re
 from dataclasses import dataclass
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 
 OPTION = "data"  # the argument the messages name (DATA)
 MAX_BYTES = 200 * 1024 * 1024

@@ -3,7 +3,7 @@
 f(xᵢ; p) is the result measured (``omega``, ``period``, ``t``) as the scene gives it with the
 options held (``--inertia 0.1kg*m^2``), sample i's own inputs (its time, its masses) and the
 fitted inputs p in their places (an option, or a key of a spec, as ``--find`` names them:
-taucli.unknowns). Every value goes through ``pipeline.solve``, so the model is exactly what
+taucli.answering.unknowns). Every value goes through ``pipeline.solve``, so the model is exactly what
 ``taucli SCENE`` answers for those options; a sample where the scene refuses the inputs, or has no
 value for the result, is NaN here, and the reason is kept.
 
@@ -18,21 +18,21 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from taucli import pipeline
-from taucli.errors import InputError
+from taucli.answering import pipeline
+from taucli.core.errors import InputError, spelled
 from taucli.fit.samples import Samples
-from taucli.inputs import read
-from taucli.measurement import split
-from taucli.report import Report
-from taucli.table import Command, spelled
-from taucli.unknowns import Unknown
+from taucli.answering.inputs import read
+from taucli.quantities.measurement import split
+from taucli.writing.report import Report
+from taucli.options.table import Command
+from taucli.answering.unknowns import Unknown
 
 REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError)
 
 
 def held(command: Command, given: Mapping[str, object], spell, unknowns: list[Unknown] = ()) -> tuple[dict, dict[str, float], dict[str, float], list[str]]:
     """The options held: (each as given, "value ± σ" as its value; each σ in SI; each quantity's
-    SI value; notes), as taucli.answer reads uncertain options. A spec with a key fitted is read
+    SI value; notes), as taucli.answering.answer reads uncertain options. A spec with a key fitted is read
     with a stand-in there (a spec without a key it needs is refused)."""
     readable = dict(given)
     for unknown in unknowns:

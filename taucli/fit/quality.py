@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.fit.model import Model
 
 DEGENERATE = 1e-7  # smallest singular value / largest (columns scaled): below, the inputs cannot be told apart

@@ -16,15 +16,14 @@ import math
 
 import numpy as np
 
-from taucli import units
-from taucli.errors import InputError
+from taucli.quantities import units
+from taucli.core.errors import InputError, spelled
 from taucli.fit import quality
 from taucli.fit.model import REFUSALS
 from taucli.fit.solve import Fit
 from taucli.options.fit import COMMAND as FIT
-from taucli.propagate import derivative, numeric
-from taucli.report import Measured, Report, Step, Table, Value, fmt, pretty_unit, quantity_text
-from taucli.table import spelled
+from taucli.answering.propagate import derivative, numeric
+from taucli.writing.report import Measured, Report, Step, Table, Value, fmt, pretty_unit, quantity_text
 
 FEW = 5  # degrees of freedom below which the residual variance is a rough stand-in (a note)
 EXACT = 1e-9  # residual RMS, of the largest measurement, at or below which the samples are exact values (computed, not measured)

@@ -23,11 +23,11 @@ import math
 import re
 from dataclasses import dataclass, field
 
-from taucli import units
-from taucli.errors import InputError, did_you_mean
+from taucli.quantities import units
+from taucli.core.errors import InputError, did_you_mean
 from taucli.fit.data import Column, DataTable, split_header
-from taucli.report import fmt, pretty_unit
-from taucli.table import Command
+from taucli.writing.report import fmt, pretty_unit
+from taucli.options.table import Command
 
 MAX_SAMPLES = 5000  # each sample is a solve of the scene, many times over: beyond this, --every or --range
 AMBIGUOUS = frozenset({"angle", "angular velocity", "angular acceleration"})  # a bare number is refused (docs/units.md)

@@ -20,14 +20,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from taucli import units, unknowns
-from taucli.errors import InputError
+from taucli.quantities import units
+from taucli.answering import unknowns
+from taucli.core.errors import InputError
 from taucli.fit import linear, nonlinear, quality, start
 from taucli.fit.model import Model, held
 from taucli.fit.samples import Samples
-from taucli.inputs import read
-from taucli.report import Step, fmt, quantity_text
-from taucli.table import Command
+from taucli.answering.inputs import read
+from taucli.writing.report import Step, fmt, quantity_text
+from taucli.options.table import Command
 
 
 @dataclass

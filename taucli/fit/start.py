@@ -14,7 +14,7 @@ In this order, for each fitted input:
    - a pendulum's swing θ(t): the amplitude, and the period from the zero crossings, g from the
      scene's own period at one g (the period goes as 1/√g at a given amplitude); runs of periods
      at their amplitudes: T = √(g₀/g)·T₀ for each, linear in √(g₀/g);
-3. else the roots of a few samples, as ``--find`` finds them (taucli.roots), the others at their
+3. else the roots of a few samples, as ``--find`` finds them (taucli.numerics.steppers.roots), the others at their
    starts (or 0): the one that best meets the samples (least squares over up to 40 of them).
 
 Where none gives a value, the fit is refused, asking for a start.
@@ -27,10 +27,11 @@ from collections.abc import Callable
 
 import numpy as np
 
-from taucli import roots, units
-from taucli.errors import InputError
+from taucli.numerics import roots
+from taucli.quantities import units
+from taucli.core.errors import InputError
 from taucli.fit.model import Model
-from taucli.report import Step, fmt, quantity_text
+from taucli.writing.report import Step, fmt, quantity_text
 from taucli.scenes.assumed import STANDARD_GRAVITY
 
 ROWS = 5  # samples a root is sought in, for the generic start

@@ -1,8 +1,8 @@
 """taucli atwood: two masses on a string over a pulley with mass."""
 
-from taucli.names import PULLEY_SHAPES
+from taucli.core.names import PULLEY_SHAPES
 from taucli.options.common import ANSWER, GRAVITY, MOTION, POINT_RESULTS, point_option
-from taucli.table import CHOICE, FLAG, PART, PULL, SIDE, Command, Option, Result
+from taucli.options.table import CHOICE, FLAG, PART, PULL, SIDE, Command, Option, Result
 
 PULLEY = "Pulley"
 SIDES = "Where the blocks are, and what pulls them"

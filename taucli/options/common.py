@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from taucli.names import FORMATS, METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
+from taucli.core.names import FORMATS, METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
 from dataclasses import replace
 
-from taucli.table import BAND, BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
+from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
 
 BODY = "Body (shape and dimensions)"
 MOTION = "Motion and method"
@@ -89,7 +89,7 @@ METHOD = Option("method", CHOICE, " | ".join(METHOD_NAMES) + ".", panel=MOTION, 
 DT = Option("dt", "time", "Fixed step for euler and rk4.", panel=MOTION, default="1 ms")
 RTOL = Option("rtol", "dimensionless", "Relative tolerance for rk45.", panel=MOTION, default="1e-10")
 
-# Solving for an input, and uncertainty (#22; taucli.find, taucli.uncertain).
+# Solving for an input, and uncertainty (#22; taucli.answering.find, taucli.uncertain).
 FIND = "Solve for an input, and uncertainty (any quantity may be given as 4.0+/-0.1kg)"
 UNCERTAIN = (
     Option("find", TEXT, "Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.", panel=FIND, metavar="NAME"),

@@ -3,7 +3,7 @@
 from dataclasses import replace
 
 from taucli.options.common import ANSWER, BODY_OPTIONS, GRAVITY, MOTION
-from taucli.table import FLAG, Command, Option, Result
+from taucli.options.table import FLAG, Command, Option, Result
 
 MOTOR = "Motor"
 TRAIN = "Drive train"

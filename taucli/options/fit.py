@@ -6,7 +6,7 @@ options, read by its own table (taucli.fit.command). This table holds what fit i
 
 from taucli.options import atwood, drive, flywheel, gyro, impulse, inertia, pendulum, rolling, spin_down, torque
 from taucli.options.common import ANSWER, OUTPUT
-from taucli.table import CHOICE, FILE, FLAG, TEXT, Command, Option, Result
+from taucli.options.table import CHOICE, FILE, FLAG, TEXT, Command, Option, Result
 
 SCENE_NAMES = tuple(module.COMMAND.name for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive, flywheel))
 DATA = "Data"

@@ -1,7 +1,7 @@
 """taucli flywheel: the fluctuation of a flywheel's speed and energy over a cycle, and its rim."""
 
 from taucli.options.common import ANSWER, BODY_OPTIONS
-from taucli.table import Command, Option, Result
+from taucli.options.table import Command, Option, Result
 
 SPEED = "Speed and its fluctuation"
 ENERGY = "Energy"

@@ -1,7 +1,7 @@
 """taucli gyro: a spinning top or gyroscope on a pivot, and the precession of its axis."""
 
 from taucli.options.common import ANSWER, BODY, BODY_OPTIONS, GRAVITY
-from taucli.table import CHOICE, ROTOR, Command, Option, Result
+from taucli.options.table import CHOICE, ROTOR, Command, Option, Result
 
 PIVOT = "Pivot and torque"
 MACHINE = "A rotor on a machine whose axis is turned (--precession)"

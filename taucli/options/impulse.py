@@ -1,8 +1,8 @@
 """taucli impulse: angular impulse and momentum, τΔt = IΔω."""
 
-from taucli.names import QUADRATURE_NAMES
+from taucli.core.names import QUADRATURE_NAMES
 from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
-from taucli.table import CHOICE, COUPLE, FILE, PART, PARTICLE, Command, Option, Result
+from taucli.options.table import CHOICE, COUPLE, FILE, PART, PARTICLE, Command, Option, Result
 
 MEETS = "Particles and bodies that meet it (L conserved)"
 

@@ -1,8 +1,8 @@
 """taucli inertia: the moment of inertia of a shape, shifted, or of a body of several parts."""
 
 from taucli.options.common import ANSWER, AXIS, BODY, DENSITY, DIMENSIONS, GRAVITY_FOR_WEIGHTS, GYRATION, MASS, OFFSET, PARTS, SHAPE_WORDS
-from taucli.table import CHOICE, Command, Option, Result
-from taucli.names import SHAPE_NAMES
+from taucli.options.table import CHOICE, Command, Option, Result
+from taucli.core.names import SHAPE_NAMES
 
 COMMAND = Command(
     name="inertia",

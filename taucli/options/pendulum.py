@@ -1,7 +1,7 @@
 """taucli pendulum: a body on a pivot under gravity or a torsion spring."""
 
 from taucli.options.common import ANSWER, BODY_OPTIONS, DT, GRAVITY, MOTION, PARTS, RTOL, SIGNED_PARTS
-from taucli.table import CHOICE, FLAG, Command, Option, Result
+from taucli.options.table import CHOICE, FLAG, Command, Option, Result
 
 COMPONENTS = tuple(f"pivot_{name}{where}" for where in ("0", "_bottom", "") for name in ("radial", "tangential", "horizontal", "vertical"))
 METHODS = ("auto", "exact", "small-angle", "euler", "rk4", "rk45", "verlet")

@@ -1,9 +1,9 @@
 """taucli rolling: a round body on an incline, or a skidding ball on the flat; pulled, a spool, a
 yo-yo; joined to a hanging mass over a pulley; a point of it seen from the ground."""
 
-from taucli.names import ROLLING_BODIES
+from taucli.core.names import ROLLING_BODIES
 from taucli.options.common import ANSWER, BODY, GRAVITY, MOTION, POINT_RESULTS
-from taucli.table import CHOICE, FLAG, Command, Option, Result
+from taucli.options.table import CHOICE, FLAG, Command, Option, Result
 
 PULL = "Pull, spool and yo-yo"
 HANGING = "Hanging mass over a pulley"

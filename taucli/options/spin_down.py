@@ -1,7 +1,7 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
 from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
-from taucli.table import FLAG, Command, Option, Result
+from taucli.options.table import FLAG, Command, Option, Result
 
 ENERGY = "Energy added, taken or put to use"
 

@@ -1,7 +1,7 @@
 """The commands that are not scenes: taucli bench and taucli completions."""
 
-from taucli.names import BENCH_SCENES, SHELLS
-from taucli.table import CHOICE, FILE, FLAG, Command, Option
+from taucli.core.names import BENCH_SCENES, SHELLS
+from taucli.options.table import CHOICE, FILE, FLAG, Command, Option
 
 BENCH = Command(
     name="bench",
@@ -19,7 +19,7 @@ BENCH = Command(
         Option("out", FILE, "Also draw the charts to FILE.svg or FILE.png (needs matplotlib).", metavar="FILE"),
         Option("json", FLAG, "Print one strict JSON document on stdout."),
     ),
-    handler="taucli.tools:bench",
+    handler="taucli.front.tools:bench",
 )
 
 COMPLETIONS = Command(
@@ -28,7 +28,7 @@ COMPLETIONS = Command(
     description="The scripts are static: pressing TAB never starts Python. For bash, save it and source it from ~/.bashrc (source ~/.taucli.bash); docs/shell.md says where zsh's and fish's go.",
     example="taucli completions bash > ~/.taucli.bash",
     options=(Option("shell", CHOICE, "bash, zsh or fish.", choices=SHELLS, positional=True, metavar="SHELL"),),
-    handler="taucli.tools:completions",
+    handler="taucli.front.tools:completions",
 )
 
 EXIT_STATUSES = (

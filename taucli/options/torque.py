@@ -1,7 +1,7 @@
 """taucli torque: torque τ = r × F and angular momentum L = r × p as vectors about a point."""
 
 from taucli.options.common import ANSWER, GRAVITY_FOR_WEIGHTS
-from taucli.table import VECTOR, Command, Option, Result
+from taucli.options.table import VECTOR, Command, Option, Result
 
 FORCES = "Forces (τ = r × F)"
 PARTICLES = "Particles (L = r × p)"

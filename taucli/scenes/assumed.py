@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from taucli.report import Report, Value
+from taucli.writing.report import Report, Value
 
 STANDARD_GRAVITY = 9.80665  # m/s², the conventional value (CGPM 1901)
 

@@ -22,8 +22,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.errors import InputError
-from taucli.report import Step, fmt, quantity_text, term
+from taucli.core.errors import InputError
+from taucli.writing.report import Step, fmt, quantity_text, term
 from taucli.scenes.given import Band
 
 EXAMPLE = '{band} "mu=0.25 wrap=270deg radius=0.3m force=400N lever=750mm slack-arm=125mm"'

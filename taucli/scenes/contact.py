@@ -28,8 +28,8 @@ from collections.abc import Sequence
 import math
 from dataclasses import dataclass
 
-from taucli.errors import InputError
-from taucli.report import Step, fmt, quantity_text, term
+from taucli.core.errors import InputError
+from taucli.writing.report import Step, fmt, quantity_text, term
 from taucli.scenes.band import band_torques
 from taucli.scenes.given import Band, Brake, Face
 

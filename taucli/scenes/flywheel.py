@@ -21,11 +21,11 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.flywheel import COMMAND as TABLE
-from taucli.report import Report, Step, fmt, quantity_text
+from taucli.writing.report import Report, Step, fmt, quantity_text
 from taucli.scenes.inertia import body
-from taucli.table import Results
+from taucli.options.table import Results
 
 _EXAMPLE = "{omega_mean} 300rpm {fluctuation} 0.02 {energy_swing} 5kJ"
 

@@ -15,7 +15,7 @@ m2 on its surface, rolling's body on its slope).
 
 from __future__ import annotations
 
-from taucli.report import fmt
+from taucli.writing.report import fmt
 
 
 def static_coefficient(mu_s: float | None, mu_k: float | None, notes: list[str]) -> float | None:

@@ -1,5 +1,5 @@
 """What a scene is given in a spec option: a part of a body, a particle that meets it, another
-body on its axis, a brake shoe, a pressed face. Plain records in SI (taucli.specs reads them from
+body on its axis, a brake shoe, a pressed face. Plain records in SI (taucli.answering.specs reads them from
 their "key=value" texts); the scenes that use them hold the physics.
 """
 

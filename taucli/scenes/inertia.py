@@ -12,13 +12,13 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
-from taucli import units
-from taucli.errors import InputError, Unused
+from taucli.quantities.kinds import check_bounds
+from taucli.core.errors import InputError, Unused
 from taucli.options.inertia import COMMAND as TABLE
-from taucli.report import Report, Step, Table, fmt, quantity_text
+from taucli.writing.report import Report, Step, Table, fmt, quantity_text
 from taucli.scenes.given import Part
 from taucli.scenes.shapes import AREAS, LENGTHS, SHAPES, VOLUMES, Axis, Shape, fill, lookup_shape
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 @dataclass(frozen=True)
@@ -217,7 +217,7 @@ def body_inertia(parts: Sequence[Part]) -> BodyInertia:
     mass = math.fsum(r.part.mass or 0.0 for r in results)
     inertia = math.fsum(r.inertia for r in results)
     # The bounds of a typed --inertia hold for one computed from a shape too.
-    units.check_bounds(inertia, "moment of inertia", _given(parts), got=f"I = {inertia:g} kg*m**2")
+    check_bounds(inertia, "moment of inertia", _given(parts), got=f"I = {inertia:g} kg*m**2")
     if len(results) == 1:
         return BodyInertia(inertia, mass, results, results[0].steps, describe_part(results[0]))
     steps: list[Step] = []
@@ -298,7 +298,7 @@ def _moved(body: BodyInertia, distance: float) -> BodyInertia:
         if found.part.mass is None:
             raise InputError("body_offset", "needs the mass of every part (the parallel-axis theorem takes the total mass)", example='{part} "inertia=0.2kg*m^2 mass=3kg"')
     moved = body.inertia + body.mass * distance**2
-    units.check_bounds(moved, "moment of inertia", "{body_offset}", got=f"I = {moved:g} kg*m**2")
+    check_bounds(moved, "moment of inertia", "{body_offset}", got=f"I = {moved:g} kg*m**2")
     step = Step("Move the whole body (parallel-axis theorem)", "I = I_cm + Md²",
                 f"{quantity_text(body.inertia, 'kg*m**2')} + {quantity_text(body.mass, 'kg')} × ({quantity_text(distance, 'm')})²",
                 quantity_text(moved, "kg*m**2"),

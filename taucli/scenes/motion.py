@@ -15,9 +15,9 @@ import math
 from collections.abc import Callable
 from typing import NamedTuple
 
-from taucli import numerics
-from taucli.errors import InputError
-from taucli.report import fmt
+from taucli.numerics import steppers as numerics
+from taucli.core.errors import InputError
+from taucli.writing.report import fmt
 from taucli.scenes.closed_forms import ClosedFormPhase, exp_fraction
 
 DEFAULT_RTOL = 1e-10

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import math
 
-from taucli.errors import InputError
-from taucli.report import Step, quantity_text, term
-from taucli.table import Results
+from taucli.core.errors import InputError
+from taucli.writing.report import Step, quantity_text, term
+from taucli.options.table import Results
 
 KEYS = ("v_t", "a_t", "a_c", "a_total", "a_angle", "s")
 RIM = "rim"

@@ -12,8 +12,8 @@ import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
-from taucli.errors import InputError, did_you_mean
-from taucli.report import quantity_text
+from taucli.core.errors import InputError, did_you_mean
+from taucli.writing.report import quantity_text
 
 
 # Dimension name -> (symbol in equations, placeholder in number templates).

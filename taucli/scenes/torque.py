@@ -15,11 +15,11 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError, Unused
+from taucli.core.errors import InputError, Unused
 from taucli.options.torque import COMMAND as TABLE
-from taucli.report import Report, Step, Table, fmt, pretty_unit, quantity_text, term
+from taucli.writing.report import Report, Step, Table, fmt, pretty_unit, quantity_text, term
 from taucli.scenes.angles import sin_exact
-from taucli.table import Results
+from taucli.options.table import Results
 
 Vector = tuple[float, float, float]
 _SPLIT = 134217729.0  # 2**27 + 1: Veltkamp's splitter for doubles

@@ -12,8 +12,8 @@ import math
 import sys
 import time
 
-from taucli.elliptic import complete_k
-from taucli.numerics import integrate_angle
+from taucli.numerics.steppers.elliptic import complete_k
+from taucli.numerics.steppers import integrate_angle
 
 THETA0 = math.radians(60)
 

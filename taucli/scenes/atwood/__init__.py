@@ -18,8 +18,8 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
-from taucli.report import Report
+from taucli.core.errors import InputError
+from taucli.writing.report import Report
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.atwood.capstan import solve_rim
 from taucli.scenes.atwood.fixed_drum import solve_fixed_drum

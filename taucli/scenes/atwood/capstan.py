@@ -7,12 +7,12 @@ from __future__ import annotations
 import math
 
 from taucli.options.atwood import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, deferred, fmt, quantity_text, term
+from taucli.writing.report import DeferredSteps, Report, Step, deferred, fmt, quantity_text, term
 from taucli.scenes.atwood.machine import Machine, solve_machine
 from taucli.scenes.atwood.pulley import Pulley
 from taucli.scenes.atwood.travel import evolve_exact, put_motion, trajectory
 from taucli.scenes.motion import Loads
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def solve_rim(

@@ -16,13 +16,13 @@ from __future__ import annotations
 
 import math
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.atwood import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, deferred, fmt, quantity_text, term
+from taucli.writing.report import DeferredSteps, Report, Step, deferred, fmt, quantity_text, term
 from taucli.scenes.atwood.travel import evolve_exact, put_motion, trajectory
 from taucli.scenes.friction import needs_kinetic, static_coefficient
 from taucli.scenes.motion import Loads
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def sliding(m1: float, m2: float, g: float, mu: float, wrap: float, sense: int) -> tuple[float, float, float]:

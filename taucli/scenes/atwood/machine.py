@@ -27,9 +27,9 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.atwood import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, deferred, fmt, quantity_text
+from taucli.writing.report import DeferredSteps, Report, deferred, fmt, quantity_text
 from taucli.scenes.atwood.pulley import DISC_NOTE, Pulley, check_pulley
 from taucli.scenes.atwood.slope import HANGING, Slope, check_slope, side_static
 from taucli.scenes.atwood.statics import held_tensions
@@ -37,7 +37,7 @@ from taucli.scenes.atwood.steps import general_steps, machine_steps, stepped_ste
 from taucli.scenes.atwood.travel import evolve_exact, put_motion, trajectory
 from taucli.scenes.friction import needs_kinetic
 from taucli.scenes.motion import Loads, start_direction, start_rate
-from taucli.table import Results
+from taucli.options.table import Results
 
 EPSILON = 2.0**-52
 

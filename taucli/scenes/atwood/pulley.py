@@ -12,8 +12,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import NamedTuple
 
-from taucli.errors import InputError
-from taucli.report import fmt
+from taucli.core.errors import InputError
+from taucli.writing.report import fmt
 from taucli.scenes.assumed import Assumed
 
 DISC_NOTE = "pulley taken as a uniform solid disc (I = ½MR²); --pulley-shape ring for a thin ring"

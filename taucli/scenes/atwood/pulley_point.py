@@ -8,11 +8,11 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.atwood import COMMAND as TABLE
-from taucli.report import Report, fmt
+from taucli.writing.report import Report, fmt
 from taucli.scenes.point import RIM, put_point, put_start, rim_radius
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def on_the_pulley(

@@ -11,8 +11,8 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-from taucli.errors import InputError
-from taucli.report import fmt
+from taucli.core.errors import InputError
+from taucli.writing.report import fmt
 from taucli.scenes.friction import static_coefficient
 
 HANGING = math.pi / 2

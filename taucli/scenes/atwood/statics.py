@@ -16,8 +16,8 @@ a note. An empty polygon is a machine that only a pushing string could hold: ref
 
 from __future__ import annotations
 
-from taucli.errors import InputError
-from taucli.report import fmt
+from taucli.core.errors import InputError
+from taucli.writing.report import fmt
 
 EPSILON = 2.0**-52
 

@@ -5,8 +5,8 @@ moves at its own step's rim speed. The machine's equations are machine.py's, wit
 
 from __future__ import annotations
 
-from taucli.errors import InputError
-from taucli.report import Report
+from taucli.core.errors import InputError
+from taucli.writing.report import Report
 from taucli.scenes.atwood.machine import Machine, solve_machine
 from taucli.scenes.atwood.pulley import Pulley
 

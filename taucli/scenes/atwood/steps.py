@@ -6,7 +6,7 @@ their solvers.)
 
 from __future__ import annotations
 
-from taucli.report import Step, fmt, quantity_text, term
+from taucli.writing.report import Step, fmt, quantity_text, term
 from taucli.scenes.atwood.pulley import Pulley
 from taucli.scenes.atwood.slope import Slope
 

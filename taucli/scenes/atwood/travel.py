@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import math
 
-from taucli.report import Trajectory, Value, fmt, quantity_text
+from taucli.writing.report import Trajectory, Value, fmt, quantity_text
 from taucli.scenes.motion import Evolver, Loads, Method, Motion, evolve
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def evolve_exact(mass: float, loads: Loads, v0: float) -> Motion:

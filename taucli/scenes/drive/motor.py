@@ -24,10 +24,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import NamedTuple
 
-from taucli.report import Step, Trajectory, fmt, quantity_text, term
+from taucli.writing.report import Step, Trajectory, fmt, quantity_text, term
 from taucli.scenes.closed_forms import ClosedFormPhase
 from taucli.scenes.drive.train import TWO_PI, Train, torque_step
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 @dataclass(frozen=True)

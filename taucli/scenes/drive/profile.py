@@ -20,9 +20,9 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-from taucli.report import Step, Trajectory, fmt, quantity_text, term
+from taucli.writing.report import Step, Trajectory, fmt, quantity_text, term
 from taucli.scenes.drive.train import Train, torque_step
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 class Move(NamedTuple):

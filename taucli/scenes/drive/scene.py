@@ -11,17 +11,17 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError, Unused
-from taucli.kinds import check_bounds
+from taucli.core.errors import InputError, Unused
+from taucli.quantities.kinds import check_bounds
 from taucli.options.drive import COMMAND as TABLE
-from taucli.report import Report, Step, Table, fmt, quantity_text, term
+from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.drive import train as drive_train
 from taucli.scenes.drive.motor import Motor, run_up, uniform
 from taucli.scenes.drive.profile import Move, solve_profile, trapezoid
 from taucli.scenes.drive.train import TWO_PI, Train
 from taucli.scenes.inertia import body, body_table
-from taucli.table import Results
+from taucli.options.table import Results
 
 SHAPE_OPTIONS = ("mass", "density", "radius", "inner_radius", "outer_radius", "length", "width", "height", "depth", "axis", "offset")
 

@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.report import Step, fmt, quantity_text, term
+from taucli.writing.report import Step, fmt, quantity_text, term
 
 TWO_PI = 2.0 * math.pi
 

@@ -24,13 +24,13 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.gyro import COMMAND as TABLE, SPIN_SENSES
-from taucli.report import Report, Step, fmt, quantity_text
+from taucli.writing.report import Report, Step, fmt, quantity_text
 from taucli.scenes.gyro.roots import finite
 from taucli.scenes.inertia import body
 from taucli.scenes.torque import cross, size
-from taucli.table import Results
+from taucli.options.table import Results
 
 Vector = tuple[float, float, float]
 

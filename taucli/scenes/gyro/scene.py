@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from taucli.errors import InputError
-from taucli.report import Report
+from taucli.core.errors import InputError
+from taucli.writing.report import Report
 from taucli.scenes.gyro.machine import machine
 from taucli.scenes.gyro.top import top
 

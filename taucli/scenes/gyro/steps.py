@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-from taucli.report import Step, fmt, quantity_text, term
+from taucli.writing.report import Step, fmt, quantity_text, term
 from taucli.scenes.gyro.roots import discriminant_ratio
 
 def _degrees(theta: float) -> str:

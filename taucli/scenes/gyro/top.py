@@ -28,15 +28,15 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.gyro import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text
+from taucli.writing.report import DeferredSteps, Report, Step, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.gyro.roots import APPROXIMATION_NOTED, HALF_PI, TILT_SLACK, TWO_PI, approximation_error, finite as _finite, least_spin, precession_roots, tilt_cos_sin
 from taucli.scenes.gyro.steps import orbit_steps, top_steps, torque_steps
 from taucli.scenes.inertia import body, body_mass as whole_mass
 from taucli.scenes.shapes import SHAPES
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 # I about a perpendicular axis through the centre of mass, for the shapes that spin about an

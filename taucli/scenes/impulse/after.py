@@ -18,12 +18,12 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, quantity_text, term
+from taucli.writing.report import Report, Step, quantity_text, term
 from taucli.scenes.given import Part, Particle
 from taucli.scenes.inertia import body, body_inertia, main_part
-from taucli.table import Results
+from taucli.options.table import Results
 
 BODY_KEYS = ("inertia", "shape", "mass", "axis", "offset", "gyration", "density", "radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")
 

@@ -8,11 +8,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, Trajectory, deferred, fmt, quantity_text, term
+from taucli.writing.report import Report, Step, Trajectory, deferred, fmt, quantity_text, term
 from taucli.scenes.impulse.common import BRIEF_BLOW, CURVES, put_momentum
-from taucli.table import Results
+from taucli.options.table import Results
 
 AGREEMENT = 1e-9  # relative: all five given must satisfy τΔt = IΔω this closely
 SOLVED = " (solved for)"  # what a solved result's label adds

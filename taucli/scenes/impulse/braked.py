@@ -10,13 +10,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, quantity_text, term
+from taucli.writing.report import Report, Step, quantity_text, term
 from taucli.scenes.inertia import body_mass
 from taucli.scenes.contact import contacts
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.scenes.given import Band, Brake, Face
 from taucli.scenes.motion import Evolver, Loads, Method, evolve
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def _motion(inertia: float, omega0: float, torque: float, brakes, faces, gravity, body_options: dict, bands=()):

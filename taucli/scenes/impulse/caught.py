@@ -12,12 +12,12 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, quantity_text
+from taucli.writing.report import Report, Step, quantity_text
 from taucli.scenes.given import Couple, Particle
 from taucli.scenes.impulse.balance import solve_balance
-from taucli.table import Results
+from taucli.options.table import Results
 
 # From the collision: what it alone decides. From the torque: the rest (J, τ, Δt, ω₁, L1, KE1).
 FROM_COLLISION = ("inertia", "omega0", "L0", "KE0", "KE_lost", "KE_lost_fraction", "p0", "p1", "pivot_impulse")

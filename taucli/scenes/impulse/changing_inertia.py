@@ -9,8 +9,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, quantity_text, term
-from taucli.table import Results
+from taucli.writing.report import Report, Step, quantity_text, term
+from taucli.options.table import Results
 
 
 def solve_changing_inertia(inertia0: float, inertia1: float, omega0: float, *, inertia_steps: Sequence[Step] = ()) -> Report:

@@ -17,12 +17,12 @@ energy lost (as with a clutch that locks at once: the torque sets only how long 
 
 from __future__ import annotations
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, Table, Trajectory, quantity_text, term
+from taucli.writing.report import Report, Step, Table, Trajectory, quantity_text, term
 from taucli.scenes.given import Couple
 from taucli.scenes.inertia import part_inertia
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def solve_clutch(inertia: float, omega0: float, couple: Couple, *, inertia_steps=()) -> Report:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from taucli.table import Results
+from taucli.options.table import Results
 
 BRIEF_BLOW = 0.1  # s: a blow this short is remembered by its impulse alone
 CURVES = (("torque", "N*m", "torque τ"), ("omega", "rad/s", "angular velocity ω"))  # what a plot of the impulse shows

@@ -11,14 +11,14 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, Table, fmt, quantity_text, term
+from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.angles import cos_exact
 from taucli.scenes.given import Couple, Particle
 from taucli.scenes.impulse.after import put_momentum
 from taucli.scenes.inertia import part_inertia
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def _check_particle(p: Particle) -> None:

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 
-from taucli.errors import InputError, Unused
-from taucli.report import Report, Step
+from taucli.core.errors import InputError, Unused
+from taucli.writing.report import Report, Step
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.given import Band, Brake, Couple, Face, Particle
 from taucli.scenes.impulse.after import body_after, body_centre, with_period

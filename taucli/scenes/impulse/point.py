@@ -6,9 +6,9 @@
 from __future__ import annotations
 
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report
+from taucli.writing.report import Report
 from taucli.scenes.point import put_point, put_start, rim_radius
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def point_after(report: Report, at: float | str, radius: float | None, given: dict) -> Report:

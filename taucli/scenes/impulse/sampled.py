@@ -8,12 +8,12 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 
-from taucli.errors import InputError
-from taucli.numerics import StreamingQuadrature
+from taucli.core.errors import InputError
+from taucli.numerics.steppers import StreamingQuadrature
 from taucli.options.impulse import COMMAND as TABLE
-from taucli.report import Report, Step, Table, Trajectory, deferred, fmt, quantity_text, term
+from taucli.writing.report import Report, Step, Table, Trajectory, deferred, fmt, quantity_text, term
 from taucli.scenes.impulse.common import BRIEF_BLOW, CURVES, put_momentum
-from taucli.table import Results
+from taucli.options.table import Results
 
 SAMPLES_SHOWN = 10_000  # ω at the samples is reported for profiles up to this many rows
 PLOTTED = 500  # a profile's plot keeps between this many and twice as many of its samples

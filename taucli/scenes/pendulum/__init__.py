@@ -7,7 +7,7 @@ Energy gives the speeds and the pivot's forces at any angle, exactly, for every 
 
 - gravity alone (κ = 0): exact, with k = sin(θ_max/2): sin(θ/2) = k sn(ω₀t + u₀, k), ω = 2kω₀ cn,
   period 4K(k)/ω₀, ω₀ = √(mgd/I); over the top (k > 1) it circulates with modulus 1/k
-  (taucli/elliptic.py, every function from k' = cos(θ_max/2) so that 179.999° keeps its digits)
+  (taucli/numerics/elliptic.py, every function from k' = cos(θ_max/2) so that 179.999° keeps its digits)
   (exact.py);
 - torsion alone (d = 0): exact, harmonic, period 2π√(I/κ) (harmonic.py);
 - both: no closed form, but the energy integral t = ∫dθ/ω between the turning angles, by
@@ -26,10 +26,10 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.pendulum import COMMAND as TABLE
 from taucli.options.pendulum import COMPONENTS
-from taucli.report import DeferredSteps, Report, deferred, fmt
+from taucli.writing.report import DeferredSteps, Report, deferred, fmt
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.pendulum.body import on_pivot, read_body
 from taucli.scenes.pendulum.exact import exact_model
@@ -43,7 +43,7 @@ from taucli.scenes.pendulum.stepped import DEFAULT_DT, DEFAULT_RTOL, BlewUp, Ste
 from taucli.scenes.pendulum.steps import method_words, model_words, worked_steps
 from taucli.scenes.pendulum.swing import Swing, put_energy
 from taucli.scenes.pendulum.zero import Zero
-from taucli.table import Results
+from taucli.options.table import Results
 
 __all__ = ["BlewUp", "Harmonic", "Stepped", "Swing", "exact_model", "pendulum"]
 

@@ -12,8 +12,8 @@ import math
 from collections.abc import Sequence
 from typing import NamedTuple
 
-from taucli.errors import InputError
-from taucli.report import Step, fmt, quantity_text
+from taucli.core.errors import InputError
+from taucli.writing.report import Step, fmt, quantity_text
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.inertia import body_inertia, main_part
 from taucli.scenes.pendulum.swing import Swing

@@ -3,7 +3,7 @@
     ½Iω² + U(θ) = E,   U(θ) = G(1 − cos θ) + ½κθ²,   ω(θ) = ±√(2(E − U(θ))/I),   t = ∫ dθ/ω
 
 There is no closed form, but every time the motion asks for is an integral of the energy: each is
-taken by tanh-sinh quadrature (taucli.quadrature) to full precision, the 1/√ of a turning point
+taken by tanh-sinh quadrature (taucli.numerics.quadrature) to full precision, the 1/√ of a turning point
 included. The spring makes U grow without bound, so the body swings between two turning angles
 θ₋ < θ₊ where U = E, found on each side of θ₀ by scanning outward (stopping at each top of U, so
 that a barrier it cannot pass is never stepped over) and bisection. The period is 2∫ dθ/ω from θ₋
@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 
-from taucli.quadrature import tanh_sinh
+from taucli.numerics.quadrature import tanh_sinh
 from taucli.scenes.pendulum.swing import Swing
 
 SCAN = math.pi / 16  # the outward scan's step for the turning angles (a top of U is stopped at, never stepped over)

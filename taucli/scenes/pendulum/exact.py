@@ -6,7 +6,7 @@
 - it goes over the top (k > 1): it circulates with modulus 1/k, once round in 2K(1/k)/(kω₀ₙ);
 - it has just the energy to reach the top (k = 1): sin(θ/2) = tanh(v), and never gets there.
 
-Every function is taken from k' = cos(θ_max/2) (taucli/elliptic.py), so that 179.999° keeps its
+Every function is taken from k' = cos(θ_max/2) (taucli/numerics/elliptic.py), so that 179.999° keeps its
 digits. Each model gives state(t) = (θ, ω), time_to(θ) (the first time it reaches an angle) and
 its period.
 """
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from taucli import elliptic
+from taucli.numerics import elliptic
 from taucli.scenes.pendulum.by_energy import ByEnergy
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.swing import TWO_PI, Swing

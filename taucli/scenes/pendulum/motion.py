@@ -13,16 +13,16 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-from taucli import numerics
-from taucli.errors import InputError
+from taucli.numerics import steppers as numerics
+from taucli.core.errors import InputError
 from taucli.options.pendulum import COMMAND as TABLE
-from taucli.report import Trajectory, fmt
+from taucli.writing.report import Trajectory, fmt
 from taucli.scenes.pendulum.exact import Circulation, Separatrix
 from taucli.scenes.pendulum.small_angle import small_angle_model
 from taucli.scenes.pendulum.stepped import STEPPERS, BlewUp, Stepped
 from taucli.scenes.pendulum.swing import Swing
 from taucli.scenes.pendulum.zero import Zero
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def choose(method: str, gravity: bool, torsion: bool) -> str:

@@ -23,7 +23,7 @@ from typing import NamedTuple
 from taucli.scenes.angles import cos_exact, sin_exact
 from taucli.scenes.pendulum.swing import Swing
 from taucli.scenes.pendulum.zero import Zero
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 class PivotForce(NamedTuple):

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 
 from taucli.options.pendulum import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text
+from taucli.writing.report import DeferredSteps, Report, Step, fmt, quantity_text
 from taucli.scenes.pendulum.swing import Swing, sine
 from taucli.scenes.pendulum.zero import Zero
 from taucli.scenes.point import along
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravity: float, zero: Zero) -> None:

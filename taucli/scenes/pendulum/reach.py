@@ -24,7 +24,7 @@ from taucli.scenes.pendulum.exact import Circulation, Libration, Separatrix
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.swing import Swing
 from taucli.scenes.pendulum.zero import Zero
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def _sense(swing: Swing) -> float:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-from taucli.report import fmt
+from taucli.writing.report import fmt
 from taucli.scenes.pendulum.exact import Libration
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.swing import Swing

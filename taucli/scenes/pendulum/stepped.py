@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import math
 
-from taucli import numerics
-from taucli.report import fmt
+from taucli.numerics import steppers as numerics
+from taucli.writing.report import fmt
 from taucli.scenes.pendulum.swing import TWO_PI, Swing
 from taucli.scenes.pendulum.zero import Zero
-from taucli.table import Results
+from taucli.options.table import Results
 
 STEPPERS = ("euler", "rk4", "rk45", "verlet")
 DEFAULT_DT = 1e-3

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from taucli.report import Step, fmt, quantity_text
+from taucli.writing.report import Step, fmt, quantity_text
 from taucli.scenes.pendulum.by_energy import ByEnergy
 from taucli.scenes.pendulum.exact import Circulation, Libration, Separatrix
 from taucli.scenes.pendulum.harmonic import Harmonic

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.table import Results
+from taucli.options.table import Results
 
 TWO_PI = 2 * math.pi
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.report import fmt
+from taucli.writing.report import fmt
 
 
 @dataclass(frozen=True)

@@ -18,8 +18,8 @@ assumed:
 
 from __future__ import annotations
 
-from taucli.errors import InputError
-from taucli.report import Report
+from taucli.core.errors import InputError
+from taucli.writing.report import Report
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.rolling.body import K2, Roller, roller
 from taucli.scenes.rolling.flat import solve_flat, solve_rolling_flat

@@ -8,8 +8,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.errors import InputError, did_you_mean
-from taucli.report import fmt
+from taucli.core.errors import InputError, did_you_mean
+from taucli.writing.report import fmt
 
 K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 RIGHT_ANGLE = math.pi / 2

@@ -6,11 +6,11 @@ from __future__ import annotations
 
 import math
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.rolling import COMMAND as TABLE
-from taucli.report import Report, Step, Trajectory, deferred, fmt, quantity_text, term
+from taucli.writing.report import Report, Step, Trajectory, deferred, fmt, quantity_text, term
 from taucli.scenes.rolling.body import Roller, check_friction
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega0: float = 0.0, mu_s: float | None = None) -> Report:

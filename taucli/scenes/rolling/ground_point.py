@@ -19,10 +19,10 @@ from __future__ import annotations
 
 import math
 
-from taucli.errors import InputError
-from taucli.report import Step, Value, fmt, quantity_text, term
+from taucli.core.errors import InputError
+from taucli.writing.report import Step, Value, fmt, quantity_text, term
 from taucli.scenes.angles import cos_exact, sin_exact
-from taucli.table import Results
+from taucli.options.table import Results
 
 # cos φ and sin φ of each named point, φ from the top, forward positive (options.rolling.RIM_POSITIONS)
 POSITIONS = {"top": (1.0, 0.0), "front": (0.0, 1.0), "bottom": (-1.0, 0.0), "back": (0.0, -1.0)}

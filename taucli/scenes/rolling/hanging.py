@@ -28,12 +28,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.rolling import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, Trajectory, deferred, fmt, quantity_text, term
+from taucli.writing.report import DeferredSteps, Report, Step, Trajectory, deferred, fmt, quantity_text, term
 from taucli.scenes.friction import needs_kinetic, static_coefficient
 from taucli.scenes.rolling.body import RIGHT_ANGLE, Roller, check_friction
-from taucli.table import Results
+from taucli.options.table import Results
 
 EPSILON = 2.0**-52
 ENDS = {"centre": 0, "center": 0, "top": 1}  # the string's lever arm about the centre, over R

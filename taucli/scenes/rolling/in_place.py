@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import math
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.rolling import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, fmt, quantity_text, term
-from taucli.table import Results
+from taucli.writing.report import DeferredSteps, Report, Step, fmt, quantity_text, term
+from taucli.options.table import Results
 
 
 def solve_in_place(

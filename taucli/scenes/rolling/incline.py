@@ -16,12 +16,12 @@ from __future__ import annotations
 
 import math
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.rolling import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text, term
+from taucli.writing.report import DeferredSteps, Report, Step, Trajectory, Value, deferred, fmt, quantity_text, term
 from taucli.scenes.friction import needs_kinetic, static_coefficient
 from taucli.scenes.rolling.body import RIGHT_ANGLE, Roller, check_friction
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def solve_incline(

@@ -10,12 +10,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.rolling import COMMAND as TABLE
-from taucli.report import Report
+from taucli.writing.report import Report
 from taucli.scenes.point import put_point, put_start, rim_radius
 from taucli.scenes.rolling.ground_point import is_position, put_ground_point
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 @dataclass(frozen=True)

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import math
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.rolling import COMMAND as TABLE
-from taucli.report import DeferredSteps, Report, Step, Trajectory, deferred, fmt, quantity_text, term
+from taucli.writing.report import DeferredSteps, Report, Step, Trajectory, deferred, fmt, quantity_text, term
 from taucli.scenes.rolling.body import Roller
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def solve_yoyo(

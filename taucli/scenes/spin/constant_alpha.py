@@ -9,8 +9,8 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
-from taucli.report import Report, Step, deferred, fmt, quantity_text, term
+from taucli.core.errors import InputError
+from taucli.writing.report import Report, Step, deferred, fmt, quantity_text, term
 from taucli.scenes.spin.energy import energy_steps
 from taucli.scenes.spin.kinematics import Uniform, solve_unknowns
 from taucli.scenes.spin.steps import (
@@ -23,7 +23,7 @@ from taucli.scenes.spin.steps import (
     revolutions_step,
     stop_steps,
 )
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def constant_alpha_report(

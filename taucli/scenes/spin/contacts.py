@@ -8,11 +8,11 @@ from __future__ import annotations
 from dataclasses import replace
 
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import Report, Step, quantity_text
+from taucli.writing.report import Report, Step, quantity_text
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.inertia import body_mass
 from taucli.scenes.contact import body_rim, contacts
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def split_contacts(report: Report, axle: float, contact) -> Report:

@@ -8,11 +8,11 @@ from __future__ import annotations
 
 import math
 
-from taucli.numerics import gauss_legendre
-from taucli.report import Step, fmt, quantity_text
+from taucli.numerics.steppers import gauss_legendre
+from taucli.writing.report import Step, fmt, quantity_text
 from taucli.scenes.motion import Evolver, Phase
 from taucli.scenes.spin.steps import Torques
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def put_energy(motion, inertia: float, torques: Torques, omega0: float, time: float | None, results: Results, notes: list[str],

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 
 
 @dataclass(frozen=True)

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import math
 
-from taucli.errors import InputError
-from taucli.numerics import METHODS
-from taucli.report import Table, fmt, quantity_text
+from taucli.core.errors import InputError
+from taucli.numerics.steppers import METHODS
+from taucli.writing.report import Table, fmt, quantity_text
 from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Method
 
 # A fixed step's answers are checked against a reference: the closed form where there is one,

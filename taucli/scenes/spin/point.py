@@ -7,11 +7,11 @@ from __future__ import annotations
 import math
 
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import Report, fmt
+from taucli.writing.report import Report, fmt
 from taucli.scenes.motion import Evolver, Method, evolve
 from taucli.scenes.point import KEYS, put_point, put_start
 from taucli.scenes.spin.steps import Torques
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def _alpha_at(report: Report, torques: Torques, inertia: float | None, power: float | None, omega: float) -> float | None:

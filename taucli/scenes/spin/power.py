@@ -9,16 +9,16 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from taucli import numerics
-from taucli.errors import InputError
-from taucli.numerics import adaptive_gauss, falling_root, gauss_legendre
+from taucli.numerics import steppers as numerics
+from taucli.core.errors import InputError
+from taucli.numerics.steppers import adaptive_gauss, falling_root, gauss_legendre
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import Report, Step, deferred, fmt, quantity_text, term
+from taucli.writing.report import Report, Step, deferred, fmt, quantity_text, term
 from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Method
 from taucli.scenes.spin.energy import energy_steps
 from taucli.scenes.spin.methods import REFERENCE_RTOL, error_estimate
 from taucli.scenes.spin.steps import TWO_PI, Torques, curves
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 @dataclass(frozen=True)

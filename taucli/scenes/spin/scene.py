@@ -14,9 +14,9 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
-from taucli.errors import InputError, Unused
+from taucli.core.errors import InputError, Unused
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import Report, Step, Table, fmt, quantity_text, term
+from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.inertia import body, body_table
 from taucli.scenes.point import RIM, rim_radius
@@ -28,7 +28,7 @@ from taucli.scenes.spin.power import power_report
 from taucli.scenes.spin.steps import Torques
 from taucli.scenes.spin.torque_laws import drive_for_target, solve
 from taucli.scenes.spin.transfer import transfer_report
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 @dataclass

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 import math
 
-from taucli.report import Step, Trajectory, fmt, quantity_text, term
+from taucli.writing.report import Step, Trajectory, fmt, quantity_text, term
 from taucli.scenes.motion import Loads
-from taucli.table import Results
+from taucli.options.table import Results
 
 Torques = Loads  # for a wheel the loads are torques: drive, friction, viscous b, drag k
 TWO_PI = 2 * math.pi

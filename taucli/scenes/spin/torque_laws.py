@@ -12,9 +12,9 @@ import math
 
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import (
+from taucli.writing.report import (
     DeferredSteps,
     Report,
     Step,
@@ -43,7 +43,7 @@ from taucli.scenes.spin.steps import (
     stop_steps,
     turned_back_steps,
 )
-from taucli.table import Results
+from taucli.options.table import Results
 
 
 def _model(torques: Torques, method: Method) -> str:

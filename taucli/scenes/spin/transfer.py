@@ -17,10 +17,10 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from taucli.errors import InputError
+from taucli.core.errors import InputError
 from taucli.options.spin_down import COMMAND as TABLE
-from taucli.report import Report, Step, quantity_text, term
-from taucli.table import Results
+from taucli.writing.report import Report, Step, quantity_text, term
+from taucli.options.table import Results
 
 
 def transfer_report(inertia: float, inertia_steps: Sequence[Step], omega0: float, *, work: float | None, lift_mass: float | None,

@@ -1,0 +1,105 @@
+"""How a run is answered: plainly, with uncertainties, solving for an input, or by Monte Carlo.
+
+The one layer above the pipeline. Every surface (the command line, a sweep's point, a batch line,
+the Python API) calls ``solve``: with no uncertainty, no ``--find`` and no ``--mc`` it is
+``pipeline.solve`` and nothing else; otherwise taucli.answering.propagate (uncertainties through the
+scene) or taucli.answering.find (an input solved for) works around the pipeline. Neither imports this.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+from taucli.answering import pipeline
+from taucli.core.errors import InputError, spelled
+from taucli.answering.inputs import read
+from taucli.quantities.measurement import CONCISE, split
+from taucli.writing.report import Report
+from taucli.options.table import FILE, Command
+
+
+LIMIT_SECONDS = 60.0  # the longest --find or --mc may be estimated to take on the command line before it is refused (--no-limit lifts it)
+
+
+def _as_named(name: str) -> str:
+    return name
+
+
+def plain(given: Mapping[str, object], find=None, want=None, mc=None) -> bool:
+    """Whether ``pipeline.solve`` alone answers: no input carries an uncertainty, nothing is
+    solved for and no Monte Carlo is asked."""
+    if find is not None or want is not None or mc:
+        return False
+    for value in given.values():  # inline, not a helper per value: this runs on every batch line (measurement.marked)
+        if value.__class__ is str and ("±" in value or "+/-" in value or (")" in value and CONCISE.fullmatch(value) is not None)):
+            return False
+        if value.__class__ in (list, tuple) and any(item.__class__ is str and ("±" in item or "+/-" in item) for item in value):
+            return False  # a repeated option's value with an uncertainty: read by _read, which says it is not carried through
+    return True
+
+
+def solve(
+    command: Command,
+    given: Mapping[str, object],
+    *,
+    find: str | None = None,
+    want: str | None = None,
+    mc: int | None = None,
+    stdin=None,
+    spell: Callable[[str], str] = _as_named,
+    limit: float | None = None,
+    progress=None,
+) -> Report:
+    """The scene's report, as ``pipeline.solve`` gives it, with uncertainties where any input
+    carries one, solved for the input ``find`` where ``want`` (RESULT=VALUE) says. ``limit``
+    (seconds) refuses --find and --mc work estimated to take longer; ``progress`` is told how many
+    of its planned solves are done."""
+    if plain(given, find, want, mc):
+        return pipeline.solve(command, given, stdin=stdin, spell=spell)
+    from taucli.answering import find as finding  # deferred: find and propagate, with what they import, only for these runs
+    from taucli.answering import propagate
+    if (find is None) != (want is None):
+        raise InputError("find" if find is None else "want", "goes with {" + ("want" if find is None else "find") + "}",
+                         example="{find} pulley_inertia {want} a=4.0m/s^2")
+    if mc is not None and not 2 <= mc <= propagate.MC_MAX:
+        raise InputError("mc", f"expected a number of draws from 2 to {propagate.MC_MAX}", example="{mc} 2000", got=repr(mc))
+    for name, value in given.items():
+        option = command.option(name)
+        if option is not None and option.kind == FILE and value is not None:
+            raise InputError(name, "does not combine with an uncertainty, {find} or {mc}: the scene is solved many times, and a file is read once")
+    unknown = finding.unknown(command, find, given) if find is not None else None
+    central, spreads, notes = _read(command, given, spell, propagate.readable(command, given, unknown))
+    scene = propagate.Scene(command, central, stdin, spell, unknown, limit=limit)
+    scene.progress = progress
+    if unknown is not None:
+        return finding.solve_for(scene, unknown, want, spreads, notes, mc)
+    nominal = scene.report({})
+    if not spreads and not mc:
+        nominal.notes = [*notes, *nominal.notes]  # what the reading said (an uncertainty not carried through)
+        return nominal
+    slopes = propagate.jacobian(scene, {name: scene.si[name] for name in spreads}, spreads)
+    sigma = propagate.combine(slopes, spreads, propagate.numeric(nominal))
+    notes = [*notes, *propagate.linearity(scene, nominal, spreads, slopes)]
+    report = propagate.measured(nominal, sigma, spreads, notes)
+    if mc:
+        scene.plan(mc, "mc")
+        propagate.monte_carlo(scene, report, spreads, mc, lambda draw: scene.report(draw))
+    return report
+
+
+def _read(command: Command, given: Mapping[str, object], spell, readable: Mapping[str, object]) -> tuple[dict, dict[str, float], list[str]]:
+    """The options with each value's text in place of "value ± σ", and each σ in SI (read from
+    ``readable``: the options with a stand-in where --find solves for a key of a spec)."""
+    _, inputs = read(command, readable)
+    spreads: dict[str, float] = {}
+    notes: list[str] = []
+    central = dict(given)
+    for key, sigma in (inputs.uncertainties or {}).items():
+        option = command.option(key)
+        if option is None or not option.is_quantity or option.repeatable:
+            notes.append(spelled(f"the uncertainty given in {key} is not carried through: only a scene's own single quantity options carry one", spell, command.option))
+            continue
+        central[key] = split(given[key])[0]
+        if sigma > 0:
+            spreads[key] = sigma
+    return central, spreads, notes

@@ -1,0 +1,50 @@
+"""One pipeline for every way in: text -> read (the command's table) -> library -> Report.
+
+A single run, a sweep's point, a batch line and a Python call all come through ``solve``; none
+of them calls back into a command of the command line.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable, Mapping
+from functools import lru_cache
+from typing import TextIO
+
+from taucli.core.errors import Unused, spelled
+from taucli.answering.inputs import read
+from taucli.writing.report import Report
+from taucli.options.table import Command
+
+
+@lru_cache(maxsize=None)
+def library(target: str) -> Callable[..., Report]:
+    """The function named by a table's "module:function"."""
+    module, _, name = target.partition(":")
+    return getattr(importlib.import_module(module), name)
+
+
+def _as_named(name: str) -> str:
+    return name
+
+
+def solve(
+    command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None, spell: Callable[[str], str] = _as_named
+) -> Report:
+    """The scene's report for the options ``given`` (names -> text, SI numbers, flags or lists).
+
+    Notes name options as {name}; ``spell`` writes each as the caller's surface does (the
+    command line: its flag; Python and batch: the name).
+    """
+    arguments, inputs = read(command, given, stdin=stdin)
+    solver = library(command.library)
+    try:
+        report = solver(**arguments)
+    except Unused as unused:
+        if unused.option != "g" or not inputs.gravity_used:
+            raise
+        report = solver(**{name: value for name, value in arguments.items() if name != "g"})  # --g read a weight as a mass: it is used
+    # the library's report is made for this call alone: completed in place (a batch line makes one per line)
+    report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
+    report.inputs = {**inputs.values, **report.inputs}
+    return report

@@ -1,0 +1,106 @@
+"""A torque profile from CSV text: "t [ms], torque [N*m]" then rows of numbers, streamed.
+
+The header names the columns and, in brackets, their units (none: SI, with a note). Rows are
+read one at a time and yielded as SI (t, τ), so a file of any length is never held in memory.
+Every defect (a missing header, a cell that is not a number, time that does not increase, too
+few rows) is an InputError naming the line.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
+
+from taucli.quantities import units
+from taucli.core.errors import InputError
+from taucli.quantities.kinds import BOUNDS, check_bounds
+
+OPTION = "--torque-profile"
+_HEADER_CELL = re.compile(r"^\s*([A-Za-z_][\w ]*?)\s*(?:\[(.*)\])?\s*$")
+
+
+@dataclass
+class Profile:
+    """The samples of a torque profile, in SI, and the notes its reading raised."""
+
+    samples: Iterator[tuple[float, float]]
+    notes: list[str] = field(default_factory=list)
+
+
+def _unit_factor(text: str | None, kind: str, column: str, notes: list[str]) -> float:
+    if text is None or not text.strip():
+        notes.append(f"{OPTION}: no unit for the {column} column in the header: read as SI ({units.KINDS[kind].si_unit})")
+        return 1.0
+    parsed = units.parse(f"1 {text}", f"{OPTION} header, {column} column", kind)
+    if parsed.note:  # "lb*ft": pound-force
+        notes.append(parsed.note)
+    return parsed.value
+
+
+MAX_LINE = 4096  # characters in one line: a row is two numbers; a file with no newline (/dev/zero) is not CSV
+
+
+def _lines(source: Iterable[str]) -> Iterator[str]:
+    """The lines of ``source``, each read at most MAX_LINE characters at a time, so that a file
+    with no line end is refused rather than read into memory without end."""
+    readline = getattr(source, "readline", None)
+    if readline is None:
+        yield from source
+        return
+    number = 0
+    while line := readline(MAX_LINE + 1):
+        number += 1
+        if len(line) > MAX_LINE:
+            raise InputError(OPTION, f"line {number}: longer than {MAX_LINE} characters; expected CSV rows of two numbers, time and torque",
+                             example="t [ms], torque [N*m]", got=repr(line[:20] + "…"))
+        yield line
+
+
+def read_profile(lines: Iterable[str]) -> Profile:
+    """A Profile over CSV lines: a header "t [ms], torque [N*m]", then "time, torque" rows."""
+    numbered = ((number, line.strip()) for number, line in enumerate(_lines(lines), start=1))
+    rows = ((number, line) for number, line in numbered if line and not line.startswith("#"))
+    try:
+        header_number, header = next(rows)
+    except StopIteration:
+        raise InputError(OPTION, "is empty: expected a header such as 't [s], torque [N*m]' and at least two rows") from None
+    cells = header.split(",")
+    matches = [_HEADER_CELL.match(cell) for cell in cells]
+    if len(cells) != 2 or not all(matches):
+        raise InputError(OPTION, f"line {header_number}: expected a header of two columns, time and torque, with units", example="t [ms], torque [N*m]", got=repr(header))
+    notes: list[str] = []
+    time_factor = _unit_factor(matches[0].group(2), "time", "time", notes)
+    torque_factor = _unit_factor(matches[1].group(2), "torque", "torque", notes)
+    return Profile(_samples(rows, time_factor, torque_factor), notes)
+
+
+def _samples(rows: Iterator[tuple[int, str]], time_factor: float, torque_factor: float) -> Iterator[tuple[float, float]]:
+    previous = -math.inf
+    count = 0
+    for number, line in rows:
+        cells = line.split(",")
+        if len(cells) != 2:
+            raise InputError(OPTION, f"line {number}: expected two numbers, time and torque", got=repr(line))
+        try:
+            if not line.isascii() or "_" in line:  # one rule with quantities: no 1_000, no fullwidth ５
+                raise ValueError(line)
+            t, torque = float(cells[0]) * time_factor, float(cells[1]) * torque_factor
+        except ValueError:
+            raise InputError(OPTION, f"line {number}: expected numbers", got=repr(line)) from None
+        if not (math.isfinite(t) and math.isfinite(torque)):
+            raise InputError(OPTION, f"line {number}: expected finite numbers", got=repr(line))
+        if t <= previous:
+            raise InputError(OPTION, f"line {number}: time must increase from row to row", got=repr(line))
+        # Held to the bounds a typed --torque or --duration is held to, a step between rows too
+        # (steps of 1e-200 s would underflow Simpson's weights to a zero divisor).
+        check_bounds(t, "time", OPTION, sign="any", got=f"t = {t:g} s on line {number} ({line!r})")
+        check_bounds(torque, "torque", OPTION, sign="any", got=f"τ = {torque:g} N*m on line {number} ({line!r})")
+        if t - previous < BOUNDS[0]:
+            raise InputError(OPTION, f"line {number}: expected time steps of at least {BOUNDS[0]:g} s", got=f"a step of {t - previous:g} s to {line!r}")
+        previous = t
+        count += 1
+        yield t, torque
+    if count < 2:
+        raise InputError(OPTION, f"has {count} row{'s' if count != 1 else ''} of data: at least two are needed for an integral")

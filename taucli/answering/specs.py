@@ -1,0 +1,422 @@
+"""Options given as "key=value" specs, and vectors: a part of a body, a particle, another body on
+the axis, a brake shoe, a pressed face; "x,y,z UNIT". Each spec's keys are quantities read as
+every quantity is (taucli.answering.reading), into the records of taucli.scenes.given.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from taucli.quantities import units
+from taucli.core.errors import InputError
+from taucli.answering.reading import Inputs, word
+from taucli.writing.report import Value, fmt
+from taucli.scenes.given import PRESSURES, SURFACES, Band, Brake, Couple, Face, Part, Particle, Pull, Rotor, Side
+from taucli.options.table import Option
+
+
+def coefficients(source: str, values: dict) -> tuple[float, float | None]:
+    """μk and μs from mu= (the kinetic value) or mu-k= and mu-s=."""
+    mu, mu_k, mu_s = values.get("mu"), values.get("mu_k"), values.get("mu_s")
+    if mu is not None and mu_k is not None:
+        raise InputError(source, "has mu= and mu-k=: mu= is the kinetic value, give it once")
+    mu_k = mu if mu_k is None else mu_k
+    if mu_k is None:
+        raise InputError(source, "needs mu= (or mu-k=, with mu-s= for the static value)")
+    if mu_s is not None and mu_s < mu_k:
+        raise InputError(source, "has mu-s= below the kinetic μ (static friction is at least kinetic)", got=f"{fmt(mu_s)} < {fmt(mu_k)}")
+    return mu_k, mu_s
+
+
+def parts(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    signed = option.sign == "any"  # (pendulum: a part on the other side of the pivot has a negative offset=)
+    name = option.name  # part, or part_after (impulse: the body after a change)
+    return tuple(parse_part_spec(word(option, spec), number, inputs, signed_offset=signed, name=name) for number, spec in enumerate(specs, start=2 if name == "part" else 1))
+
+
+_PART_KEY = re.compile(r"\s+(?=[a-z][a-z_-]*=)")
+PART_DIMENSIONS = ("radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")
+PART_FIELDS = {  # key: (kind, sign), as parse_part_spec reads each
+    **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS},
+    "offset": ("length", "nonnegative"),
+    "mass": ("mass", "positive"),
+    "inertia": ("moment of inertia", "positive"),
+    "gyration": ("length", "positive"),
+    "density": ("density", "positive"),
+}
+
+
+def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bool = False, name: str = "part"):
+    """A ``--part`` value such as "point mass=100g offset=20cm" as an inertia Part.
+
+    A part is a shape with mass= (or density=) and its dimensions, or its own I: inertia=
+    (with mass= and offset=, I_cm moved by the parallel-axis theorem) or gyration= with mass=;
+    those need no shape word. Keys read with - or _ (inner-radius=, inner_radius=).
+    """
+    source = f"{{{name}}} {number}"
+    words = _PART_KEY.split(spec.strip())
+    shape, *pairs = words
+    if shape and "=" in shape:
+        shape, pairs = "", words
+    if not words or not words[0]:
+        raise InputError(source, "expected a shape then key=value pairs", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
+    fields: dict[str, str] = {}
+    for pair in pairs:
+        key, _, text = pair.partition("=")
+        fields[key.replace("-", "_")] = text.strip()
+    known = {"mass", "axis", "offset", "inertia", "gyration", "density", *PART_DIMENSIONS}
+    for key in fields:
+        if key not in known:
+            raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", got=repr(key.replace("_", "-")))
+    given_inertia = "inertia" in fields or "gyration" in fields
+    if not shape and not given_inertia:
+        raise InputError(source, "expected a shape then key=value pairs (or inertia= or gyration=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
+    if shape and given_inertia:
+        raise InputError(source, "takes a shape or inertia=/gyration=, not both", got=repr(spec))
+    if "mass" not in fields and "density" not in fields and "inertia" not in fields:
+        raise InputError(source, "needs mass= (or density=, or inertia=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
+
+    def read_field(key: str) -> float:
+        kind, sign = PART_FIELDS[key]
+        if key == "offset" and signed_offset:
+            sign = "any"  # (pendulum: a part on the other side of the pivot)
+        return inputs.quantity(f"{source} {key.replace('_', '-')}=", fields[key], kind, sign=sign, key=f"{name}{number}_{key}")
+
+    dims = {key: read_field(key) for key in PART_DIMENSIONS if key in fields}
+    offset = read_field("offset") if "offset" in fields else None
+    mass = read_field("mass") if "mass" in fields else None
+    inertia = read_field("inertia") if "inertia" in fields else None
+    gyration = read_field("gyration") if "gyration" in fields else None
+    density, per = _read_density(source, fields["density"], inputs, f"{name}{number}_density") if "density" in fields else (None, "kg/m**3")
+    return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density, per)
+
+
+_PER = (("density", "kg/m**3"), ("areal density", "kg/m**2"), ("linear density", "kg/m"))
+
+
+def _read_density(source: str, text: str, inputs: Inputs, key: str) -> tuple[float, str]:
+    """A part's density and its unit, read by its unit: kg/m³ (a number alone too), kg/m² (a
+    plate's or disc's mass per area) or kg/m (a rod's or ring's per length)."""
+    option = f"{source} density="
+    if not isinstance(text, str):
+        return inputs.quantity(option, text, "density", key=key), "kg/m**3"
+    first = None
+    for kind, unit in _PER:
+        try:
+            return inputs.quantity(option, text, kind, key=key), unit
+        except InputError as err:
+            first = first or err
+            if _of_kind(text, option, kind):
+                raise  # of this kind, but not a value it takes
+    raise InputError(option, "expected a density, an areal density or a linear density", example='{part} "plate density=20kg/m^2 width=1m height=0.5m"',
+                     got=first.got) from None
+
+
+def _of_kind(text: str, option: str, kind: str) -> bool:
+    try:
+        units.read(text, option, units.KINDS[kind])
+    except InputError:
+        return False
+    return True
+
+
+# Vectors ("0.3,0.4,0 m") and quantities given more than once (--mass 2kg --mass 3kg).
+_NUMBER_THEN_UNIT = re.compile(r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+AXES = ("x", "y", "z")
+
+
+def vectors(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each value of a VECTOR option: "x,y,z UNIT" as its three SI components (a tuple), or a lone
+    "20 N" as one signed SI number (a scene that takes a size alone says so; the others refuse it).
+    Python and batch may give a vector as three SI numbers: [0.3, 0.4, 0]."""
+    items = [given] if isinstance(given, str) or _is_triple(given) else list(given) if isinstance(given, (list, tuple)) else [given]
+    read = []
+    for number, item in enumerate(items, start=1):
+        name = f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "")
+        key = option.name + (str(number) if len(items) > 1 else "")
+        read.append(read_vector(item, name, option.of, inputs, key))
+    return tuple(read)
+
+
+def _text(given, name: str) -> str:
+    """An SI number as the text a bare number is (a bare number means the SI unit)."""
+    if isinstance(given, str):
+        return given
+    if isinstance(given, (int, float)) and not isinstance(given, bool):
+        if isinstance(given, float) and not math.isfinite(given):
+            raise InputError(name, "expected a finite number", got=repr(given))
+        return repr(float(given)) if isinstance(given, float) else str(given)
+    raise InputError(name, "expected a number or a text with a unit", example='"4kg"', got=repr(given))
+
+
+def _is_triple(given) -> bool:
+    return isinstance(given, (list, tuple)) and len(given) == 3 and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in given)
+
+
+def read_vector(given, name: str, kind: str, inputs: Inputs, key: str):
+    """One vector "x,y,z UNIT" (one unit after the last component, or a unit on each) in SI."""
+    si = units.KINDS[kind].si_unit
+    example = f'{name.split()[0]} "0.3,0.4,0 {si or "1"}"'
+    if _is_triple(given):
+        components = [_text(x, name) for x in given]
+    else:
+        text = _text(given, name).strip()
+        if text[:1] + text[-1:] in ("()", "[]", "<>"):
+            text = text[1:-1]
+        components = [part.strip() for part in text.split(",")]
+    if len(components) == 1:
+        return inputs.quantity(name, components[0], kind, sign="any", key=key)
+    if len(components) != 3:
+        raise InputError(name, "expected three components x,y,z with a unit", example=example, got=repr(given))
+    split = [_NUMBER_THEN_UNIT.fullmatch(part) for part in components]
+    bare = [match is not None and not match[2] for match in split]
+    if bare[0] and bare[1] and not bare[2] and split[2] is not None:
+        components = [f"{part} {split[2][2]}" for part in components[:2]] + components[2:]
+    elif any(bare) and not all(bare):
+        raise InputError(name, "expected one unit after the last component, or a unit on each", example=example, got=repr(given))
+    vector = tuple(units.parse(part, f"{name} ({axis})", kind, sign="any") for part, axis in zip(components, AXES))
+    inputs.notes.extend(parsed.note for parsed in vector if parsed.note)
+    inputs.values[key] = Value([parsed.value for parsed in vector], si, "")
+    return tuple(parsed.value for parsed in vector)
+
+
+# --particle and --couple of impulse (#20): "key=value ..." specs like --part's.
+PARTICLE_FIELDS = {  # key: (kind, sign)
+    "mass": ("mass", "positive"),
+    "speed": ("velocity", "any"),
+    "radius": ("length", "nonnegative"),
+    "angle": ("angle", "nonnegative"),
+    "speed_after": ("velocity", "any"),
+    "radius_after": ("length", "nonnegative"),
+    "e": ("dimensionless", "nonnegative"),
+}
+ROTOR_FIELDS = {"inertia": ("moment of inertia", "positive"), "spin": ("angular velocity", "any")}
+COUPLE_FIELDS = {"inertia": ("moment of inertia", "nonnegative"), "omega0": ("angular velocity", "any"), "mass": ("mass", "positive"),
+                 "torque": ("torque", "positive"),
+                 "offset": ("length", "nonnegative"), **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS}}
+
+
+_SPEC_KEY = re.compile(r"\s+(?=[a-z][a-z0-9_-]*\s*=)")
+
+
+def _spec_fields(spec: str, source: str, known, example: str, *, shape_word: bool) -> tuple[str | None, dict[str, str]]:
+    """A spec's leading word (where it may have one) and its key=value pairs, keys in snake case."""
+    words = _SPEC_KEY.split(" " + spec.strip())
+    first, *pairs = [word for word in words if word.strip()] or [""]
+    shape = None
+    if "=" not in first:
+        if not shape_word or not first:
+            raise InputError(source, "expected key=value pairs", example=example, got=repr(spec))
+        shape = first.strip()
+    else:
+        pairs = [first, *pairs]
+    fields: dict[str, str] = {}
+    for pair in pairs:
+        key, _, text = pair.partition("=")
+        key = key.strip().replace("-", "_")
+        if key not in known:
+            raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", example=example, got=repr(key.replace("_", "-")))
+        if key in fields:
+            raise InputError(source, f"has {key.replace('_', '-')}= twice", example=example, got=repr(spec))
+        fields[key] = text.strip()
+    return shape, fields
+
+
+def _read_fields(fields: dict[str, str], table: dict, source: str, prefix: str, inputs: Inputs) -> dict[str, float]:
+    return {key: inputs.quantity(f"{source} {key.replace('_', '-')}=", text, table[key][0], sign=table[key][1], key=f"{prefix}_{key}")
+            for key, text in fields.items() if key in table}
+
+
+def _specs(option: Option, given):
+    """Each "key=value ..." spec given for a repeatable spec option: (its number, the name its
+    messages use: "{brake}", or "{brake} 2" where several are given, the spec's text)."""
+    specs = given if isinstance(given, (list, tuple)) else [given]
+    for number, spec in enumerate(specs, start=1):
+        source = "{" + option.name + "}" + (f" {number}" if len(specs) > 1 else "")
+        yield number, source, word(option, spec)
+
+
+def particles(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    example = '{particle} "mass=30kg speed=4m/s radius=2m"'
+    particles = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, PARTICLE_FIELDS, example, shape_word=False)
+        for needed in ("mass", "radius"):
+            if needed not in fields:
+                raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
+        values = _read_fields(fields, PARTICLE_FIELDS, source, f"particle{number}", inputs)
+        particles.append(Particle(source=source, **values))
+    return tuple(particles)
+
+
+def couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    example = '{couple} "inertia=3kg*m^2 omega0=0", or {couple} "disc mass=2kg radius=0.1m omega0=100rpm", or through a clutch {couple} "inertia=3kg*m^2 torque=50N*m"'
+    couples = []
+    for number, source, spec in _specs(option, given):
+        shape, fields = _spec_fields(spec, source, {*COUPLE_FIELDS, "axis"}, example, shape_word=True)
+        values = _read_fields(fields, COUPLE_FIELDS, source, f"couple{number}", inputs)
+        if (shape is None) == ("inertia" not in values):
+            raise InputError(source, "needs inertia= or a shape with its mass and dimensions (one of them)", example=example, got=repr(spec))
+        dims = {key: values[key] for key in PART_DIMENSIONS if key in values}
+        if shape is None and (dims or "mass" in values or "offset" in values or "axis" in fields):
+            raise InputError(source, "takes a shape's mass and dimensions only after a shape word; with inertia= they are not used", example=example, got=repr(spec))
+        part = None if shape is None else Part(shape, values.get("mass", 0.0), dims, fields.get("axis"), values.get("offset"), source)
+        if part is not None and "mass" not in values:
+            raise InputError(source, "needs mass= with a shape", example=example, got=repr(spec))
+        couples.append(Couple(source=source, inertia=values.get("inertia"), part=part, omega0=values.get("omega0"), torque=values.get("torque")))
+    return tuple(couples)
+
+
+def rotors(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """gyro's --rotor: "inertia=… spin=… sense=cw-from-rear" (the sense a word the scene checks)."""
+    example = '{rotor} "inertia=0.3kg*m^2 spin=5000rpm sense=cw-from-right"'
+    rotors = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*ROTOR_FIELDS, "sense"}, example, shape_word=False)
+        for needed in ("inertia", "spin", "sense"):
+            if needed not in fields:
+                raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
+        values = _read_fields(fields, ROTOR_FIELDS, source, f"rotor{number}", inputs)
+        rotors.append(Rotor(source, values["inertia"], values["spin"], fields["sense"]))
+    return tuple(rotors)
+
+
+# --brake, --face and --band of spin-down and impulse (#24, #35): "key=value ..." specs like --particle's.
+_MU_FIELDS = {"mu": ("dimensionless", "nonnegative"), "mu_k": ("dimensionless", "nonnegative"), "mu_s": ("dimensionless", "nonnegative")}
+BRAKE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "radius": ("length", "positive"),
+                "lever": ("length", "positive"), "pivot": ("length", "positive"), "offset": ("length", "any")}
+FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
+               "surfaces": ("dimensionless", "positive"), "pmax": ("pressure", "positive")}
+BAND_FIELDS = {**_MU_FIELDS, "wrap": ("angle", "positive"), "radius": ("length", "positive"), "width": ("length", "positive"),
+               "tension": ("force", "nonnegative"), "force": ("force", "nonnegative"), "lever": ("length", "positive"),
+               "slack_arm": ("length", "positive"), "tight_arm": ("length", "positive")}
+
+
+def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "force=… mu=… [radius=…]" (force= the normal force N), or "force=… lever=… pivot=…
+    [offset=…] mu=…" (force= the force F on a lever; see taucli.scenes.contact)."""
+    example = '{brake} "force=100N mu=0.4 radius=0.5m"'
+    lever_example = '{brake} "force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.2m"'
+    brakes = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, BRAKE_FIELDS, example, shape_word=False)
+        if "force" not in fields:
+            raise InputError(source, "needs force=", example=example, got=repr(spec))
+        if ("lever" in fields) != ("pivot" in fields):
+            raise InputError(source, "takes lever= (where the force acts) with pivot= (where the shoe is), both from the lever's pivot",
+                             example=lever_example, got=repr(spec))
+        if "offset" in fields and "lever" not in fields:
+            raise InputError(source, "takes offset= (the friction's arm about the lever's pivot) only with lever= and pivot=", example=lever_example, got=repr(spec))
+        values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs)
+        mu_k, mu_s = coefficients(source, values)
+        brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius"), values.get("lever"), values.get("pivot"), values.get("offset", 0.0)))
+    return tuple(brakes)
+
+
+def faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "mu=… [force=… | pmax=…] [inner-radius=… outer-radius=…] [model=uniform|wear] [surfaces=N]".
+    pressure=uniform|wear, the model's old key, is read as model= with a note."""
+    example = '{face} "mu=0.2", or {face} "mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm model=wear surfaces=2"'
+    faces = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*FACE_FIELDS, "model", "pressure"}, example, shape_word=False)
+        if "pressure" in fields:
+            if fields["pressure"] not in PRESSURES:
+                raise InputError(source, "pressure= was the model's old key (uniform|wear): the largest lining pressure is pmax=, the model model=",
+                                 example='{face} "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm model=wear"', got=repr("pressure=" + fields["pressure"]))
+            if "model" in fields:
+                raise InputError(source, "has model= and pressure=: pressure= is the old spelling of model=, give it once", example=example, got=repr(spec))
+            fields["model"] = fields.pop("pressure")
+            inputs.notes.append(f"{source}: pressure={fields['model']} read as model={fields['model']} (the pressure model; pmax= gives the largest pressure)")
+        if "force" in fields and "pmax" in fields:
+            raise InputError(source, "takes force= (the clamp force) or pmax= (the largest pressure, giving the force), not both",
+                             example='{face} "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm"', got=repr(spec))
+        values = _read_fields(fields, FACE_FIELDS, source, f"face{number}", inputs)
+        mu_k, mu_s = coefficients(source, values)
+        model = fields.get("model", "uniform")
+        if model not in PRESSURES:
+            raise InputError(source, f"model= is one of {', '.join(PRESSURES)}", example=example, got=repr(model))
+        surfaces = values.get("surfaces", 1.0)
+        if surfaces != int(surfaces):
+            raise InputError(source, "surfaces= is a whole number", example=example, got=repr(fields["surfaces"]))
+        faces.append(Face(source, mu_k, mu_s, values.get("force"), values.get("inner_radius"), values.get("outer_radius"), model, int(surfaces),
+                          values.get("pmax")))
+    return tuple(faces)
+
+
+def bands(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "mu=… wrap=… [radius=…] [width=…]" with "tension=…" (the pull on the slack end) or
+    "force=… lever=… slack-arm=…|tight-arm=…" (a lever; both arms: a differential band brake)."""
+    example = '{band} "mu=0.25 wrap=270deg radius=0.3m force=400N lever=750mm slack-arm=125mm"'
+    bands = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, BAND_FIELDS, example, shape_word=False)
+        if "wrap" not in fields:
+            raise InputError(source, "needs wrap= (the angle of drum the band covers)", example=example, got=repr(spec))
+        levered = [key for key in ("force", "lever", "slack_arm", "tight_arm") if key in fields]
+        if ("tension" in fields) == bool(levered):
+            raise InputError(source, "needs tension= (the pull on the band's slack end) or a lever: force= lever= and slack-arm= or tight-arm=, not both",
+                             example=example, got=repr(spec))
+        if levered and ("force" not in fields or "lever" not in fields or not {"slack_arm", "tight_arm"} & set(fields)):
+            raise InputError(source, "a lever needs force= at lever= from its pivot, and slack-arm= or tight-arm= (or both) where the band's ends are",
+                             example=example, got=repr(spec))
+        values = _read_fields(fields, BAND_FIELDS, source, f"band{number}", inputs)
+        mu_k, mu_s = coefficients(source, values)
+        bands.append(Band(source, mu_k, values["wrap"], mu_s, values.get("radius"), values.get("width"), values.get("tension"), values.get("force"),
+                          values.get("lever"), values.get("slack_arm"), values.get("tight_arm")))
+    return tuple(bands)
+
+
+# --side1, --side2 and --pull of atwood (#34): "key=value ..." specs like --brake's.
+SIDE_FIELDS = {**_MU_FIELDS, "angle": ("angle", "any")}
+PULL_FIELDS = {"force": ("force", "any"), "angle": ("angle", "any")}
+
+
+def sides(option: Option, given, inputs: Inputs, stdin):
+    """Where a block is: "hang", "table [mu-s=… mu-k=…]" or "incline angle=… [mu-s=… mu-k=…]"
+    (mu= is the kinetic value); no coefficient: a smooth surface."""
+    source = "{" + option.name + "}"
+    example = '{' + option.name + '} "incline angle=30deg mu-s=0.4 mu-k=0.3"'
+    spec = word(option, given)
+    surface, fields = _spec_fields(spec, source, SIDE_FIELDS, example, shape_word=True)
+    if surface is None and "angle" in fields:
+        surface = "incline"
+    if surface not in SURFACES:
+        raise InputError(source, f"expected {', '.join(SURFACES)} then key=value pairs", example=example, got=repr(spec))
+    values = _read_fields(fields, SIDE_FIELDS, source, option.name, inputs)
+    if surface == "incline" and "angle" not in values:
+        raise InputError(source, "incline needs angle=", example=example, got=repr(spec))
+    if surface != "incline" and "angle" in values:
+        raise InputError(source, f"{surface}: takes no angle= (incline angle=… for a slope)", example=example, got=repr(spec))
+    if surface == "hang" and values:
+        raise InputError(source, "hang: takes no keys (a hanging block touches no surface)", example=example, got=repr(spec))
+    mu_k, mu_s = values.get("mu"), values.get("mu_s")
+    if mu_k is not None and "mu_k" in values:
+        raise InputError(source, "has mu= and mu-k=: mu= is the kinetic value, give it once", example=example, got=repr(spec))
+    mu_k = values.get("mu_k", mu_k)
+    if mu_k is not None and mu_s is not None and mu_s < mu_k:
+        raise InputError(source, "has mu-s= below mu-k= (static friction is at least kinetic)", got=f"{fmt(mu_s)} < {fmt(mu_k)}")
+    return Side(source, surface, values.get("angle"), mu_k, mu_s)
+
+
+def pulls(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "force=… [angle=…] [on=1|2]": a pull on a block, along its path away from the pulley,
+    tilted angle= off its surface (positive lifting it); on= the block (default 1)."""
+    example = '{pull} "force=20N angle=30deg on=2"'
+    found = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*PULL_FIELDS, "on"}, example, shape_word=False)
+        if "force" not in fields:
+            raise InputError(source, "needs force=", example=example, got=repr(spec))
+        on = fields.get("on", "1").strip()
+        if on not in ("1", "2"):
+            raise InputError(source, "on= is 1 or 2 (the block pulled: m1's or m2's)", example=example, got=repr(on))
+        values = _read_fields(fields, PULL_FIELDS, source, f"pull{number}", inputs)
+        angle = values.get("angle", 0.0)
+        if not -math.pi / 2 <= angle <= math.pi / 2:
+            raise InputError(source, "angle= is from −90 to 90 deg off the surface (a negative force= pulls the other way)",
+                             example=example, got=f"{fmt(math.degrees(angle))} deg")
+        found.append(Pull(source, values["force"], angle, int(on)))
+    return tuple(found)

@@ -1,0 +1,129 @@
+"""The Python API: one function per scene, made from the scene's table.
+
+``taucli.spin_down(omega0="30 rad/s", inertia=0.1, friction="0.3 N*m")`` reads its keywords as
+the command line reads its options (texts with units; a number is SI), solves, and returns the
+Report. A scene's positional argument (inertia's and rolling's SHAPE) may be given first.
+"""
+
+from __future__ import annotations
+
+import inspect
+import math
+import textwrap
+from collections.abc import Callable
+
+from taucli.answering import answer
+from taucli.options import SCENES
+from taucli.core.errors import InputError
+from taucli.writing.report import Report
+from taucli.quantities.kinds import KINDS
+from taucli.options.table import CHOICE, COUNT, FILE, FLAG, TEXT, VECTOR, Command, Option
+
+
+def function(name: str) -> Callable[..., Report] | None:
+    """The API function of the scene called ``name`` (spin_down), or None."""
+    command = SCENES.get(name.replace("_", "-"))
+    if command is None or command.function_name != name:
+        return None
+    return _made(command)
+
+
+def _made(command: Command) -> Callable[..., Report]:
+    positional = [option.name for option in command.options if option.positional]
+
+    def scene(*args, **given) -> Report:
+        if len(args) > len(positional):
+            raise TypeError(f"{command.function_name}() takes {len(positional)} positional argument(s) but {len(args)} were given")
+        for name, value in zip(positional, args):
+            if name in given:
+                raise TypeError(f"{command.function_name}() got multiple values for argument {name!r}")
+            given[name] = value
+        given = {name.replace("-", "_"): _plain(value, name) for name, value in given.items()}
+        return answer.solve(command, given, find=given.pop("find", None), want=given.pop("want", None))
+
+    parameters = [
+        inspect.Parameter(
+            option.name,
+            inspect.Parameter.POSITIONAL_OR_KEYWORD if option.positional else inspect.Parameter.KEYWORD_ONLY,
+            default=None,
+        )
+        for option in command.options
+    ]  # and find=, want= (#22), read by taucli.answering.answer.solve
+    scene.__signature__ = inspect.Signature(parameters, return_annotation=Report)
+    scene.__name__ = scene.__qualname__ = command.function_name
+    scene.__module__ = "taucli"
+    scene.__doc__ = docstring(command)
+    return scene
+
+
+def _plain(value, name: str):
+    """A value as Python's own types hold it: a numpy scalar or 0-d array as its number
+    (np.int64(4) -> 4), an array as a list (np.array([1., 2., 3.]) -> a 3-vector), inside lists
+    and tuples too. numpy is not imported: its values are known by their module. A whole number
+    past a double's range (10**400) is refused here, before any message would write its digits."""
+    if type(value).__module__.partition(".")[0] == "numpy" and callable(getattr(value, "tolist", None)):
+        value = value.tolist()
+    if isinstance(value, int) and value.bit_length() > 1024:
+        digits = int(value.bit_length() * math.log10(2)) + 1
+        raise InputError(name, "expected a number a double holds (at most about 1.8e308 in size)", got=f"a whole number of about {digits} digits")
+    if type(value) in (list, tuple):
+        return type(value)(_plain(item, name) for item in value)
+    if isinstance(value, (dict, set, frozenset)):  # refused by the readers, whose messages quote them: no 10**5000 inside
+        for item in (*value, *(value.values() if isinstance(value, dict) else ())):
+            _plain(item, name)
+    return value
+
+
+def _kind(option: Option) -> str:
+    """What a keyword takes, as help() lists it: "mass, kg", "one of disc, ring", "True or False"."""
+    if option.kind == FLAG:
+        what = "True or False"
+    elif option.kind == CHOICE:
+        what = "one of " + ", ".join(option.choices)
+    elif option.kind == COUNT:
+        what = "a whole number"
+    elif option.kind == FILE:
+        what = "a file's path"
+    elif option.kind == TEXT:
+        what = "text"
+    elif option.kind == VECTOR:
+        what = f'a vector of {option.of}s, "x,y,z UNIT" (SI: {KINDS[option.of].si_unit})' if option.of in KINDS else "a vector"
+    elif option.kind in KINDS:
+        unit = KINDS[option.kind].si_unit
+        what = f"{option.kind}, a number in {unit}" if unit else "a number"
+        if option.also in KINDS:
+            what += f", or {option.also}"
+        if option.words:
+            what += " or " + " or ".join(repr(word) for word in option.words)
+    else:
+        what = f"a {option.kind} spec, {option.shown_metavar}"
+    if option.repeatable:
+        what += "; repeatable: a list"
+    if option.default:
+        what += f"; default {option.default}"
+    if option.makes:
+        what += "; makes " + ", ".join(option.makes)
+    return what
+
+
+def docstring(command: Command) -> str:
+    """help(taucli.spin_down): the summary, then each keyword with its kind, unit, default and
+    help, from the scene's table (#36), its results and an example."""
+    keywords = []
+    for option in command.options:
+        keywords.append(f"    {option.name} ({_kind(option)})")
+        keywords += textwrap.wrap(option.help, 88, initial_indent=" " * 8, subsequent_indent=" " * 8)
+    return "\n".join([
+        command.summary,
+        "",
+        "Each keyword takes a text with its unit (\"30 rad/s\", \"300 rpm\") or a number in the SI unit",
+        "listed; None (the default) leaves it out, as a missing option does. find=NAME with",
+        "want=\"RESULT=VALUE\" solves for an input; a text such as \"4.0+/-0.1 kg\" carries an uncertainty.",
+        "",
+        "Keywords:",
+        *keywords,
+        "",
+        *textwrap.wrap(f"Results (report.results[NAME].value, SI): {command.results_line()}.", 96),
+        "",
+        f"As on the command line: {command.example}",
+    ])  # fmt: skip

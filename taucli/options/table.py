@@ -1,0 +1,243 @@
+"""The vocabulary of the one table each command is described by: its options and its results.
+
+A command's table is the single description that the command line (typer), ``--help``, the
+batch keys, sweeps, completions, the fuzz grammar, the option tables of docs/ and the Python
+API all read. Plain data: importing a table imports no solver, no typer, no rich and no pint.
+
+An option's ``name`` is the solver's keyword and the batch key; the flag is derived from it
+(``pulley_mass`` -> ``--pulley-mass``). Its ``kind`` is a quantity kind of taucli.quantities.units
+("mass", "angular velocity", ...) or one of the other kinds below.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from taucli.writing.report import Value
+
+# Kinds that are not quantities.
+CHOICE = "choice"  # a word from ``choices``
+FLAG = "flag"  # on or off
+FILE = "file"  # a path (- for stdin where the option says so)
+PART = "part"  # "SHAPE key=value ...", repeatable
+TEXT = "text"  # free text, read by the command itself (--to NAME=UNIT, --get NAME)
+COUNT = "count"  # a whole number
+VECTOR = "vector"  # "x,y,z UNIT": three components of the quantity kind in ``of`` (or one size, where a scene takes that)
+NOT_QUANTITIES = frozenset({CHOICE, FLAG, FILE, PART, TEXT, COUNT})
+NOT_QUANTITIES = NOT_QUANTITIES | {VECTOR}  # read a component at a time by its own reader, never swept
+PARTICLE = "particle"  # "mass=… speed=… radius=… [angle=…] [speed-after=… | e=… | radius-after=…]", repeatable
+COUPLE = "couple"  # "[SHAPE] inertia=… | mass=… dims…, omega0=…": another body on the axis, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
+BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…] [lever=… pivot=… offset=…]": a brake shoe on a turning body, repeatable
+FACE = "face"  # "mu=… [force=…|pmax=…] [inner-radius=…] [outer-radius=…] [model=uniform|wear] [surfaces=…]": a pressed flat face, repeatable
+BAND = "band"  # "mu=… wrap=… [radius=…] [width=…] tension=…|force=… lever=… slack-arm=…|tight-arm=…": a band brake, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE, BAND}
+SIDE = "side"  # "hang" | "table [mu-s=… mu-k=…]" | "incline angle=… [mu-s=… mu-k=…]": where a block of atwood is
+PULL = "pull"  # "force=… [angle=…] [on=1|2]": a pull on a block of atwood, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {SIDE, PULL}
+ROTOR = "rotor"  # "inertia=… spin=… sense=cw-from-rear": another rotor whose axis a vehicle turns (gyro), repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {ROTOR}
+
+# The metavar of each quantity kind, shown in help and read by the completion scripts.
+METAVARS = {
+    "mass": "MASS",
+    "length": "LENGTH",
+    "angle": "ANGLE",
+    "time": "TIME",
+    "angular velocity": "OMEGA",
+    "angular acceleration": "ALPHA",
+    "torque": "TORQUE",
+    "moment of inertia": "I",
+    "force": "FORCE",
+    "acceleration": "ACCEL",
+    "velocity": "SPEED",
+    "viscous coefficient": "B",
+    "drag coefficient": "K",
+    "dimensionless": "NUMBER",
+    "power": "POWER",
+    "energy": "ENERGY",
+    "density": "DENSITY",
+    "stress": "STRESS",
+    "torsion constant": "KAPPA",
+    "lead": "LEAD",
+    "pressure": "PRESSURE",
+}
+
+
+@dataclass(frozen=True)
+class Option:
+    """One input of a command: what it takes, its help, and where it shows."""
+
+    name: str
+    kind: str
+    help: str
+    sign: str = "positive"  # for quantities: "positive" (> 0), "nonnegative" (>= 0) or "any"
+    default: str | None = None  # as help shows it; the library applies it
+    panel: str | None = None  # the heading it is listed under in --help
+    choices: tuple[str, ...] = ()
+    repeatable: bool = False
+    positional: bool = False  # the command's argument (SHAPE) rather than an option
+    metavar: str | None = None  # else the kind's
+    of: str | None = None  # VECTOR: the quantity kind of its components ("force")
+    words: tuple[str, ...] = ()  # words a quantity option takes as well ("rim" for --at)
+    also: str | tuple[str, ...] | None = None  # other quantity kinds it takes, passed on as a Value (rolling's --at 30deg: an angle on the rim)
+
+    @property
+    def also_kinds(self) -> tuple[str, ...]:
+        """The other quantity kinds it takes, in the order they are tried."""
+        return () if self.also is None else (self.also,) if isinstance(self.also, str) else self.also
+    makes: tuple[str, ...] = ()  # FLAG: the results it turns on; naming one in --get, --y or --to turns it on
+
+    @property
+    def flag(self) -> str:
+        """How the command line spells it: --pulley-mass, or SHAPE for the argument."""
+        return self.name.upper() if self.positional else "--" + self.name.replace("_", "-")
+
+    @property
+    def is_quantity(self) -> bool:
+        return self.kind not in NOT_QUANTITIES
+
+    @property
+    def takes_value(self) -> bool:
+        return self.kind != FLAG
+
+    @property
+    def shown_metavar(self) -> str:
+        if self.metavar:
+            return self.metavar
+        if self.kind == CHOICE:
+            return "|".join(self.choices) if len(self.choices) <= 3 else self.name.upper()
+        return METAVARS.get(self.kind) or self.kind.upper()
+
+    @property
+    def sweepable(self) -> bool:
+        """A range FROM..TO or a list A,B may stand for its value (quantities only)."""
+        return self.is_quantity and not self.repeatable
+
+    def help_text(self) -> str:
+        """The help, with the default (as shown) before its closing full stop."""
+        if not self.default:
+            return self.help
+        return f"{self.help.removesuffix('.')} (default {self.default})."
+
+
+@dataclass(frozen=True)
+class Result:
+    """One result of a scene: its JSON key, SI unit, and what it is.
+
+    A label with "…" has a part the solver fills in: "velocity …" is "velocity after 2 m" in
+    one run and "velocity at t = 3 s" in another (the part brings its own leading space).
+    """
+
+    key: str
+    unit: str | None
+    label: str
+
+
+@dataclass(frozen=True)
+class Command:
+    """A command of the command line, described once."""
+
+    name: str  # as typed: "spin-down"
+    summary: str  # one line: the first of --help and the command list
+    example: str
+    options: tuple[Option, ...]
+    description: str = ""  # more of --help, after the summary
+    results: tuple[Result, ...] = ()
+    headline: str | None = None  # the result a range's chart shows by default
+    library: str | None = None  # "module:function" that takes the options' values in SI
+    handler: str | None = None  # for commands that are not scenes: "module:function"
+    output: tuple[Option, ...] = ()  # how to answer (--json, --get, ...), not read as inputs
+    _index: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        names = [option.name for option in (*self.options, *self.output)]
+        if len(set(names)) != len(names):  # an option listed twice (a shared group and its own line)
+            raise ValueError(f"{self.name}: options named twice in its table: {sorted({n for n in names if names.count(n) > 1})}")
+        self._index.update({option.name: option for option in (*self.options, *self.output)})
+        self._index["inputs:"] = frozenset(option.name for option in self.options)
+        self._index["position:"] = {option.name: number for number, option in enumerate(self.options)}
+        self._index.update({"result:" + result.key: result for result in self.results})
+        # what Results.put needs of each result, looked up once: (unit, label, whether it has a "…")
+        self._index["results:"] = {result.key: (result.unit, result.label, FILLED in result.label) for result in self.results}
+
+    @property
+    def function_name(self) -> str:
+        """The Python API's name for it: taucli.spin_down."""
+        return self.name.replace("-", "_")
+
+    def option(self, name: str) -> Option | None:
+        return self._index.get(name)
+
+    def result(self, key: str) -> Result | None:
+        return self._index.get("result:" + key)
+
+    def flag(self, name: str) -> str:
+        """The flag of an option (or the name unchanged when it is none of this command's)."""
+        found = self.option(name)
+        return found.flag if found is not None else name
+
+    def in_order(self, names) -> list[str]:
+        """The input ``names`` in the table's order (the order the inputs are echoed in)."""
+        return sorted(names, key=self._index["position:"].__getitem__)
+
+    @property
+    def input_names(self) -> frozenset[str]:
+        """The names of its inputs (the options a scene reads), not of how to answer."""
+        return self._index["inputs:"]
+
+    def results_line(self) -> str:
+        return ", ".join(result.key for result in self.results)
+
+
+class Results(dict):
+    """The results a solver fills in (a dict of key -> Value), each from its scene's table: the
+    unit and the label come from there.
+
+    ``put("t", 1.2, " 2 m")`` checks that ``t`` is one of the scene's results, so a name that
+    is not in the table fails at once rather than reaching a user, and fills the label's "…".
+    """
+
+    __slots__ = ("command", "_known")
+
+    def __init__(self, command: Command):
+        super().__init__()
+        self.command = command
+        self._known = command._index["results:"]
+
+    def __missing__(self, key: str):
+        """``results["KE0"]`` where this run has no KE0: say what makes it (#36)."""
+        raise MissingResult(key, self.command, tuple(self))
+
+    def put(self, key: str, value, part: str = "") -> None:
+        found = self._known.get(key)
+        if found is None:
+            raise KeyError(f"{key!r} is not a result of {self.command.name} in its table")
+        unit, label, open_part = found
+        self[key] = Value(value, unit, label.replace(FILLED, part) if open_part else label)
+
+
+FILLED = "…"  # where a result's label takes the part its solver fills in
+
+
+class MissingResult(KeyError):
+    """A result this run has not made: which keyword makes it, or which results the run has.
+
+    A KeyError, so that ``"KE0" in results`` and ``results.get("KE0")`` work as on any dict.
+    """
+
+    def __init__(self, key: str, command: Command, present: tuple[str, ...]):
+        super().__init__(key)
+        self.key, self.scene, self.present = key, command.name, present
+        self.makers = tuple(option.name for option in command.options if key in option.makes)
+        self.in_table = command.result(key) is not None
+
+    def __str__(self) -> str:
+        if self.makers:
+            turn_on = " or ".join(f"{name}=True" for name in self.makers)
+            flags = " or ".join("--" + name.replace("_", "-") for name in self.makers)
+            return f"{self.key} is not among this run's results: {turn_on} turns it on ({flags} on the command line)"
+        if self.in_table:
+            return (f"{self.key} is a result of {self.scene} that these inputs do not make (its page in docs/ says which do); "
+                    f"this run's results: {', '.join(self.present)}")
+        return f"{self.key} is not a result of {self.scene}; this run's results: {', '.join(self.present)}"

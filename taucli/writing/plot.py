@@ -1,0 +1,320 @@
+"""Charts: a sweep's results against its parameter, or a scene's motion against time.
+
+A Chart is data: panels of series of (x, y) points, and moments to mark. ``terminal`` draws it
+with plotille (braille canvas; each series its own marker, so it reads without colour) sized to
+the terminal; ``write_file`` draws it with matplotlib, imported only then. Both are imported
+only when a chart is drawn.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import os
+import stat
+import tempfile
+import textwrap
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
+
+from taucli.quantities.cache import made
+from taucli.core.errors import InputError
+from taucli.writing.report import Report, Trajectory, fmt, pretty_unit
+
+MARKERS = ("•", "+", "x", "o", "*", "#", "@", "%")  # one per series, so the series differ without colour
+COLOURS = ("cyan", "magenta", "yellow", "green", "red", "blue", "white", "bright_black")
+Y_AXIS_WIDTH = 16  # what plotille adds to the canvas: the y axis (a label and " | ") and the x axis arrow
+
+
+@dataclass(frozen=True)
+class Series:
+    label: str
+    xs: tuple[float, ...]
+    ys: tuple[float | None, ...]  # None: no value at that x (the result does not exist there)
+    points: bool = False  # drawn as markers alone (measured samples), not joined by a line
+
+
+@dataclass(frozen=True)
+class Panel:
+    """One y quantity against the chart's x, with one series per value of a list."""
+
+    key: str
+    label: str
+    unit: str
+    series: tuple[Series, ...]
+
+
+@dataclass(frozen=True)
+class Chart:
+    title: str
+    x_key: str
+    x_label: str
+    x_unit: str
+    panels: tuple[Panel, ...]
+    marks: tuple[tuple[float, str], ...] = ()  # (x, what happens there)
+    notes: tuple[str, ...] = ()  # how the chart was drawn, where the user did not say
+
+
+SAMPLES = 201  # times at which a motion is sampled for a chart or for --json's "plot"
+
+
+def trajectory_of(report: Report) -> Trajectory:
+    """The report's motion in time, or the --plot error that says there is none."""
+    if report.trajectory is None:
+        raise InputError(
+            "--plot",
+            f"needs a motion in time, and {report.scene} has none here (a range, FROM..TO, is charted against its parameter)",
+            example="taucli spin-down --inertia 0.1kg*m^2 --omega0 30rad/s --friction 0.3N*m --plot",
+        )
+    return report.trajectory()
+
+
+def motion_points(report: Report, t_end: float | None = None) -> list[tuple[float, ...]]:
+    """(t, *curves) of the report's motion in SI, to ``t_end`` if given (a common horizon)."""
+    trajectory = trajectory_of(report)
+    if t_end is not None and trajectory.state is not None:
+        trajectory = replace(trajectory, t_end=t_end)
+    return trajectory.sample(SAMPLES)
+
+
+def plot_document(report: Report) -> dict:
+    """The sampled motion for --json: units, points as objects, and the marked moments."""
+    trajectory = trajectory_of(report)
+    points = motion_points(report)
+    keys = ["t", *(key for key, _, _ in trajectory.curves)]
+    return {
+        "units": {"t": "s", **{key: unit for key, unit, _ in trajectory.curves}},
+        "points": [dict(zip(keys, (x if math.isfinite(x) else None for x in point))) for point in points],
+        "marks": [{"t": t, "what": what} for t, what in trajectory.marks],
+        "notes": [trajectory.note] if trajectory.note else [],
+    }
+
+
+def motion_chart(runs: Sequence[tuple[str, Report]], units: Mapping[str, tuple[str, float]] | None = None) -> Chart:
+    """The curves of each run's motion against time, one series per run, on a common horizon.
+
+    ``units`` maps a curve's key to the unit to show it in and the SI value of one of that unit.
+    """
+    units = units or {}
+    first = runs[0][1]
+    horizon = max(trajectory_of(report).t_end for _, report in runs)
+    sampled = [(label, motion_points(report, horizon)) for label, report in runs]
+    panels = []
+    for column, (key, unit, label) in enumerate(trajectory_of(first).curves, start=1):
+        shown_unit, factor = units.get(key, (unit, 1.0))
+        series = tuple(
+            Series(run_label, tuple(p[0] for p in points), tuple(p[column] / factor for p in points)) for run_label, points in sampled
+        )
+        panels.append(Panel(key, label, shown_unit, series))
+    marks = tuple(
+        (t, f"{what} ({run_label})" if len(runs) > 1 else what) for run_label, report in runs for t, what in trajectory_of(report).marks
+    )
+    title = f"{first.scene}: the motion in time" + (", one curve per value" if len(runs) > 1 else "")
+    notes = tuple(dict.fromkeys(trajectory_of(report).note for _, report in runs if trajectory_of(report).note))
+    return Chart(title, "t", "time", "s", tuple(panels), marks, notes)
+
+
+def axis_title(label: str, unit: str) -> str:
+    shown = pretty_unit(unit)
+    return f"{label} ({shown})" if shown else label
+
+
+def _limits(values: Sequence[float], *, with_zero: bool, cells: int | None) -> tuple[float, float]:
+    """A range holding the values, half of one of ``cells`` wider each side so points on an edge
+    are drawn; with ``with_zero``, zero is included when the values already come near it."""
+    low, high = min(values), max(values)
+    if with_zero and 0 < low < high / 3:
+        low = 0.0
+    elif with_zero and low / 3 < high < 0:
+        high = 0.0
+    if low == high:
+        pad = abs(low) / 10 or 1.0
+        return low - pad, high + pad
+    margin = 0.0 if cells is None else (high - low) / (2 * cells)
+    return low - (margin if low != 0 else 0.0), high + margin
+
+
+def _tick(value: float, chars: int, delta: float, left: bool = False) -> str:
+    text = fmt(value, 3)
+    return text.ljust(chars) if left else text.rjust(chars)
+
+
+def _plotted(series: Series) -> tuple[list[float], list[float]]:
+    pairs = [(x, y) for x, y in zip(series.xs, series.ys) if y is not None and math.isfinite(y)]
+    return [x for x, _ in pairs], [y for _, y in pairs]
+
+
+def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> str:
+    """The chart as text for a terminal ``columns`` wide: panels one above the other."""
+    import plotille  # deferred: plotille (about 25 ms), only when a chart is drawn
+
+    width = max(columns - Y_AXIS_WIDTH, 10)
+    out = textwrap.wrap(chart.title, columns)
+    for panel in chart.panels:
+        drawn = [(n, _plotted(series)) for n, series in enumerate(panel.series)]
+        drawn = [(n, xy) for n, xy in drawn if xy[0]]
+        if not drawn:
+            out += ["", f"{axis_title(panel.label, panel.unit)}: no values to draw"]
+            continue
+        figure = plotille.Figure()
+        figure.width, figure.height = width, height
+        figure.with_colors, figure.origin = colour, False
+        figure.register_label_formatter(float, _tick)
+        figure.register_label_formatter(int, _tick)
+        figure.x_label, figure.y_label = "", axis_title(panel.key, panel.unit)
+        x_low, x_high = _limits([x for _, (xs, _) in drawn for x in xs], with_zero=False, cells=None)
+        figure.set_x_limits(min_=x_low, max_=x_high)
+        y_low, y_high = _limits([y for _, (_, ys) in drawn for y in ys], with_zero=True, cells=height)
+        figure.set_y_limits(min_=y_low, max_=y_high)
+        for x, _ in chart.marks:
+            if x_low <= x <= x_high:
+                figure.axvline((x - x_low) / (x_high - x_low), lc="white" if colour else None)
+        for n, (xs, ys) in drawn:
+            if panel.series[n].points:
+                figure.scatter(xs, ys, lc=COLOURS[n % len(COLOURS)] if colour else None, marker=MARKERS[n % len(MARKERS)])
+            else:
+                figure.plot(xs, ys, lc=COLOURS[n % len(COLOURS)] if colour else None)
+        for n, (xs, ys) in drawn if len(panel.series) > 1 and not any(s.points for s in panel.series) else ():  # markers tell series apart without colour,
+            every = max(1, 3 * len(xs) // width)  # drawn after every line, one in three columns at most
+            figure.scatter(xs[::every], ys[::every], lc=COLOURS[n % len(COLOURS)] if colour else None, marker=MARKERS[n % len(MARKERS)])
+        axis = "\n".join(line.rstrip() for line in figure.show(legend=False).replace("> ()", ">").replace("| ()", "|").splitlines())
+        out += ["", *textwrap.wrap(f"{panel.key}: {panel.label}", columns), axis, f"{' ' * 12}{axis_title(chart.x_key, chart.x_unit)}"]
+    if len(chart.panels[0].series) > 1:
+        marked = any(series.points for series in chart.panels[0].series)  # samples as markers beside lines: a line is a line
+        legend = "  ".join(f"{MARKERS[n % len(MARKERS)] if series.points or not marked else '⠤'} {series.label}" for n, series in enumerate(chart.panels[0].series))
+        out += textwrap.wrap(legend, columns)
+    for x, what in chart.marks:
+        out += textwrap.wrap(f"│ at {chart.x_key} = {fmt(x, 4)} {pretty_unit(chart.x_unit)}: {what}", columns, subsequent_indent="  ")
+    for note in chart.notes:
+        out += textwrap.wrap(f"note: {note}", columns, subsequent_indent="  ")
+    return "\n".join(out) + "\n"
+
+
+def check_file(path: str) -> None:
+    """--out names an .svg or .png file with a name before its suffix, not a link or a folder, in
+    a folder that can be written; and matplotlib is there to draw it. Nothing is made or removed
+    at ``path`` here: the folder is tried with a temporary file of its own."""
+    folder, name = os.path.split(path)
+    stem, suffix = name[:-4], name[-4:]  # (os.path.splitext reads ".svg" as a stem with no suffix)
+    if suffix.lower() not in (".svg", ".png"):
+        raise InputError("--out", "expected a file name ending in .svg or .png", example="--out chart.svg", got=repr(path))
+    if not stem:  # ".svg" alone: a suffix with no name (it was written as .svg.png)
+        raise InputError("--out", f"expected a name before {suffix}", example=f"--out chart{suffix}", got=repr(path))
+    if os.path.islink(path):
+        raise InputError("--out", "expected a file, not a symbolic link: taucli does not write through links", example="--out chart.svg",
+                         got=f"{path!r} -> {os.readlink(path)!r}")
+    if os.path.isdir(path):
+        raise InputError("--out", "expected a file, not a folder", example="--out chart.svg", got=repr(path))
+    if importlib.util.find_spec("matplotlib") is None:
+        raise InputError("--out", "needs matplotlib to draw files", hint="pip install 'taucli[plot]' (from a checkout: pip install '.[plot]')")
+    try:
+        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
+    except OSError as err:
+        raise _unwritable(path, err) from None
+    os.close(handle)
+    os.unlink(temporary)
+
+
+def _unwritable(path: str, err: OSError) -> InputError:
+    return InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}")
+
+
+def _matplotlib_folder() -> None:
+    """matplotlib keeps its settings and font list in ~/.config/matplotlib and ~/.cache/matplotlib
+    (or $XDG_CONFIG_HOME, $XDG_CACHE_HOME) and warns over several lines on stderr where it cannot
+    make them (a read-only or missing home), or makes a missing home's whole tree. They are made
+    here as the cache folder is (at most two levels, never a home); where they cannot be, unless
+    MPLCONFIGDIR says otherwise, it is given a temporary folder, removed at exit."""
+    if os.environ.get("MPLCONFIGDIR"):
+        return
+    home = os.path.expanduser("~")
+    bases = (os.environ.get("XDG_CONFIG_HOME") or os.path.join(home, ".config"), os.environ.get("XDG_CACHE_HOME") or os.path.join(home, ".cache"))
+    if all(made(os.path.join(base, "matplotlib")) and os.access(os.path.join(base, "matplotlib"), os.W_OK) for base in bases):
+        return
+    import atexit  # deferred: only where matplotlib has no folder of its own
+    import shutil  # deferred: as above
+    import tempfile  # deferred: as above
+
+    folder = tempfile.mkdtemp(prefix="taucli-matplotlib-")
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    os.environ["MPLCONFIGDIR"] = folder
+
+
+def write_file(chart: Chart, path: str, said_to=None) -> None:
+    """The chart as an SVG or PNG file (matplotlib, Agg backend); where it went is said on
+    ``said_to`` (stderr: stdout holds the answer alone)."""
+    _matplotlib_folder()
+    import matplotlib  # deferred: matplotlib (hundreds of ms), only for a file
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot  # deferred: matplotlib, as above
+
+    figure, axes = pyplot.subplots(len(chart.panels), 1, figsize=(7, 2.6 * len(chart.panels) + 0.6), sharex=True, squeeze=False)
+    for row, panel in zip(axes, chart.panels):
+        ax = row[0]
+        for n, series in enumerate(panel.series):
+            xs, ys = _plotted(series)
+            if series.points:
+                ax.plot(xs, ys, label=series.label or None, linestyle="none", marker="o" if len(xs) < 200 else ".", markersize=4)
+            else:
+                ax.plot(xs, ys, label=series.label or None, marker="o" if len(xs) < 12 else None)
+        for x, what in chart.marks:
+            ax.axvline(x, linestyle="--", linewidth=0.8, color="grey")
+        ax.set_ylabel(axis_title(panel.label, panel.unit))
+        ax.grid(True, linewidth=0.3)
+        if len(panel.series) > 1:
+            ax.legend(fontsize="small")
+    for x, what in chart.marks:
+        axes[0][0].annotate(what, (x, 1.0), xycoords=("data", "axes fraction"), fontsize="small", rotation=90, va="top", ha="right")
+    axes[-1][0].set_xlabel(axis_title(chart.x_label, chart.x_unit))
+    figure.suptitle(chart.title, fontsize="medium")
+    figure.tight_layout()
+    try:
+        _replace_atomically(path, lambda temporary: figure.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()))
+    finally:
+        pyplot.close(figure)
+    if said_to is not None:
+        said_to.write(f"taucli: wrote the chart to {path}\n")
+
+
+def _replace_atomically(path: str, write) -> None:
+    """``write`` a temporary file beside ``path``, then rename it onto ``path`` in one step: a
+    reader sees the old file or the whole new one, a failed write (a full disk) leaves ``path`` as
+    it was, and a symbolic link made at ``path`` meanwhile is replaced, never followed."""
+    folder, name = os.path.split(path)
+    try:
+        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
+    except OSError as err:
+        raise _unwritable(path, err) from None
+    os.close(handle)
+    try:
+        write(temporary)
+        os.chmod(temporary, _new_file_mode(path))
+        os.replace(temporary, path)
+    except OSError as err:
+        _remove(temporary)
+        raise _unwritable(path, err) from None
+    except BaseException:
+        _remove(temporary)
+        raise
+
+
+def _new_file_mode(path: str) -> int:
+    """The mode a file written at ``path`` would have: an existing file's, else 0666 less the umask
+    (mkstemp makes its files 0600)."""
+    try:
+        info = os.lstat(path)
+        if stat.S_ISREG(info.st_mode):
+            return stat.S_IMODE(info.st_mode)
+    except OSError:
+        pass
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
+
+
+def _remove(path: str) -> None:
+    try:
+        os.unlink(path)
+    except OSError:
+        pass
