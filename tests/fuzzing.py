@@ -31,7 +31,7 @@ from pathlib import Path
 from conftest import strict_json
 from hypothesis import strategies as st
 
-SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro", "drive", "flywheel")  # every scene of taucli.options (tests/test_fuzz.py checks)
+SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro", "drive", "flywheel")  # every scene of taucli.options (tests/front/test_fuzz.py checks)
 SECONDS = 1.0  # the longest a run may take
 
 # Units by the metavar of the option that takes them.

@@ -2,7 +2,7 @@
 
     python tests/readme_examples.py README.md docs/*.md
 
-The same commands tests/test_readme.py checks (no pipes, redirects or `taucli bench`); files a
+The same commands tests/front/test_readme.py checks (no pipes, redirects or `taucli bench`); files a
 block shows with `$ cat FILE` are written to a scratch folder first. Run it after a change that
 alters what a scene prints, then read the diff: a changed number is a changed answer.
 """

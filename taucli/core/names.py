@@ -1,7 +1,7 @@
 """The names the command line offers: shapes and their axes, methods, pulley shapes, bodies.
 
 Plain data, so that ``--help`` and the completion scripts need no solver. Each list is tied
-to the solver table it mirrors by tests/test_layers.py.
+to the solver table it mirrors by tests/writing/test_layers.py.
 """
 
 # Shape -> its axes, the default first (scenes.inertia.SHAPES).

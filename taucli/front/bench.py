@@ -4,7 +4,7 @@ has more than one (spin-down: the closed form and the steppers; impulse: the qua
 Each point is one method at one setting (a step, a tolerance, a sample count) on one fixed
 reference problem: the median time of repeated in-process solves, less the timer's own
 overhead, and the relative error against a 50-digit reference computed once with mpmath (the
-values below; tests/test_bench.py recomputes them). A run that went unstable is kept as a
+values below; tests/front/test_bench.py recomputes them). A run that went unstable is kept as a
 diverged point, never dropped.
 """
 

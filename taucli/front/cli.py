@@ -47,7 +47,7 @@ class _AsTyped:
     typer 0.29 validates every given value through a pydantic TypeAdapter; importing pydantic
     costs about 100 ms, a third of a run, to turn a str into the same str. taucli reads every
     value itself (taucli.answering.inputs). Where typer has no ``_runtime_param`` (before 0.29, or after a
-    change), its own coercion stays: slower, never wrong; tests/test_startup.py notices.
+    change), its own coercion stays: slower, never wrong; tests/front/test_startup.py notices.
     """
 
     TYPES = (str, list[str], bool)

@@ -5,7 +5,7 @@ each option takes comes from its table entry: a quantity's kind (after a number,
 that number with each of the kind's common units, units.KINDS: ``--m1 4`` TAB gives 4kg 4g 4lb
 4oz 4tonne), a choice's words, a file, the command's result names (after --get and --y), or
 what --find may solve for (its inputs, and the keys of its specs: particle.speed, brake.mu).
-completions/ holds the output, and tests/test_completions.py fails when it differs from a fresh
+completions/ holds the output, and tests/front/test_completions.py fails when it differs from a fresh
 generation.
 """
 

@@ -13,7 +13,7 @@ product of sums), never 1 − k², so an amplitude of 179.9999° keeps all its d
   16.4), with u first reduced modulo the period 4K, polished by Newton's method on F(am u) = u
   (Landen alone loses digits as k -> 1), and dn formed as √(k'² + k²cn²), a sum of positive terms.
 
-Checked against mpmath at 50 digits in tests/test_pendulum.py.
+Checked against mpmath at 50 digits in tests/scenes/pendulum/test_pendulum.py.
 """
 
 from __future__ import annotations

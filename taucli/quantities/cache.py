@@ -224,7 +224,7 @@ def _no_constants(name: str):
 # and shipped in the package, so that a first run (an empty cache folder) reads "4 kg" without
 # importing pint, as a warm run does. Used only for the exact rules and pint it was built with:
 # the text of the modules that make a key and read a unit, and pint's version. Rebuilt by
-# ``python -m taucli.quantities.shipped``; tests/test_first_run.py checks it is current and agrees with pint.
+# ``python -m taucli.quantities.shipped``; tests/quantities/test_first_run.py checks it is current and agrees with pint.
 SHIPPED = "units-shipped.json"
 RULES = ("units.py", "registry.py", "screen.py", "spellings.py", "kinds.py")
 

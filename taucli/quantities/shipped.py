@@ -3,7 +3,7 @@
     python -m taucli.quantities.shipped
 
 Run after a change to the reading rules (units, registry, screen, spellings, kinds), to pint, or
-to the units the docs' examples type: tests/test_first_run.py says when. taucli.quantities.cache reads the
+to the units the docs' examples type: tests/quantities/test_first_run.py says when. taucli.quantities.cache reads the
 table; this module, which asks pint for each factor, is imported only to build it.
 """
 

@@ -2,7 +2,7 @@
 
     python tests/benchmarks/accuracy_budget.py
 
-Prints the largest error in ulp of each closed form in tests/test_accuracy.py against a
+Prints the largest error in ulp of each closed form in tests/scenes/test_accuracy.py against a
 100-digit evaluation (Atwood and impulse: per unit of the cancellation factor κ of the data).
 """
 import math, random, mpmath
@@ -10,7 +10,7 @@ from taucli.scenes.inertia import SHAPES, Part, part_inertia
 from taucli.scenes.atwood import HANGING, Pulley, Slope, solve as atwood
 from taucli.scenes.rolling import K2, Roller, solve_incline
 from taucli.scenes.impulse import solve_balance, solve_changing_inertia
-import sys; sys.path.insert(0, str(__import__('pathlib').Path(__file__).resolve().parents[1]))
+import sys; sys.path[:0] = [str(__import__('pathlib').Path(__file__).resolve().parents[1]), str(__import__('pathlib').Path(__file__).resolve().parents[1] / 'scenes')]  # tests/ and tests/scenes/ (test_accuracy)
 from test_accuracy import EXACT_INERTIA
 mpmath.mp.dps = 100
 U = mpmath.mpf(2)**-52

@@ -1,4 +1,4 @@
-"""The checker of tests/test_definitions.py: draw, solve, count what is refused, check what is accepted.
+"""The checker of tests/scenes/test_definitions.py: draw, solve, count what is refused, check what is accepted.
 
 A definition holds where |got − want| ≤ REL · max(|got|, |want|, scale): scale 0 for a product or a
 quotient, the largest term for a sum or a difference, 1 rad for an angle (test_definitions explains why).

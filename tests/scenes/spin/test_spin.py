@@ -308,7 +308,7 @@ def test_methods_table_and_input_errors():
         solve(0.1, Torques(friction=0.3, drag=0.01, drag_exponent=1.5), 30.0, method="exact")
     with pytest.raises(InputError, match="method"):
         solve(0.1, Torques(friction=0.3), 30.0, method="midpoint")
-    with pytest.raises(InputError, match="drag_exponent"):  # 0 < n < 1 is a model since #34 (tests/test_spin_drag_below_one.py)
+    with pytest.raises(InputError, match="drag_exponent"):  # 0 < n < 1 is a model since #34 (tests/scenes/spin/test_spin_drag_below_one.py)
         solve(0.1, Torques(friction=0.3, drag=0.01, drag_exponent=0.0), 30.0)
     with pytest.raises(InputError, match="--dt"):
         solve(0.1, Torques(friction=0.3), 30.0, time=1e4, method="euler", dt=1e-6)

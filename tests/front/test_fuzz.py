@@ -2,7 +2,7 @@
 
 The default run tries 60 vectors a scene (300 in all). The opt-in run tries many more:
 
-    TAUCLI_FUZZ_EXAMPLES=10000 python -m pytest -s tests/test_fuzz.py
+    TAUCLI_FUZZ_EXAMPLES=10000 python -m pytest -s tests/front/test_fuzz.py
 
 and prints how many vectors each scene ran (with -s: pytest drops a passing run's output). A vector that once broke the contract is kept in
 FOUND below, with the seed that found it, and runs in every test run.

@@ -5,7 +5,7 @@ the minimum: the digits past that change with numpy's and scipy's versions and w
 search takes. Each `taucli fit` example of the docs is run here with the search started elsewhere
 (each input's start moved by up to 1e-6 of itself, one way and the other): the page a person reads
 is the same to the character, and the numbers for a machine (--get) agree with the page within the
-fit's stated tolerances (tests/test_readme.py). CI runs the same examples with the oldest numpy
+fit's stated tolerances (tests/pages.py). CI runs the same examples with the oldest numpy
 and scipy pyproject.toml allows (.ci/run).
 """
 
@@ -22,7 +22,7 @@ pytest.importorskip("scipy")
 
 from taucli.front.cli import Environment, main  # noqa: E402
 from taucli.fit import start  # noqa: E402
-from test_readme import _lines, _with_docs, fit_machine_output, fit_numbers_agree, sessions  # noqa: E402
+from pages import fit_machine_output, fit_numbers_agree, lines_of, sessions, with_docs  # noqa: E402
 
 FIT_EXAMPLES = [(command, printed, files) for command, printed, files in sessions() if command.startswith("taucli fit ") and not re.search(r"[|<>]", command)]
 MOVED = 1e-6  # of each start
@@ -49,16 +49,16 @@ def test_a_fit_started_elsewhere_prints_the_same_page(command, printed, files, d
     monkeypatch.setenv("COLUMNS", "80")
     for name, text in files.items():
         (tmp_path / name).write_text(text, encoding="utf-8")
-    _with_docs(tmp_path)
+    with_docs(tmp_path)
     monkeypatch.chdir(tmp_path)
     out, err = io.StringIO(), io.StringIO()
     main(shlex.split(command)[1:], Environment(stdin=io.StringIO(""), stdout=out, stderr=err))
     if moved and not any(moved):
         pytest.skip("every start is 0 here: nothing to move")
     if fit_machine_output(command) and not err.getvalue():
-        assert fit_numbers_agree(_lines(out.getvalue()), _lines(printed)), (_lines(out.getvalue()), _lines(printed))
+        assert fit_numbers_agree(lines_of(out.getvalue()), lines_of(printed)), (lines_of(out.getvalue()), lines_of(printed))
     else:
-        assert _lines(out.getvalue() + err.getvalue()) == _lines(printed)
+        assert lines_of(out.getvalue() + err.getvalue()) == lines_of(printed)
 
 
 def test_the_tolerances_take_rounding_and_refuse_a_changed_answer():

@@ -17,7 +17,7 @@ import pytest
 
 from conftest import assert_usage_error, documents_text, run_taucli
 
-GOLDEN = Path(__file__).parent / "golden"
+GOLDEN = Path(__file__).resolve().parents[1] / "golden"
 G = 9.80665
 ANSI = re.compile(r"\x1b\[")
 

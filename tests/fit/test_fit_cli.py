@@ -18,7 +18,7 @@ from taucli.options import COMMANDS, SCENES
 from taucli.options.fit import COMMAND as FIT
 from taucli.options.fit import SCENE_NAMES
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture

@@ -1,5 +1,5 @@
 """Every answer right or refused (#31): readings that gave a wrong number, each now read as meant
-or refused with the fix. The table of docs/units.md (tests/test_units_table.py) reads them through
+or refused with the fix. The table of docs/units.md (tests/quantities/test_units_table.py) reads them through
 every way in; here each item of the issue is pinned down on its own.
 
   2. a 1/time for an angular velocity or acceleration: revolutions where it says so (Hz, min^-1),

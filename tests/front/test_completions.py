@@ -27,7 +27,7 @@ from conftest import run_taucli
 from taucli.front import completions
 from taucli.core import names
 
-COMPLETIONS = Path(__file__).resolve().parent.parent / "completions"
+COMPLETIONS = Path(__file__).resolve().parents[2] / "completions"
 
 
 @pytest.mark.parametrize("shell", completions.SHELLS)

@@ -1,24 +1,16 @@
-"""The console examples of README and of every page in docs/ print what the page shows (at 80 columns).
-
-Each ```console block is a short session: `$ cat FILE` shows a file the next commands read (the
-test writes it), and `$ taucli ...` shows a command and all it printed, stdout then stderr.
-Commands with a pipe or a redirect run in bash, in a folder holding the block's files (jq, which
-some pipe into, is installed by .ci/run); `taucli bench` is left out (its timings differ from run
-to run). A test below counts what is checked, so that no page can drift out of it.
-"""
+"""The console examples of README and of every page in docs/, as tests read them, and how a fit's
+numbers for a machine are compared with a page (tests/front/test_readme.py, tests/fit/test_fit_digits.py)."""
 
 from __future__ import annotations
 
 import os
 import re
-import shlex
 import shutil
-import subprocess
 import sys
 
 import pytest
 
-from conftest import ROOT, documents_text, run_taucli
+from conftest import ROOT, documents_text
 
 
 def sessions() -> list[tuple[str, str, dict[str, str]]]:
@@ -37,7 +29,7 @@ def sessions() -> list[tuple[str, str, dict[str, str]]]:
     return found
 
 
-def _lines(text: str) -> list[str]:
+def lines_of(text: str) -> list[str]:
     return [line.rstrip() for line in text.strip("\n").splitlines()]
 
 
@@ -89,11 +81,11 @@ def fit_numbers_agree(got_lines: list[str], page_lines: list[str]) -> bool:
     return True
 
 
-def _piped(command: str) -> bool:
+def piped(command: str) -> bool:
     return bool(re.search(r"[|<>]", command))
 
 
-def _shell_env(tmp_path) -> dict[str, str]:
+def shell_env(tmp_path) -> dict[str, str]:
     """The environment of a shell whose `taucli` is this checkout's, at 80 columns."""
     bin_dir = tmp_path / "bin"
     bin_dir.mkdir(exist_ok=True)
@@ -102,63 +94,13 @@ def _shell_env(tmp_path) -> dict[str, str]:
     return {**os.environ, "PATH": f"{bin_dir}:{os.environ['PATH']}", "COLUMNS": "80"}
 
 
-def _with_docs(folder) -> None:
+def with_docs(folder) -> None:
     """docs/ beside the block's files: a page reads a longer data file by its path (docs/data/...)."""
     (folder / "docs").symlink_to(ROOT / "docs", target_is_directory=True)
 
 
-def _needs(program: str) -> None:
+def needs(program: str) -> None:
     if shutil.which(program) is None:
         if os.environ.get("CI"):
             pytest.fail(f"{program} is not installed: .ci/run installs it")
         pytest.skip(f"{program} is not installed (apt-get install {program})")
-
-
-def test_the_pages_have_examples_to_check():
-    assert len(sessions()) >= 80
-    assert sum(_piped(command) for command, _, _ in sessions()) >= 2
-
-
-@pytest.mark.parametrize("command,printed,files", sessions(), ids=[command[:70] for command, _, _ in sessions()])
-def test_an_example_prints_what_its_page_shows(command, printed, files, tmp_path, monkeypatch):
-    for name, text in files.items():
-        (tmp_path / name).write_text(text, encoding="utf-8")
-    _with_docs(tmp_path)
-    monkeypatch.chdir(tmp_path)
-    if _piped(command):
-        if "jq" in command:
-            _needs("jq")
-        done = subprocess.run(["bash", "-c", command], capture_output=True, text=True, env=_shell_env(tmp_path), cwd=tmp_path, timeout=60)
-        out, err = done.stdout, done.stderr
-    else:
-        result = run_taucli(*shlex.split(command)[1:], env={"COLUMNS": "80"})
-        out, err = result.out, result.err
-    if fit_machine_output(command) and not err:
-        assert fit_numbers_agree(_lines(out), _lines(printed)), (_lines(out), _lines(printed))
-    else:
-        assert _lines(out + err) == _lines(printed)
-
-
-@pytest.mark.parametrize("shell", ["zsh", "fish"])
-def test_every_readme_and_docs_command_works_as_typed_in_zsh_and_fish(shell, tmp_path):
-    """#16 item 17: `--friction 0.3N*m` unquoted is a glob, and zsh stops at 'no matches found'.
-    Each command of README and docs/, run by the shell itself (in a folder with its block's files),
-    exits and prints as it does when bash runs it."""
-    _needs(shell)
-    found = shutil.which(shell)
-    env = _shell_env(tmp_path)
-    commands = sessions()
-    assert len(commands) >= 80
-    for number, (command, _, files) in enumerate(commands):
-        if "jq" in command and shutil.which("jq") is None:
-            continue  # (the test above says so)
-        folder = tmp_path / str(number)
-        folder.mkdir()
-        _with_docs(folder)
-        for name, text in files.items():
-            (folder / name).write_text(text, encoding="utf-8")
-        in_bash = subprocess.run(["bash", "-c", command], capture_output=True, text=True, env=env, cwd=folder, timeout=60)
-        in_shell = subprocess.run([found, "-c", command], capture_output=True, text=True, env=env, cwd=folder, timeout=60)
-        assert "no matches found" not in in_shell.stderr and "No matches for wildcard" not in in_shell.stderr, (command, in_shell.stderr)
-        assert in_shell.returncode == in_bash.returncode, (command, in_shell.stderr)
-        assert in_shell.stdout == in_bash.stdout, command
