@@ -352,3 +352,17 @@ def brent(f, a: float, b: float, fa: float, fb: float, *, iterations: int = 200)
         if fb is None:
             raise ArithmeticError("the scene has no value inside the bracket")
     return b, iterations
+
+
+def falling_root(rate: Callable[[float], float]) -> float:
+    """The speed u > 0 where ``rate`` (positive at 0, falling) crosses zero: bracketed by doubling
+    from 1, then bisected until the bracket holds no float between its ends."""
+    low, high = 0.0, 1.0
+    while rate(high) > 0:
+        low, high = high, 2 * high
+    for _ in range(200):
+        mid = (low + high) / 2
+        if mid in (low, high):
+            break
+        low, high = (mid, high) if rate(mid) > 0 else (low, mid)
+    return (low + high) / 2

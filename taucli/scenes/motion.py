@@ -16,6 +16,7 @@ from collections.abc import Callable
 from typing import NamedTuple
 
 from taucli.numerics import steppers as numerics
+from taucli.numerics.roots import falling_root
 from taucli.core.errors import InputError
 from taucli.writing.report import fmt
 from taucli.scenes.closed_forms import ClosedFormPhase, exp_fraction
@@ -126,7 +127,7 @@ class Phase(NamedTuple):
             return self.closed.steady_speed
         if self.stops or self.closed.constant == 0:
             return None if self.stops else 0.0
-        return numerics.falling_root(self.rate)  # rate(ω) falls from A/I > 0
+        return falling_root(self.rate)  # rate(ω) falls from A/I > 0
 
 
 def _bernoulli_stop(phase: Phase) -> float:

@@ -52,6 +52,7 @@ def test_the_names_offered_match_the_tables_they_stand_for():
     from taucli.front import bench
     from taucli.core import names
     from taucli.numerics import steppers as numerics
+    from taucli.numerics import quadrature
     from taucli.scenes.atwood import Pulley
     from taucli.scenes.inertia import SHAPES
     from taucli.scenes.rolling import K2
@@ -59,6 +60,6 @@ def test_the_names_offered_match_the_tables_they_stand_for():
     assert names.SHAPE_AXES == {name: tuple(axis.name for axis in shape.axes) for name, shape in SHAPES.items()}
     assert names.ROLLING_BODIES == tuple(K2)
     assert names.METHOD_NAMES == ("auto", "exact", *numerics.METHODS)
-    assert names.QUADRATURE_NAMES == ("auto", *numerics.StreamingQuadrature.RULES)
+    assert names.QUADRATURE_NAMES == ("auto", *quadrature.StreamingQuadrature.RULES)
     assert names.PULLEY_SHAPES == tuple(Pulley.SHAPE_FACTORS)
     assert names.BENCH_SCENES == tuple(bench.SCENES)

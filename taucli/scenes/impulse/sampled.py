@@ -1,6 +1,6 @@
 """A torque that varies in time, sampled: J = ∫τ dt by quadrature, then ω₁ = ω₀ + J/I.
 
-The samples are streamed (numerics.StreamingQuadrature keeps three): ω at each sample is kept for
+The samples are streamed (numerics.quadrature.StreamingQuadrature keeps three): ω at each sample is kept for
 up to SAMPLES_SHOWN rows, and a thinned set of them for the plot, so memory stays flat.
 """
 
@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 
 from taucli.core.errors import InputError
-from taucli.numerics.steppers import StreamingQuadrature
+from taucli.numerics.quadrature import StreamingQuadrature
 from taucli.options.impulse import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, Trajectory, deferred, fmt, quantity_text, term
 from taucli.scenes.impulse.common import BRIEF_BLOW, CURVES, put_momentum

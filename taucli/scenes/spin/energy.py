@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from taucli.numerics.steppers import gauss_legendre
+from taucli.numerics.quadrature import gauss_legendre
 from taucli.writing.report import Step, fmt, quantity_text
 from taucli.scenes.motion import Evolver, Phase
 from taucli.scenes.spin.steps import Torques

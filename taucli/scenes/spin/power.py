@@ -11,7 +11,8 @@ from dataclasses import dataclass
 
 from taucli.numerics import steppers as numerics
 from taucli.core.errors import InputError
-from taucli.numerics.steppers import adaptive_gauss, falling_root, gauss_legendre
+from taucli.numerics.quadrature import adaptive_gauss, gauss_legendre
+from taucli.numerics.roots import falling_root
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.writing.report import Report, Step, deferred, fmt, quantity_text, term
 from taucli.scenes.motion import DEFAULT_DT, DEFAULT_RTOL, Method
