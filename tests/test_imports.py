@@ -13,7 +13,9 @@ from pathlib import Path
 import pytest
 
 PACKAGE = Path(__file__).parent.parent / "taucli"
-MOST_LINES = 520  # "about 500"
+MOST_LINES = 450  # "about 450": past it, a module's docstring says why it is kept whole
+MOST_LINES_WITH_A_REASON = 520
+KEPT_WHOLE = "Kept whole:"  # how that docstring says why
 DEFERRED = "# deferred"  # the comment an import inside a function carries, saying what it defers
 
 
@@ -126,9 +128,12 @@ def test_an_import_inside_a_function_defers_a_heavy_module_and_says_which():
 
 
 @pytest.mark.parametrize("name", sorted(modules()))
-def test_no_module_is_over_about_500_lines(name):
-    lines = len(modules()[name].read_text(encoding="utf-8").splitlines())
-    assert lines <= MOST_LINES, f"{name} has {lines} lines"
+def test_no_module_is_over_about_450_lines_without_a_reason(name):
+    text = modules()[name].read_text(encoding="utf-8")
+    lines = len(text.splitlines())
+    reason = KEPT_WHOLE in (ast.get_docstring(ast.parse(text)) or "")
+    assert lines <= MOST_LINES or (reason and lines <= MOST_LINES_WITH_A_REASON), (
+        f"{name} has {lines} lines: split it where it holds two jobs, or say why not in its docstring ({KEPT_WHOLE} …)")
 
 
 # The layers of taucli/, lowest first: a module may import its own layer and those below it, never

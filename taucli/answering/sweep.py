@@ -21,6 +21,8 @@ from dataclasses import dataclass
 from taucli.writing import formats
 from taucli.writing import plot
 from taucli.writing import render as renderer
+from taucli.writing.document import document_text
+from taucli.writing.human import draw_table, drawing, shown
 from taucli.writing.display import minus_signs
 from taucli.core.errors import InputError, did_you_mean
 from taucli.options import scene
@@ -263,7 +265,7 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
     elif output.json:
         plotted = output.charted and swept_range is None
         documents = [
-            renderer.document_text(point.report, steps=output.steps, plot=plot.plot_document(point.report) if plotted else None)
+            document_text(point.report, steps=output.steps, plot=plot.plot_document(point.report) if plotted else None)
             for point in points
         ]
         stream.write("".join(doc + "\n" for doc in documents) if output.json_lines else "[" + ",".join(documents) + "]\n")
@@ -355,7 +357,7 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
     from rich.text import Text  # deferred: rich (about 30 ms), only for the human view
 
     table = grid(points, swept)
-    with renderer.drawing(stream) as console:
+    with drawing(stream) as console:
         scene_name, _, what = table.title.partition(": ")
         console.print(Text.assemble((scene_name, "bold"), f": {what}"))
         console.print(Text(f"model: {table.model}", style="dim"))
@@ -363,9 +365,9 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
         for name, unit in table.columns:
             shown_unit = pretty_unit(unit)
             headings.append(f"{name} ({shown_unit})" if shown_unit else name)
-        rows = [[renderer.shown(cell) for cell in row] for row in table.rows]
+        rows = [[shown(cell) for cell in row] for row in table.rows]
         # numbers are never split: a table too wide for the terminal becomes a list, one point at a time
-        renderer.draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
+        draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
         for note in table.notes:
             if note.startswith("… and "):
                 console.print(Text(note, style="dim"))

@@ -9,6 +9,7 @@ the writer, and the chart where asked for.
 from __future__ import annotations
 
 from taucli.writing import render
+from taucli.writing.document import document_text
 from taucli.core.errors import InputError, did_you_mean
 from taucli.fit import chart, data, results, samples, solve
 from taucli.answering.inputs import read
@@ -104,7 +105,7 @@ def run(env, given: dict) -> int:
     if output.json:
         shown = render.prepared(report, output)
         document = chart.document(found) if given.get("plot") else None
-        env.stdout.write(render.document_text(shown, steps=output.steps, plot=document) + "\n")
+        env.stdout.write(document_text(shown, steps=output.steps, plot=document) + "\n")
     else:
         render.render(report, output, env.stdout, env.stderr)
         if given.get("plot"):

@@ -31,7 +31,8 @@ from collections.abc import Iterator
 from taucli.core.version import __version__
 from taucli.answering.answer import solve
 from taucli.core.errors import ExitStatus, InputError, TaucliError, bounded, clipped, did_you_mean, out_of_range
-from taucli.writing.render import Output, document_text, prepared
+from taucli.writing.document import document_text
+from taucli.writing.render import Output, prepared
 from taucli.options.table import FLAG, Command
 
 PER_LINE_OUTPUT = ("to", "no_steps")  # how to answer, which a line may say for itself

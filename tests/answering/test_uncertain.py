@@ -16,7 +16,7 @@ import taucli
 from taucli.front import cli
 from taucli.answering import pipeline
 from taucli.options import SCENES
-from taucli.writing.render import STRICT_JSON, document
+from taucli.writing.document import STRICT_JSON, document
 from taucli.quantities.measurement import split, with_uncertainty
 
 MP_DPS = 40  # the references' precision, set for each test by conftest

@@ -8,7 +8,7 @@ import re
 import pytest
 
 from conftest import run_taucli
-from taucli.writing.render import shown
+from taucli.writing.human import shown
 
 WIDTHS = [30, 40, 50, 60, 70, 80, 100]
 PARTS = ("inertia", "disc", "--mass", "5kg", "--radius", "0.2m", "--part", "point mass=100g offset=0.2m", "--part", "rod mass=360g length=0.31m axis=end")

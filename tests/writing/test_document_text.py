@@ -1,4 +1,4 @@
-"""The JSON writer (render.document_text) writes exactly what the encoder makes of render.document.
+"""The JSON writer (document.document_text) writes exactly what the encoder makes of document.document.
 
 The writer builds each document from the JSON of its units, labels and notes as first written
 (a batch writes the same texts on every line); the dict form is the reference it must match,
@@ -17,7 +17,7 @@ import taucli
 from taucli.options import COMMANDS
 from taucli.answering.pipeline import solve
 from taucli.writing.report import Report, Table, Value
-from taucli.writing.render import STRICT_JSON, document, document_text
+from taucli.writing.document import STRICT_JSON, document, document_text
 
 from test_table import WORKING
 

@@ -8,7 +8,8 @@ import sys
 import pytest
 
 from taucli.writing.report import Report, Value, fmt, pretty_unit
-from taucli.writing.render import document, finite_only
+from taucli.writing.document import document
+from taucli.writing.render import finite_only
 
 HEAVY = ("typer", "rich", "pint")
 

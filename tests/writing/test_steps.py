@@ -21,7 +21,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from conftest import documents_text
-from taucli.writing.render import shown
+from taucli.writing.human import shown
 from taucli.writing.report import pretty_unit
 from test_table import WORKING
 
