@@ -6,7 +6,10 @@ The wheel of spin-down (m = I, v = ω, F a torque) and the string of the Atwood 
 effective mass, v its speed, F a force) are both this. Friction is physics, not sgn(v): the body
 stops at t_stop and stays stopped while |F| does not exceed the static friction; only a larger
 F starts it again, the other way. Each stretch in one direction is a Phase with v ≥ 0 in its own
-frame, evolved by the closed form (closed_forms.py) or by a stepper (numerics.py).
+frame, evolved by the closed form (closed_forms.py) or by a stepper (numerics.steppers).
+
+Kept whole: a Phase, the Evolver that carries it (closed form or stepper) and the Motion strung
+from phases are one model read top to bottom; apart, each module would need the other.
 """
 
 from __future__ import annotations

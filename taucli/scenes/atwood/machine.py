@@ -28,6 +28,7 @@ import math
 from typing import NamedTuple
 
 from taucli.core.errors import InputError
+from taucli.numerics.exact import product_difference, product_terms
 from taucli.options.atwood import COMMAND as TABLE
 from taucli.writing.report import DeferredSteps, Report, deferred, fmt, quantity_text
 from taucli.scenes.atwood.pulley import DISC_NOTE, Pulley, check_pulley
@@ -274,54 +275,19 @@ def _drive(machine: Machine, f: Forces) -> float:
         return (machine.m1 - machine.m2) * g if machine.side2.hanging else machine.m1 * g - machine.m2 * g * machine.side2.sin_angle
     if machine.kind == STEPPED:
         r1, r2 = machine.radii
-        return g * _product_difference(machine.m1, r1, machine.m2, r2) / r1
+        return g * product_difference(machine.m1, r1, machine.m2, r2) / r1
     if machine.radii is not None:  # in torques, over r1: g (m1 r1 − m2 r2)/r1 as the stepped pulley's balance is written
         r1, r2 = machine.radii
         sign = -1.0 if machine.same_side else 1.0
         torque = math.fsum([
-            *_exact(machine.m1 * machine.side1.sin_angle, r1, g), *_exact(-sign * machine.m2 * machine.side2.sin_angle, r2, g),
+            *product_terms(machine.m1 * machine.side1.sin_angle, r1, g), *product_terms(-sign * machine.m2 * machine.side2.sin_angle, r2, g),
             machine.pull1[0] * r1, -sign * machine.pull2[0] * r2, -machine.torque,
         ])
         return torque / r1
     return math.fsum([
-        *_exact(machine.m1, g * machine.side1.sin_angle), *_exact(-f.rho * machine.m2, g * machine.side2.sin_angle),
+        *product_terms(machine.m1, g * machine.side1.sin_angle), *product_terms(-f.rho * machine.m2, g * machine.side2.sin_angle),
         machine.pull1[0], -f.rho * machine.pull2[0], -f.drive_force,
     ])
-
-
-def _exact(a: float, b: float, c: float = 1.0) -> tuple[float, ...]:
-    """a·b (·c) as floats that sum to it exactly: each product and its rounding error (Dekker's
-    two-product by Veltkamp's split; the third factor, g, multiplies both)."""
-    first = a * b
-    if not math.isfinite(first) or max(abs(a), abs(b)) > 1e150:
-        return (first * c,)
-    error = _product_error(a, b, first)
-    if c == 1.0:
-        return first, error
-    return (*_exact(first, c), *_exact(error, c))
-
-
-def _product_difference(a: float, b: float, c: float, d: float) -> float:
-    """a·b − c·d to within an ulp or so, also where the two products nearly cancel (a stepped
-    pulley near balance, m1 r1 ≈ m2 r2): each product's rounding error is found exactly and added
-    back after the difference."""
-    first, second = a * b, c * d
-    if not (math.isfinite(first) and math.isfinite(second)) or max(abs(a), abs(b), abs(c), abs(d)) > 1e150:
-        return first - second  # the split would overflow; nothing near cancellation is that large here
-    return (first - second) + (_product_error(a, b, first) - _product_error(c, d, second))
-
-
-def _product_error(a: float, b: float, product: float) -> float:
-    """The exact a·b − fl(a·b)."""
-    a_high, a_low = _split(a)
-    b_high, b_low = _split(b)
-    return ((a_high * b_high - product) + a_high * b_low + a_low * b_high) + a_low * b_low
-
-
-def _split(x: float) -> tuple[float, float]:
-    c = 134217729.0 * x  # 2^27 + 1
-    high = c - (c - x)
-    return high, x - high
 
 
 def tensions(f: Forces, kinetic: tuple[float, float], direction: int, machine: Machine | None = None,
