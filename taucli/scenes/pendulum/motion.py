@@ -67,6 +67,9 @@ def solve(model, exact, method: str, angle: float | None, time: float | None, no
             period = model.period
         t_bottom = model.time_to(0.0)
         t_angle = model.time_to(angle) if angle is not None else None
+        if t_angle is None and angle is not None and isinstance(model, Stepped) and model.swing.speed_at(angle) is not None:
+            notes.append(f"t_angle: the energy reaches θ = {fmt(angle)} rad, but {method} (whose swing turns within its tolerance of it) "
+                         "did not: the angle is a hair short of a turning point, where the time hangs on the last digits; --method exact gives it")
         state = model.state(time) if time is not None else None
     except numerics.TooManySteps:
         limit = numerics.MAX_ANGLE_STEPS[method]

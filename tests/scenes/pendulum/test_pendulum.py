@@ -360,15 +360,20 @@ def test_the_bench_charts_every_pendulum_method():
     st.floats(0.0, 5.0).filter(lambda x: x == 0 or x > 1e-6),
 )
 @example(0.0, 0.0078125, 0.0078125, 0.0)  # #40: an angle 2.5e-6 short of the turning point, passed and left within one rk45 step (t_angle was null)
+@example(0.0, 1e-05, 1e-05, 0.0)  # #40: an angle 6e-12 short of the turning point, within rk45's tolerance of it: null, saying why
 def test_the_exact_motion_and_rk45_agree_swinging_or_going_over(theta0, omega0, angle, t):
     """Times to the bottom and to an angle, the period, θ and ω at a time: the elliptic closed
     forms against rk45 at rtol 1e-12, events located, over the top and back (θ ≡ θ + 2π there)."""
     common = dict(shape="point", radius=1, mass=1, g=1.0, angle0=theta0, omega0=omega0)
     exact = values(taucli.pendulum(**common, angle=angle))
-    stepped = values(taucli.pendulum(**common, angle=angle, method="rk45", rtol=1e-12))
+    stepped_report = taucli.pendulum(**common, angle=angle, method="rk45", rtol=1e-12)
+    stepped = values(stepped_report)
     for key in ("t_bottom", "t_angle", "period"):
         if exact[key] is None:
             assert stepped[key] is None, key
+        elif key == "t_angle" and stepped[key] is None and exact.get("amplitude") and abs(abs(angle) - exact["amplitude"]) <= 1e-9 * exact["amplitude"]:
+            # within rk45's tolerance of the turning point the stepper may peak short of the angle: null, saying why
+            assert any("a hair short of a turning point" in note for note in stepped_report.notes), stepped_report.notes
         else:
             assert stepped[key] == pytest.approx(exact[key], rel=1e-7, abs=1e-9), key
     exact = values(taucli.pendulum(**common, time=t))
