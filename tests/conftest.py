@@ -97,3 +97,18 @@ def assert_usage_error(result: Run, *fragments: str) -> None:
     assert "Traceback" not in result.err
     for fragment in fragments:
         assert fragment in lines[0], (fragment, lines[0])
+
+
+def modules_after_run(argv: list[str], env: dict[str, str]) -> set[str]:
+    """The modules loaded by a whole run of ``taucli ARGV``, through its console entry point."""
+    code = (
+        "import io, contextlib, runpy, sys\n"
+        f"sys.argv = ['taucli', *{argv!r}]\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        "    try:\n        runpy.run_module('taucli', run_name='__main__')\n"
+        "    except SystemExit as done:\n        assert not done.code, done.code\n"
+        "print(' '.join(sys.modules))"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, **env})
+    assert done.returncode == 0, done.stderr
+    return set(done.stdout.split())

@@ -20,21 +20,6 @@ from conftest import run_taucli
 ATWOOD = ("atwood", "--m1", "4kg", "--m2", "1kg", "--pulley-mass", "2kg")
 
 
-def _modules_after(argv: list[str], env: dict[str, str]) -> set[str]:
-    """The modules loaded by a whole run of ``taucli ARGV``, through its console entry point."""
-    code = (
-        "import io, contextlib, runpy, sys\n"
-        f"sys.argv = ['taucli', *{argv!r}]\n"
-        "with contextlib.redirect_stdout(io.StringIO()):\n"
-        "    try:\n        runpy.run_module('taucli', run_name='__main__')\n"
-        "    except SystemExit as done:\n        assert not done.code, done.code\n"
-        "print(' '.join(sys.modules))"
-    )
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, **env})
-    assert done.returncode == 0, done.stderr
-    return set(done.stdout.split())
-
-
 def _top(modules: set[str]) -> set[str]:
     return {name.split(".")[0] for name in modules}
 
@@ -42,25 +27,25 @@ def _top(modules: set[str]) -> set[str]:
 @pytest.mark.parametrize("argv", [["--help"], ["atwood", "--help"], ["inertia", "-h"], ["spin-down", "--omega0", "3rad/s", "--help"]])
 def test_help_is_written_from_the_tables_without_typer(argv, tmp_path):
     """No typer, click, pint, rich or pydantic, no solver, and nothing kept in a cache."""
-    loaded = _modules_after(argv, {"TAUCLI_CACHE_DIR": str(tmp_path)})
+    loaded = modules_after_run(argv, {"TAUCLI_CACHE_DIR": str(tmp_path)})
     assert not _top(loaded) & {"typer", "click", "pint", "rich", "pydantic"}
     assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.numerics.steppers", "taucli.front.cli"))}
     assert not list(tmp_path.iterdir())
 
 
 def test_version_imports_no_solver_no_units_no_rich_no_pydantic(tmp_path):
-    loaded = _modules_after(["--version"], {"TAUCLI_CACHE_DIR": str(tmp_path)})
+    loaded = modules_after_run(["--version"], {"TAUCLI_CACHE_DIR": str(tmp_path)})
     assert not _top(loaded) & {"pint", "rich", "pydantic"}
     assert not {name for name in loaded if name.startswith(("taucli.scenes", "taucli.numerics.steppers"))}
 
 
 def test_a_repeat_computation_imports_neither_pint_nor_pydantic(tmp_path):
     env = {"TAUCLI_CACHE_DIR": str(tmp_path)}
-    first = _modules_after([*ATWOOD, "--get", "a"], env)
+    first = modules_after_run([*ATWOOD, "--get", "a"], env)
     assert not _top(first) & {"pint", "rich", "pydantic"}  # common units: shipped with taucli (#36 item 8)
     rare = ["atwood", "--m1", "4kg", "--m2", "14000 grain", "--get", "a"]
-    assert "pint" in _top(_modules_after(rare, env))  # a unit not shipped: pint is asked, and remembered
-    again = _modules_after(rare, env)
+    assert "pint" in _top(modules_after_run(rare, env))  # a unit not shipped: pint is asked, and remembered
+    again = modules_after_run(rare, env)
     assert not _top(again) & {"pint", "rich", "pydantic"}
 
 

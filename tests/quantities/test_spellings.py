@@ -398,14 +398,14 @@ def test_a_respelled_unit_shares_the_cache_entry_of_its_pint_spelling(tmp_path, 
 
 
 def test_a_repeat_run_with_engineering_spellings_imports_no_pint(tmp_path):
-    from test_startup import _modules_after
+    from conftest import modules_after_run
 
     env = {"TAUCLI_CACHE_DIR": str(tmp_path)}
     argv = ["spin-down", "--inertia", "2 kgm^2", "--omega0", "3000 RPM", "--torque", "2Nm", "--get", "alpha0"]
-    assert "pint" not in {name.split(".")[0] for name in _modules_after(argv, env)}  # respelled, then shipped (#36)
+    assert "pint" not in {name.split(".")[0] for name in modules_after_run(argv, env)}  # respelled, then shipped (#36)
     rare = ["spin-down", "--inertia", "2 kgm^2", "--omega0", "180000 rev/h", "--torque", "2 N-m", "--get", "alpha0"]
-    assert "pint" in {name.split(".")[0] for name in _modules_after(rare, env)}  # rev/h is not shipped
-    assert "pint" not in {name.split(".")[0] for name in _modules_after(rare, env)}
+    assert "pint" in {name.split(".")[0] for name in modules_after_run(rare, env)}  # rev/h is not shipped
+    assert "pint" not in {name.split(".")[0] for name in modules_after_run(rare, env)}
 
 
 # Bounds: textbook astronomy fits, typed or computed, and no product a solver forms overflows.
