@@ -15,7 +15,7 @@ import sys
 
 import pytest
 
-from conftest import run_taucli
+from conftest import modules_after_run, run_taucli
 
 ATWOOD = ("atwood", "--m1", "4kg", "--m2", "1kg", "--pulley-mass", "2kg")
 
