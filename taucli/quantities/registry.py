@@ -8,7 +8,8 @@ angular velocity or acceleration, a 1/time with no angle in it is revolutions wh
 and an angular acceleration need their unit, 0 apart; a sum may not add a unit with an angle to
 one without; a weight for a mass is read in newtons (taucli.quantities.units divides by g), a mass for a force
 is its weight at standard gravity; a prefix's name glued to a unit's symbol (``kilos``: pint's
-kilosecond) is no unit.
+kilosecond) is no unit. Hz inside any unit with an angle, a power as torque times speed, and the
+power of the angle each kind's unit must hold are taucli.quantities.meanings' rule, applied here.
 """
 
 from __future__ import annotations
