@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 import re
 
+from taucli.quantities import meanings
 from taucli.quantities import spellings
 from taucli.core.errors import InputError
 from taucli.quantities.kinds import Kind, article
@@ -125,7 +126,8 @@ def _an_exponent(found, significant, place: int) -> bool:
     back = place - 1
     if found[significant[back]].text in ("-", "+") and back >= 1:
         back -= 1
-    return found[significant[back]].text in ("**", "^")
+    raised = found[significant[back - 1]].text if back >= 1 else ""  # pi**2 is a number's power, not a unit's
+    return found[significant[back]].text in ("**", "^") and raised not in meanings.CONSTANTS
 
 
 def grouped(cleaned: str) -> tuple[str, str | None]:
@@ -138,7 +140,7 @@ def grouped(cleaned: str) -> tuple[str, str | None]:
         if found[i].text != "/" or place == 0:
             continue
         before, number, unit = found[significant[place - 1]], found[significant[place + 1]], found[significant[place + 2]]
-        if not (before.kind == "name" or before.text == ")" or _an_exponent(found, significant, place - 1)) or number.kind != "number" or unit.kind != "name":
+        if not (before.kind == "name" and before.text not in meanings.CONSTANTS or before.text == ")" or _an_exponent(found, significant, place - 1)) or number.kind != "number" or unit.kind != "name":
             continue
         end = significant[place + 2]
         rest = significant[place + 3 :]

@@ -71,6 +71,12 @@ STANDARD_GRAVITY = 9.80665  # m/s^2: what lbf and kgf are defined with
 ANGULAR = frozenset({"angular velocity", "angular acceleration"})
 
 
+# The power of the radian in each kind's unit where it has one (rad/s: 1, N*m/(rad/s): -1): the angle
+# a unit of that kind must name, or leave out as SI does (N*m*s for a viscous coefficient).
+ANGLE_POWERS = {"angle": 1, "angular velocity": 1, "angular acceleration": 1, "viscous coefficient": -1, "drag coefficient": -2,
+                "torsion constant": -1, "lead": -1}
+
+
 FORCES = frozenset({"force", "torque", "viscous coefficient", "drag coefficient", "moment of inertia"})  # a mass here is its weight (lb*in*s^2: lbf)
 
 
@@ -94,3 +100,30 @@ def check_bounds(value: float, kind_name: str, option: str, *, sign: str = "nonn
 
 def _power_of_ten(x: float) -> str:
     return f"{x:.0e}".replace("e+", "e").replace("e0", "e").replace("e-0", "e-")
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+# Kinds whose bare number is refused, 0 aside: it could be degrees or radians, rpm or rad/s.
+NEEDS_ITS_UNIT = frozenset({"angle", *ANGULAR})
+
+
+def bare_number(option: str, text: str, kind: Kind, value: float) -> InputError:
+    """The refusal of a bare number for an angle, an angular velocity or an angular acceleration."""
+    if kind.name == "angle":
+        return bare_angle(option, text)
+    number = text.strip() if _is_number(text.strip()) else f"{value:.6g}"
+    if kind.name == "angular acceleration":
+        return InputError(option, "expected an angular acceleration with its unit", example=f"{number}rpm/s or '{number} rad/s^2'",
+                          got=f"{text!r}: a number alone could be rpm/s or rad/s²")
+    return InputError(option, "expected an angular velocity with its unit", example=f"{number}rpm or {number}rad/s", got=f"{text!r}: a number alone could be rpm or rad/s")
+
+
+def bare_angle(option: str, text: str) -> InputError:
+    return InputError(option, "expected an angle with its unit", example="60deg or 1.05rad", got=f"{text!r}: a number alone could be degrees or radians")

@@ -8,7 +8,8 @@ angular velocity or acceleration, a 1/time with no angle in it is revolutions wh
 and an angular acceleration need their unit, 0 apart; a sum may not add a unit with an angle to
 one without; a weight for a mass is read in newtons (taucli.quantities.units divides by g), a mass for a force
 is its weight at standard gravity; a prefix's name glued to a unit's symbol (``kilos``: pint's
-kilosecond) is no unit.
+kilosecond) is no unit. Hz inside any unit with an angle, a power as torque times speed, and the
+power of the angle each kind's unit must hold are taucli.quantities.meanings' rule, applied here.
 """
 
 from __future__ import annotations
@@ -19,9 +20,12 @@ import re
 from functools import lru_cache
 
 from taucli.quantities import cache
+from taucli.quantities import meanings
 from taucli.quantities import spellings
 from taucli.core.errors import InputError
-from taucli.quantities.kinds import ANGULAR, FORCES, KINDS, STANDARD_GRAVITY, Kind, article
+from taucli.quantities.kinds import (  # noqa: F401 - NEEDS_ITS_UNIT, bare_number: read from here by units
+    ANGLE_POWERS, ANGULAR, FORCES, KINDS, NEEDS_ITS_UNIT, STANDARD_GRAVITY, Kind, article, bare_angle, bare_number,
+)
 from taucli.quantities.screen import MAX_DIGITS, MAX_TEXT_LENGTH, screen
 
 
@@ -34,7 +38,7 @@ TWO_PI = 2.0 * math.pi
 # over a length, ω = v/R, in radians.
 AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS = 0, 1, 2, 3, 4
 WEIGHT_INERTIA = 5  # lb*ft^2 for a moment of inertia: a mass-pound, which is also the number of a WR² (weight-inertia)
-HOWS = (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS, WEIGHT_INERTIA)
+HOWS = (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS, WEIGHT_INERTIA, *meanings.HOWS)  # and the notes of taucli.quantities.meanings
 _POUND_MASSES = frozenset({"pound", "ounce"})
 
 
@@ -76,6 +80,7 @@ def registry():
             cache.seal(kept)
     ureg.define("rev = revolution")
     ureg.define("rps = revolution / second")
+    ureg.define("@alias metric_horsepower = PS")  # Pferdestärke, not pint's petasiemens (taucli.quantities.meanings)
     ureg.define("taucli_angle = [taucli_angle]")  # to tell a sum of angled and angle-free units (_mixes_angles)
     return ureg
 
@@ -94,6 +99,10 @@ def _pint_quantity(cleaned: str, option: str, kind: Kind, shown: str):
 
     ureg = registry()
     for token in spellings.tokens(cleaned):
+        if token.kind == "name" and token.text in meanings.AMBIGUOUS_TONS:
+            number = re.match(rf"\s*({_NUMBER})", shown)
+            why, fix = meanings.ton_refusal(token.text, number[1] if number else "1", kind.name in FORCES)
+            raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: {why}", hint=fix)
         if token.kind == "name" and (mixed := _prefix_name_on_symbol(token.text)) is not None:
             meant = _unmixed(mixed, kind)
             raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: unknown unit {token.text!r}",
@@ -254,10 +263,15 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     import pint  # deferred: pint, as in registry()
 
     ureg = registry()
+    revolutions = False
+    if kind.name in ANGLE_POWERS or kind.name == "dimensionless":  # Hz is rev/s wherever it stands (taucli.quantities.meanings)
+        cleaned, revolutions = meanings.with_revolutions(ureg, cleaned)
     q = _pint_quantity(cleaned, option, kind, text)
     if kind.name in ANGULAR | {"angle", "dimensionless", "lead"} and _mixes_angles(cleaned):
         fix = {"angle": "'30 deg + 1 deg'", "dimensionless": "no angle", "lead": "'5 mm + 1 mm'"}.get(kind.name, "'1 rpm + 60 rpm'")
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: it adds a unit with an angle to one without", hint=f"give every term the same kind of unit: {fix}")
+    if list(q.unit_items()) and all(name in meanings.CONSTANTS for name, _ in q.unit_items()):
+        q = ureg.Quantity(float(q.to("").magnitude))  # 2 pi: a number
     if not list(q.unit_items()):  # a number, or numbers with operators: the kind's SI unit
         try:
             value = float(q.magnitude)
@@ -287,18 +301,58 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     if kind.name == "moment of inertia" and how == AS_GIVEN and _POUND_MASSES & {name for name, _ in q.unit_items()}:
         how = WEIGHT_INERTIA  # lb*ft^2, oz*in^2: read as mass × length², which is a WR²'s number too (a note says so)
     radians = _radians(q.units)
-    if kind.name in ANGULAR and radians == 0:  # 1/time for a rotation: revolutions, v/R in radians, or ambiguous
-        how = _per_time(cleaned, q, text, option, kind)
-        value *= TWO_PI if how == REVOLUTIONS else 1.0
+    if kind.name in _RATES or kind.name == "dimensionless" and radians != 0:
+        value, how = _angled(cleaned, q, text, option, kind, value, how, revolutions)
     elif kind.name == "angle" and radians == 0 and value != 0:
         raise bare_angle(option, text)
+    elif kind.name == "angle" and radians not in (0, 1):
+        raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: its unit has {meanings.angle_power_words(radians)}; an angle has it once")
     elif kind.name == "lead" and radians != -1:  # pint reads rev as 2π: m/rev is m/(2π) to it
         if radians != 0:
             raise InputError(option, "expected a lead, a length per revolution", example=kind.example, got=f"{text!r}, which is not a length per turn")
         value /= TWO_PI  # a length alone is the advance per revolution
-    elif kind.name == "dimensionless" and radians != 0:
-        raise InputError(option, "expected a plain number", example=kind.example, got=f"{text!r}, which is an angle")
+    if how == AS_GIVEN:
+        how = meanings.named(ureg, q, kind.name) or AS_GIVEN
     return value, how
+
+
+_RATES = ANGULAR | {"viscous coefficient", "drag coefficient", "torsion constant"}
+
+
+def _angled(cleaned: str, q, text: str, option: str, kind: Kind, value: float, how: int, revolutions: bool) -> tuple[float, int]:
+    """The value and how it was read, for a kind with an angle in its unit (or a plain number
+    whose unit holds one), by the rule of taucli.quantities.meanings: the unit holds the kind's
+    power of the angle, a power counting as a torque times an angular velocity in rad/s; or none,
+    where SI leaves the radian out (N*m*s) or registry._per_time decides (a 1/time alone)."""
+    wanted = ANGLE_POWERS.get(kind.name, 0)
+    radians = _radians(q.units)
+    powers = meanings.power_units(registry(), q)
+    held = radians + powers
+    if held == wanted:
+        if powers and radians != wanted or meanings.names_a_power(registry(), cleaned):  # (in a sum, q has the first term's unit)
+            return value, meanings.POWER_AS_TORQUE_SPEED
+        return value, REVOLUTIONS if revolutions else how
+    if kind.name == "dimensionless":
+        raise InputError(option, "expected a plain number", example=kind.example, got=f"{text!r}, which is an angle")
+    if held == 0 and kind.name in ANGULAR:  # 1/time for a rotation: revolutions, v/R in radians, or ambiguous
+        how = _per_time(cleaned, q, text, option, kind)
+        return value * (TWO_PI if how == REVOLUTIONS else 1.0), how
+    if held == 0:  # N*m*s, N*m: SI's coherent unit, the radian left out
+        times = meanings.other_times(q)
+        if times == ["minute"] and dict(q.unit_items())["minute"] * wanted < 0:  # N*m/min^-1: min^-1 is rev/min, as for ω
+            return value * TWO_PI**wanted, REVOLUTIONS
+        if times:
+            raise _ambiguous_in(times[0], text, option, kind)
+        return value, how
+    raise InputError(option, expected(kind), example=kind.example,
+                     got=f"{text!r}: its unit has {meanings.angle_power_words(held)}; {article(kind.name)} has {meanings.angle_power_words(wanted)}")
+
+
+def _ambiguous_in(time: str, text: str, option: str, kind: Kind) -> InputError:
+    """The refusal of a time other than the second in a coefficient's unit with no angle in it
+    (``N*m*min``): per radian or per revolution per minute."""
+    number = re.match(rf"\s*({_NUMBER})", screen(text, option, kind))
+    return meanings.ambiguous_time(registry().get_symbol(time), time, number[1] if number else "1", text, option, kind)
 
 
 def _radians(unit) -> int:
@@ -312,7 +366,8 @@ def _mixes_angles(cleaned: str) -> bool:
     import pint  # deferred: pint, as in registry()
 
     ureg = registry()
-    marked = [f"({t.text}*taucli_angle)" if t.kind == "name" and _a_unit(t.text) and _radians(t.text) else t.text for t in spellings.tokens(cleaned)]
+    marked = [f"({t.text}*taucli_angle)" if t.kind == "name" and _a_unit(t.text) and (_radians(t.text) or meanings.power_units(ureg, ureg.Quantity(1, t.text)))
+              else t.text for t in spellings.tokens(cleaned)]  # a power is a torque times an angular velocity (P = τω)
     try:
         ureg.Quantity("".join(marked))
     except pint.DimensionalityError:
@@ -396,30 +451,3 @@ def _ambiguous(cleaned: str, q, text: str, option: str, kind: Kind) -> Ambiguous
     why = f"{shown} could be radians or revolutions per {per}{' squared' if squared else ''}"
     example = f"'{count} rad/{symbol}^2' or '{count} rev/{symbol}^2'" if squared else f"{count}rad/{symbol} or {count}rev/{symbol}"
     return Ambiguous(option, kind, got=repr(text), example=example, why=why, per=symbol)
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
-
-
-# Kinds whose bare number is refused, 0 aside: it could be degrees or radians, rpm or rad/s.
-NEEDS_ITS_UNIT = frozenset({"angle", *ANGULAR})
-
-
-def bare_number(option: str, text: str, kind: Kind, value: float) -> InputError:
-    """The refusal of a bare number for an angle, an angular velocity or an angular acceleration."""
-    if kind.name == "angle":
-        return bare_angle(option, text)
-    number = text.strip() if _is_number(text.strip()) else f"{value:.6g}"
-    if kind.name == "angular acceleration":
-        return InputError(option, "expected an angular acceleration with its unit", example=f"{number}rpm/s or '{number} rad/s^2'",
-                          got=f"{text!r}: a number alone could be rpm/s or rad/s²")
-    return InputError(option, "expected an angular velocity with its unit", example=f"{number}rpm or {number}rad/s", got=f"{text!r}: a number alone could be rpm or rad/s")
-
-
-def bare_angle(option: str, text: str) -> InputError:
-    return InputError(option, "expected an angle with its unit", example="60deg or 1.05rad", got=f"{text!r}: a number alone could be degrees or radians")

@@ -52,18 +52,34 @@ def _quoted(text: str) -> str:
 
 _NORMALISE = [
     ("\u00a0", " "), ("\u202f", " "), ("·", "*"), ("⋅", "*"), ("×", "*"), ("∙", "*"),
-    ("−", "-"), ("–", "-"), ("²", "**2"), ("³", "**3"), ("⁻¹", "**-1"), ("⁻²", "**-2"),
+    ("−", "-"), ("–", "-"), ("π", " pi "), ("%", " percent"),
     ("°", " deg"), ("÷", "/"), ("½", " 1/2"), ("⅓", " 1/3"), ("⅔", " 2/3"), ("¼", " 1/4"), ("¾", " 3/4"),
 ]  # fmt: skip
 
 
+_SUPERSCRIPT = re.compile(r"([⁻⁺]?)([⁰¹²³⁴⁵⁶⁷⁸⁹]+)")  # m·s⁻², kg·m², 10⁻³
+
+
+_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
+
+
+# A ratio as a book or a gearbox's plate writes one, "10:1": the first number over the second.
+_RATIO = re.compile(rf"\s*({_UNSIGNED})\s*:\s*({_UNSIGNED})\s*")
+
+
 def screen(text: str, option: str, kind: Kind) -> str:
     """Normalise typography and spellings; refuse text that is unreadable or would be slow to evaluate."""
-    cleaned = text.strip()
+    cleaned = _SUPERSCRIPT.sub(lambda m: "**" + m[1].replace("⁻", "-").replace("⁺", "") + m[2].translate(_DIGITS), text.strip())
     for old, new in _NORMALISE:
         cleaned = cleaned.replace(old, new)
     cleaned = cleaned.strip()
     example = kind.example
+    ratio = _RATIO.fullmatch(cleaned) if kind.name == "dimensionless" else None
+    if ratio is not None:  # 10:1 is 10; 1:10 could be a reducer's ratio written the other way round
+        if float(ratio[1]) < float(ratio[2]):
+            raise InputError(option, "expected a plain number", example=f"{ratio[2]}:{ratio[1]} or {float(ratio[1]) / float(ratio[2]):.6g}",
+                             got=f"{text!r}: a ratio below 1:1 could be meant either way round")
+        cleaned = f"{ratio[1]}/{ratio[2]}"
 
     def refuse(why: str) -> InputError:
         return InputError(option, f"expected {article(kind.name)}", example=example, got=f"{text!r}: {why}")

@@ -27,9 +27,10 @@ from typing import NamedTuple
 
 from taucli.quantities import cache
 from taucli.quantities import expressions
+from taucli.quantities import meanings
 from taucli.quantities import spellings
 from taucli.core.errors import InputError
-from taucli.quantities.kinds import KINDS, STANDARD_GRAVITY, Kind, article, check_bounds
+from taucli.quantities.kinds import ANGULAR, KINDS, STANDARD_GRAVITY, Kind, article, check_bounds
 from taucli.quantities.registry import (
     AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, WEIGHT_INERTIA, Ambiguous, bare_number, expected, from_pint, number_times_unit,
 )
@@ -183,6 +184,8 @@ def _read(text: str, option: str, kind: Kind) -> tuple[Reading, float | None, fl
         if beside is not None:
             raise _side_by_side(beside, text, option, kind)
         split = number_times_unit(cleaned)
+        if split is not None and split[1] and all(t.kind != "name" or t.text in meanings.CONSTANTS for t in spellings.tokens(split[1])):
+            split = None  # "2 pi": a number, read whole
         if split is None:
             return Reading(*from_pint(cleaned, text, option, kind), None), None, None
     number, unit = split
@@ -258,7 +261,9 @@ def _note(option: str, text: str, reading: Reading, value: float, gravity: float
     said = list(reading.said)
     if reading.mixed:
         said.append(f"{reading.mixed} read as the mixed number {reading.mixed.replace(' ', ' + ')}")
-    if reading.how == REVOLUTIONS:
+    if reading.how == REVOLUTIONS and (kind.name not in ANGULAR or reading.unit is None and "hz" in text.lower()):  # Hz inside a unit
+        said.append(meanings.revolutions_note(reading.unit))
+    elif reading.how == REVOLUTIONS:
         squared = kind.name == "angular acceleration"
         said.append(f"{spellings.revolutions(reading.unit, squared=squared)} ({'1 rev = 2π rad' if squared else 'ω = 2πn'})")
     elif reading.how == WEIGHT:
@@ -270,6 +275,10 @@ def _note(option: str, text: str, reading: Reading, value: float, gravity: float
         said.append(_WR2_NOTE)
     elif reading.how == OVER_RADIUS:
         said.append(f"α = a_t/R = {value:.6g} rad/s²" if kind.name == "angular acceleration" else f"ω = v/R = {value:.6g} rad/s")
+    elif reading.how == meanings.POWER_AS_TORQUE_SPEED:
+        said.append(f"{meanings.NOTES[reading.how]}; read as {value:.6g} {kind.si_unit.replace('**', '^')}".rstrip())
+    elif reading.how in meanings.NOTES:
+        said.append(meanings.NOTES[reading.how])
     return f"{option} {text}: " + "; ".join(said) if said else None
 
 
@@ -307,7 +316,9 @@ def converted(value: float, si_unit: str, target: str, option: str) -> Parsed:
     if how == WEIGHT:  # a mass in newtons would depend on g
         raise refuse()
     note = None
-    if how == REVOLUTIONS:
+    if how == REVOLUTIONS and kind.name not in ANGULAR:
+        note = f"{option} {target.strip()}: {meanings.revolutions_note(split[1])}"
+    elif how == REVOLUTIONS:
         note = f"{option} {target.strip()}: {spellings.revolutions(split[1], squared=kind.name == 'angular acceleration')} (n = ω/2π)"
     elif how == MASS_AS_WEIGHT:
         note = f"{option} {target.strip()}: {spellings.as_force(split[1])}"
@@ -315,4 +326,6 @@ def converted(value: float, si_unit: str, target: str, option: str) -> Parsed:
         note = f"{option} {target.strip()}: {_WR2_NOTE}"
     elif how == OVER_RADIUS:
         note = f"{option} {target.strip()}: a speed over a length, in radians ({'α = a_t/R' if kind.name == 'angular acceleration' else 'ω = v/R'})"
+    elif how in meanings.NOTES:
+        note = f"{option} {target.strip()}: {meanings.NOTES[how]}"
     return Parsed(value / factor, note)

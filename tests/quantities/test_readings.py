@@ -76,7 +76,7 @@ def test_the_refusal_names_examples_that_read_as_typed():
         ("5 kHz", "angular velocity", 10000 * PI, "kHz read as 1000 revolutions per second"),  # not "per unit time"
         ("2 mHz", "angular velocity", 0.004 * PI, "mHz read as 1/1000 revolutions per second"),
         ("60 1/(min*s)", "angular acceleration", 2 * PI, "revolutions per unit time"),
-        ("(50 Hz)*(0.1 m)/(0.2 m)", "angular velocity", 50 * PI, "revolutions per unit time"),  # a gear's ratio of a frequency
+        ("(50 Hz)*(0.1 m)/(0.2 m)", "angular velocity", 50 * PI, "with Hz as revolutions per second"),  # a gear's ratio of a frequency
     ],
 )
 def test_a_reciprocal_time_that_says_which_it_is_is_read_with_its_note(text, kind, si, note):

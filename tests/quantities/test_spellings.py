@@ -69,7 +69,7 @@ SPELLINGS = {
     "torque": (LBF_FT, [
         "1 lbf*ft", "1 lbf·ft", "1 lbf-ft", "1 ft-lbf", "1 ft*lbf", "12 lbf*in", "12 in-lbf", f"{LBF_FT!r} N*m", f"{LBF_FT!r} Nm",
         f"{LBF_FT!r}Nm", f"{LBF_FT!r} N-m", f"{LBF_FT!r} N.m", f"{LBF_FT!r} N·m", f"{LBF_FT * 1000!r} mN*m", f"{LBF_FT / 1000!r} kNm",
-        f"{LBF_FT!r}", f"{LBF_FT!r} J",
+        f"{LBF_FT!r}", (f"{LBF_FT!r} J", "a joule is an energy; a torque is N·m"),
         ("1 lb*ft", "lb read as pound-force, lbf*ft"), ("1 lb-ft", "pound-force"), ("1 ft*lb", "ft*lbf"), ("1 ft-lb", "pound-force"),
         ("1 lbft", "pound-force"), ("1 ftlb", "pound-force"), ("12 in-lb", "in*lbf"), ("192 oz-in", "oz read as ounce-force, ozf*in"),
     ], ("spin-down", "--inertia", "1"), "--torque"),
@@ -102,10 +102,10 @@ SPELLINGS = {
     "dimensionless": (0.25, ["0.25", ".25", "0.250", "2.5e-1", "1/4", "25/100", "0.25 dimensionless", "0.5 * 0.5"],
                       ("atwood", "--m1", "4kg", "--m2", "1kg", "--incline", "30deg"), "--mu-k"),
     # power (#18): 1 hp (mechanical) = 550 ft·lbf/s = 745.69987158227 W
-    "power": (1500.0, ["1500 W", "1500W", "1.5 kW", "1.5kW", "0.0015 MW", "1500 J/s", "1500 N*m/s", f"{1500 / 745.69987158227022!r} hp", "1500"],
+    "power": (1500.0, ["1500 W", "1500W", "1.5 kW", "1.5kW", "0.0015 MW", "1500 J/s", "1500 N*m/s", (f"{1500 / 745.69987158227022!r} hp", "hp read as the mechanical horsepower"), (f"{1500 / 735.49875!r} PS", "PS read as the metric horsepower"), "1500"],
               ("spin-down", "--inertia", "2", "--until-omega", "100rpm"), "--power"),
     "energy": (2.5e6, ["2.5e6 J", "2.5 MJ", "2500 kJ", "2500kJ", f"{2.5e6 / 3.6e6!r} kW*h", f"{2.5e6 / 3600!r} Wh", f"{2.5e6 / 3.6e6!r} kWh",
-                       "2.5e6 N*m", "2.5e6"], ("spin-down", "--inertia", "2", "--friction", "1"), "--ke0"),
+                       ("2.5e6 N*m", "N·m is a torque; an energy is J"), "2.5e6"], ("spin-down", "--inertia", "2", "--friction", "1"), "--ke0"),
     # torsion constant (#19): 1 N·m/deg = 180/π N·m/rad
     "torsion constant": (0.5, ["0.5 N*m/rad", "0.5 Nm/rad", "0.5 N.m/rad", "500 mN*m/rad", f"{0.5 * math.pi / 180!r} N*m/deg", "0.5 J/rad",
                                "0.5 N*m", "0.5"], ("pendulum", "--inertia", "0.02", "--cm-distance", "0", "--mass", "1kg", "--angle0", "30deg"), "--torsion"),
@@ -357,10 +357,10 @@ def test_respelling_leaves_minus_signs_exponents_and_decimals_alone(text, kind, 
 
 
 @pytest.mark.parametrize(
-    "text,kind", [("1 rpm + 1 Hz", "angular velocity"), ("1 rev/min + 1 1/min", "angular velocity"), ("30 deg + 1", "angle"), ("0.5 + 30 deg", "dimensionless")]
+    "text,kind", [("1 rpm + 1 s^-1", "angular velocity"), ("1 rev/min + 1 1/min", "angular velocity"), ("30 deg + 1", "angle"), ("0.5 + 30 deg", "dimensionless")]
 )
 def test_a_sum_of_a_unit_with_an_angle_and_one_without_is_refused(text, kind):
-    """pint would add them reading the radian as 1: 1 rpm + 1 Hz as 1 rpm + 1 rad/s."""
+    """pint would add them reading the radian as 1: 1 rpm + 1 s^-1 as 1 rpm + 1 rad/s."""
     with pytest.raises(InputError, match="adds a unit with an angle to one without"):
         units.parse(text, "--x", kind)
 
@@ -368,6 +368,7 @@ def test_a_sum_of_a_unit_with_an_angle_and_one_without_is_refused(text, kind):
 def test_a_sum_of_units_of_one_sort_is_read():
     assert units.parse("1 Hz + 1 Hz", "--x", "angular velocity").value == pytest.approx(4 * PI, rel=1e-15)
     assert units.parse("1 rpm + 60 rpm", "--x", "angular velocity").value == pytest.approx(61 * RPM, rel=1e-15)
+    assert units.parse("1 rpm + 1 Hz", "--x", "angular velocity").value == pytest.approx(61 * RPM, rel=1e-15)  # Hz is rev/s here too (#42)
     assert units.parse("30 deg + 0.5 rad", "--x", "angle").value == pytest.approx(PI / 6 + 0.5, rel=1e-15)
 
 
@@ -535,3 +536,82 @@ def test_re_expressing_every_input_in_another_unit_leaves_the_si_results_unchang
             assert _same(given_value["value"], other["inputs"][name]["value"]), (name, other_args)
 
     check()
+
+
+# #42 item 2: one rule for every kind with an angle in its unit, wherever the unit stands. A rate's
+# spelling and its value in rad/s (Hz and min^-1: a rotational frequency, ω = 2πn): the same in an
+# angular velocity, per second in an angular acceleration, and divided into a viscous (τ = bω) or drag
+# (τ = kω²) coefficient. A 1/s alone is refused for a rate (rad/s or rev/s?); in a coefficient, N·m·s
+# is SI's own unit, the radian left out.
+RATES = {
+    "rad/s": 1.0, "deg/s": PI / 180, "rpm": RPM, "RPM": RPM, "rev/min": RPM, "r/min": RPM, "rps": 2 * PI, "rev/s": 2 * PI,
+    "Hz": 2 * PI, "HZ": 2 * PI, "kHz": 2000 * PI, "min^-1": RPM, "1/min": RPM, "turn/s": 2 * PI,
+}  # fmt: skip
+# kind -> (the unit with the rate in it, how a value of 1 rate unit becomes the kind's SI value)
+COMPOUNDS = {
+    "angular velocity": ("({})", lambda w: w),
+    "angular acceleration": ("({})/s", lambda w: w),
+    "viscous coefficient": ("N*m/({})", lambda w: 1 / w),
+    "drag coefficient": ("N*m/({})^2", lambda w: 1 / w**2),
+}
+# Where the unit stands: a number and its unit, grouped, in a product, a quotient, a sum.
+PLACES = ["3 {}", "(3 {})", "2*(1.5 {})", "(6 {})/2", "3*(1 {})", "1 {} + 2 {}"]
+
+
+def test_every_kind_with_an_angle_in_its_unit_has_its_compound_spellings():
+    from taucli.quantities.kinds import ANGLE_POWERS
+
+    timed = {kind for kind in ANGLE_POWERS if "s" in units.KINDS[kind].si_unit}  # those a rate goes into
+    assert timed == set(COMPOUNDS)
+
+
+@pytest.mark.parametrize("kind", sorted(COMPOUNDS))
+@pytest.mark.parametrize("rate", sorted(RATES))
+@pytest.mark.parametrize("place", PLACES)
+def test_a_rate_reads_the_same_inside_every_compound_unit_and_place(kind, rate, place):
+    unit, si = COMPOUNDS[kind]
+    text = place.format(*[unit.format(rate)] * place.count("{}"))
+    parsed = units.parse(text, "--x", kind, sign="any")
+    assert parsed.value == pytest.approx(3 * si(RATES[rate]), rel=1e-13), text
+    if rate in ("Hz", "HZ", "kHz", "min^-1", "1/min"):  # a rotational frequency read as revolutions: said
+        assert parsed.note is not None and "revolutions per" in parsed.note, (text, parsed.note)
+
+
+@pytest.mark.parametrize("kind", ["angular velocity", "angular acceleration"])
+@pytest.mark.parametrize("per_second", ["1/s", "s^-1", "s**-1"])
+@pytest.mark.parametrize("place", PLACES)
+def test_a_bare_per_second_is_refused_for_a_rate_wherever_it_stands(kind, per_second, place):
+    unit, _ = COMPOUNDS[kind]
+    text = place.format(*[unit.format(per_second)] * place.count("{}"))
+    with pytest.raises(InputError, match="could be radians or revolutions|adds a unit with an angle"):
+        units.parse(text, "--x", kind, sign="any")
+
+
+@pytest.mark.parametrize(
+    "text,kind,si",
+    [("0.01 N*m*s", "viscous coefficient", 0.01), ("0.01 N*m/(1/s)", "viscous coefficient", 0.01), ("0.001 N*m*s^2", "drag coefficient", 0.001),
+     ("0.5 N*m", "torsion constant", 0.5), ("0.5 N*m/rev", "torsion constant", 0.5 / (2 * PI)), ("0.5 N*m/grad", "torsion constant", 0.5 * 200 / PI)],
+)
+def test_si_leaves_the_radian_out_of_a_coefficient(text, kind, si):
+    assert units.parse(text, "--x", kind).value == pytest.approx(si, rel=1e-14)
+
+
+@pytest.mark.parametrize(
+    "text,kind,words",
+    [("2 rad*Hz", "angular velocity", "the angle squared"), ("0.01 N*m*s*rev", "viscous coefficient", "has per angle once"),
+     ("0.01 N*m*h", "viscous coefficient", "an hour with no angle"), ("0.001 N*m/Hz", "drag coefficient", "which is"),
+     ("2 rev*rad", "angle", "the angle squared")],
+)
+def test_a_unit_with_the_wrong_power_of_the_angle_is_refused(text, kind, words):
+    with pytest.raises(InputError, match=words):
+        units.parse(text, "--x", kind)
+
+
+def test_hz_in_a_coefficient_on_the_command_line_is_revolutions_per_second(taucli):
+    """The issue's run: b = 0.01 N·m/(rev/s) = 0.01/(2π) N·m·s, so ω(1 s) = 10·exp(−b) rad/s with I = 1."""
+    for viscous in ("0.01 N*m/Hz", "0.01 N*m/(rev/s)"):
+        done = taucli("spin-down", "--inertia", "1", "--omega0", "10rad/s", "--viscous", viscous, "--time", "1s", "--get", "omega")
+        assert float(done.out) == pytest.approx(10 * math.exp(-0.01 / (2 * PI)), rel=1e-12)
+    drag = taucli("spin-down", "--inertia", "1", "--omega0", "10rad/s", "--drag", "0.001 N*m/Hz^2", "--time", "1s", "--get", "omega")
+    k = 0.001 / (2 * PI) ** 2  # ω' = −kω²: ω = ω0/(1 + kω0 t)
+    assert float(drag.out) == pytest.approx(10 / (1 + k * 10), rel=1e-12)

@@ -41,7 +41,8 @@ SHOWN = {
     "kg·m²": ("moment of inertia", 1.0), "lbf·in·s²": ("moment of inertia", LBF * 0.0254), "ozf·in·s²": ("moment of inertia", LBF / 16 * 0.0254), "m/s²": ("acceleration", 1.0), "kg": ("mass", 1.0), "in": ("length", 0.0254), "°": ("angle", PI / 180),
     "rad/s": ("angular velocity", 1.0), "rpm": ("angular velocity", 2 * PI / 60), "rev/s": ("angular velocity", 2 * PI),
     "rad/s²": ("angular acceleration", 1.0), "rev/s²": ("angular acceleration", 2 * PI),
-    "m": ("length", 1.0), "N": ("force", 1.0),
+    "m": ("length", 1.0), "N": ("force", 1.0), "W": ("power", 1.0), "J": ("energy", 1.0), "": ("dimensionless", 1.0),
+    "N·m·s": ("viscous coefficient", 1.0), "N·m/(rev/s)": ("viscous coefficient", 1 / (2 * PI)), "N·m/(rev/s)²": ("drag coefficient", 1 / (2 * PI) ** 2),
 }  # fmt: skip
 
 
@@ -102,6 +103,10 @@ WAYS = {
         (("spin-down", "--inertia", "1", "--omega0", "10rad/s"), "brake", "force={} mu=0.5 radius=1m", "brake1_force"),
         (("pendulum", "--shape", "rod", "--length", "1m", "--axis", "end", "--angle0", "90deg"), "mass", "pivot_force0"),  # mg/4 at the release
     ),
+    "viscous coefficient": Way((("spin-down", "--inertia", "1", "--omega0", "1rad/s"), "viscous"), None, None),
+    "drag coefficient": Way((("spin-down", "--inertia", "1", "--omega0", "1rad/s"), "drag"), None, None),
+    "energy": Way((("spin-down", "--inertia", "2", "--friction", "1"), "ke0"), None, None),
+    "dimensionless": Way((("drive", "--motor-inertia", "1.2 kg*cm^2", "--load-inertia", "0.05 kg*m^2"), "ratio"), None, None),
     "length": Way(
         (("atwood", "--m1", "4kg", "--m2", "1kg"), "distance"),
         (("inertia", "disc", "--mass", "1kg", "--radius", "1m"), "part", "point mass=1kg offset={}", "part2_offset"),
@@ -143,6 +148,7 @@ def table() -> list[Spelling]:
         typed_cell, read_cell, note_cell = _cells(line)
         typed = re.findall(r"`([^`]+)`", typed_cell)
         named = re.search(r"\bfor an? ([a-z ]+)$", typed_cell)
+        named = named and [named[0], {"plain number": "dimensionless"}.get(named[1], named[1])]  # a plain number: the dimensionless kind
         if read_cell.startswith("refused"):
             fragments = re.findall(r"`([^`]+)`", read_cell)
             assert named and fragments and len(fragments) in (1, len(typed)), line
@@ -151,7 +157,7 @@ def table() -> list[Spelling]:
         items = [item.split(" = ")[0] for item in re.split(r" \(", read_cell)[0].split(", ")]
         assert len(items) in (1, len(typed)), line
         for i, spelling in enumerate(typed):
-            number, unit = re.fullmatch(r"([\d.π/⅓]+)\s*(\S+)", items[i if len(items) > 1 else 0]).groups()
+            number, unit = re.fullmatch(r"([\d.π/⅓]+)\s*(\S*)", items[i if len(items) > 1 else 0]).groups()
             kind, one = SHOWN[unit]
             found.append(Spelling(spelling, named[1] if named else kind, _number(number) * one, None, note_cell.strip("`")))
     return found
@@ -169,6 +175,14 @@ def test_the_table_is_read_whole_and_holds_this_issues_rows():
     assert typed["300"].kind == "angular velocity" and typed["300"].refusal == "300rpm or 300rad/s"
     assert typed["5kilos"].refusal == "unknown unit 'kilos'; did you mean 'kg'?"
     assert typed["1-5kg"].refusal == "a range is written 1..5kg"
+    # #42: Hz is revolutions inside a coefficient's unit too; ton is refused; PS, %, N:1 and π are read
+    assert typed["0.01 N*m/Hz"].value == pytest.approx(0.01 / (2 * PI), rel=1e-15) and typed["0.01 N*m/Hz"].kind == "viscous coefficient"
+    assert typed["0.001 N*m/Hz^2"].value == pytest.approx(0.001 / (4 * PI**2), rel=1e-15)
+    assert typed["2 long_ton"].value == pytest.approx(2 * 2240 * 0.45359237, rel=1e-15)
+    assert typed["1 PS"].value == pytest.approx(75 * G0, rel=1e-15)  # 735.49875 W
+    assert typed["2 ton"].refusal and typed["16ton"].refusal
+    assert typed["10:1"].value == 10 and typed["85%"].value == pytest.approx(0.85, rel=1e-15)
+    assert typed["0.135*20*pi/15 N*m"].value == pytest.approx(0.135 * 20 * PI / 15, rel=1e-15)
 
 
 def _run(argv: list[str], capsys) -> tuple[int, str, str]:
