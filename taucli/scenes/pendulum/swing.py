@@ -102,7 +102,7 @@ def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: fl
         elif speed_at_angle is None:
             notes.append(f"the body never reaches {zero.text(angle)}: it has too little energy")
         else:
-            speed_at_angle *= first_sense(exact, angle, arrives)
+            speed_at_angle = speed_at_angle * first_sense(exact, angle, arrives) if speed_at_angle else 0.0  # at rest there: 0, not −0
         results.put("omega", speed_at_angle, f" at {zero.text(angle)}, when it first gets there")
     results.put("period_small", swing.small_period())
     if swing.gravity_torque:
