@@ -304,7 +304,7 @@ complete -c taucli -n '__fish_seen_subcommand_from atwood' -l pull -x -d 'A cons
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l torque -x -a '(__taucli_units "N*m" "mN*m" "kN*m" "lbf*ft" "lbf*in")' -d 'A drive torque on the pulley (a motor, a hoist drum), positive lifting m1 (winding m1\'s string in).'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l g -x -a '(__taucli_units m/s^2 ft/s^2 g0)' -d 'Gravity (default 9.80665 m/s^2).'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l v0 -x -a '(__taucli_units m/s km/h ft/s mph)' -d 'Initial speed of m1 (down positive) (default 0).'
-complete -c taucli -n '__fish_seen_subcommand_from atwood' -l distance -x -a '(__taucli_units m cm mm km in ft)' -d 'Report the time and speed after this distance.'
+complete -c taucli -n '__fish_seen_subcommand_from atwood' -l distance -x -a '(__taucli_units m cm mm km in ft)' -d 'Report the time and speed after m1 has moved this far the way the masses first move (null where they stop short).'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l time -x -a '(__taucli_units s ms min h)' -d 'Report the speed and displacement at this time.'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l at -x -a '(__taucli_units m cm mm km in ft)' -d 'A point at this radius on the pulley (after --distance, else at --time, else the start): its speed v_t, accelerations a_t, a_c, a_total, a_angle and arc s, e.g. 0.5m, or rim (the body\'s radius; taken when a point\'s result is asked for with no --at).'
 complete -c taucli -n '__fish_seen_subcommand_from atwood' -l json -d 'Print one strict JSON document on stdout.'

@@ -22,7 +22,7 @@ from taucli.writing import formats
 from taucli.writing import plot
 from taucli.writing import render as renderer
 from taucli.writing.document import document_text
-from taucli.writing.human import draw_table, drawing, shown
+from taucli.writing.human import draw_table, drawing
 from taucli.writing.display import minus_signs
 from taucli.core.errors import InputError, did_you_mean
 from taucli.options import scene
@@ -260,8 +260,13 @@ def render(points: list[Point], swept_range: Swept | None, swept_list: Swept | N
     if output.get:
         for point in points:
             values = [point.report.inputs[s.name].value for s in swept]
-            values += [renderer.named_result(point.report, name, "--get").value for name in output.get]
-            stream.write("\t".join(renderer.bare(value) for value in values) + "\n")
+            shown = [renderer.bare(value) for value in values]
+            spreads = getattr(point.report, "uncertainties", None) or {}
+            for name in output.get:
+                shown.append(renderer.bare(renderer.named_result(point.report, name, "--get").value))
+                if output.uncertainty:  # #42 item 7: each result's uncertainty in the column after it, as a single run's --get
+                    shown.append(renderer.get_spread(point.report, name, spreads))
+            stream.write("\t".join(shown) + "\n")
     elif output.json:
         plotted = output.charted and swept_range is None
         documents = [
@@ -333,7 +338,9 @@ def grid(points: list[Point], swept: list[Swept]) -> formats.Grid:
     notes = _notes_where(points, swept)  # a note true at some points only says at which
     if len(notes) > MAX_NOTES:
         notes = notes[:MAX_NOTES] + [f"… and {len(notes) - MAX_NOTES} more notes that differ from point to point (see --json)"]
-    return formats.Grid(f"{first.scene}: {what}", model, columns, rows, tuple(notes))
+    spreads = [getattr(point.report, "uncertainties", None) or {} for point in points]  # #42 item 7: the ± --json keeps
+    spread_rows = tuple(tuple([None] * len(swept_columns) + [spread.get(name) for name in names]) for spread in spreads) if any(spreads) else ()
+    return formats.Grid(f"{first.scene}: {what}", model, columns, rows, tuple(notes), spread_rows)
 
 
 def _write_format(table: formats.Grid, format: str, stream, notes_to) -> None:
@@ -365,7 +372,7 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
         for name, unit in table.columns:
             shown_unit = pretty_unit(unit)
             headings.append(f"{name} ({shown_unit})" if shown_unit else name)
-        rows = [[shown(cell) for cell in row] for row in table.rows]
+        rows = [[minus_signs(cell) for cell in row] for row in formats.grid_cells(table)]  # 4.90 ± 0.08 where a value has one
         # numbers are never split: a table too wide for the terminal becomes a list, one point at a time
         draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
         for note in table.notes:

@@ -48,7 +48,7 @@ COMMAND = Command(
                sign="any", panel=SIDES),
         GRAVITY,
         Option("v0", "velocity", "Initial speed of m1 (down positive).", sign="any", default="0", panel=MOTION),
-        Option("distance", "length", "Report the time and speed after this distance.", sign="nonnegative", panel=MOTION),
+        Option("distance", "length", "Report the time and speed after m1 has moved this far the way the masses first move (null where they stop short).", sign="nonnegative", panel=MOTION),
         Option("time", "time", "Report the speed and displacement at this time.", sign="nonnegative", panel=MOTION),
         point_option("on the pulley (after --distance, else at --time, else the start)"),
     ),

@@ -59,7 +59,7 @@ def flywheel(
     given_body = inertia is not None or shape is not None or bool(part)
     moment = None
     if given_body:
-        moment, body_steps = body(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, **dims)
+        moment, body_steps = body(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, notes=notes, **dims)
         steps += body_steps
     elif mass is not None or offset is not None or any(v is not None for v in dims.values()):
         raise InputError("shape", "is required with the body's mass and dimensions (or give {inertia})", example="{shape} ring {mass} 500kg {radius} 0.6m")

@@ -17,7 +17,7 @@ from taucli.core.errors import InputError, Unused
 from taucli.options.inertia import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text
 from taucli.scenes.given import Part
-from taucli.scenes.shapes import AREAS, LENGTHS, SHAPES, VOLUMES, Axis, Shape, fill, lookup_shape
+from taucli.scenes.shapes import AREAS, LENGTHS, SHAPES, VOLUMES, Axis, Shape, fill, lookup_shape, thin_notes
 from taucli.options.table import Results
 
 
@@ -38,6 +38,7 @@ class PartInertia:
     inertia: float
     steps: tuple[Step, ...]
     offset: float = 0.0
+    notes: tuple[str, ...] = ()  # what was assumed for a dimension left out (#42 item 3)
 
 
 @dataclass(frozen=True)
@@ -49,6 +50,7 @@ class BodyInertia:
     parts: tuple[PartInertia, ...]
     steps: tuple[Step, ...]
     description: str
+    notes: tuple[str, ...] = ()
 
 
 def _given_inertia(part: Part) -> PartInertia:
@@ -142,6 +144,7 @@ def part_inertia(part: Part) -> PartInertia:
         return _point_inertia(part, shape, axis, dims)
 
     mass = part.mass
+    notes = thin_notes(part.source, shape, axis, dims)
     inertia_centre = axis.moment(mass, **dims)  # about the axis named, before any shift
     shifted = part.offset is not None
     if shifted and not axis.through_centre:
@@ -174,11 +177,12 @@ def part_inertia(part: Part) -> PartInertia:
                 "the cross term ∫2x·d dm vanishes because the centre of mass is on the first axis",
             )
         )
-        return PartInertia(part, shape, axis, inertia_centre, inertia, tuple(steps), offset)
+        return PartInertia(part, shape, axis, inertia_centre, inertia, tuple(steps), offset, notes)
     if axis.centre is not None:  # about an end or an edge: the same I seen from the centre of mass
         central, distance = axis.centre
-        return PartInertia(part, shape, axis, shape.axis(central).moment(mass, **dims), inertia, tuple(steps), distance(**dims))
-    return PartInertia(part, shape, axis, inertia_centre, inertia, tuple(steps))
+        return PartInertia(part, shape, axis, shape.axis(central).moment(mass, **dims), inertia, tuple(steps), distance(**dims), notes)
+    return PartInertia(part, shape, axis, inertia_centre, inertia, tuple(steps), 0.0, notes)
+
 
 
 def _point_inertia(part: Part, shape: Shape, axis: Axis, dims: Mapping[str, float]) -> PartInertia:
@@ -218,8 +222,9 @@ def body_inertia(parts: Sequence[Part]) -> BodyInertia:
     inertia = math.fsum(r.inertia for r in results)
     # The bounds of a typed --inertia hold for one computed from a shape too.
     check_bounds(inertia, "moment of inertia", _given(parts), got=f"I = {inertia:g} kg*m**2")
+    notes = tuple(note for r in results for note in r.notes)
     if len(results) == 1:
-        return BodyInertia(inertia, mass, results, results[0].steps, describe_part(results[0]))
+        return BodyInertia(inertia, mass, results, results[0].steps, describe_part(results[0]), notes)
     steps: list[Step] = []
     for number, result in enumerate(results, start=1):
         steps.extend(Step(f"Part {number}: {s.title[0].lower()}{s.title[1:]}", s.equation, s.numbers, s.result, s.why) for s in result.steps)
@@ -234,7 +239,7 @@ def body_inertia(parts: Sequence[Part]) -> BodyInertia:
         )
     )
     description = f"body of {len(results)} parts: " + "; ".join(describe_part(r) for r in results)
-    return BodyInertia(inertia, mass, results, tuple(steps), description)
+    return BodyInertia(inertia, mass, results, tuple(steps), description, notes)
 
 
 def _given(parts: Sequence[Part]) -> str:
@@ -282,7 +287,7 @@ def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bo
         )
     )
     tables = {} if single is not None else {"parts": parts_table(built)}  # each part's share of I about the axis it was built on
-    return Report("inertia", body.description, "closed form", results, steps, [], {}, tables)
+    return Report("inertia", body.description, "closed form", results, steps, list(body.notes), {}, tables)
 
 
 def _moved(body: BodyInertia, distance: float) -> BodyInertia:
@@ -304,7 +309,8 @@ def _moved(body: BodyInertia, distance: float) -> BodyInertia:
                 quantity_text(moved, "kg*m**2"),
                 "the parts are centred on the axis they were built about, so it passes through the body's centre of mass; "
                 "a parallel axis d away adds the whole mass at d")
-    return BodyInertia(moved, body.mass, body.parts, (*body.steps, step), f"{body.description}, the whole shifted {fmt(distance)} m (parallel-axis theorem)")
+    return BodyInertia(moved, body.mass, body.parts, (*body.steps, step), f"{body.description}, the whole shifted {fmt(distance)} m (parallel-axis theorem)",
+                       body.notes)
 
 
 def parts_table(body: BodyInertia) -> Table:
@@ -399,29 +405,46 @@ def body_mass(
 
 def body(
     *, inertia: float | None = None, shape: str | None = None, mass: float | None = None, axis: str | None = None,
-    offset: float | None = None, part: Sequence[Part] = (), gyration: float | None = None, density=None, **dims: float | None,
+    offset: float | None = None, part: Sequence[Part] = (), gyration: float | None = None, density=None, notes: list[str] | None = None,
+    **dims: float | None,
 ) -> tuple[float, Sequence[Step]]:
     """The moment of inertia of a scene's body and its steps: --inertia, or --shape with its options
-    (--mass or --density), or --gyration with --mass."""
+    (--mass or --density), or --gyration with --mass. What was assumed for a dimension left out (a
+    thin disc about a diameter) is added to ``notes``."""
+    found = _body(inertia, shape, mass, axis, offset, part, gyration, density, dims)
+    if found is None:
+        return inertia, ()
+    if notes is not None:
+        notes.extend(note for note in found.notes if note not in notes)
+    return found.inertia, found.steps
+
+
+def body_notes(body_options: Mapping) -> list[str]:
+    """What body() assumes for the body these options give (none where they give none)."""
+    if not any(body_options.get(name) is not None for name in ("inertia", "shape", "gyration")) and not body_options.get("part"):
+        return []
+    notes: list[str] = []
+    body(**body_options, notes=notes)
+    return notes
+
+
+def _body(inertia, shape, mass, axis, offset, part, gyration, density, dims) -> BodyInertia | None:
+    """body()'s BodyInertia (None for an --inertia alone)."""
     shape_options = [name for name, value in (("mass", mass), ("axis", axis), ("offset", offset), ("density", density), *dims.items()) if value is not None]
     if inertia is not None and gyration is not None:
         raise InputError("gyration", "conflicts with {inertia}: give the body's I one way")
     if gyration is not None or (density is not None and shape is not None):
-        found = body_inertia([main_part(shape, mass, axis, offset, dims, gyration, density), *part])
-        return found.inertia, found.steps
+        return body_inertia([main_part(shape, mass, axis, offset, dims, gyration, density), *part])
     if inertia is not None:
         if shape is not None:
             raise InputError("inertia", "conflicts with {shape}: give one of them")
         if shape_options:
             raise InputError(shape_options[0], "goes with {shape}; with {inertia} it is not used")
         if not part:
-            return inertia, ()
-        found = body_inertia([Part("", None, inertia=inertia), *part])
-        return found.inertia, found.steps
+            return None
+        return body_inertia([Part("", None, inertia=inertia), *part])
     if shape is None:
         if part and not shape_options:  # the parts make up the whole body
-            found = body_inertia(part)
-            return found.inertia, found.steps
+            return body_inertia(part)
         raise InputError("inertia", "or {shape} is required", example="{inertia} 0.1kg*m^2, or {shape} disc {mass} 5kg {radius} 0.2m")
-    found = body_inertia([main_part(shape, mass, axis, offset, dims), *part])
-    return found.inertia, found.steps
+    return body_inertia([main_part(shape, mass, axis, offset, dims), *part])

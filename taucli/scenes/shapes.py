@@ -42,6 +42,9 @@ class Axis:
     # For an axis not through the centre: the name of the parallel axis through it, and the
     # distance between the two from the dimensions (so a parts table can show I_cm and offset).
     centre: tuple[str, Callable[..., float]] | None = None
+    # #42 item 3: an optional dimension I depends on about this axis, and the body it stands for
+    # when left out (taken as 0): said in a note, never assumed silently.
+    thin: Mapping[str, str] | None = None
 
 
 @dataclass(frozen=True)
@@ -97,7 +100,8 @@ SHAPES: dict[str, Shape] = {
                  "a uniform disc: rings of radius r hold mass in proportion to r, ∫r²dm = ½MR²"),
             Axis("diameter", "a diameter through its centre", "I = M(R²/4 + L²/12)", "{M} × ({R}²/4 + {L}²/12)",
                  lambda mass, radius, length=0.0: mass * (radius**2 / 4 + length**2 / 12),
-                 "a stack of thin discs (¼MR² each about a diameter) along the length L, shifted by the parallel-axis theorem"),
+                 "a stack of thin discs (¼MR² each about a diameter) along the length L, shifted by the parallel-axis theorem",
+                 thin={"length": "a thin disc (L = 0): I = ¼MR² about a diameter"}),
         ), optional=("length",)),
         Shape("tube", "hollow cylinder (tube)", ("inner_radius", "outer_radius"), (
             Axis("central", _CENTRAL, "I = ½M(R₁² + R₂²)", "½ × {M} × ({R1}² + {R2}²)",
@@ -105,7 +109,8 @@ SHAPES: dict[str, Shape] = {
                  "a disc of radius R₂ less a disc of radius R₁ of the same density"),
             Axis("diameter", "a diameter through its centre", "I = M((R₁² + R₂²)/4 + L²/12)", "{M} × (({R1}² + {R2}²)/4 + {L}²/12)",
                  lambda mass, inner_radius, outer_radius, length=0.0: mass * ((inner_radius**2 + outer_radius**2) / 4 + length**2 / 12),
-                 "thin annuli (¼M(R₁² + R₂²) each about a diameter) stacked along the length L"),
+                 "thin annuli (¼M(R₁² + R₂²) each about a diameter) stacked along the length L",
+                 thin={"length": "a flat annulus of no length (L = 0): I = ¼M(R₁² + R₂²) about a diameter"}),
         ), optional=("length",)),
         Shape("sphere", "solid sphere", ("radius",), (
             Axis("central", "a diameter", "I = ⅖MR²", "⅖ × {M} × {R}²", lambda mass, radius: 0.4 * mass * radius * radius,
@@ -155,6 +160,19 @@ SHAPES: dict[str, Shape] = {
         ), optional=("height",)),
     )
 }  # fmt: skip
+
+
+def thin_notes(source: str, shape: Shape, axis: Axis, dims: Mapping[str, float]) -> tuple[str, ...]:
+    """A note for each dimension I depends on about this axis that was left out (taken as 0): a
+    disc or a tube about a diameter with no length is a thin one (#42 item 3)."""
+    if not axis.thin:
+        return ()
+    notes = []
+    for dim, body in axis.thin.items():
+        if dim not in dims:  # the option as each surface spells it: {length} (--length, length=), {part} 2
+            named = f"{dim.replace('_', '-')}= in {source}" if source else f"{{{dim}}}"
+            notes.append(f"no {named}: the {shape.title} taken as {body}; give {named} for a body of some {dim.replace('_', ' ')}")
+    return tuple(notes)
 
 
 # Other words for a shape, answered with "did you mean" and never taken in its place: a word a

@@ -56,6 +56,13 @@ class Grid(NamedTuple):
     columns: tuple[tuple[str, str | None], ...]  # (name, unit)
     rows: tuple[tuple, ...]  # floats, bools, words or None
     notes: tuple[str, ...]
+    spreads: tuple[tuple, ...] = ()  # each cell's standard uncertainty (SI, as the value) or None; () where none has one (#42 item 7)
+
+def grid_cells(grid: Grid) -> list[list[str]]:
+    """Each cell as a person reads it: 4.90 ± 0.08 where it has an uncertainty (as --json keeps it)."""
+    spreads = grid.spreads or [()] * len(grid.rows)
+    return [[with_uncertainty(cell, sigma) if sigma is not None else shown(cell) for cell, sigma in zip(row, (*spread, *[None] * len(row))[:len(row)])]
+            for row, spread in zip(grid.rows, spreads)]
 
 def sheet(report, *, steps: bool = True) -> Sheet:
     """The report as the written formats show it (a Report, or a Measured one: values with ± σ)."""
@@ -135,7 +142,7 @@ def _md_notes(notes: Sequence[str]) -> list[str]:
 def markdown_grid(grid: Grid) -> str:
     """A sweep as GitHub Markdown: the title, the model, one row per point."""
     out = [f"**{md_text(grid.title)}**\\", f"*model: {md_text(grid.model)}*", ""]
-    out += _md_table([heading(*column) for column in grid.columns], [[shown(cell) for cell in row] for row in grid.rows], [True] * len(grid.columns))
+    out += _md_table([heading(*column) for column in grid.columns], grid_cells(grid), [True] * len(grid.columns))
     return "\n".join(out + _md_notes(grid.notes)) + "\n"
 
 # HTML: a fragment to put in a page or a notebook; every text through html.escape.
@@ -175,7 +182,7 @@ def html_fragment(sheet: Sheet) -> str:
 
 def html_grid(grid: Grid) -> str:
     out = ['<div class="taucli">', f"<p><strong>{_h(grid.title)}</strong><br>", f"<em>model: {_h(grid.model)}</em></p>"]
-    out += _html_table([heading(*column) for column in grid.columns], [[shown(cell) for cell in row] for row in grid.rows], [True] * len(grid.columns))
+    out += _html_table([heading(*column) for column in grid.columns], grid_cells(grid), [True] * len(grid.columns))
     return "\n".join(out + _html_notes(grid.notes) + ["</div>"]) + "\n"
 
 # CSV: for a spreadsheet. A header of "name (unit)", the unit as the unit parser reads it (as
@@ -192,14 +199,33 @@ def _csv_cell(value) -> str:
     return str(value)
 
 def csv_grid(grid: Grid) -> str:
+    """A header, then a row per point; a column with an uncertainty anywhere is followed by its
+    own, "a uncertainty (m/s**2)", at full precision as --json gives it (#42 item 7)."""
+    spreads = grid.spreads or [()] * len(grid.rows)
+    width = len(grid.columns)
+    spreads = [(*spread, *[None] * width)[:width] for spread in spreads]
+    uncertain = [any(spread[column] is not None for spread in spreads) for column in range(width)]
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow([f"{name} ({unit})" if unit else name for name, unit in grid.columns])
-    writer.writerows([_csv_cell(cell) for cell in row] for row in grid.rows)
+    header = []
+    for (name, unit), has in zip(grid.columns, uncertain):
+        header.append(f"{name} ({unit})" if unit else name)
+        if has:
+            header.append(f"{name} uncertainty ({unit})" if unit else f"{name} uncertainty")
+    writer.writerow(header)
+    for row, spread in zip(grid.rows, spreads):
+        cells = []
+        for cell, sigma, has in zip(row, spread, uncertain):
+            cells.append(_csv_cell(cell))
+            if has:
+                cells.append(_csv_cell(sigma))
+        writer.writerow(cells)
     return buffer.getvalue()
 
 def single_grid(report) -> Grid:
     """One run as a sweep of one point: its results, one row (--format csv without a sweep)."""
     names = list(report.results)
+    spreads = getattr(report, "uncertainties", None) or {}
     return Grid(f"{report.scene}", report.model, tuple((name, report.results[name].unit) for name in names),
-                (tuple(report.results[name].value for name in names),), tuple(report.notes))
+                (tuple(report.results[name].value for name in names),), tuple(report.notes),
+                (tuple(spreads.get(name) for name in names),) if spreads else ())

@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from taucli.writing.formats import Grid, Sheet, heading, shown, step_lines
+from taucli.writing.formats import Grid, Sheet, grid_cells, heading, shown, step_lines
 from taucli.core.version import __version__
 
 PREAMBLE = "% needs \\usepackage{amsmath} and \\usepackage{siunitx} (version 3)"
@@ -276,7 +276,7 @@ def grid(sweep: Grid) -> str:
     """A sweep as a LaTeX table, one row per point."""
     out = [f"% taucli {__version__}", PREAMBLE, f"\\noindent\\textbf{{{text(sweep.title)}}}\\\\", f"\\emph{{model: {text(sweep.model)}}}", "", "\\medskip", "", "\\noindent"]
     headings = [text(name) + (f" (\\unit{{{unit(u)}}})" if unit(u) else f" ({text(u)})" if u else "") for name, u in sweep.columns]
-    rows = [[_value(shown(cell)) for cell in row] for row in sweep.rows]
+    rows = [[_value(cell) for cell in row] for row in grid_cells(sweep)]
     spec = " ".join("r" for _ in headings)
     out += [f"\\begin{{tabular}}{{{spec}}}", "\\hline", " & ".join(headings) + " \\\\", "\\hline", *(" & ".join(row) + " \\\\" for row in rows), "\\hline", "\\end{tabular}"]
     return "\n".join(out + _notes(sweep.notes)) + "\n"

@@ -152,7 +152,7 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
     if output.get:
         if output.uncertainty:  # #22: a second column, the result's standard uncertainty
             spreads = getattr(report, "uncertainties", None) or {}
-            stream.write("".join(bare(named_result(report, name, "--get").value) + " " + _spread(report, name, spreads) + "\n" for name in output.get))
+            stream.write("".join(bare(named_result(report, name, "--get").value) + " " + get_spread(report, name, spreads) + "\n" for name in output.get))
         else:
             stream.write("".join(bare(named_result(report, name, "--get").value) + "\n" for name in output.get))
         if notes_to is not None:
@@ -199,7 +199,7 @@ def _why_null(report: Report, names, stream: TextIO) -> None:
         stream.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in said))
 
 
-def _spread(report: Report, name: str, spreads: Mapping[str, float]) -> str:
+def get_spread(report: Report, name: str, spreads: Mapping[str, float]) -> str:
     """A result's uncertainty for --get --uncertainty: 0.0 for a number no uncertain input moves."""
     if name in spreads:
         return bare(spreads[name])

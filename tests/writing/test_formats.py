@@ -273,9 +273,15 @@ def test_csv_of_one_run_is_one_row_of_every_result_at_full_precision(scene, comm
     doc = as_json(command)
     rows = list(csv.reader(io.StringIO(answered(command, "--format csv"))))
     assert len(rows) == 2
-    assert rows[0] == [f"{name} ({r['unit']})" if r["unit"] else name for name, r in doc["results"].items()]
-    for cell, result in zip(rows[1], doc["results"].values()):
-        value = result["value"]
+    header, cells = [], []  # a result with an uncertainty has it in the next column, as --json keeps it (#42 item 7)
+    for name, r in doc["results"].items():
+        header.append(f"{name} ({r['unit']})" if r["unit"] else name)
+        cells.append(r["value"])
+        if "uncertainty" in r:
+            header.append(f"{name} uncertainty ({r['unit']})" if r["unit"] else f"{name} uncertainty")
+            cells.append(r["uncertainty"])
+    assert rows[0] == header
+    for cell, value in zip(rows[1], cells):
         if isinstance(value, float):
             assert float(cell) == value  # every digit of the double
         elif value is None:

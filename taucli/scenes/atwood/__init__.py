@@ -94,6 +94,9 @@ def atwood(
     if m2 is None:
         if side2 is not None:
             raise InputError("side2", "needs {m2} (the block it places)", example='{m2} 1kg {side2} "table mu-k=0.2"')
+        surface = next((name for name, value in (("incline", incline), ("mu_k", mu_k), ("mu_s", mu_s)) if value is not None), None)
+        if surface is not None:  # #42 item 13: m2's slope or friction with no m2 was ignored
+            raise InputError(surface, "needs {m2} (the block on the slope or table it describes)", example="{m2} 1kg {incline} 30deg {mu_k} 0.2")
         assumed.notes.append("no --m2: the string's end on side 2 pulled by hand (--pull)" if pulled[2] else "no --m2: a single mass on a string wound on the pulley")
     if side2 is not None and (incline is not None or mu_k is not None or mu_s is not None):
         given = next(name for name, value in (("incline", incline), ("mu_k", mu_k), ("mu_s", mu_s)) if value is not None)

@@ -393,7 +393,7 @@ def _second_phase(motion, f: Forces, kinetic, machine: Machine, distance, time, 
     tension1, tension2 = tensions(f, kinetic, second.direction, machine)
     if min(tension1, tension2) >= -64 * EPSILON * _scale(f, kinetic):
         return
-    reached = (time is not None and time > stop[0]) or (distance is not None and distance > stop[1])
+    reached = time is not None and time > stop[0]  # (--distance is along the first way: never past the stop)
     if reached:
         _taut(tension1, tension2, f, a, " after the stop")
     notes.append("after the stop the string would go slack as the masses set off the other way (not modelled): the motion is given up to the stop")

@@ -87,5 +87,6 @@ def with_parts(pulley: Pulley, parts: Sequence, assumed: Assumed, steps: float |
     from taucli.scenes.inertia import body_inertia  # deferred: bodies and the shapes' table (6 ms), only for a pulley of parts
 
     added = body_inertia(parts)
+    assumed.notes.extend(added.notes)
     assumed.notes.append(f"pulley: I = {fmt(own_inertia + added.inertia)} kg·m², {'the given pulley and ' if own_inertia else ''}{added.description}")
     return Pulley(0.0, pulley.radius, None, own_inertia + added.inertia, pulley.axle_friction)

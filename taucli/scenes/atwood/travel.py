@@ -26,7 +26,7 @@ def put_motion(results: Results, motion, distance: float | None, time: float | N
     if distance is not None:
         reached = time_to_travel(motion, distance)
         if reached is None:
-            notes.append(f"the masses never travel {quantity_text(distance, 'm')}")
+            notes.append(_never_travel(motion, distance))
         results.put("t", reached, f" {fmt(distance)} m")
         results.put("v", None if reached is None else motion.state_at(reached)[0], f" after {fmt(distance)} m")
     if time is not None:
@@ -55,16 +55,25 @@ def put_motion(results: Results, motion, distance: float | None, time: float | N
 
 
 def time_to_travel(motion, distance: float) -> float | None:
-    """The time at which the masses have moved a path length ``distance`` (uniform phases)."""
+    """The time at which m1 is ``distance`` from its start along the way the masses first move
+    (its displacement's size that way); None where they stop short of it: held there, or turning
+    back (#42 item 5: a path length out and back again was taken for a displacement)."""
     if motion.held_from_start:
         return 0.0 if distance == 0 else None
     first, stop = motion.first.closed, motion.stop
     if stop is None or distance <= stop[1]:
         return _uniform_time(first.omega0, first.constant / first.inertia, distance)
-    if motion.second is None:
-        return None
-    second = motion.second.closed
-    return stop[0] + _uniform_time(0.0, second.constant / second.inertia, distance - stop[1])
+    return None
+
+
+def _never_travel(motion, distance: float) -> str:
+    """Why t and v after --distance are null: the masses never move, or stop short and stay or turn back."""
+    what = f"the masses never travel {quantity_text(distance, 'm')}"
+    if motion.held_from_start or motion.stop is None:
+        return what
+    then = "turn back" if motion.second is not None else "stay there"
+    return (f"{what} that way: they stop after {quantity_text(motion.stop[1], 'm')} and {then} "
+            "(t_stop, distance_stop give the stop; --time follows them on)")
 
 
 def _uniform_time(speed: float, acceleration: float, distance: float) -> float:

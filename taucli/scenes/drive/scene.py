@@ -69,7 +69,7 @@ def drive(
     if eta > 1:
         raise InputError("efficiency", "expected a number above 0 and at most 1 (the whole train's, motor to load)", example="{efficiency} 0.9",
                          got=fmt(eta))
-    moment, body_steps, parts = _load_body(load_inertia, body_options)
+    moment, body_steps, parts = _load_body(load_inertia, body_options, notes)
     lever, screw = _lever(drum_radius, lead)
     linear = _linear(load_mass, lever, screw, steps)
     gravity_needed = load_mass is not None and (bool(incline) or bool(mu))
@@ -142,7 +142,7 @@ def _ratio(stages: tuple[float, ...]) -> float:
     return n
 
 
-def _load_body(load_inertia: float | None, options: dict) -> tuple[float | None, Sequence[Step], Table | None]:
+def _load_body(load_inertia: float | None, options: dict, notes: list[str]) -> tuple[float | None, Sequence[Step], Table | None]:
     """The rotating load at the output: --load-inertia, or a shape and its options, or parts (None: none)."""
     shape, part, gyration = options.get("shape"), options.get("part"), options.get("gyration")
     given = [name for name in SHAPE_OPTIONS if options.get(name) is not None]
@@ -155,7 +155,7 @@ def _load_body(load_inertia: float | None, options: dict) -> tuple[float | None,
         raise InputError(given[0], "goes with {shape}: the rotating load's shape", example="{shape} disc {mass} 5kg {radius} 0.2m")
     if load_inertia is None and shape is None and gyration is None and not part:
         return None, (), None
-    moment, steps = body(inertia=load_inertia, **options)
+    moment, steps = body(inertia=load_inertia, notes=notes, **options)
     return moment, steps, body_table(inertia=load_inertia, **options)
 
 

@@ -143,7 +143,8 @@ def machine(
     **dims: float | None,
 ) -> Report:
     """The gyroscopic couple on a rotor whose axis the vehicle turns at --precession."""
-    moment, body_steps = body(inertia=inertia, shape=shape, mass=mass if shape is not None else None, axis=axis, offset=offset, part=part, **dims)
+    body_notes: list[str] = []
+    moment, body_steps = body(inertia=inertia, shape=shape, mass=mass if shape is not None else None, axis=axis, offset=offset, part=part, notes=body_notes, **dims)
     if spin is None:
         raise InputError("spin", "is required: the rotor's spin about its axis", example="{spin} 2400rpm")
     craft = craft or "vehicle"
@@ -168,7 +169,7 @@ def machine(
     angular_momentum = moment * spin
     if not math.isfinite(angular_momentum):
         raise InputError("spin", "gives no usable angular momentum Iω_s with this body (out of range)", got=f"I = {fmt(moment)} kg·m², ω_s = {fmt(spin)} rad/s")
-    notes: list[str] = []
+    notes: list[str] = [*body_notes]
     results = Results(TABLE)
     results.put("couple", None)  # first: the answer, and what a sweep charts (filled in below)
     results.put("L", finite(angular_momentum))

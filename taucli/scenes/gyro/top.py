@@ -98,8 +98,9 @@ def top(
     if part and shape is None:
         raise InputError("part", "goes with {shape}: the parts are added to the shape's body", example='{shape} disc {mass} 1kg {radius} 5cm {part} "ring mass=100g radius=5cm"')
     own_mass = shape is not None or gyration is not None  # --mass is the body's, not only the weight's
+    body_notes: list[str] = []
     moment, body_steps = body(inertia=inertia, shape=shape, mass=mass if own_mass else None, axis=axis, offset=offset, part=part,
-                              gyration=gyration, density=density, **dims)
+                              gyration=gyration, density=density, notes=body_notes, **dims)
     if spin is None:
         raise InputError("spin", "is required: the spin about the body's axis", example="{spin} 4000rpm")
     theta = HALF_PI if tilt is None else tilt
@@ -113,7 +114,7 @@ def top(
         body_mass = mass
 
     assumed = Assumed()
-    notes: list[str] = []
+    notes: list[str] = [*body_notes]
     results = Results(TABLE)
     angular_momentum = moment * spin
     results.put("L", _finite(angular_momentum))

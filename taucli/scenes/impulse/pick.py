@@ -17,7 +17,7 @@ from taucli.scenes.impulse.clutch import solve_clutch
 from taucli.scenes.impulse.meeting import solve_meeting
 from taucli.scenes.impulse.point import point_after
 from taucli.scenes.impulse.sampled import solve_profile
-from taucli.scenes.inertia import body, part_inertia
+from taucli.scenes.inertia import body, body_notes, part_inertia
 from taucli.scenes.push import Push, drive_steps
 
 
@@ -59,6 +59,9 @@ def impulse(
         inertia_final, after_steps = body_after(part_after, inertia_final, body_options)
     report = _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
                       at, brake, face, band, g, body_options)
+    said = body_notes(body_options) + (body_notes({**body_options, "part": tuple(part_after)}) if part_after else [])
+    said += [note for c in couple if c.part is not None for note in part_inertia(c.part).notes]  # a body met, by its shape
+    report.notes[:0] = [note for note in dict.fromkeys(said) if note not in report.notes]  # what was assumed of a body, first (#42 item 3)
     return with_period(report)
 
 

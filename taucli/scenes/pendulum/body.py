@@ -60,6 +60,7 @@ def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsi
     if shape is None and gyration is None:
         raise InputError("inertia", "or {shape} is required", example="{shape} rod {length} 1m {mass} 2kg {axis} end, or {inertia} 0.5kg*m^2 {mass} 2kg {cm_distance} 0.5m")
     found = body_inertia([main_part(shape, mass, axis, offset, dims, gyration, density), *part])
+    assumed.notes.extend(found.notes)  # a thin disc about a diameter, said (#42 item 3)
     steps = list(found.steps)
     total = found.mass
     if cm_distance is None:

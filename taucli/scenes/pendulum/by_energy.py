@@ -40,10 +40,16 @@ class ByEnergy:
         start = swing.accel(swing.theta0)
         self.sense = math.copysign(1.0, swing.omega0) if swing.omega0 else math.copysign(1.0, start) if start else 0.0
         if self.sense == 0:  # at rest where nothing turns it (the bottom): it stays
-            self.low = self.high = swing.theta0
-            self.period = None
+            self.low = self.high = self.ahead = self.behind = swing.theta0
+            # #42 item 12: its period is the limit of a swing's as the amplitude goes to 0, that of
+            # small swings about where it rests, 2π√(I/U″(θ₀)), U″ = G cos θ₀ + κ (none where U″ ≤ 0)
+            stiffness = swing.gravity_torque * math.cos(swing.theta0) + swing.torsion
+            self.period = 2 * math.pi * math.sqrt(swing.inertia / stiffness) if stiffness > 0 else None
+            self.half = None if self.period is None else self.period / 2
             self.amplitude = abs(swing.theta0)
+            self.resting = True
             return
+        self.resting = False
         ahead = self._turning(self.sense)
         behind = swing.theta0 if swing.omega0 == 0 else self._turning(-self.sense)
         self.low, self.high = sorted((ahead, behind))
@@ -145,6 +151,8 @@ class ByEnergy:
         return math.fsum(time for _, _, time in self._pieces(a, b))
 
     def reaches(self, theta: float) -> bool:
+        if self.resting:  # at rest: only where it is
+            return theta == self.swing.theta0
         return self.period is not None and self.low <= theta <= self.high
 
     def time_to(self, theta: float) -> float | None:
@@ -167,7 +175,7 @@ class ByEnergy:
         """(θ, ω) at t: the leg it is on (θ₀ to θ_ahead, then between the turning angles back and
         forth), and θ on it where ∫ dθ/|ω| from the leg's start is the time into the leg."""
         s = self.swing
-        if self.period is None:
+        if self.resting:
             return s.theta0, 0.0
         out = self.between(s.theta0, self.ahead)
         if t <= out:

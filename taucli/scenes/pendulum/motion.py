@@ -20,7 +20,7 @@ from taucli.writing.report import Trajectory, fmt
 from taucli.scenes.pendulum.exact import Circulation, Separatrix
 from taucli.scenes.pendulum.small_angle import small_angle_model
 from taucli.scenes.pendulum.stepped import STEPPERS, BlewUp, Stepped
-from taucli.scenes.pendulum.swing import Swing
+from taucli.scenes.pendulum.swing import Swing, fall_sense
 from taucli.scenes.pendulum.zero import Zero
 from taucli.options.table import Results
 
@@ -99,7 +99,9 @@ def put_motion(results: Results, notes: list[str], swing: Swing, exact, method: 
     if motion.t_bottom is None and not balanced and results["omega_bottom"].value is not None and motion.period is not None:
         notes.append("t_bottom: not found")
     if balanced:
-        notes.append("balanced at the top: speeds at an angle are those of a body that has just left the top; it takes forever to leave")
+        way = (f"toward {zero.text(angle)}" if angle else "the way θ decreases") + f" (ω {'negative' if fall_sense(angle) < 0 else 'positive'})"
+        notes.append(f"balanced at the top: speeds at an angle are those of a body that has just left the top, taken to fall {way}; "
+                     "it takes forever to leave")
     if angle is not None:
         results.put("t_angle", motion.t_angle, f" {zero.text(angle)}")
 

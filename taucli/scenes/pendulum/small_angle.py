@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 from taucli.writing.report import fmt
+from taucli.scenes.pendulum.by_energy import ByEnergy
 from taucli.scenes.pendulum.exact import Libration
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.swing import Swing
@@ -28,6 +29,12 @@ def small_angle_note(swing: Swing, exact) -> str:
             f"small-angle model (sin θ ≈ θ): at an amplitude of {fmt(math.degrees(exact.amplitude))}° its period is "
             f"{fmt(100 * short, 3)}% short of the exact {fmt(exact.period, 6)} s (about θ₀²/16 = {fmt(100 * exact.amplitude**2 / 16, 3)}%)"
         )
-    if exact is None:
+    if isinstance(exact, ByEnergy) and exact.period:  # a spring too: the exact period is the energy integral's (#42 item 12: at rest, not "over the top")
+        off = 1 - swing.small_period() / exact.period
+        return (
+            f"small-angle model (sin θ ≈ θ): at an amplitude of {fmt(math.degrees(exact.amplitude))}° its period is "
+            f"{fmt(100 * abs(off), 3)}% {'short of' if off >= 0 else 'longer than'} the exact {fmt(exact.period, 6)} s"
+        )
+    if exact is None or isinstance(exact, ByEnergy):
         return "small-angle model (sin θ ≈ θ): its error grows as about θ₀²/16 of the period (1% near 23°, 18% at 90°)"
     return "small-angle model (sin θ ≈ θ): the body goes over the top, which no small-angle swing does: its times are meaningless here"

@@ -60,6 +60,13 @@ def first_sense(exact, angle: float, arrives: float) -> float:
     return -1.0 if omega < 0 else 1.0
 
 
+def fall_sense(angle: float | None) -> float:
+    """The sign of ω of a body balanced on the top once it falls (#42 item 6: one way, said in a
+    note): toward --angle (θ decreasing from +180° to a positive angle, increasing from −180° to a
+    negative one), else the way θ decreases."""
+    return 1.0 if angle is not None and angle < 0 else -1.0
+
+
 def reached_speed(swing: Swing, exact, theta: float) -> float | None:
     """|ω| at θ from energy where the exact motion gets there; None where it never does, for too
     little energy or for a top it cannot pass between (a spring's well beyond the bottom)."""
@@ -94,15 +101,15 @@ def put_energy(results: Results, notes: list[str], swing: Swing, cm_distance: fl
         speed_at_angle = swing.speed_at(angle)
         balanced = getattr(exact, "balanced", False)  # at rest on the top: the speeds of a body that has just left it, either way
         arrives = exact.time_to(angle) if speed_at_angle is not None and not balanced else None
-        if balanced:
-            pass
+        if balanced:  # it falls toward --angle and first gets there before the bottom, speeding up
+            speed_at_angle = fall_sense(angle) * speed_at_angle if speed_at_angle else 0.0
         elif speed_at_angle is not None and arrives is None:
             speed_at_angle = None
             notes.append(f"the body never reaches {zero.text(angle)}: a top it cannot pass lies between")
         elif speed_at_angle is None:
             notes.append(f"the body never reaches {zero.text(angle)}: it has too little energy")
         else:
-            speed_at_angle *= first_sense(exact, angle, arrives)
+            speed_at_angle = speed_at_angle * first_sense(exact, angle, arrives) if speed_at_angle else 0.0  # at rest there: 0, not −0
         results.put("omega", speed_at_angle, f" at {zero.text(angle)}, when it first gets there")
     results.put("period_small", swing.small_period())
     if swing.gravity_torque:

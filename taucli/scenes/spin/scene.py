@@ -100,8 +100,8 @@ def spin_down(
         power = None  # a motor of no power is no motor
     if g is not None and lift_mass is None and not any(plate.by_weight for plate in face or ()):
         raise Unused("g", "is used only for the weight on a {face} with no force=, a {lift_mass}, or to read a weight given for a mass")
-    wheel = _wheel(body_options, rim_speed, until_arc, at, rim_accel)
     front = Front()
+    wheel = _wheel(body_options, rim_speed, until_arc, at, rim_accel, front.notes)
     omega0 = _initial_speed(wheel, omega0, rim_speed, ke0, front)
     uses = {"work": work, "lift_mass": lift_mass, "vehicle_mass": vehicle_mass}
     if efficiency is not None or any(value is not None for value in uses.values()):
@@ -197,7 +197,7 @@ def _alpha_of_rim(rim_accel: float, alpha: float | None, rim: float, front: Fron
     return alpha
 
 
-def _wheel(body_options: dict, rim_speed: float | None, until_arc: float | None, at, rim_accel: float | None = None) -> Wheel:
+def _wheel(body_options: dict, rim_speed: float | None, until_arc: float | None, at, rim_accel: float | None = None, notes: list[str] | None = None) -> Wheel:
     """The body (--inertia, or --shape and its dimensions, or parts), and its rim: --radius beside
     --inertia is the rim's (for a rim speed, an arc or a point at the rim), else the shape's radius."""
     has_body = any(body_options.get(name) is not None for name in ("inertia", "shape", "gyration")) or bool(body_options.get("part"))
@@ -206,7 +206,7 @@ def _wheel(body_options: dict, rim_speed: float | None, until_arc: float | None,
         if rim_speed is None and until_arc is None and rim_accel is None and at != RIM:
             raise InputError("radius", "goes with {shape}; with {inertia} it is the rim's radius, for {rim_speed}, {rim_accel}, {until_arc} or {at} rim")
         rim = body_options.pop("radius")
-    moment, body_steps = body(**body_options) if has_body else (None, ())
+    moment, body_steps = body(**body_options, notes=notes) if has_body else (None, ())
     parts = body_table(**body_options) if body_options.get("part") else None
     if rim is None and (rim_speed is not None or until_arc is not None or rim_accel is not None):
         rim = _rim_radius(body_options, "rim_speed" if rim_speed is not None else "until_arc" if until_arc is not None else "rim_accel")
