@@ -226,7 +226,7 @@ def _no_constants(name: str):
 # the text of the modules that make a key and read a unit, and pint's version. Rebuilt by
 # ``python -m taucli.quantities.shipped``; tests/quantities/test_first_run.py checks it is current and agrees with pint.
 SHIPPED = "units-shipped.json"
-RULES = ("units.py", "registry.py", "screen.py", "spellings.py", "kinds.py", "meanings.py")
+RULES = ("units.py", "registry.py", "unit_text.py", "screen.py", "spellings.py", "kinds.py", "meanings.py")
 
 
 def pint_version() -> str | None:

@@ -26,7 +26,8 @@ from taucli.core.errors import InputError
 from taucli.quantities.kinds import (  # noqa: F401 - NEEDS_ITS_UNIT, bare_number: read from here by units
     ANGLE_POWERS, ANGULAR, FORCES, KINDS, NEEDS_ITS_UNIT, STANDARD_GRAVITY, Kind, article, bare_angle, bare_number,
 )
-from taucli.quantities.screen import MAX_DIGITS, MAX_TEXT_LENGTH, screen
+from taucli.quantities.screen import screen
+from taucli.quantities.unit_text import NUMBER, number_times_unit
 
 
 TWO_PI = 2.0 * math.pi
@@ -100,7 +101,7 @@ def _pint_quantity(cleaned: str, option: str, kind: Kind, shown: str):
     ureg = registry()
     for token in spellings.tokens(cleaned):
         if token.kind == "name" and token.text in meanings.AMBIGUOUS_TONS:
-            number = re.match(rf"\s*({_NUMBER})", shown)
+            number = re.match(rf"\s*({NUMBER})", shown)
             why, fix = meanings.ton_refusal(token.text, number[1] if number else "1", kind.name in FORCES)
             raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: {why}", hint=fix)
         if token.kind == "name" and (mixed := _prefix_name_on_symbol(token.text)) is not None:
@@ -208,55 +209,6 @@ def _fits(unit: str, wanted) -> bool:
         return False
 
 
-# "4.5 kg", "300 rpm", "-2 N*m", "1e-3 kg*m^2", "kg", "4", "50 1/s": a number (or none) times a
-# product of unit powers. For such text the value is the number times pint's SI factor for the
-# unit text, and that factor is cached (taucli.quantities.cache); anything else ("4 kg + 200 g") goes to
-# pint whole.
-_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-
-
-# Each part matches one way only: a name ends where its letters end, and the space between two
-# factors is a separator or part of one, never both. Else a failed match ("kkkk...k+") would try
-# every way of cutting the letters into names: 2^n of them, minutes for 30 letters.
-_NAME = r"[A-Za-zµμΩ_][A-Za-z0-9µμΩ_]*(?![A-Za-z0-9µμΩ_])"
-
-
-_POWER_OF = r"(?:\s*(?:\*\*|\^)\s*-?\d{1,2})?"
-
-
-_BETWEEN = r"(?:\s*[*/]\s*|\s+)?"
-
-
-_FACTOR = rf"(?:{_NAME}|\(\s*{_NAME}{_POWER_OF}(?:{_BETWEEN}{_NAME}{_POWER_OF})*\s*\)){_POWER_OF}"
-
-
-_UNIT = rf"(?:(?:1\s*)?/\s*)?{_FACTOR}(?:{_BETWEEN}{_FACTOR})*"
-
-
-_NUMBER_TIMES_UNIT = re.compile(rf"\s*(?P<number>{_NUMBER})?\s*(?P<unit>{_UNIT})?\s*")
-
-
-def number_times_unit(text: str) -> tuple[float, str] | None:
-    """(4.5, "kg") read from "4.5 kg"; (50.0, "1/s") from "50 1/s"; None for any other form of text.
-
-    The unit comes back in one spelling for one meaning (no spaces, "1/s" for "/s"), the key of
-    its cached factor.
-    """
-    if len(text) > 2 * MAX_TEXT_LENGTH:
-        return None
-    split = _NUMBER_TIMES_UNIT.fullmatch(text)
-    if split is None:
-        return None
-    number, unit = split.group("number"), re.sub(r"\s+", "", split.group("unit") or "")
-    if unit.startswith("/"):
-        unit = "1" + unit
-    if number is None:
-        return (1.0, unit) if unit else None
-    if len(number) > MAX_DIGITS + 8:
-        return None
-    return float(number), unit
-
-
 def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, int]:
     """The SI value of ``cleaned`` as pint reads it under taucli's rules, and how it was read
     (AS_GIVEN, REVOLUTIONS, WEIGHT: the value is in newtons, MASS_AS_WEIGHT)."""
@@ -351,7 +303,7 @@ def _angled(cleaned: str, q, text: str, option: str, kind: Kind, value: float, h
 def _ambiguous_in(time: str, text: str, option: str, kind: Kind) -> InputError:
     """The refusal of a time other than the second in a coefficient's unit with no angle in it
     (``N*m*min``): per radian or per revolution per minute."""
-    number = re.match(rf"\s*({_NUMBER})", screen(text, option, kind))
+    number = re.match(rf"\s*({NUMBER})", screen(text, option, kind))
     return meanings.ambiguous_time(registry().get_symbol(time), time, number[1] if number else "1", text, option, kind)
 
 
@@ -441,7 +393,7 @@ def _ambiguous(cleaned: str, q, text: str, option: str, kind: Kind) -> Ambiguous
         per, magnitude = items[0][0], float(q.magnitude)
     else:
         per, magnitude = "second", float(q.to(f"1/s**{-power}").magnitude)
-    number = re.match(rf"\s*({_NUMBER})", whole)
+    number = re.match(rf"\s*({NUMBER})", whole)
     if typed and magnitude == 1 and number is not None:
         count = number[1]  # as typed
     else:

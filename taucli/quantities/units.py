@@ -31,8 +31,9 @@ from taucli.quantities import meanings
 from taucli.quantities import spellings
 from taucli.core.errors import InputError
 from taucli.quantities.kinds import ANGULAR, KINDS, STANDARD_GRAVITY, Kind, article, check_bounds
+from taucli.quantities.unit_text import number_times_unit
 from taucli.quantities.registry import (
-    AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, WEIGHT_INERTIA, Ambiguous, bare_number, expected, from_pint, number_times_unit,
+    AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, WEIGHT_INERTIA, Ambiguous, bare_number, expected, from_pint,
 )
 from taucli.quantities.screen import MAX_DIGITS, MAX_TEXT_LENGTH, screen
 
