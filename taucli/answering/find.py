@@ -115,7 +115,7 @@ def solve_for(scene: Scene, unknown: unknowns.Unknown, want: str, spreads: dict[
         if not search.roots:
             _refuse_unreachable(unknown, key, target, unit, si_unit, search, refusals, scene.given.get(unknown.option.name) is not None)
         found = search.roots
-        best = min(range(len(found)), key=lambda i: (abs(found[i]), found[i] < 0))  # the smallest; of ±x, the positive
+        best = _best(scene, unknown, found)
         x = found[best]
         solution = _search_step(name, key, target, si_unit, unit, search, best)
         extra.extend(_search_notes(unknown, key, target, unit, si_unit, search, f))
@@ -133,7 +133,7 @@ def solve_for(scene: Scene, unknown: unknowns.Unknown, want: str, spreads: dict[
     results.update(nominal.results)
     if len(found) > 1:
         extra.append(f"{len(found)} values of {unknown.spelled} {'give' if complete else 'found give'} {key} = {fmt(target, 6)}: "
-                     + ", ".join(quantity_text(r, si_unit, 6) for r in found) + "; the smallest in size is the result")
+                     + ", ".join(quantity_text(r, si_unit, 6) for r in found) + "; " + _chosen(unknown))
     steps = [
         Step(
             f"The forward equation: {key} as a function of {name}",
@@ -183,6 +183,32 @@ def solve_for(scene: Scene, unknown: unknowns.Unknown, want: str, spreads: dict[
         scene.plan(mc * REDRAWN_SOLVES, "mc")
         monte_carlo(scene, report, spread_all, mc, lambda draw: _redrawn(scene, name, key, target, x, draw, spreads), {"{want}": target})
     return report
+
+
+def _best(scene: Scene, unknown: unknowns.Unknown, found: list[float]) -> int:
+    """Which root is the result: the smallest in size (of ±x, the positive); for an angle the
+    motion travels to (its table names the time it is reached and where it starts: a pendulum's
+    --angle), the first the motion reaches: the least time, and where every time is infinite (a
+    fall from a balance at the top) the nearest to the start along the turn; then as before."""
+    size = lambda i: (abs(found[i]), found[i] < 0)  # noqa: E731
+    first = unknown.option.first_reached if unknown.key is None else None
+    if first is None or len(found) == 1:
+        return min(range(len(found)), key=size)
+    timed, start = first
+    origin = scene.si.get(start) or 0.0
+    reached = []
+    for x in found:
+        values = scene.results({unknown.name: x})
+        time = values.get(timed) if values is not None else None
+        apart = round(abs(math.remainder(x - origin, 2 * math.pi)), 9)  # ±x equally far: a tie, not rounding
+        reached.append((time if isinstance(time, float) and math.isfinite(time) else math.inf, apart))
+    return min(range(len(found)), key=lambda i: (*reached[i], *size(i)))
+
+
+def _chosen(unknown: unknowns.Unknown) -> str:
+    if unknown.option.first_reached and unknown.key is None:
+        return "the first the motion reaches is the result"
+    return "the smallest in size is the result"
 
 
 def _span(search: roots.Search, si_unit: str) -> str:

@@ -19,7 +19,7 @@ COMMAND = Command(
         Option("from_top", FLAG, "Every angle in and out from the upward vertical, in the same sense (a toppling chimney, a falling stick; gravity alone).", panel=MOTION),
         Option("torsion", "torsion constant", "Torsion constant κ of a spring or wire (torque κθ), e.g. '0.5N*m/rad'.", sign="nonnegative"),
         GRAVITY,
-        Option("angle", "angle", "Report ω and the time to reach this angle, e.g. 0deg.", sign="any", panel=MOTION),
+        Option("angle", "angle", "Report ω and the time to reach this angle, e.g. 0deg.", sign="any", panel=MOTION, first_reached=("t_angle", "angle0")),
         Option("time", "time", "Report θ and ω at this time, e.g. 2s.", sign="nonnegative", panel=MOTION),
         Option("at", "length", "A point this far from the pivot: its tangential acceleration at the start, and its speed and accelerations at --angle.", sign="nonnegative", panel=MOTION),
         Option("components", FLAG, "The pivot's force as components (along and across the line to the centre of mass; horizontal and vertical) "

@@ -86,6 +86,7 @@ class Option:
     def also_kinds(self) -> tuple[str, ...]:
         """The other quantity kinds it takes, in the order they are tried."""
         return () if self.also is None else (self.also,) if isinstance(self.also, str) else self.also
+    first_reached: tuple[str, str] | None = None  # --find: of several roots, the first the motion reaches: least (this result, a time; then the angle from this option, the start)
     makes: tuple[str, ...] = ()  # FLAG: the results it turns on; naming one in --get, --y or --to turns it on
 
     @property

@@ -87,3 +87,16 @@ def test_every_method_gives_the_same_signs_from_the_top(method):
     speed, a_t = reference(55, math.radians(145), 55)
     assert got["omega"] == pytest.approx(-speed, rel=1e-12)
     assert got["a_t"] == pytest.approx(a_t, rel=1e-12)
+
+
+def test_find_angle_from_the_top_gives_the_first_angle_of_the_fall():
+    """#42 item 6: a rod on its end falling from the top, a_t = (3g/2) sin θ at its tip: a_t = 9.80
+    at sin θ = 9.80/(1.5 g), four angles in a turn (±41.8°, ±138.2°). The fall from 180° meets
+    138.2° first (41.8° from the top); --find gave 41.8°, a point it reaches later (−41.8° before
+    the fall had a direction)."""
+    g = mpmath.mpf("9.80665")
+    first = float(mpmath.pi - mpmath.asin(mpmath.mpf("9.80") / (mpmath.mpf("1.5") * g)))
+    report = taucli.pendulum(shape="rod", axis="end", length="55m", mass="1kg", angle0="180deg", find="angle", want="a_t=9.80m/s^2", at="55m")
+    assert report.results["angle"].value == pytest.approx(first, rel=1e-12)
+    assert sorted(abs(r) for r in report.results["roots"].value) == pytest.approx(sorted([first, first, math.pi - first, math.pi - first]), rel=1e-12)
+    assert any("the first the motion reaches is the result" in note for note in report.notes)
