@@ -36,7 +36,6 @@ def parts(option: Option, given, inputs: Inputs, stdin) -> tuple:
     return tuple(parse_part_spec(word(option, spec), number, inputs, signed_offset=signed, name=name) for number, spec in enumerate(specs, start=2 if name == "part" else 1))
 
 
-_PART_KEY = re.compile(r"\s+(?=[a-z][a-z_-]*=)")
 PART_DIMENSIONS = ("radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")
 PART_FIELDS = {  # key: (kind, sign), as parse_part_spec reads each
     **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS},
@@ -56,20 +55,12 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
     those need no shape word. Keys read with - or _ (inner-radius=, inner_radius=).
     """
     source = f"{{{name}}} {number}"
-    words = _PART_KEY.split(spec.strip())
-    shape, *pairs = words
-    if shape and "=" in shape:
-        shape, pairs = "", words
-    if not words or not words[0]:
-        raise InputError(source, "expected a shape then key=value pairs", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
-    fields: dict[str, str] = {}
-    for pair in pairs:
-        key, _, text = pair.partition("=")
-        fields[key.replace("-", "_")] = text.strip()
+    example = '{part} "point mass=100g offset=20cm"'
+    if not spec.strip():
+        raise InputError(source, "expected a shape then key=value pairs", example=example, got=repr(spec))
     known = {"mass", "axis", "offset", "inertia", "gyration", "density", *PART_DIMENSIONS}
-    for key in fields:
-        if key not in known:
-            raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", got=repr(key.replace("_", "-")))
+    shape, fields = _spec_fields(spec, source, known, example, shape_word=True)  # the one reader of every spec: a key twice is refused
+    shape = shape or ""
     given_inertia = "inertia" in fields or "gyration" in fields
     if not shape and not given_inertia:
         raise InputError(source, "expected a shape then key=value pairs (or inertia= or gyration=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))

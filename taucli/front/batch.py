@@ -22,6 +22,7 @@ document, 2 when some line was bad input, 1 when some line met a bug.
 from __future__ import annotations
 
 import json
+from collections import Counter
 import os
 import select
 import signal
@@ -253,7 +254,15 @@ def _reject_constant(name: str):
     raise ValueError(f"{name} is not a number JSON allows")
 
 
-_STRICT = json.JSONDecoder(parse_constant=_reject_constant)
+class _Pairs(dict):
+    """A JSON object, with the keys it gave more than once (json.loads keeps the last unsaid)."""
+
+    def __init__(self, pairs: list) -> None:
+        super().__init__(pairs)
+        self.twice = {key for key, count in Counter(key for key, _ in pairs).items() if count > 1} if len(self) < len(pairs) else set()
+
+
+_STRICT = json.JSONDecoder(parse_constant=_reject_constant, object_pairs_hook=_Pairs)
 
 
 def _keys(command: Command) -> dict[str, str]:
@@ -280,11 +289,20 @@ def _line(line: str, keys: dict[str, str], command: Command, texts: frozenset[st
         raise InputError("", "expected a JSON object of options", example=_EXAMPLE_LINE, got=repr(text[:60]))
     options: dict = {}
     answer: dict = {}
-    for key, value in given.items():
+    spelled: dict[str, str] = {}  # option name -> the key that gave it (pulley_mass and pulley-mass are one option)
+    for key in given:  # every key first: a key given twice is refused before any value is read
         name = keys.get(key)
         if name is None:
             known = [option.name for option in command.options]
             raise InputError(key, f"is not an option of {command.name} in a batch", hint=did_you_mean(key.replace("-", "_"), known))
+        if key in given.twice:
+            raise InputError(name, "is given twice in one line; an option takes one value (a list where it is repeatable): give it once",
+                             example=_EXAMPLE_LINE, got=repr(text[:60]))
+        if name in spelled:
+            raise InputError(name, f"is given twice in one line (as {spelled[name]!r} and {key!r}): give it once", example=_EXAMPLE_LINE, got=repr(text[:60]))
+        spelled[name] = key
+    for key, value in given.items():
+        name = keys[key]
         if value is None:
             continue
         if name == "to":

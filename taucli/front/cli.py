@@ -313,7 +313,7 @@ def main(argv: list[str] | None = None, env: Environment | None = None) -> int:
         return answered
     at = command_at(args)
     command = COMMANDS.get(args[at]) if at < len(args) else None
-    misread = usage.explain(command, args, at)  # --m1 --m2 1kg, --torque 2 N m, -help: the fix
+    misread = usage.explain(command, args, at) or usage.given_twice(command, args, at)  # --m1 --m2 1kg, --torque 2 N m, -help, --m1 twice: the fix
     if misread is not None:
         where = f" (see 'taucli {command.name} --help')" if command is not None else " (see 'taucli --help')"
         return _fail(env, ExitStatus.USAGE, misread + where)
