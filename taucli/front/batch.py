@@ -262,7 +262,16 @@ class _Pairs(dict):
         self.twice = {key for key, count in Counter(key for key, _ in pairs).items() if count > 1} if len(self) < len(pairs) else set()
 
 
-_STRICT = json.JSONDecoder(parse_constant=_reject_constant, object_pairs_hook=_Pairs)
+def _number(text: str):
+    """A JSON number as a float; one written nonzero that a double rounds to 0 (1e-400) as its
+    text, which is then read, and bounded, as what was written (not as 0)."""
+    value = float(text)
+    if value == 0 and any(digit in "123456789" for digit in text.lower().partition("e")[0]):
+        return text
+    return value
+
+
+_STRICT = json.JSONDecoder(parse_constant=_reject_constant, parse_float=_number, object_pairs_hook=_Pairs)
 
 
 def _keys(command: Command) -> dict[str, str]:
