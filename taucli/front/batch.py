@@ -176,18 +176,24 @@ def _too_long(start: str) -> InputError:
 
 
 def _lines(stream) -> Iterator:
-    """The lines of ``stream``, each read at most MAX_LINE characters at a time: a line, or the
-    InputError of a line that is longer (the rest of it is then read and passed over)."""
-    readline = getattr(stream, "readline", None)
+    """The lines of ``stream``, each read at most MAX_LINE characters (bytes, from a byte stream)
+    at a time: a line, or the InputError of a line that is longer (the rest of it is then read and
+    passed over). Where the stream has a byte buffer (stdin), lines are read as bytes and each is
+    decoded as UTF-8, whatever the locale says (JSON is UTF-8, RFC 8259): a byte that is not
+    UTF-8 stays in its line as an escape (surrogateescape), so that line is answered or refused
+    on its own, and the others are read as written."""
+    buffer = getattr(stream, "buffer", None)
+    readline = getattr(buffer if buffer is not None else stream, "readline", None)
     if readline is None:  # a list of lines
         yield from (line if len(line) <= MAX_LINE else _too_long(line) for line in stream)
         return
+    end = "\n" if buffer is None else b"\n"
     while line := readline(MAX_LINE + 1):
-        if len(line) <= MAX_LINE or line.endswith("\n"):
-            yield line
+        if len(line) <= MAX_LINE or line.endswith(end):
+            yield line if buffer is None else line.decode("utf-8", "surrogateescape")
             continue
-        yield _too_long(line)
-        while (rest := readline(MAX_LINE)) and not rest.endswith("\n"):
+        yield _too_long(line if buffer is None else line[:80].decode("utf-8", "surrogateescape"))
+        while (rest := readline(MAX_LINE)) and not rest.endswith(end):
             pass
 
 
