@@ -154,6 +154,7 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
                              example='{y} "w (rad/s)=omega"', hint=did_you_mean(key, [r.key for r in command.results]))
         chosen[header] = (key if command.result(key) is not None else _key(key), True, unit)
     sigma_header = _sigma_column(tables, sigma)
+    _refuse_sigma_of_a_used_column(command, tables[0], chosen, sigma_header, y is not None)
     unused = _match_the_rest(command, tables[0], chosen, sigma_header, y is not None, notes)
     results = [header for header, (_, is_result, _) in chosen.items() if is_result]
     if not results:
@@ -171,6 +172,22 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
     found = _collected(command, tables, y_column, inputs_mapped, sigma, sigma_header, ranges, every, gravity, notes)
     _refuse_one_run_beside_unused(command, tables, found, unused)
     return found
+
+
+def _refuse_sigma_of_a_used_column(command: Command, table: DataTable, chosen: dict, sigma_header: str | None, y_given: bool) -> None:
+    """--sigma naming a column the fit uses otherwise: the measured one (its own σ: the fit then
+    weighs each sample by its size) or an input's. A σ is a column of its own, or one value."""
+    if sigma_header is None:
+        return
+    used = dict(chosen)
+    if sigma_header not in used:
+        _match_the_rest(command, table, used, None, y_given, [])  # what the column would be, were it not σ
+    others_measured = any(is_result for header, (_, is_result, _) in used.items() if header != sigma_header)
+    if sigma_header in used and not (used[sigma_header][1] and others_measured):  # (named like a result beside the measured column: σ)
+        target, is_result, _ = used[sigma_header]
+        what = f"the measured {target}" if is_result else f"the input {target}"
+        raise InputError("sigma", f"names column {sigma_header!r}, which is {what}: a sample's uncertainty is a column of its own, or one value for all",
+                         example="{sigma} 0.05rad/s", got=repr(sigma_header))
 
 
 def _refuse_one_run_beside_unused(command: Command, tables: list[DataTable], found: Samples, unused: list[str]) -> None:
