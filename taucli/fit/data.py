@@ -197,4 +197,7 @@ def _number(cell: str, line: int, header: str, name: str, decimal_comma: bool) -
     value = float(text)
     if value in (float("inf"), float("-inf")):
         raise InputError(OPTION, f"{name} line {line}: column {header!r} holds a number too large for a double", got=repr(cell.strip()[:40]))
+    if value == 0 and any(digit in "123456789" for digit in text.lower().partition("e")[0]):  # 1e-400: not 0, whatever a double rounds it to
+        raise InputError(OPTION, f"{name} line {line}: column {header!r} holds a nonzero number too small for a double (it would be read as 0)",
+                         got=repr(cell.strip()[:40]))
     return value
