@@ -6,7 +6,7 @@ alone takes longer than a help should. Everything else goes to taucli.front.cli.
 
 import sys
 
-from taucli.front import help
+from taucli.front import help, streams
 
 
 SYMBOLS = "²½αωθτ·√−→₁≤μ"  # what taucli's text uses beyond ASCII
@@ -29,7 +29,11 @@ def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
     _speakable(sys.stdout)
     _speakable(sys.stderr)
-    answered = help.answer(args, sys.stdout, sys.stderr)
+    stdout = streams.guarded(sys.stdout)  # closed or full: one line and exit 74, not a traceback
+    try:
+        answered = help.answer(args, stdout, sys.stderr)
+    except streams.OutputFailed as err:
+        return streams.failed(err, sys.stderr)
     if answered is not None:
         return answered
     from taucli.front.cli import main as run  # deferred: typer (about 25 ms), which help and --version do without

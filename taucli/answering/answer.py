@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 
 from taucli.answering import pipeline
-from taucli.core.errors import InputError, spelled
+from taucli.core.errors import InputError
 from taucli.answering.inputs import read
 from taucli.quantities.measurement import CONCISE, split
 from taucli.writing.report import Report
@@ -68,14 +68,18 @@ def solve(
         if option is not None and option.kind == FILE and value is not None:
             raise InputError(name, "does not combine with an uncertainty, {find} or {mc}: the scene is solved many times, and a file is read once")
     unknown = finding.unknown(command, find, given) if find is not None else None
-    central, spreads, notes = _read(command, given, spell, propagate.readable(command, given, unknown))
+    central, spreads, placed = _read(command, given, propagate.readable(command, given, unknown))
+    notes: list[str] = []
     scene = propagate.Scene(command, central, stdin, spell, unknown, limit=limit)
+    for name, (input_, centre) in placed.items():  # a spec's key, a repeated option's value: moved in its place
+        scene.unknowns[name] = input_
+        scene.si[name] = centre
     scene.progress = progress
     if unknown is not None:
         return finding.solve_for(scene, unknown, want, spreads, notes, mc)
     nominal = scene.report({})
     if not spreads and not mc:
-        nominal.notes = [*notes, *nominal.notes]  # what the reading said (an uncertainty not carried through)
+        nominal.notes = [*notes, *nominal.notes]
         return nominal
     slopes = propagate.jacobian(scene, {name: scene.si[name] for name in spreads}, spreads)
     sigma = propagate.combine(slopes, spreads, propagate.numeric(nominal))
@@ -87,19 +91,28 @@ def solve(
     return report
 
 
-def _read(command: Command, given: Mapping[str, object], spell, readable: Mapping[str, object]) -> tuple[dict, dict[str, float], list[str]]:
-    """The options with each value's text in place of "value ± σ", and each σ in SI (read from
-    ``readable``: the options with a stand-in where --find solves for a key of a spec)."""
+def _read(command: Command, given: Mapping[str, object], readable: Mapping[str, object]) -> tuple[dict, dict[str, float], dict]:
+    """The options with each value's text in place of "value ± σ", each σ in SI (read from
+    ``readable``: the options with a stand-in where --find solves for a key of a spec), and the
+    inputs with a σ that are not options of their own (a spec's key, one value of a repeated
+    option): name -> (how it is moved in its place, its value in SI)."""
     _, inputs = read(command, readable)
     spreads: dict[str, float] = {}
-    notes: list[str] = []
+    placed: dict = {}
     central = dict(given)
     for key, sigma in (inputs.uncertainties or {}).items():
+        origin = inputs.origins.get(key)
         option = command.option(key)
-        if option is None or not option.is_quantity or option.repeatable:
-            notes.append(spelled(f"the uncertainty given in {key} is not carried through: only a scene's own single quantity options carry one", spell, command.option))
-            continue
-        central[key] = split(given[key])[0]
+        if origin is not None:
+            from taucli.answering.unknowns import Placed  # deferred: only for an uncertainty inside a spec or a repeated option
+
+            input_ = Placed(key, origin)
+            central = input_.changed(central, lambda text: split(text)[0] if split(text) is not None else text)
+            placed[key] = (input_, inputs.values[key].value)
+        elif option is not None and option.is_quantity and not option.repeatable:
+            central[key] = split(given[key])[0]
+        else:  # never shown with an uncertainty of 0: refused where it cannot be carried through
+            raise InputError(key, "takes no uncertainty here: give its value alone", got=repr(sigma))
         if sigma > 0:
             spreads[key] = sigma
-    return central, spreads, notes
+    return central, spreads, placed

@@ -13,7 +13,7 @@ from typing import TextIO
 from taucli.quantities import units
 from taucli.core.errors import InputError, did_you_mean
 from taucli.quantities.kinds import article
-from taucli.answering.reading import Inputs, word
+from taucli.answering.reading import Inputs, Origin, word
 from taucli.writing.report import Value
 from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, ROTOR, SIDE, TEXT, VECTOR, Command, Option
 
@@ -114,7 +114,9 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
         raise InputError(option.name, "expected a value for each item, not null (None)", example=f"{{{option.name}}} {units.KINDS[option.kind].example}", got=repr(given))
     keys = [option.name + (str(number) if len(items) > 1 else "") for number in range(1, len(items) + 1)]
     names = [f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "") for number in range(1, len(items) + 1)]
-    return tuple(inputs.quantity(name, item, option.kind, sign=option.sign, key=key) for name, item, key in zip(names, items, keys))
+    si = units.KINDS[option.kind].si_unit
+    return tuple(inputs.quantity(name, item, option.kind, sign=option.sign, key=key, origin=Origin(option.name, index, None, name, si, option.sign))
+                 for index, (name, item, key) in enumerate(zip(names, items, keys)))
 
 
 def _either(option: Option, given: str, inputs: Inputs):

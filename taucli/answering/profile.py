@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from taucli.quantities import units
 from taucli.core.errors import InputError
-from taucli.quantities.kinds import BOUNDS, check_bounds
+from taucli.quantities.kinds import BOUNDS, check_bounds, out_of_bounds
 
 OPTION = "--torque-profile"
 _HEADER_CELL = re.compile(r"^\s*([A-Za-z_][\w ]*?)\s*(?:\[(.*)\])?\s*$")
@@ -91,6 +91,9 @@ def _samples(rows: Iterator[tuple[int, str]], time_factor: float, torque_factor:
             raise InputError(OPTION, f"line {number}: expected numbers", got=repr(line)) from None
         if not (math.isfinite(t) and math.isfinite(torque)):
             raise InputError(OPTION, f"line {number}: expected finite numbers", got=repr(line))
+        for value, cell, kind in ((t, cells[0], "time"), (torque, cells[1], "torque")):
+            if value == 0 and units.underflowed(cell):  # 1e-400: bounded as written, not as the 0 a double rounds it to
+                raise out_of_bounds(kind, OPTION, sign="any", got=f"{cell.strip()!r} on line {number}, nonzero but below what a double holds")
         if t <= previous:
             raise InputError(OPTION, f"line {number}: time must increase from row to row", got=repr(line))
         # Held to the bounds a typed --torque or --duration is held to, a step between rows too

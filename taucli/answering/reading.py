@@ -16,6 +16,21 @@ from taucli.writing.report import Value
 from taucli.options.table import Option
 
 
+@dataclass(frozen=True)
+class Origin:
+    """Where a value was among an option's values: the ``index``-th value given (0: the first) of
+    ``option``, and in it the spec's ``key`` (None: the value itself); ``spelled`` names it in
+    messages ("{part} 2 mass="); ``unit`` is the SI unit a moved value is written in, ``sign`` the
+    sign it may take."""
+
+    option: str
+    index: int
+    key: str | None
+    spelled: str
+    unit: str
+    sign: str
+
+
 @dataclass
 class Inputs:
     """What was read: each value as given, in SI, and any notes on reading it."""
@@ -25,11 +40,17 @@ class Inputs:
     gravity: float | None = None  # the scene's --g, for a weight given as a mass
     gravity_used: bool = False  # a weight was read as a mass with the scene's --g
     uncertainties: dict[str, float] | None = None  # "4.0+/-0.1 kg": each σ in SI (taucli.quantities.measurement)
+    # Where a value read under a key other than its option's name came from, so that an uncertainty
+    # given there is carried through as an option's is (taucli.answering.answer): key -> Origin.
+    origins: dict[str, Origin] = field(default_factory=dict)
 
-    def quantity(self, name: str, given, kind: str, *, sign: str = "positive", key: str | None = None) -> float | None:
-        """The SI value of ``given``: text with a unit, or a number, which is SI."""
+    def quantity(self, name: str, given, kind: str, *, sign: str = "positive", key: str | None = None, origin: Origin | None = None) -> float | None:
+        """The SI value of ``given``: text with a unit, or a number, which is SI. ``origin``: where
+        in an option's values it was (a spec's key, the nth value of a repeated option)."""
         if given is None:
             return None
+        if origin is not None:
+            self.origins[key or name] = origin
         if given.__class__ is str and (value := units.known(given, kind, sign)) is not None:  # most texts of a batch
             self.values[key or name] = Value(value, units.KINDS[kind].si_unit, "")
             return value

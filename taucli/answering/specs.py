@@ -10,7 +10,7 @@ import re
 
 from taucli.quantities import units
 from taucli.core.errors import InputError
-from taucli.answering.reading import Inputs, word
+from taucli.answering.reading import Inputs, Origin, word
 from taucli.writing.report import Value, fmt
 from taucli.scenes.given import PRESSURES, SURFACES, Band, Brake, Couple, Face, Part, Particle, Pull, Rotor, Side
 from taucli.options.table import Option
@@ -33,10 +33,10 @@ def parts(option: Option, given, inputs: Inputs, stdin) -> tuple:
     specs = given if isinstance(given, (list, tuple)) else [given]
     signed = option.sign == "any"  # (pendulum: a part on the other side of the pivot has a negative offset=)
     name = option.name  # part, or part_after (impulse: the body after a change)
-    return tuple(parse_part_spec(word(option, spec), number, inputs, signed_offset=signed, name=name) for number, spec in enumerate(specs, start=2 if name == "part" else 1))
+    start = 2 if name == "part" else 1
+    return tuple(parse_part_spec(word(option, spec), number, inputs, signed_offset=signed, name=name, index=number - start) for number, spec in enumerate(specs, start=start))
 
 
-_PART_KEY = re.compile(r"\s+(?=[a-z][a-z_-]*=)")
 PART_DIMENSIONS = ("radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")
 PART_FIELDS = {  # key: (kind, sign), as parse_part_spec reads each
     **{key: ("length", "nonnegative" if key == "inner_radius" else "positive") for key in PART_DIMENSIONS},
@@ -48,7 +48,7 @@ PART_FIELDS = {  # key: (kind, sign), as parse_part_spec reads each
 }
 
 
-def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bool = False, name: str = "part"):
+def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bool = False, name: str = "part", index: int = 0):
     """A ``--part`` value such as "point mass=100g offset=20cm" as an inertia Part.
 
     A part is a shape with mass= (or density=) and its dimensions, or its own I: inertia=
@@ -56,20 +56,12 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
     those need no shape word. Keys read with - or _ (inner-radius=, inner_radius=).
     """
     source = f"{{{name}}} {number}"
-    words = _PART_KEY.split(spec.strip())
-    shape, *pairs = words
-    if shape and "=" in shape:
-        shape, pairs = "", words
-    if not words or not words[0]:
-        raise InputError(source, "expected a shape then key=value pairs", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
-    fields: dict[str, str] = {}
-    for pair in pairs:
-        key, _, text = pair.partition("=")
-        fields[key.replace("-", "_")] = text.strip()
+    example = '{part} "point mass=100g offset=20cm"'
+    if not spec.strip():
+        raise InputError(source, "expected a shape then key=value pairs", example=example, got=repr(spec))
     known = {"mass", "axis", "offset", "inertia", "gyration", "density", *PART_DIMENSIONS}
-    for key in fields:
-        if key not in known:
-            raise InputError(source, f"knows {', '.join(sorted(k.replace('_', '-') for k in known))}", got=repr(key.replace("_", "-")))
+    shape, fields = _spec_fields(spec, source, known, example, shape_word=True)  # the one reader of every spec: a key twice is refused
+    shape = shape or ""
     given_inertia = "inertia" in fields or "gyration" in fields
     if not shape and not given_inertia:
         raise InputError(source, "expected a shape then key=value pairs (or inertia= or gyration=)", example='{part} "point mass=100g offset=20cm"', got=repr(spec))
@@ -82,7 +74,9 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
         kind, sign = PART_FIELDS[key]
         if key == "offset" and signed_offset:
             sign = "any"  # (pendulum: a part on the other side of the pivot)
-        return inputs.quantity(f"{source} {key.replace('_', '-')}=", fields[key], kind, sign=sign, key=f"{name}{number}_{key}")
+        spelled = f"{source} {key.replace('_', '-')}="
+        origin = Origin(name, index, key, spelled, units.KINDS[kind].si_unit, sign)
+        return inputs.quantity(spelled, fields[key], kind, sign=sign, key=f"{name}{number}_{key}", origin=origin)
 
     dims = {key: read_field(key) for key in PART_DIMENSIONS if key in fields}
     offset = read_field("offset") if "offset" in fields else None
@@ -90,6 +84,8 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
     inertia = read_field("inertia") if "inertia" in fields else None
     gyration = read_field("gyration") if "gyration" in fields else None
     density, per = _read_density(source, fields["density"], inputs, f"{name}{number}_density") if "density" in fields else (None, "kg/m**3")
+    if density is not None:  # its unit (per volume, area or length) known only now
+        inputs.origins[f"{name}{number}_density"] = Origin(name, index, "density", f"{source} density=", per, "positive")
     return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density, per)
 
 
@@ -136,7 +132,7 @@ def vectors(option: Option, given, inputs: Inputs, stdin) -> tuple:
     for number, item in enumerate(items, start=1):
         name = f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "")
         key = option.name + (str(number) if len(items) > 1 else "")
-        read.append(read_vector(item, name, option.of, inputs, key))
+        read.append(read_vector(item, name, option.of, inputs, key, Origin(option.name, number - 1, None, name, units.KINDS[option.of].si_unit, "any")))
     return tuple(read)
 
 
@@ -155,7 +151,7 @@ def _is_triple(given) -> bool:
     return isinstance(given, (list, tuple)) and len(given) == 3 and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in given)
 
 
-def read_vector(given, name: str, kind: str, inputs: Inputs, key: str):
+def read_vector(given, name: str, kind: str, inputs: Inputs, key: str, origin: Origin | None = None):
     """One vector "x,y,z UNIT" (one unit after the last component, or a unit on each) in SI."""
     si = units.KINDS[kind].si_unit
     example = f'{name.split()[0]} "0.3,0.4,0 {si or "1"}"'
@@ -167,7 +163,7 @@ def read_vector(given, name: str, kind: str, inputs: Inputs, key: str):
             text = text[1:-1]
         components = [part.strip() for part in text.split(",")]
     if len(components) == 1:
-        return inputs.quantity(name, components[0], kind, sign="any", key=key)
+        return inputs.quantity(name, components[0], kind, sign="any", key=key, origin=origin)
     if len(components) != 3:
         raise InputError(name, "expected three components x,y,z with a unit", example=example, got=repr(given))
     split = [_NUMBER_THEN_UNIT.fullmatch(part) for part in components]
@@ -224,9 +220,28 @@ def _spec_fields(spec: str, source: str, known, example: str, *, shape_word: boo
     return shape, fields
 
 
-def _read_fields(fields: dict[str, str], table: dict, source: str, prefix: str, inputs: Inputs) -> dict[str, float]:
-    return {key: inputs.quantity(f"{source} {key.replace('_', '-')}=", text, table[key][0], sign=table[key][1], key=f"{prefix}_{key}")
-            for key, text in fields.items() if key in table}
+def with_key(spec: str, key: str, change) -> str:
+    """``spec`` with the text of its ``key`` (snake case) replaced by ``change(text)``, the rest
+    as it was: how a key's value is moved (an uncertainty carried through, a --find trial)."""
+    words = [word.strip() for word in _SPEC_KEY.split(" " + spec.strip()) if word.strip()]
+    for i, pair in enumerate(words):
+        name, equals, text = pair.partition("=")
+        if equals and name.strip().replace("-", "_") == key:
+            words[i] = f"{name.strip()}={change(text.strip())}"
+    return " ".join(words)
+
+
+def _read_fields(fields: dict[str, str], table: dict, source: str, prefix: str, inputs: Inputs, option: str, index: int) -> dict[str, float]:
+    """Each key of ``table`` in the spec, read in SI; ``option`` and ``index`` say which value of
+    which option the spec is, so that an uncertainty given in a key is carried through."""
+    read = {}
+    for key, text in fields.items():
+        if key in table:
+            kind, sign = table[key]
+            spelled = f"{source} {key.replace('_', '-')}="
+            origin = Origin(option, index, key, spelled, units.KINDS[kind].si_unit, sign)
+            read[key] = inputs.quantity(spelled, text, kind, sign=sign, key=f"{prefix}_{key}", origin=origin)
+    return read
 
 
 def _specs(option: Option, given):
@@ -246,7 +261,7 @@ def particles(option: Option, given, inputs: Inputs, stdin) -> tuple:
         for needed in ("mass", "radius"):
             if needed not in fields:
                 raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
-        values = _read_fields(fields, PARTICLE_FIELDS, source, f"particle{number}", inputs)
+        values = _read_fields(fields, PARTICLE_FIELDS, source, f"particle{number}", inputs, option.name, number - 1)
         particles.append(Particle(source=source, **values))
     return tuple(particles)
 
@@ -256,7 +271,7 @@ def couples(option: Option, given, inputs: Inputs, stdin) -> tuple:
     couples = []
     for number, source, spec in _specs(option, given):
         shape, fields = _spec_fields(spec, source, {*COUPLE_FIELDS, "axis"}, example, shape_word=True)
-        values = _read_fields(fields, COUPLE_FIELDS, source, f"couple{number}", inputs)
+        values = _read_fields(fields, COUPLE_FIELDS, source, f"couple{number}", inputs, option.name, number - 1)
         if (shape is None) == ("inertia" not in values):
             raise InputError(source, "needs inertia= or a shape with its mass and dimensions (one of them)", example=example, got=repr(spec))
         dims = {key: values[key] for key in PART_DIMENSIONS if key in values}
@@ -278,7 +293,7 @@ def rotors(option: Option, given, inputs: Inputs, stdin) -> tuple:
         for needed in ("inertia", "spin", "sense"):
             if needed not in fields:
                 raise InputError(source, f"needs {needed}=", example=example, got=repr(spec))
-        values = _read_fields(fields, ROTOR_FIELDS, source, f"rotor{number}", inputs)
+        values = _read_fields(fields, ROTOR_FIELDS, source, f"rotor{number}", inputs, option.name, number - 1)
         rotors.append(Rotor(source, values["inertia"], values["spin"], fields["sense"]))
     return tuple(rotors)
 
@@ -309,7 +324,7 @@ def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
                              example=lever_example, got=repr(spec))
         if "offset" in fields and "lever" not in fields:
             raise InputError(source, "takes offset= (the friction's arm about the lever's pivot) only with lever= and pivot=", example=lever_example, got=repr(spec))
-        values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs)
+        values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs, option.name, number - 1)
         mu_k, mu_s = coefficients(source, values)
         brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius"), values.get("lever"), values.get("pivot"), values.get("offset", 0.0)))
     return tuple(brakes)
@@ -333,7 +348,7 @@ def faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
         if "force" in fields and "pmax" in fields:
             raise InputError(source, "takes force= (the clamp force) or pmax= (the largest pressure, giving the force), not both",
                              example='{face} "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm"', got=repr(spec))
-        values = _read_fields(fields, FACE_FIELDS, source, f"face{number}", inputs)
+        values = _read_fields(fields, FACE_FIELDS, source, f"face{number}", inputs, option.name, number - 1)
         mu_k, mu_s = coefficients(source, values)
         model = fields.get("model", "uniform")
         if model not in PRESSURES:
@@ -362,7 +377,7 @@ def bands(option: Option, given, inputs: Inputs, stdin) -> tuple:
         if levered and ("force" not in fields or "lever" not in fields or not {"slack_arm", "tight_arm"} & set(fields)):
             raise InputError(source, "a lever needs force= at lever= from its pivot, and slack-arm= or tight-arm= (or both) where the band's ends are",
                              example=example, got=repr(spec))
-        values = _read_fields(fields, BAND_FIELDS, source, f"band{number}", inputs)
+        values = _read_fields(fields, BAND_FIELDS, source, f"band{number}", inputs, option.name, number - 1)
         mu_k, mu_s = coefficients(source, values)
         bands.append(Band(source, mu_k, values["wrap"], mu_s, values.get("radius"), values.get("width"), values.get("tension"), values.get("force"),
                           values.get("lever"), values.get("slack_arm"), values.get("tight_arm")))
@@ -385,7 +400,7 @@ def sides(option: Option, given, inputs: Inputs, stdin):
         surface = "incline"
     if surface not in SURFACES:
         raise InputError(source, f"expected {', '.join(SURFACES)} then key=value pairs", example=example, got=repr(spec))
-    values = _read_fields(fields, SIDE_FIELDS, source, option.name, inputs)
+    values = _read_fields(fields, SIDE_FIELDS, source, option.name, inputs, option.name, 0)
     if surface == "incline" and "angle" not in values:
         raise InputError(source, "incline needs angle=", example=example, got=repr(spec))
     if surface != "incline" and "angle" in values:
@@ -413,7 +428,7 @@ def pulls(option: Option, given, inputs: Inputs, stdin) -> tuple:
         on = fields.get("on", "1").strip()
         if on not in ("1", "2"):
             raise InputError(source, "on= is 1 or 2 (the block pulled: m1's or m2's)", example=example, got=repr(on))
-        values = _read_fields(fields, PULL_FIELDS, source, f"pull{number}", inputs)
+        values = _read_fields(fields, PULL_FIELDS, source, f"pull{number}", inputs, option.name, number - 1)
         angle = values.get("angle", 0.0)
         if not -math.pi / 2 <= angle <= math.pi / 2:
             raise InputError(source, "angle= is from −90 to 90 deg off the surface (a negative force= pulls the other way)",

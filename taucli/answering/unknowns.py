@@ -23,7 +23,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from taucli.core.errors import InputError
-from taucli.answering.specs import BAND_FIELDS, BRAKE_FIELDS, COUPLE_FIELDS, FACE_FIELDS, PARTICLE_FIELDS, PART_FIELDS, ROTOR_FIELDS
+from taucli.answering.specs import with_key, BAND_FIELDS, BRAKE_FIELDS, COUPLE_FIELDS, FACE_FIELDS, PARTICLE_FIELDS, PART_FIELDS, ROTOR_FIELDS
 from taucli.options.table import BAND, BRAKE, COUPLE, FACE, PART, PARTICLE, ROTOR, VECTOR, Command, Option
 from taucli.quantities.units import KINDS
 
@@ -89,6 +89,39 @@ class Unknown:
             values[index] = f"{values[index]} {self.key.replace('_', '-')}={text}"
             moved[self.option.name] = values
         return moved
+
+
+@dataclass(frozen=True)
+class Placed:
+    """An input with an uncertainty that is not an option of its own: a key of a spec ("{part} 2
+    mass="), or one value of a repeated option ("{lever} 2"), moved in its place (its text) as
+    uncertainties are carried through; ``origin`` is where it was (taucli.answering.reading.Origin)."""
+
+    name: str  # the key its value is echoed under: "part2_mass", "brake_force", "lever2"
+    origin: object
+
+    @property
+    def sign(self) -> str:
+        return self.origin.sign
+
+    @property
+    def spelled(self) -> str:
+        return self.origin.spelled
+
+    def changed(self, given: Mapping[str, object], change) -> dict:
+        """The options ``given`` with this input's text replaced by ``change(text)``."""
+        option, index, key = self.origin.option, self.origin.index, self.origin.key
+        moved = dict(given)
+        single = not isinstance(given.get(option), (list, tuple))
+        values = _items(given.get(option))
+        values[index] = change(str(values[index]).strip()) if key is None else with_key(str(values[index]), key, change)
+        moved[option] = values[0] if single else values
+        return moved
+
+    def given_with(self, given: Mapping[str, object], x: float) -> dict:
+        """The options ``given`` with the trial value x (SI) in this input's place."""
+        text = f"{x!r} {self.origin.unit}" if self.origin.unit else repr(x)
+        return self.changed(given, lambda _: text)
 
 
 def _items(value) -> list:

@@ -25,6 +25,7 @@ class ExitStatus(IntEnum):
     OK = 0
     INTERNAL = 1  # a bug in taucli: the message asks for a report
     USAGE = 2  # bad input: wrong unit, bad number, missing or conflicting option
+    OUTPUT = 74  # the answer could not be written: stdout closed, a full disk, an I/O error (sysexits' EX_IOERR)
     INTERRUPTED = 130  # Ctrl-C
 
 

@@ -52,11 +52,77 @@ def run(*, env, **given) -> int:
     return command.run(env, given)
 
 
-def fit(scene: str, *data: str, fit: str, x=(), y: str | None = None, sigma: str | None = None, range=(), every=None, stdin=None, **options):
+def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = None, range=(), every=None, stdin=None, **options):
     """The fit's Report: ``scene``'s inputs named in ``fit`` ("friction,viscous") fitted to the
-    tables ``data`` (file names), the scene's other options as keywords (texts with units, or SI)."""
+    tables ``data`` (file names, pathlib.Path, or open file objects), the scene's other options as
+    keywords (texts with units, or SI numbers; numpy numbers too). Every bad argument raises
+    InputError naming it."""
+    from taucli.answering.python import plain
+
     _needs_scipy()
     from taucli.fit import command  # deferred: numpy and scipy with it, only for a fit
 
-    return command.fitted(scene, list(data), options, fit=fit, x=tuple(x) if not isinstance(x, str) else (x,), y=y, sigma=sigma,
-                          ranges=tuple(range) if not isinstance(range, str) else (range,), every=every, stdin=stdin, spell=lambda name: name)
+    if not isinstance(scene, str):
+        raise InputError("scene", "expected a scene's name, a text", example='taucli.fit.fit("spin-down", "coast.csv", fit="friction")', got=_shown(scene))
+    sources = [_source(item) for item in data]
+    if not sources:
+        raise InputError("data", "expected a data file (CSV) after the scene: a path, or an open file", example='taucli.fit.fit("spin-down", "coast.csv", fit="friction")')
+    if stdin is not None and not callable(getattr(stdin, "read", None)):
+        raise InputError("stdin", "expected a file object to read - from (or None)", got=_shown(stdin))
+    every = _whole(every)
+    options = {name.replace("-", "_"): plain(value, name) for name, value in options.items()}
+    return command.fitted(scene, sources, options, fit=_texts(fit, "fit", "friction,viscous", alone=True), x=_texts(x, "x", "t (s)=time"),
+                          y=_text(y, "y", "omega (rad/s)=omega"), sigma=_text(sigma, "sigma", "0.05 rad/s"),
+                          ranges=_texts(range, "range", "time=0..10s"), every=every, stdin=stdin, spell=lambda name: name)
+
+
+def _shown(value) -> str:
+    text = repr(value) if not isinstance(value, int) or value.bit_length() < 200 else f"a whole number of {value.bit_length()} bits"
+    return f"{text[:60]} ({type(value).__name__})"
+
+
+def _source(item):
+    """A data file as fit reads it: a path's text, or an open file object (text or bytes)."""
+    import os
+
+    if isinstance(item, str):
+        return item
+    if isinstance(item, os.PathLike):
+        path = os.fspath(item)
+        if isinstance(path, str):
+            return path
+    elif callable(getattr(item, "read", None)):
+        return item
+    raise InputError("data", "expected a file's path (a text or a pathlib.Path) or an open file", example='taucli.fit.fit("spin-down", "coast.csv", fit="friction")',
+                     got=_shown(item))
+
+
+def _text(value, name: str, example: str):
+    if value is None or isinstance(value, str):
+        return value
+    raise InputError(name, "expected a text (a column, or a value with its unit)" if name == "sigma" else "expected a text", example=f'{name}="{example}"', got=_shown(value))
+
+
+def _texts(value, name: str, example: str, *, alone: bool = False):
+    """A text, or a list or tuple of texts (x=, range=; fit= as one text or a list)."""
+    if isinstance(value, str):
+        return value if alone else (value,)
+    if value is None and not alone:
+        return ()
+    if isinstance(value, (list, tuple)) and value and all(isinstance(item, str) for item in value):
+        return ",".join(value) if alone else tuple(value)
+    if isinstance(value, (list, tuple)) and not value and not alone:
+        return ()
+    raise InputError(name, "expected a text or a list of texts", example=f'{name}="{example}"', got=_shown(value))
+
+
+def _whole(every):
+    """every=: a whole number (or its text), bounded before any text of it is made."""
+    if every is None or isinstance(every, str):
+        return every
+    from taucli.answering.python import plain
+
+    every = plain(every, "every")
+    if isinstance(every, int) and not isinstance(every, bool) and every.bit_length() <= 64:
+        return str(every)
+    raise InputError("every", "expected a whole number of 1 or more", example="every=10", got=_shown(every))

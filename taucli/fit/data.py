@@ -67,9 +67,10 @@ def split_header(header: str) -> tuple[str, str]:
     return found[1].strip(), found[2].strip()
 
 
-def read(source: str, stdin=None) -> DataTable:
-    """The table in the file ``source`` (``-``: stdin), or a usage error naming what is wrong."""
-    name = "stdin" if source == "-" else source
+def read(source, stdin=None) -> DataTable:
+    """The table in the file ``source`` (``-``: stdin; an open file object, from Python), or a
+    usage error naming what is wrong."""
+    name = "stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object")
     text = _text(source, stdin)
     lines = text.splitlines()
     start = next((i for i, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("#")), None)
@@ -101,9 +102,18 @@ def read(source: str, stdin=None) -> DataTable:
     return DataTable(name, columns, tuple(line for line, _ in body), delimiter, decimal_comma)
 
 
-def _text(source: str, stdin) -> str:
-    name = "stdin" if source == "-" else source
-    if source == "-":
+def _text(source, stdin) -> str:
+    name = "stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object")
+    if not isinstance(source, str):  # an open file object (the Python API)
+        try:
+            raw = source.read(MAX_BYTES + 1)
+        except (OSError, ValueError, TypeError) as err:
+            raise InputError(OPTION, "expected an open file to read a table from", got=f"{name}: {err}") from None
+        if not isinstance(raw, (str, bytes)):
+            raise InputError(OPTION, "expected a file object whose read() gives text or bytes", got=f"{name}: {type(raw).__name__}")
+        if len(raw) > MAX_BYTES:
+            raise InputError(OPTION, f"{name} is larger than {MAX_BYTES // 1024 // 1024} MB: give a part of it (fit takes at most 5000 samples)")
+    elif source == "-":
         if stdin is None:
             raise InputError(OPTION, "cannot be - here: no stdin to read it from")
         raw = stdin.buffer.read() if hasattr(stdin, "buffer") else stdin.read()
@@ -187,4 +197,7 @@ def _number(cell: str, line: int, header: str, name: str, decimal_comma: bool) -
     value = float(text)
     if value in (float("inf"), float("-inf")):
         raise InputError(OPTION, f"{name} line {line}: column {header!r} holds a number too large for a double", got=repr(cell.strip()[:40]))
+    if value == 0 and any(digit in "123456789" for digit in text.lower().partition("e")[0]):  # 1e-400: not 0, whatever a double rounds it to
+        raise InputError(OPTION, f"{name} line {line}: column {header!r} holds a nonzero number too small for a double (it would be read as 0)",
+                         got=repr(cell.strip()[:40]))
     return value

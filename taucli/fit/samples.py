@@ -24,6 +24,7 @@ import re
 from dataclasses import dataclass, field
 
 from taucli.quantities import units
+from taucli.quantities.kinds import BOUNDS
 from taucli.core.errors import InputError, did_you_mean
 from taucli.fit.data import Column, DataTable, split_header
 from taucli.writing.report import fmt, pretty_unit
@@ -154,6 +155,7 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
                              example='{y} "w (rad/s)=omega"', hint=did_you_mean(key, [r.key for r in command.results]))
         chosen[header] = (key if command.result(key) is not None else _key(key), True, unit)
     sigma_header = _sigma_column(tables, sigma)
+    _refuse_sigma_of_a_used_column(command, tables[0], chosen, sigma_header, y is not None)
     unused = _match_the_rest(command, tables[0], chosen, sigma_header, y is not None, notes)
     results = [header for header, (_, is_result, _) in chosen.items() if is_result]
     if not results:
@@ -171,6 +173,22 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
     found = _collected(command, tables, y_column, inputs_mapped, sigma, sigma_header, ranges, every, gravity, notes)
     _refuse_one_run_beside_unused(command, tables, found, unused)
     return found
+
+
+def _refuse_sigma_of_a_used_column(command: Command, table: DataTable, chosen: dict, sigma_header: str | None, y_given: bool) -> None:
+    """--sigma naming a column the fit uses otherwise: the measured one (its own σ: the fit then
+    weighs each sample by its size) or an input's. A σ is a column of its own, or one value."""
+    if sigma_header is None:
+        return
+    used = dict(chosen)
+    if sigma_header not in used:
+        _match_the_rest(command, table, used, None, y_given, [])  # what the column would be, were it not σ
+    others_measured = any(is_result for header, (_, is_result, _) in used.items() if header != sigma_header)
+    if sigma_header in used and not (used[sigma_header][1] and others_measured):  # (named like a result beside the measured column: σ)
+        target, is_result, _ = used[sigma_header]
+        what = f"the measured {target}" if is_result else f"the input {target}"
+        raise InputError("sigma", f"names column {sigma_header!r}, which is {what}: a sample's uncertainty is a column of its own, or one value for all",
+                         example="{sigma} 0.05rad/s", got=repr(sigma_header))
 
 
 def _refuse_one_run_beside_unused(command: Command, tables: list[DataTable], found: Samples, unused: list[str]) -> None:
@@ -284,13 +302,18 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
             if (kept_in_window - 1) % step:
                 samples.thinned += 1
                 continue
+            for m in (y_column, *inputs_mapped):  # in SI, a value its unit takes past a double's range, or to 0, is refused as a typed one is
+                _check_unit_made(cells[m.target], table.column(m.column.header).values[i], table.source, line, m.column.header)
             for m in inputs_mapped:
                 option = command.option(m.target)
                 _check_input(option, cells[m.target], table.source, line, m.column.header)
                 samples.inputs[m.target].append(cells[m.target])
+            _check_measured(cells[y_column.target], y_column, table.source, line)
             samples.y.append(cells[y_column.target])
             if sigma_header is not None:
                 spread = table.column(sigma_header).values[i] * sigma_factor
+                _check_unit_made(spread, table.column(sigma_header).values[i], table.source, line, sigma_header)
+                _check_measured(spread, y_column, table.source, line, sigma_header)
                 if not spread > 0:
                     raise InputError("sigma", f"{table.source} line {line}: expected an uncertainty greater than 0 in column {sigma_header!r}", got=fmt(spread))
                 samples.sigma.append(spread)
@@ -301,6 +324,23 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
         raise InputError("data", f"gives {samples.count} samples, and fit takes at most {MAX_SAMPLES} (each is a solve of the scene, many times over)",
                          hint=f"thin them with --every {math.ceil(samples.count / MAX_SAMPLES)}, or fit a window with --range")
     return samples
+
+
+def _check_unit_made(value: float, given: float, source: str, line: int, header: str) -> None:
+    """A cell that its column's unit takes past a double (1e306 rad/ms) or to 0 (1e-320 ms)."""
+    if not math.isfinite(value) or (value == 0 and given != 0):
+        raise InputError("data", f"{source} line {line}: column {header!r} holds {fmt(given)}, which its unit makes {'too large' if value else 'too small'} "
+                         "for a double in SI")
+
+
+def _check_measured(value: float, measured: Mapped, source: str, line: int, header: str | None = None) -> None:
+    """A measured value (or its σ) held to the bounds a typed quantity is (0, or 1e-40 to 1e40 in SI)."""
+    low, high = BOUNDS
+    if value and not low <= abs(value) <= high:
+        header = header or measured.column.header
+        unit = measured.si_unit
+        raise InputError("data", f"{source} line {line}: column {header!r} (the measured {measured.target}{', its σ' if header != measured.column.header else ''}) "
+                         f"expected a value of 0 or between 1e-40 and 1e40 {unit} in size".rstrip(), got=f"{fmt(value)} {unit}".rstrip())
 
 
 def _check_input(option, value: float, source: str, line: int, header: str) -> None:

@@ -8,11 +8,11 @@ Report. A scene's positional argument (inertia's and rolling's SHAPE) may be giv
 from __future__ import annotations
 
 import inspect
-import math
 import textwrap
 from collections.abc import Callable
 
 from taucli.answering import answer
+from taucli.answering.python import plain
 from taucli.options import SCENES
 from taucli.core.errors import InputError
 from taucli.writing.report import Report
@@ -38,7 +38,7 @@ def _made(command: Command) -> Callable[..., Report]:
             if name in given:
                 raise TypeError(f"{command.function_name}() got multiple values for argument {name!r}")
             given[name] = value
-        given = {name.replace("-", "_"): _plain(value, name) for name, value in given.items()}
+        given = {name.replace("-", "_"): plain(value, name) for name, value in given.items()}
         return answer.solve(command, given, find=given.pop("find", None), want=given.pop("want", None))
 
     parameters = [
@@ -54,24 +54,6 @@ def _made(command: Command) -> Callable[..., Report]:
     scene.__module__ = "taucli"
     scene.__doc__ = docstring(command)
     return scene
-
-
-def _plain(value, name: str):
-    """A value as Python's own types hold it: a numpy scalar or 0-d array as its number
-    (np.int64(4) -> 4), an array as a list (np.array([1., 2., 3.]) -> a 3-vector), inside lists
-    and tuples too. numpy is not imported: its values are known by their module. A whole number
-    past a double's range (10**400) is refused here, before any message would write its digits."""
-    if type(value).__module__.partition(".")[0] == "numpy" and callable(getattr(value, "tolist", None)):
-        value = value.tolist()
-    if isinstance(value, int) and value.bit_length() > 1024:
-        digits = int(value.bit_length() * math.log10(2)) + 1
-        raise InputError(name, "expected a number a double holds (at most about 1.8e308 in size)", got=f"a whole number of about {digits} digits")
-    if type(value) in (list, tuple):
-        return type(value)(_plain(item, name) for item in value)
-    if isinstance(value, (dict, set, frozenset)):  # refused by the readers, whose messages quote them: no 10**5000 inside
-        for item in (*value, *(value.values() if isinstance(value, dict) else ())):
-            _plain(item, name)
-    return value
 
 
 def _kind(option: Option) -> str:

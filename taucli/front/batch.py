@@ -22,6 +22,7 @@ document, 2 when some line was bad input, 1 when some line met a bug.
 from __future__ import annotations
 
 import json
+from collections import Counter
 import os
 import select
 import signal
@@ -176,18 +177,24 @@ def _too_long(start: str) -> InputError:
 
 
 def _lines(stream) -> Iterator:
-    """The lines of ``stream``, each read at most MAX_LINE characters at a time: a line, or the
-    InputError of a line that is longer (the rest of it is then read and passed over)."""
-    readline = getattr(stream, "readline", None)
+    """The lines of ``stream``, each read at most MAX_LINE characters (bytes, from a byte stream)
+    at a time: a line, or the InputError of a line that is longer (the rest of it is then read and
+    passed over). Where the stream has a byte buffer (stdin), lines are read as bytes and each is
+    decoded as UTF-8, whatever the locale says (JSON is UTF-8, RFC 8259): a byte that is not
+    UTF-8 stays in its line as an escape (surrogateescape), so that line is answered or refused
+    on its own, and the others are read as written."""
+    buffer = getattr(stream, "buffer", None)
+    readline = getattr(buffer if buffer is not None else stream, "readline", None)
     if readline is None:  # a list of lines
         yield from (line if len(line) <= MAX_LINE else _too_long(line) for line in stream)
         return
+    end = "\n" if buffer is None else b"\n"
     while line := readline(MAX_LINE + 1):
-        if len(line) <= MAX_LINE or line.endswith("\n"):
-            yield line
+        if len(line) <= MAX_LINE or line.endswith(end):
+            yield line if buffer is None else line.decode("utf-8", "surrogateescape")
             continue
-        yield _too_long(line)
-        while (rest := readline(MAX_LINE)) and not rest.endswith("\n"):
+        yield _too_long(line if buffer is None else line[:80].decode("utf-8", "surrogateescape"))
+        while (rest := readline(MAX_LINE)) and not rest.endswith(end):
             pass
 
 
@@ -254,7 +261,24 @@ def _reject_constant(name: str):
     raise ValueError(f"{name} is not a number JSON allows")
 
 
-_STRICT = json.JSONDecoder(parse_constant=_reject_constant)
+class _Pairs(dict):
+    """A JSON object, with the keys it gave more than once (json.loads keeps the last unsaid)."""
+
+    def __init__(self, pairs: list) -> None:
+        super().__init__(pairs)
+        self.twice = {key for key, count in Counter(key for key, _ in pairs).items() if count > 1} if len(self) < len(pairs) else set()
+
+
+def _number(text: str):
+    """A JSON number as a float; one written nonzero that a double rounds to 0 (1e-400) as its
+    text, which is then read, and bounded, as what was written (not as 0)."""
+    value = float(text)
+    if value == 0 and any(digit in "123456789" for digit in text.lower().partition("e")[0]):
+        return text
+    return value
+
+
+_STRICT = json.JSONDecoder(parse_constant=_reject_constant, parse_float=_number, object_pairs_hook=_Pairs)
 
 
 def _keys(command: Command) -> dict[str, str]:
@@ -281,11 +305,20 @@ def _line(line: str, keys: dict[str, str], command: Command, texts: frozenset[st
         raise InputError("", "expected a JSON object of options", example=_EXAMPLE_LINE, got=repr(text[:60]))
     options: dict = {}
     answer: dict = {}
-    for key, value in given.items():
+    spelled: dict[str, str] = {}  # option name -> the key that gave it (pulley_mass and pulley-mass are one option)
+    for key in given:  # every key first: a key given twice is refused before any value is read
         name = keys.get(key)
         if name is None:
             known = [option.name for option in command.options]
             raise InputError(key, f"is not an option of {command.name} in a batch", hint=did_you_mean(key.replace("-", "_"), known))
+        if key in given.twice:
+            raise InputError(name, "is given twice in one line; an option takes one value (a list where it is repeatable): give it once",
+                             example=_EXAMPLE_LINE, got=repr(text[:60]))
+        if name in spelled:
+            raise InputError(name, f"is given twice in one line (as {spelled[name]!r} and {key!r}): give it once", example=_EXAMPLE_LINE, got=repr(text[:60]))
+        spelled[name] = key
+    for key, value in given.items():
+        name = keys[key]
         if value is None:
             continue
         if name == "to":

@@ -23,7 +23,7 @@ from taucli.answering import answer
 from taucli.front import help
 from taucli.answering import pipeline
 from taucli.writing import render
-from taucli.front import usage
+from taucli.front import streams, usage
 from taucli.core.errors import ExitStatus, InputError, TaucliError, bounded, did_you_mean, out_of_range
 from taucli.core.names import FORMATS
 from taucli.options import COMMANDS
@@ -308,17 +308,24 @@ def main(argv: list[str] | None = None, env: Environment | None = None) -> int:
     """Run taucli; every exception becomes one line on stderr and an exit status."""
     args = sys.argv[1:] if argv is None else list(argv)
     env = env or Environment()
-    answered = help.answer(args, env.stdout, env.stderr)
+    env.stdout = streams.guarded(env.stdout)  # closed or full: one line and exit 74 (taucli.front.streams)
+    try:
+        answered = help.answer(args, env.stdout, env.stderr)
+    except streams.OutputFailed as err:
+        return streams.failed(err, env.stderr)
     if answered is not None:
         return answered
     at = command_at(args)
     command = COMMANDS.get(args[at]) if at < len(args) else None
-    misread = usage.explain(command, args, at)  # --m1 --m2 1kg, --torque 2 N m, -help: the fix
+    misread = usage.explain(command, args, at) or usage.given_twice(command, args, at)  # --m1 --m2 1kg, --torque 2 N m, -help, --m1 twice: the fix
     if misread is not None:
         where = f" (see 'taucli {command.name} --help')" if command is not None else " (see 'taucli --help')"
         return _fail(env, ExitStatus.USAGE, misread + where)
     try:
         result = build_app(env, command.name if command else None)(args=args, prog_name="taucli", standalone_mode=False)
+        env.stdout.flush()  # what is still buffered is written now, where a failure is answered, not at exit
+    except streams.OutputFailed as err:
+        return streams.failed(err, env.stderr)
     except TaucliError as err:
         spell = command.flag if command is not None else (lambda name: name)
         return _fail(env, err.exit_status, err.spelled(spell) if isinstance(err, InputError) else str(err))

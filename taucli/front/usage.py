@@ -101,3 +101,35 @@ def explain(command: Command | None, args: list[str], at: int) -> str | None:
                     f"is one word only in quotes: {option.flag} '{whole}', or write it without spaces: {option.flag} {typed(''.join((value, *extra)))}")
         return None
     return None
+
+
+def given_twice(command: Command | None, args: list[str], at: int) -> str | None:
+    """'--inertia is given twice' where an option that takes one value is given more than once
+    (typer would keep the last and drop the first unsaid); repeatable options aside (--part,
+    --get), and words after ``--``. Flags given twice mean what once does."""
+    if command is None:
+        return None
+    options = {option.flag: option for option in (*command.options, *command.output) if not option.positional}
+    words = args[at + 1 :]
+    seen: dict[str, str] = {}
+    i = 0
+    while i < len(words):
+        word = words[i]
+        if word == "--":
+            return None
+        flag, equals, value = word.partition("=") if word.startswith("--") else ("", "", "")
+        option = options.get(flag)
+        if option is None or not option.takes_value:
+            i += 1
+            continue
+        if not equals:
+            value = words[i + 1] if i + 1 < len(words) else ""
+            i += 1
+        i += 1
+        if option.repeatable:
+            continue
+        if flag in seen:
+            return (f"{flag} is given twice ({typed(seen[flag])} and {typed(value)}); it takes one value: give it once, "
+                    f"e.g. {flag} {typed(value)}")
+        seen[flag] = value
+    return None

@@ -93,9 +93,15 @@ def check_bounds(value: float, kind_name: str, option: str, *, sign: str = "nonn
     low, high = kind.bounds
     if math.isfinite(value) and (not value or low <= abs(value) <= high):
         return
+    raise out_of_bounds(kind_name, option, sign=sign, got=got or f"{text!r} = {value:g} {kind.si_unit}".rstrip())
+
+
+def out_of_bounds(kind_name: str, option: str, *, sign: str, got: str) -> InputError:
+    """The refusal of a value outside its kind's bounds (or too small for a double to hold)."""
+    kind = KINDS[kind_name]
+    low, high = kind.bounds
     zero = "" if sign == "positive" else "of 0 or "
-    shown = got or f"{text!r} = {value:g} {kind.si_unit}".rstrip()
-    raise InputError(option, f"expected {article(kind.name)} {zero}between {_power_of_ten(low)} and {_power_of_ten(high)} {kind.si_unit} in size", example=kind.example, got=shown)
+    return InputError(option, f"expected {article(kind.name)} {zero}between {_power_of_ten(low)} and {_power_of_ten(high)} {kind.si_unit} in size", example=kind.example, got=got)
 
 
 def _power_of_ten(x: float) -> str:

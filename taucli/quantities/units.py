@@ -30,7 +30,7 @@ from taucli.quantities import expressions
 from taucli.quantities import meanings
 from taucli.quantities import spellings
 from taucli.core.errors import InputError
-from taucli.quantities.kinds import ANGULAR, KINDS, STANDARD_GRAVITY, Kind, article, check_bounds
+from taucli.quantities.kinds import ANGULAR, KINDS, STANDARD_GRAVITY, Kind, article, check_bounds, out_of_bounds
 from taucli.quantities.unit_text import number_times_unit
 from taucli.quantities.registry import (
     AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, WEIGHT_INERTIA, Ambiguous, bare_number, expected, from_pint,
@@ -220,6 +220,8 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive", gra
         if not (math.isfinite(g) and g > 0):
             raise InputError(option, "is a weight, which needs a positive gravity to give a mass", example="--g 9.81", got=f"g = {g!r}")
         value /= g
+    if value == 0 and underflowed(text):
+        raise out_of_bounds(kind.name, option, sign=sign, got=f"{text!r}, nonzero but below what a double holds (it would be read as 0)")
     _check(value, text, option, kind, sign)
     return Parsed(value, _note(option, text.strip(), reading, value, gravity, kind), reading.how == WEIGHT)
 
@@ -247,6 +249,23 @@ def si_number(value: float, option: str, kind_name: str, *, sign: str = "positiv
         check_bounds(number, kind_name, option, sign=sign, got=f"a whole number of about {int(abs(value).bit_length() * math.log10(2)) + 1} digits")
     _check(number, repr(value), option, KINDS[kind_name], sign)
     return number
+
+
+_LITERAL = re.compile(r"(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
+_BINARY_SIGN = re.compile(r"[\w).][-+]")  # a sign after a term: a sum or difference, which may be 0 (1 - 1)
+
+
+def underflowed(text: str) -> bool:
+    """Whether a text read as 0 is nonzero as written: a number below a double's range
+    (1e-400), or a product of nonzero numbers that underflows (1e-200*1e-200, 1×10^-400), which a
+    double rounds to 0 and which must be bounded as what was typed, not as 0. A sum or difference
+    (1 - 1) may be 0: only its numbers are looked at."""
+    literals = _LITERAL.findall(text)
+    if any(float(digits + exponent) == 0 and any(c in "123456789" for c in digits) for digits, exponent in literals):
+        return True  # a number written nonzero that a double cannot hold
+    if not literals or not all(any(c in "123456789" for c in digits) for digits, _ in literals):
+        return False  # a 0 written somewhere: the 0 may be meant
+    return _BINARY_SIGN.search(_LITERAL.sub("1", "".join(text.split()))) is None
 
 
 def _is_number(text: str) -> bool:

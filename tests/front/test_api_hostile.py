@@ -57,6 +57,9 @@ def values() -> st.SearchStrategy:
             st.floats(width=64).map(numpy.float64), st.integers(-(2**63), 2**63 - 1).map(numpy.int64), st.floats(width=32).map(numpy.float32),
             st.floats().map(numpy.array), st.lists(st.floats(), min_size=0, max_size=4).map(numpy.array), st.sampled_from(TEXTS).map(numpy.str_),
             st.booleans().map(numpy.bool_), st.just(numpy.zeros((2, 3))), st.just(numpy.array([[1.0, 2.0, 3.0]])), st.just(numpy.array(["4kg"])),
+            st.sampled_from(["4", "0", "-1", "1e-4000", "1e4000", "nan", "inf"]).map(numpy.longdouble),
+            st.sampled_from(["4", "4+1j", "1e4000"]).map(numpy.clongdouble), st.sampled_from(["4", "1e-4000"]).map(lambda t: numpy.array(numpy.longdouble(t))),
+            st.just(numpy.array(numpy.clongdouble(4))), st.just(numpy.array([numpy.longdouble(1), 2, 3], dtype=numpy.longdouble)),
         )
     containers = st.recursive(st.one_of(plain, numpy_values), lambda inner: st.one_of(
         st.lists(inner, max_size=4), st.tuples(inner, inner, inner), st.dictionaries(st.text(max_size=5), inner, max_size=2),
@@ -105,3 +108,75 @@ def test_numpy_scalars_and_arrays_are_numbers_and_vectors():
     assert tau == pytest.approx(5.0, rel=1e-15)
     with pytest.raises(taucli.InputError, match=r"^g: "):
         taucli.atwood(m1=4, m2=1, g=numpy.array([1.0, 2.0, 3.0]))
+
+
+FRICTION = "t (s),omega (rad/s)\n0,29.928\n1,27.012\n2,23.986\n3,20.976\n4,18.048\n5,15.003\n6,11.986\n7,9.090\n8,5.975\n9,2.937\n"  # docs/fit.md
+FIT_KEYWORDS = ["scene", "data", "fit", "x", "y", "sigma", "range", "every", "stdin", "inertia", "omega0", "friction", "viscous", "method", "g"]
+
+
+@pytest.mark.skipif(numpy is None, reason="taucli fit needs numpy")
+def test_every_keyword_of_fit_raises_only_input_error(tmp_path):
+    """taucli.fit.fit (#43 item 10): a str, a pathlib.Path or an open file as data; every other bad
+    value of any keyword raises InputError, as the scenes' functions do."""
+    import io
+    import pathlib
+
+    import taucli.fit
+
+    path = tmp_path / "friction.csv"
+    path.write_text(FRICTION, encoding="utf-8")
+    base = {"scene": "spin-down", "data": [str(path)], "fit": "friction,omega0", "inertia": "0.1 kg*m^2"}
+    data = st.one_of(values(), st.sampled_from(["path", "Path", "text file", "byte file", "StringIO", "closed file"]).map(
+        lambda kind: {"path": str(path), "Path": path, "StringIO": io.StringIO(FRICTION)}.get(kind) or _opened(path, kind)))
+
+    @settings(max_examples=int(os.environ.get("TAUCLI_API_EXAMPLES", "60")), deadline=None, database=None, suppress_health_check=list(HealthCheck))
+    @given(st.lists(st.tuples(st.sampled_from(FIT_KEYWORDS), values()), min_size=1, max_size=3), st.lists(data, max_size=2), st.booleans())
+    def check(changes, sources, keep_base):
+        arguments = dict(base) if keep_base else {}
+        arguments.update(changes)
+        if sources:
+            arguments["data"] = sources
+        scene, files = arguments.pop("scene", None), arguments.pop("data", [])
+        files = files if isinstance(files, list) else [files]
+        try:
+            report = taucli.fit.fit(scene, *files, **arguments) if "fit" in arguments else taucli.fit.fit(scene, *files, fit=None, **arguments)
+        except taucli.InputError as err:
+            assert str(err)
+        else:
+            assert isinstance(report, Report)
+
+    check()
+
+
+def _opened(path, kind):
+    handle = path.open("rb" if kind == "byte file" else "r", encoding=None if kind == "byte file" else "utf-8")
+    if kind == "closed file":
+        handle.close()
+    return handle
+
+
+@pytest.mark.skipif(numpy is None, reason="taucli fit needs numpy")
+def test_fits_issue_examples(tmp_path):
+    import io
+    import pathlib
+
+    import taucli.fit
+
+    path = tmp_path / "friction.csv"
+    path.write_text(FRICTION, encoding="utf-8")
+    expected = taucli.fit.fit("spin-down", str(path), fit="friction,omega0", inertia="0.1 kg*m^2").results["friction"].value
+    with path.open(encoding="utf-8") as handle:
+        for data in (pathlib.Path(path), handle, io.StringIO(FRICTION)):
+            assert taucli.fit.fit("spin-down", data, fit="friction,omega0", inertia=numpy.float64(0.1), friction=numpy.float64(0.3)).results["friction"].value \
+                == pytest.approx(expected, rel=1e-9)
+    for arguments, keyword in ((("spin-down", bytes(path)), "data"), (("spin-down",), "data"), ((5, str(path)), "scene")):
+        with pytest.raises(taucli.InputError, match=f"^{keyword}: "):
+            taucli.fit.fit(*arguments, fit="friction,omega0", inertia="0.1 kg*m^2")
+    for keyword, value in (("sigma", 0.05), ("x", 5), ("range", 5), ("every", 10**5000), ("stdin", 5)):
+        with pytest.raises(taucli.InputError, match=f"^{keyword}: "):
+            taucli.fit.fit("spin-down", str(path), fit="friction,omega0", inertia="0.1 kg*m^2", **{keyword: value})
+    for value in (numpy.longdouble(4), numpy.array(numpy.longdouble(4))):
+        assert taucli.atwood(m1=value, m2=1).results["a"].value == taucli.atwood(m1=4, m2=1).results["a"].value
+    for value in (numpy.clongdouble(4), numpy.array(numpy.clongdouble(4)), numpy.longdouble("1e-4000")):
+        with pytest.raises(taucli.InputError, match="^m1: "):
+            taucli.atwood(m1=value, m2=1)

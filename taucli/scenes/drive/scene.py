@@ -12,7 +12,7 @@ import math
 from collections.abc import Sequence
 
 from taucli.core.errors import InputError, Unused
-from taucli.quantities.kinds import check_bounds
+from taucli.quantities.kinds import check_bounds, out_of_bounds
 from taucli.options.drive import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
@@ -138,7 +138,10 @@ def drive(
 def _ratio(stages: tuple[float, ...]) -> float:
     """N = ΠNᵢ, held to a number's bounds as any typed quantity is."""
     n = math.prod(stages) if stages else 1.0
-    check_bounds(n, "dimensionless", "ratio", sign="positive", got=f"N = {n:g} from the stages {', '.join(fmt(s) for s in stages)}")
+    got = f"N = {n:g} from the stages {', '.join(fmt(s) for s in stages)}"
+    if n == 0:  # positive stages whose product is below what a double holds (1e-40 nine times): not 0, and not to divide by
+        raise out_of_bounds("dimensionless", "ratio", sign="positive", got=got.replace("N = 0", "N below 1e-308", 1))
+    check_bounds(n, "dimensionless", "ratio", sign="positive", got=got)
     return n
 
 

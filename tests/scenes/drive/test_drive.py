@@ -259,16 +259,19 @@ def test_within_rating_against_the_peak_torque_and_the_motors_line():
     assert weak.results["within_rating"].value is False and any("cannot follow the move" in n for n in weak.notes)
 
 
-def test_an_uncertainty_on_a_stage_is_said_not_to_be_carried_through():
-    """--ratio is repeatable, and only single quantity options carry an uncertainty: the note says
-    so (it was dropped silently, the run answered as if none had been given)."""
+def test_an_uncertainty_on_a_stage_is_carried_through():
+    """--ratio is repeatable: an uncertainty on a stage is carried through as an option's is (#43
+    item 3; it was dropped with a note, and --get ... --uncertainty printed 0 for it)."""
     alone = taucli.drive(load_mass="250 kg", lead="10 mm", motor_inertia=3e-5, ratio=["2+/-0.1"])
-    assert any("uncertainty given in ratio is not carried through" in note for note in alone.notes)
-    beside = taucli.drive(load_mass="250+/-1 kg", lead="10 mm", motor_inertia=3e-5, ratio=["2+/-0.1"])
-    assert any("uncertainty given in ratio is not carried through" in note for note in beside.notes)
-    assert beside.uncertainties["reflected_inertia"] == pytest.approx(beside.results["reflected_inertia"].value / 250, rel=1e-6)
-    done = run_taucli("drive", "--load-mass", "250kg", "--lead", "10mm", "--motor-inertia", "3e-5", "--ratio", "2+/-0.1", "--no-steps")
-    assert done.code == 0 and "not carried through" in done.out
+    reflected = alone.results["reflected_inertia"].value  # m(p/2π)²/N²: σ/value = 2 σN/N
+    assert alone.uncertainties["reflected_inertia"] == pytest.approx(reflected * 2 * 0.1 / 2, rel=1e-6)
+    beside = taucli.drive(load_mass="250+/-1 kg", lead="10 mm", motor_inertia=3e-5, ratio=[3, "2+/-0.1"])
+    relative = math.hypot(1 / 250, 2 * 0.1 / 2)
+    assert beside.uncertainties["reflected_inertia"] == pytest.approx(beside.results["reflected_inertia"].value * relative, rel=1e-6)
+    done = run_taucli("drive", "--load-mass", "250kg", "--lead", "10mm", "--motor-inertia", "3e-5", "--ratio", "2+/-0.1", "--get", "reflected_inertia",
+                      "--uncertainty")
+    value, sigma = map(float, done.out.split())
+    assert done.code == 0 and sigma == pytest.approx(value * 0.1, rel=1e-6)
 
 
 def test_find_solves_for_the_ratio():

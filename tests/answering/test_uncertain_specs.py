@@ -1,0 +1,106 @@
+"""An uncertainty given inside a spec (a part's, a brake's, a particle's key...) or on one value of
+a repeated option is carried through as an option's is (#43 item 3): it was dropped, and
+`--get I --uncertainty` printed `0.009 0`. Every spec option of every scene: each numeric result's
+σ is its change when that key moves by σ (σ small, so first order is exact to the tolerance)."""
+
+from __future__ import annotations
+
+import io
+import json
+import math
+import shlex
+
+import pytest
+
+import taucli
+from taucli.front import cli
+from taucli.options import SCENES, table
+
+SPEC_KINDS = {table.PART, table.PARTICLE, table.COUPLE, table.BRAKE, table.FACE, table.BAND, table.SIDE, table.PULL, table.ROTOR}
+
+
+def _example(command) -> dict:
+    words, given = shlex.split(command.example)[2:], {}
+    positional = [option.name for option in command.options if option.positional]
+    while words:
+        word = words.pop(0)
+        if word.startswith("--"):
+            option = command.option(word[2:].replace("-", "_"))
+            given[option.name] = True if option.kind == table.FLAG else words.pop(0)
+        else:
+            given[positional.pop(0)] = word
+    return given
+
+
+# (scene, option, its value with {u} where "value ± σ" goes, value, σ, unit, keywords changed from the scene's example (None: left out))
+CASES = [
+    ("inertia", "part", "point mass={u} offset=20cm", 0.1, 1e-4, "kg", {}),
+    ("inertia", "part", "plate density={u} width=1m height=0.5m", 20.0, 1e-3, "kg/m^2", {}),
+    ("spin-down", "part", "point mass=1kg offset={u}", 0.2, 1e-4, "m", {}),
+    ("spin-down", "brake", "force={u} mu=0.4 radius=0.1m", 10.0, 1e-3, "N", {}),
+    ("spin-down", "face", "mu={u} force=10N inner-radius=5cm outer-radius=12cm", 0.3, 1e-4, "", {}),
+    ("spin-down", "band", "mu=0.25 wrap={u} radius=0.1m tension=10N", 4.0, 1e-4, "rad", {}),
+    ("atwood", "part", "point mass={u} offset=5cm", 0.5, 1e-4, "kg", {}),
+    ("atwood", "side1", "incline angle={u}", 0.5, 1e-4, "rad", {}),
+    ("atwood", "side2", "table mu={u}", 0.2, 1e-4, "", {}),
+    ("atwood", "pull", "force={u}", 2.0, 1e-4, "N", {}),
+    ("impulse", "part", "point mass={u} offset=20cm", 0.1, 1e-4, "kg", {}),
+    ("impulse", "brake", "force={u} mu=0.4 radius=0.1m", 1.0, 1e-4, "N", {}),
+    ("impulse", "face", "mu={u} force=10N inner-radius=5cm outer-radius=12cm", 0.3, 1e-4, "", {}),
+    ("impulse", "band", "mu=0.25 wrap={u} radius=0.1m tension=10N", 4.0, 1e-4, "rad", {}),
+    ("impulse", "part_after", "point mass={u} offset=20cm", 0.1, 1e-4, "kg", {"omega0": "10rad/s", "torque": None, "duration": None}),
+    ("impulse", "particle", "mass={u} speed=4m/s radius=0.5m", 0.3, 1e-4, "kg", {"torque": None, "duration": None}),
+    ("impulse", "couple", "inertia={u} omega0=0", 0.2, 1e-4, "kg*m^2", {"omega0": "10rad/s", "torque": None, "duration": None}),
+    ("pendulum", "part", "point mass={u} offset=1m", 0.5, 1e-4, "kg", {}),
+    ("gyro", "part", "ring mass={u} radius=5cm", 0.1, 1e-5, "kg", {}),
+    ("gyro", "rotor", "inertia={u} spin=5000rpm sense=cw-from-right", 0.3, 1e-4, "kg*m^2",
+     {"precession": "0.5rad/s", "spin_sense": "cw-from-right", "turn": "left", "cm_distance": None}),
+    ("drive", "part", "disc mass={u} radius=0.1m", 2.0, 1e-4, "kg", {"load_inertia": None}),
+    ("drive", "ratio", ["{u}", "3"], 10.0, 1e-3, "", {}),
+    ("flywheel", "part", "ring mass={u} radius=0.6m", 100.0, 1e-3, "kg", {"rim_radius": None, "density": None, "energy_swing": None}),
+    ("torque", "lever", ["2m", "{u}"], 1.0, 1e-4, "m", {"r": None, "force": ["10N", "5N"], "angle": ["90deg", "90deg"]}),
+]
+
+
+def _given(scene, option, value, extra, text):
+    base = {key: given for key, given in {**_example(SCENES[scene]), **extra}.items() if given is not None}
+    base[option] = [item.replace("{u}", text) for item in value] if isinstance(value, list) else value.replace("{u}", text)
+    return base
+
+
+def test_every_spec_option_of_every_scene_is_covered():
+    covered = {(scene, option) for scene, option, *_ in CASES}
+    specs = {(name, option.name) for name, command in SCENES.items() for option in command.options if option.kind in SPEC_KINDS}
+    assert specs <= covered, specs - covered
+
+
+@pytest.mark.parametrize(("scene", "option", "value", "x", "sigma", "unit", "extra"), CASES, ids=[f"{case[0]}-{case[1]}-{i}" for i, case in enumerate(CASES)])
+def test_an_uncertainty_inside_a_spec_is_carried_through(scene, option, value, x, sigma, unit, extra):
+    function = getattr(taucli, SCENES[scene].function_name)
+    measured = function(**_given(scene, option, value, extra, f"{x}+/-{sigma} {unit}"))
+    low, high = (function(**_given(scene, option, value, extra, f"{at} {unit}")) for at in (x, x + sigma))
+    moved = 0
+    for key, result in low.results.items():
+        if not isinstance(result.value, float):
+            continue
+        change = abs(high.results[key].value - result.value)
+        if change > 1e-9 * max(abs(result.value), 1e-300):
+            moved += 1
+            assert measured.uncertainties[key] == pytest.approx(change, rel=2e-3), key
+    assert moved, "no result moves with the key: the case tests nothing"
+    assert [spread for spread in measured.input_uncertainties.values()] == [pytest.approx(sigma, rel=1e-9)]  # each unit here is SI
+
+
+def test_the_issues_example_on_the_command_line_and_in_batch():
+    out, err = io.StringIO(), io.StringIO()
+    code = cli.main(["inertia", "disc", "--mass", "1kg", "--radius", "0.1m", "--part", "point mass=100+/-10g offset=20cm", "--get", "I", "--uncertainty"],
+                    cli.Environment(stdin=io.StringIO(), stdout=out, stderr=err))
+    value, spread = map(float, out.getvalue().split())
+    assert code == 0 and value == pytest.approx(0.009, rel=1e-12) and spread == pytest.approx(0.01 * 0.2**2, rel=1e-6)
+    line = json.dumps({"inertia": 1, "omega0": "30rad/s", "brake": "force=100+/-5N mu=0.4 radius=0.5m"})
+    out = io.StringIO()
+    code = cli.main(["spin-down", "--batch", "--no-steps"], cli.Environment(stdin=io.StringIO(line + "\n"), stdout=out, stderr=io.StringIO()))
+    document = json.loads(out.getvalue())
+    assert code == 0 and document["results"]["t_stop"]["uncertainty"] == pytest.approx(1.5 * 0.05, rel=1e-6)
+    assert document["inputs"]["brake1_force"]["uncertainty"] == 5.0
+    assert math.isfinite(document["results"]["t_stop"]["value"])
