@@ -18,7 +18,9 @@ scenes, answering).
 from __future__ import annotations
 
 import importlib.util
+import os
 
+from taucli.answering.python import plain
 from taucli.core.errors import InputError
 
 EXTRA = "pip install 'taucli[fit]' (from a checkout: pip install '.[fit]')"
@@ -57,8 +59,6 @@ def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = 
     tables ``data`` (file names, pathlib.Path, or open file objects), the scene's other options as
     keywords (texts with units, or SI numbers; numpy numbers too). Every bad argument raises
     InputError naming it."""
-    from taucli.answering.python import plain
-
     _needs_scipy()
     from taucli.fit import command  # deferred: numpy and scipy with it, only for a fit
 
@@ -83,8 +83,6 @@ def _shown(value) -> str:
 
 def _source(item):
     """A data file as fit reads it: a path's text, or an open file object (text or bytes)."""
-    import os
-
     if isinstance(item, str):
         return item
     if isinstance(item, os.PathLike):
@@ -120,8 +118,6 @@ def _whole(every):
     """every=: a whole number (or its text), bounded before any text of it is made."""
     if every is None or isinstance(every, str):
         return every
-    from taucli.answering.python import plain
-
     every = plain(every, "every")
     if isinstance(every, int) and not isinstance(every, bool) and every.bit_length() <= 64:
         return str(every)

@@ -252,6 +252,7 @@ def si_number(value: float, option: str, kind_name: str, *, sign: str = "positiv
 
 
 _LITERAL = re.compile(r"(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
+_CALL = re.compile(r"[A-Za-z_]\s*\(")
 _BINARY_SIGN = re.compile(r"[\w).][-+]")  # a sign after a term: a sum or difference, which may be 0 (1 - 1)
 
 
@@ -259,12 +260,14 @@ def underflowed(text: str) -> bool:
     """Whether a text read as 0 is nonzero as written: a number below a double's range
     (1e-400), or a product of nonzero numbers that underflows (1e-200*1e-200, 1×10^-400), which a
     double rounds to 0 and which must be bounded as what was typed, not as 0. A sum or difference
-    (1 - 1) may be 0: only its numbers are looked at."""
+    (1 - 1) or a function (sin(180deg)) may be 0: only its numbers are looked at."""
     literals = _LITERAL.findall(text)
     if any(float(digits + exponent) == 0 and any(c in "123456789" for c in digits) for digits, exponent in literals):
         return True  # a number written nonzero that a double cannot hold
     if not literals or not all(any(c in "123456789" for c in digits) for digits, _ in literals):
         return False  # a 0 written somewhere: the 0 may be meant
+    if _CALL.search(text):
+        return False  # a function may be 0 at nonzero numbers (sin(180deg))
     return _BINARY_SIGN.search(_LITERAL.sub("1", "".join(text.split()))) is None
 
 
