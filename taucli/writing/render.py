@@ -150,6 +150,9 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
     if output.out is not None:  # the file first: one that cannot be written (a full disk) is refused before any answer
         plot.write_file(chart, output.out, said_to=notes_to)
     if output.get:
+        for name in output.get:
+            if name in report.needs:  # a result this run could not give for want of an option (#42 item 14): refused, naming it
+                raise InputError(report.needs[name], f"is required for {name}, which depends on the body's {report.needs[name]}", example="{mass} 5kg")
         if output.uncertainty:  # #22: a second column, the result's standard uncertainty
             spreads = getattr(report, "uncertainties", None) or {}
             stream.write("".join(bare(named_result(report, name, "--get").value) + " " + get_spread(report, name, spreads) + "\n" for name in output.get))
