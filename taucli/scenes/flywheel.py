@@ -38,6 +38,7 @@ def flywheel(
     axis: str | None = None,
     offset: float | None = None,
     part: Sequence = (),
+    gyration: float | None = None,
     omega_mean: float | None = None,
     omega_max: float | None = None,
     omega_min: float | None = None,
@@ -56,10 +57,10 @@ def flywheel(
     steps: list[Step] = []
     notes: list[str] = []
     results = Results(TABLE)
-    given_body = inertia is not None or shape is not None or bool(part)
+    given_body = inertia is not None or shape is not None or gyration is not None or bool(part)
     moment = None
     if given_body:
-        moment, body_steps = body(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, notes=notes, **dims)
+        moment, body_steps = body(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, gyration=gyration, notes=notes, **dims)
         steps += body_steps
     elif mass is not None or offset is not None or any(v is not None for v in dims.values()):
         raise InputError("shape", "is required with the body's mass and dimensions (or give {inertia})", example="{shape} ring {mass} 500kg {radius} 0.6m")
