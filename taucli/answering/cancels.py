@@ -1,5 +1,6 @@
-"""A body given by its shape without its mass (#42 item 14): the results that do not depend on
-the mass, the others null with the reason.
+"""An input a refusal asks for that some results do not use (#42 items 14, 16): a body given by
+its shape without its mass, a band brake without its drum's radius. The results that do not
+depend on it are given, the others null with the reason.
 
 A shape's I is M times a function of its dimensions, so wherever the mass cancels (a pendulum's
 period, a disc's precession rate, a radius of gyration) the answer exists without it. Rather than
@@ -23,17 +24,28 @@ STAND_INS = (1.0, 4.0)  # kg
 TOLERANCE = 1e-13  # relative: a result that moves less than this between the two stand-ins is taken as free of the mass
 
 
-def applies(arguments: Mapping[str, object], error: InputError) -> bool:
-    """Whether a refusal for want of --mass is one the mass may cancel from: a body given by a
-    shape (not by its density or radius of gyration) with no --mass."""
-    return (error.option == "mass" and arguments.get("mass") is None and arguments.get("shape") is not None
-            and arguments.get("density") is None and arguments.get("gyration") is None)
+def stand_ins(arguments: Mapping[str, object], error: InputError) -> tuple[list[dict], str, str, str] | None:
+    """The two runs with stand-ins for what the refusal asked for, where it may cancel out; the
+    option it belongs to; what it is, for the note; how a --get of a result that needs it is
+    refused (%s: the result). None where the refusal stands.
+
+    - a body given by a shape (not by its density or radius of gyration) with no --mass;
+    - a band brake with no radius= round a body with none (#42 item 16): its tensions and μ do
+      not depend on the drum's radius, only its torque does."""
+    if (error.option == "mass" and arguments.get("mass") is None and arguments.get("shape") is not None
+            and arguments.get("density") is None and arguments.get("gyration") is None):
+        return [{**arguments, "mass": mass} for mass in STAND_INS], "mass", "{mass}", "is required for %s, which depends on the body's mass"
+    bands = arguments.get("band") or ()
+    if "radius=" in error.expected and any(error.option == band.source.strip("{}") for band in bands):
+        runs = [{**arguments, "band": tuple(replace(band, radius=radius) if band.radius is None else band for band in bands)} for radius in STAND_INS]
+        return runs, "band", "radius= in {band} (the drum's radius)", "needs radius= for %s, which depends on the drum's radius"
+    return None
 
 
-def without_mass(solver: Callable[..., Report], arguments: Mapping[str, object], error: InputError) -> Report:
-    """The report with every result free of the mass; the others null, named in ``needs``. Refuses
-    (with the solver's own message) when no result is free of it."""
-    first, second = (solver(**{**arguments, "mass": mass}) for mass in STAND_INS)
+def without(solver: Callable[..., Report], runs: list[dict], option: str, what: str, refusal: str, error: InputError) -> Report:
+    """The report with every result the stand-ins leave the same; the others null, named in
+    ``needs``. Refuses (with the solver's own message) when no result is free of them."""
+    first, second = (solver(**run) for run in runs)
     results, needs = {}, []
     for key, value in first.results.items():
         other = second.results.get(key)
@@ -48,11 +60,11 @@ def without_mass(solver: Callable[..., Report], arguments: Mapping[str, object],
     steps = [step for step, other in zip(first.steps, second.steps) if step == other] if len(first.steps) == len(second.steps) else []
     notes = [note for note in first.notes if note in second.notes]
     if needs:
-        notes.append(f"no {{mass}}: {', '.join(needs)} depend on the body's mass and are not given; the other results do not depend on it "
-                     "(its I is the mass times a function of its shape)")
+        notes.append(f"no {what}: {', '.join(needs)} depend on it and are not given; the other results do not")
     tables = {name: table for name, table in first.tables.items() if second.tables.get(name) == table}
     trajectory = first.trajectory if _same_motion(first, second) else None
-    return replace(first, results=results, steps=steps, notes=notes, tables=tables, trajectory=trajectory, needs={key: "mass" for key in needs})
+    return replace(first, results=results, steps=steps, notes=notes, tables=tables, trajectory=trajectory,
+                   needs={key: (option, refusal % key) for key in needs})
 
 
 def _same(a, b) -> bool:

@@ -46,9 +46,10 @@ def solve(
             raise
         report = solver(**{name: value for name, value in arguments.items() if name != "g"})  # --g read a weight as a mass: it is used
     except InputError as error:
-        if not cancels.applies(arguments, error):
+        found = cancels.stand_ins(arguments, error)  # a shape with no --mass: what the mass cancels from (#42 item 14)
+        if found is None:
             raise
-        report = cancels.without_mass(solver, arguments, error)  # a shape with no --mass: what the mass cancels from (#42 item 14)
+        report = cancels.without(solver, *found, error)
     # the library's report is made for this call alone: completed in place (a batch line makes one per line)
     report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
     report.inputs = {**inputs.values, **report.inputs}
