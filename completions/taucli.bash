@@ -151,6 +151,7 @@ _taucli() {
             --pulley-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --pulley-shape) COMPREPLY=($(compgen -W "disc ring" -- "$cur")); return 0 ;;
             --pulley-inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --pulley-gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --axle-friction) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --part) :; return 0 ;;
             --radius1) _taucli_units m cm mm km in ft; return 0 ;;
@@ -175,16 +176,17 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "m1 m2 pulley_mass pulley_radius pulley_inertia axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "m1 m2 pulley_mass pulley_radius pulley_inertia pulley_gyration axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --pulley-gyration --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
             --k2) :; return 0 ;;
             --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
+            --gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
             --radius) _taucli_units m cm mm km in ft; return 0 ;;
             --angle) _taucli_units deg rad rev; return 0 ;;
@@ -210,7 +212,7 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T T2 a_hanging alpha_pulley a_hand v v_hanging omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 v_ground v_ground_angle a_ground a_ground_angle" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "k2 inertia mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
@@ -218,7 +220,7 @@ _taucli() {
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --in-place --hanging-mass --string --pulley-mass --pulley-radius --g --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --gyration --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --in-place --hanging-mass --string --pulley-mass --pulley-radius --g --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in
@@ -255,12 +257,12 @@ _taucli() {
             --couple) :; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat period omega_impact p0 p1 pivot_impulse torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat period omega_impact p0 p1 pivot_impulse speed_after torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat period omega_impact p0 p1 pivot_impulse torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat period omega_impact p0 p1 pivot_impulse speed_after torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm part_after.radius part_after.inner_radius part_after.outer_radius part_after.length part_after.width part_after.height part_after.depth part_after.offset part_after.mass part_after.inertia part_after.gyration particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.torque couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
@@ -435,6 +437,7 @@ _taucli() {
             --inertia) _taucli_units 'kg*m^2' 'g*cm^2' 'lb*ft^2'; return 0 ;;
             --shape) COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur")); return 0 ;;
             --mass) _taucli_units kg g lb oz tonne; return 0 ;;
+            --gyration) _taucli_units m cm mm km in ft; return 0 ;;
             --radius) _taucli_units m cm mm km in ft; return 0 ;;
             --inner-radius) _taucli_units m cm mm km in ft; return 0 ;;
             --outer-radius) _taucli_units m cm mm km in ft; return 0 ;;
@@ -463,11 +466,11 @@ _taucli() {
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area stress_margin" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction rim_radius rim_speed density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction rim_radius rim_speed density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
             --want) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --rim-radius --rim-speed --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --rim-radius --rim-speed --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     fit)
         case "$prev" in

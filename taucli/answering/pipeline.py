@@ -11,7 +11,8 @@ from collections.abc import Callable, Mapping
 from functools import lru_cache
 from typing import TextIO
 
-from taucli.core.errors import Unused, spelled
+from taucli.core.errors import InputError, Unused, spelled
+from taucli.answering import cancels
 from taucli.answering.inputs import read
 from taucli.writing.report import Report
 from taucli.options.table import Command
@@ -44,6 +45,11 @@ def solve(
         if unused.option != "g" or not inputs.gravity_used:
             raise
         report = solver(**{name: value for name, value in arguments.items() if name != "g"})  # --g read a weight as a mass: it is used
+    except InputError as error:
+        found = cancels.stand_ins(arguments, error)  # a shape with no --mass: what the mass cancels from (#42 item 14)
+        if found is None:
+            raise
+        report = cancels.without(solver, *found, error)
     # the library's report is made for this call alone: completed in place (a batch line makes one per line)
     report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
     report.inputs = {**inputs.values, **report.inputs}

@@ -19,6 +19,7 @@ COMMAND = Command(
         Option("pulley_radius", "length", "Pulley radius (needed only for alpha, axle friction, --torque or --pulley-inertia).", panel=PULLEY),
         Option("pulley_shape", CHOICE, "Pulley shape.", choices=PULLEY_SHAPES, default="disc", panel=PULLEY),
         Option("pulley_inertia", "moment of inertia", "Pulley moment of inertia, instead of mass and shape.", sign="nonnegative", panel=PULLEY),
+        Option("pulley_gyration", "length", "The pulley's radius of gyration k, with --pulley-mass instead of --pulley-shape: I = Mk², e.g. 0.08m.", panel=PULLEY),
         Option("axle_friction", "torque", "Constant friction torque at the axle, a brake (holds at rest too).", sign="nonnegative", panel=PULLEY),
         Option(
             "part", PART,

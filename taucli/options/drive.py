@@ -35,7 +35,8 @@ COMMAND = Command(
         Option("stall_torque", "torque", "Torque at standstill of a motor whose torque falls on a line to zero at --no-load-speed, "
                "τ = τ_s(1 − ω/ω_nl), e.g. '2N*m'.", panel=MOTOR),
         Option("no_load_speed", "angular velocity", "Speed at which that line reaches zero torque, e.g. 3000rpm.", panel=MOTOR),
-        Option("motor_torque", "torque", "A motor that gives a constant torque from rest (instead of the line), e.g. '1.5N*m'.", panel=MOTOR),
+        Option("motor_torque", "torque", "A motor that gives a constant torque from rest (instead of the line), e.g. '1.5N*m'; "
+               "0 for a load that runs down freely through the gears.", sign="nonnegative", panel=MOTOR),
         Option("rated_torque", "torque", "The motor's rated (continuous) torque, held against the RMS torque of a move.", panel=MOTOR),
         Option("peak_torque", "torque", "The most torque the motor and its drive give for a short time, held against the peak of a move.",
                panel=MOTOR),

@@ -19,8 +19,8 @@ COMMAND = Command(
     ),
     example="taucli flywheel --omega-mean 300rpm --fluctuation 0.02 --energy-swing 5kJ --rim-radius 0.6m --density '7200kg/m^3'",
     options=(
-        # its --density is the rim's, for the hoop stress; its --rim-radius is the radius of gyration
-        *(option for option in BODY_OPTIONS if option.name not in ("density", "gyration")),
+        # its --density is the rim's, for the hoop stress; --gyration with --mass is the body's I = Mk² (#42 item 15)
+        *(option for option in BODY_OPTIONS if option.name != "density"),
         Option("omega_mean", "angular velocity", "Mean speed ω_mean, e.g. 300rpm.", panel=SPEED),
         Option("omega_max", "angular velocity", "Greatest speed in the cycle (with --omega-min: the mean is their average).", panel=SPEED),
         Option("omega_min", "angular velocity", "Least speed in the cycle.", sign="nonnegative", panel=SPEED),

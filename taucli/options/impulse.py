@@ -61,6 +61,7 @@ COMMAND = Command(
         Result("p0", "kg*m/s", "linear momentum of the system before, across the radius to the particle"),
         Result("p1", "kg*m/s", "linear momentum of the system after, across the radius to the particle"),
         Result("pivot_impulse", "N*s", "impulse of the pivot (axle) on the system, p1 − p0"),
+        Result("speed_after", "m/s", "speed of the particle after…"),
         *CONTACT_RESULTS,
         *POINT_RESULTS,
     ),

@@ -18,6 +18,7 @@ COMMAND = Command(
         Option("shape", CHOICE, f"{', '.join(ROLLING_BODIES)} (or give --k2 or --inertia).", choices=ROLLING_BODIES, positional=True, metavar="SHAPE"),
         Option("k2", "dimensionless", "I/(mR²) of the body, instead of SHAPE.", sign="nonnegative", panel=BODY),
         Option("inertia", "moment of inertia", "Moment of inertia about the centre (with --mass and --radius).", sign="nonnegative", panel=BODY),
+        Option("gyration", "length", "The body's radius of gyration k about its centre, with --radius, instead of SHAPE: I/(mR²) = (k/R)², e.g. 0.07m.", panel=BODY),
         Option("mass", "mass", "Mass (needed only for forces and energies).", panel=BODY),
         Option("radius", "length", "Radius (needed only for α and ω).", panel=BODY),
         Option("angle", "angle", "Slope of the incline, 0 to 90deg.", sign="any"),

@@ -38,6 +38,7 @@ def flywheel(
     axis: str | None = None,
     offset: float | None = None,
     part: Sequence = (),
+    gyration: float | None = None,
     omega_mean: float | None = None,
     omega_max: float | None = None,
     omega_min: float | None = None,
@@ -56,10 +57,14 @@ def flywheel(
     steps: list[Step] = []
     notes: list[str] = []
     results = Results(TABLE)
-    given_body = inertia is not None or shape is not None or bool(part)
+    given_body = inertia is not None or shape is not None or gyration is not None or bool(part)
+    if not given_body and mass is not None and rim_radius is not None and density is not None and all(
+            value is None for value in (omega_mean, omega_max, omega_min, rim_speed, offset, *dims.values())):
+        return _rim_section(mass, rim_radius, density, fluctuation=fluctuation, speed_variation=speed_variation, energy_swing=energy_swing,
+                            energy_per_cycle=energy_per_cycle, allowable_stress=allowable_stress)
     moment = None
     if given_body:
-        moment, body_steps = body(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, notes=notes, **dims)
+        moment, body_steps = body(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, gyration=gyration, notes=notes, **dims)
         steps += body_steps
     elif mass is not None or offset is not None or any(v is not None for v in dims.values()):
         raise InputError("shape", "is required with the body's mass and dimensions (or give {inertia})", example="{shape} ring {mass} 500kg {radius} 0.6m")
@@ -122,6 +127,21 @@ def flywheel(
                 cs, density, allowable_stress)
     model = ("a rim flywheel: ΔE = mv²Cs" if rim_only else "flywheel fluctuation: ΔE = Iω_mean²Cs") + ", Cs = (ω_max − ω_min)/ω_mean"
     return Report("flywheel", model, "closed form", results, steps, notes)
+
+
+def _rim_section(mass: float, rim_radius: float, density: float, **speed_options: float | None) -> Report:
+    """A rim's cross-section from its mass, mean radius and density, with no speed (#42 item 16):
+    A = m/(2πRρ), the rim's volume 2πR·A times ρ its mass."""
+    for name, value in speed_options.items():
+        if value is not None:
+            raise InputError(name, "needs the flywheel's speed: {omega_mean} (or {omega_max} and {omega_min}, or {rim_speed})", example=_EXAMPLE)
+    area = mass / (2 * math.pi * rim_radius * density)
+    results = Results(TABLE)
+    results.put("mass", mass, " (given)")
+    results.put("rim_area", area)
+    step = Step("Cross-section of the rim", "A = m/(2πRρ)", f"{quantity_text(mass, 'kg')} / (2π × {quantity_text(rim_radius, 'm')} × {quantity_text(density, 'kg/m**3')})",
+                quantity_text(area, "m**2"), "the rim's mass is its volume 2πR·A times ρ")
+    return Report("flywheel", "a thin rim: its section from its mass, mean radius and density (no speed given)", "closed form", results, [step], [])
 
 
 def _speed_text(rim_only: bool, rim_speed: float | None, mean: float | None) -> str:

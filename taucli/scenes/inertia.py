@@ -17,7 +17,7 @@ from taucli.core.errors import InputError, Unused
 from taucli.options.inertia import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text
 from taucli.scenes.given import Part
-from taucli.scenes.shapes import AREAS, LENGTHS, SHAPES, VOLUMES, Axis, Shape, fill, lookup_shape, thin_notes
+from taucli.scenes.shapes import AREAS, LENGTHS, SHAPES, VOLUMES, Axis, Shape, fill, lookup_shape, thin_notes, unused
 from taucli.options.table import Results
 
 
@@ -127,7 +127,7 @@ def part_inertia(part: Part) -> PartInertia:
     axis = shape.axis(part.axis)
     dims = dict(part.dims)
     for dim in shape.dims:
-        if dim not in dims:
+        if dim not in dims and not unused(shape, axis, dim, dims):
             needs = ", ".join(Part("", 0, source=part.source).option(d) for d in ("mass", *shape.dims))
             raise InputError(part.option(dim), f"is needed for a {shape.title} (it takes {needs})", example=part.example(dim, "0.2m"))
     for dim in dims:
@@ -145,6 +145,7 @@ def part_inertia(part: Part) -> PartInertia:
 
     mass = part.mass
     notes = thin_notes(part.source, shape, axis, dims)
+    dims.update({dim: 1.0 for dim in shape.dims if dim not in dims})  # one I about this axis does not use (#42 item 14)
     inertia_centre = axis.moment(mass, **dims)  # about the axis named, before any shift
     shifted = part.offset is not None
     if shifted and not axis.through_centre:
@@ -182,7 +183,6 @@ def part_inertia(part: Part) -> PartInertia:
         central, distance = axis.centre
         return PartInertia(part, shape, axis, shape.axis(central).moment(mass, **dims), inertia, tuple(steps), distance(**dims), notes)
     return PartInertia(part, shape, axis, inertia_centre, inertia, tuple(steps), 0.0, notes)
-
 
 
 def _point_inertia(part: Part, shape: Shape, axis: Axis, dims: Mapping[str, float]) -> PartInertia:

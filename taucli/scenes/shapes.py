@@ -162,6 +162,17 @@ SHAPES: dict[str, Shape] = {
 }  # fmt: skip
 
 
+def unused(shape: Shape, axis: Axis, dim: str, dims: Mapping[str, float]) -> bool:
+    """Whether I about ``axis`` (and its distance from the centre of mass) is the same whatever
+    ``dim`` is: a plate's width for the axis along its width (#42 item 14). Probed at 1 m and 2 m,
+    the other dimensions 1 m where not given."""
+    probes = []
+    for value in (1.0, 2.0):
+        lengths = {**{name: 1.0 for name in shape.dims}, **dims, dim: value}
+        probes.append((axis.moment(1.0, **lengths), axis.centre[1](**lengths) if axis.centre is not None else 0.0))
+    return probes[0] == probes[1]
+
+
 def thin_notes(source: str, shape: Shape, axis: Axis, dims: Mapping[str, float]) -> tuple[str, ...]:
     """A note for each dimension I depends on about this axis that was left out (taken as 0): a
     disc or a tube about a diameter with no length is a thin one (#42 item 3)."""

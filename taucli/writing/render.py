@@ -150,6 +150,10 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
     if output.out is not None:  # the file first: one that cannot be written (a full disk) is refused before any answer
         plot.write_file(chart, output.out, said_to=notes_to)
     if output.get:
+        for name in output.get:
+            if name in report.needs:  # a result this run could not give for want of an option (#42 item 14): refused, naming it
+                option, expected = report.needs[name]
+                raise InputError(option, expected, example=_NEEDED_EXAMPLES.get(option))
         if output.uncertainty:  # #22: a second column, the result's standard uncertainty
             spreads = getattr(report, "uncertainties", None) or {}
             stream.write("".join(bare(named_result(report, name, "--get").value) + " " + get_spread(report, name, spreads) + "\n" for name in output.get))
@@ -170,6 +174,9 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
             columns, colour = terminal_style(stream)
             stream.write("\n" + plot.terminal(chart, columns, colour=colour))
     stream.flush()
+
+
+_NEEDED_EXAMPLES = {"mass": "{mass} 5kg", "band": '{band} "mu=0.25 wrap=270deg radius=0.3m tension=500N"'}
 
 
 def written(report: Report, format: str, *, steps: bool = True) -> str:

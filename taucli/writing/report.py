@@ -108,6 +108,7 @@ class Report:
     inputs: dict[str, Value] = field(default_factory=dict)
     tables: dict[str, Table] = field(default_factory=dict)
     trajectory: Callable[[], Trajectory] | None = None  # built when a plot asks for it (see deferred)
+    needs: dict[str, tuple[str, str]] = field(default_factory=dict)  # a result left null for want of an input -> (its option, what it needs) (#42 item 14)
 
     # In Python and Jupyter (#36): a short repr, and the documents of --format md, html and latex.
     HEADLINES = 3  # results a repr names

@@ -19,7 +19,7 @@ import math
 from collections.abc import Sequence
 
 from taucli.core.errors import InputError
-from taucli.writing.report import Report
+from taucli.writing.report import Report, fmt
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.atwood.capstan import solve_rim
 from taucli.scenes.atwood.fixed_drum import solve_fixed_drum
@@ -40,6 +40,7 @@ def atwood(
     pulley_radius: float | None = None,
     pulley_shape: str | None = None,
     pulley_inertia: float | None = None,
+    pulley_gyration: float | None = None,
     axle_friction: float | None = None,
     side1=None,
     side2=None,
@@ -66,7 +67,11 @@ def atwood(
     massless unless given a mass (a solid disc unless --pulley-shape says) or a moment of inertia;
     a stepped pulley with --radius1/--radius2, both strings on one side with --same-side; a
     string that may slide with --rim-mu; a rope over a drum that cannot turn with --fixed-drum;
-    --at r, a point on the pulley; t_stop and distance_stop with --v0."""
+    --at r, a point on the pulley; t_stop and distance_stop with --v0; --pulley-gyration k with
+    --pulley-mass M, a pulley of I = Mk²."""
+    if pulley_gyration is not None:  # #42 item 15: the pulley by its radius of gyration
+        given = {name: value for name, value in locals().items() if name != "pulley_gyration"}
+        return _by_gyration(given, pulley_gyration)
     if fixed_drum:
         return _over_a_fixed_drum(m1, m2, g, rim_mu, mu_k, mu_s, wrap, v0, distance, time, at=at, pulley_mass=pulley_mass, pulley_radius=pulley_radius,
                                   pulley_inertia=pulley_inertia,
@@ -165,3 +170,19 @@ def _refuse(why: str, **options) -> None:
     for name, value in options.items():
         if value is not None:
             raise InputError(name, why)
+
+
+def _by_gyration(given: dict, gyration: float) -> Report:
+    """The machine with a pulley of radius of gyration k and mass M: I = Mk² about its axle."""
+    for name in ("pulley_inertia", "pulley_shape"):
+        if given.get(name) is not None:
+            raise InputError(name, "conflicts with {pulley_gyration}: give the pulley's I one way")
+    mass = given.get("pulley_mass")
+    if not mass:
+        raise InputError("pulley_mass", "is required with {pulley_gyration} (I = Mk²)", example="{pulley_mass} 2kg {pulley_gyration} 0.08m")
+    if given.get("pulley_radius") is None and given.get("radius1") is None and given.get("radius2") is None:
+        raise InputError("pulley_radius", "is required with {pulley_gyration} (the pulley adds Mk²/R² to the moving mass)", example="{pulley_radius} 0.1m")
+    inertia = mass * gyration**2
+    report = atwood(**{**given, "pulley_mass": None, "pulley_inertia": inertia})
+    report.notes.append(f"pulley: I = Mk² = {fmt(mass)} kg × ({fmt(gyration)} m)² = {fmt(inertia)} kg·m² (its radius of gyration)")
+    return report

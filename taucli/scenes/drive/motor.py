@@ -122,6 +122,18 @@ def reach(train: Train, parts: list[Piece], target: float) -> RunUp:
     return RunUp(time, theta, loss, work)
 
 
+def _overhauled(train: Train, torque: float) -> float | None:
+    """The motor's α at the start (negative) where gravity on the load beats the motor's torque at
+    rest and runs it backwards (#42 item 16: --motor-torque 0, a load that runs down freely
+    through the gears); None where the load stays put. Running back, the load drives the motor:
+    the train passes η of the output's torque, its friction T_f now against the descent."""
+    pull = train.gravity - (train.torque - train.gravity)  # T_g − T_f at the output, down the slope
+    back = train.efficiency * pull / train.ratio
+    if pull <= 0 or back <= torque:
+        return None
+    return (torque - back) / (train.input_inertia + train.efficiency * train.load / (train.ratio * train.ratio))
+
+
 def run_up(train: Train, motor: Motor, target: float | None, energy: bool, results: Results, notes: list[str], steps: list[Step]) -> Trajectory | None:
     """The motor's own run-up from rest: α at the start, the steady speed and time constant of a
     line, and the time, angle and energy to ``target``."""
@@ -130,9 +142,12 @@ def run_up(train: Train, motor: Motor, target: float | None, energy: bool, resul
     alpha0 = first.phase.constant / first.inertia
     steps.extend(_law_steps(train, motor, first))
     if first.phase.constant <= 0:
-        results.put("alpha0", 0.0)
+        back = _overhauled(train, motor.stall)
+        results.put("alpha0", 0.0 if back is None else back)
         notes.append(f"the motor cannot start the load: it gives {quantity_text(motor.stall, 'N*m')} at rest, the load asks "
-                     f"{quantity_text(first.load, 'N*m')} at the motor")
+                     f"{quantity_text(first.load, 'N*m')} at the motor" + ("" if back is None else
+                     "; gravity runs the load down and the motor backwards: α₀ = (τ − η(T_g − T_f)/N)/(J_m + J_g + ηJ/N²), "
+                     "the load driving the motor through the train"))
         if motor.no_load is not None:
             results.put("omega_steady", None)
         if target is not None:

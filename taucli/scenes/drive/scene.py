@@ -9,6 +9,7 @@ the screw's lead and the ratio: ω = vN/r, α = aN/r, θ = sN/r (r = p/2π for a
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from collections.abc import Sequence
 
 from taucli.core.errors import InputError, Unused
@@ -99,7 +100,7 @@ def drive(
     if profile:
         angle_name = "distance" if distance is not None else "move_angle"
         move = _move(top, (rate, rate_name), (angle, angle_name), in_time, accel_time, run_time, decel_time, dwell_time, notes, steps)
-        _needs_rotor(motor_inertia, "the torques of a move")
+        train = _rotor(train, notes, "the torques of a move")
         trajectory = solve_profile(train, move, {"rated": rated_torque, "peak": peak_torque, "motor": law}, results, notes, steps)
         regime = "move profile" + (" (a triangle)" if move.run == 0 and accel_time is None else "")
     else:
@@ -112,12 +113,12 @@ def drive(
                 if value is not None:
                     raise InputError(name, "conflicts with the motor's law ({stall_torque} and {no_load_speed}, or {motor_torque}): "
                                      "the motor sets how fast it gets there")
-            _needs_rotor(motor_inertia, "the run-up under the motor's torque")
+            train = _rotor(train, notes, "the run-up under the motor's torque")
             trajectory = run_up(train, law, top, energy, results, notes, steps)
             regime = "run-up on the torque–speed line" if law.no_load is not None else "run-up under a constant motor torque"
         elif rate is not None or in_time is not None:
             rate, words = _uniform_rate(rate, top, in_time, alpha)
-            _needs_rotor(motor_inertia, "the torque to accelerate")
+            train = _rotor(train, notes, "the torque to accelerate")
             uniform(train, rate, top, energy, results, steps, words)
             regime = "acceleration at a constant α"
         elif top is not None:
@@ -295,9 +296,12 @@ def _law(stall: float | None, no_load: float | None, constant: float | None) -> 
     return None if stall is None else Motor(stall, no_load)
 
 
-def _needs_rotor(motor_inertia: float | None, what: str) -> None:
-    if motor_inertia is None:
-        raise InputError("motor_inertia", f"is required for {what} (0 for a rotor too light to count)", example="{motor_inertia} 1.2kg*cm^2")
+def _rotor(train: Train, notes: list[str], what: str) -> Train:
+    """The train with its rotor's inertia; not given, neglected (0) with a note (#42 item 16)."""
+    if train.rotor is not None:
+        return train
+    notes.append(f"no --motor-inertia: the motor's rotor neglected (J_m = 0) in {what}; give {{motor_inertia}} to count it")
+    return replace(train, rotor=0.0)
 
 
 def _uniform_rate(rate: float | None, top: float | None, in_time: float | None, alpha: float | None) -> tuple[float, str]:

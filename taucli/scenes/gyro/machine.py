@@ -131,6 +131,8 @@ def machine(
     axis: str | None = None,
     offset: float | None = None,
     part: Sequence = (),
+    gyration: float | None = None,
+    density=None,
     spin: float | None = None,
     tilt: float | None = None,
     precession: float,
@@ -144,7 +146,8 @@ def machine(
 ) -> Report:
     """The gyroscopic couple on a rotor whose axis the vehicle turns at --precession."""
     body_notes: list[str] = []
-    moment, body_steps = body(inertia=inertia, shape=shape, mass=mass if shape is not None else None, axis=axis, offset=offset, part=part, notes=body_notes, **dims)
+    moment, body_steps = body(inertia=inertia, shape=shape, mass=mass if shape is not None or gyration is not None else None, axis=axis, offset=offset, part=part,
+                              gyration=gyration, density=density, notes=body_notes, **dims)  # a rotor by its radius of gyration, or its density (#42 item 15)
     if spin is None:
         raise InputError("spin", "is required: the rotor's spin about its axis", example="{spin} 2400rpm")
     craft = craft or "vehicle"

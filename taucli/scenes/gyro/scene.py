@@ -60,15 +60,12 @@ def gyro(
                 raise InputError(name, "goes with {precession}: the rate at which the vehicle turns the rotor's axis", example="{precession} '(100 km/h)/(75 m)'")
         return top(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, gyration=gyration, density=density, spin=spin,
                    cm_distance=cm_distance, torque=torque, tilt=tilt, inertia_perp=inertia_perp, g=g, **dims)
-    for name, value in (("gyration", gyration), ("density", density)):
-        if value is not None:  # (#34 gives them to a top; a rotor on a machine takes its I or its shape and mass)
-            raise InputError(name, "goes with a top (no {precession}): give the rotor by {inertia}, or its {shape} and {mass}")
     for name in _TOP_ONLY:
         if given[name] is not None:
             raise InputError(name, "conflicts with {precession}: with the turning rate given, the couple it takes is found, not a top's own precession")
-    if shape is None and mass is not None:
+    if shape is None and gyration is None and mass is not None:
         raise InputError("mass", "goes with {shape}: with {inertia} (or parts) the rotor's mass is not used", example="{inertia} '400kg*(0.3m)^2'")
-    report = machine(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, spin=spin, tilt=tilt, precession=precession,
+    report = machine(inertia=inertia, shape=shape, mass=mass, axis=axis, offset=offset, part=part, gyration=gyration, density=density, spin=spin, tilt=tilt, precession=precession,
                      spin_sense=spin_sense, turn=turn, lean=lean, craft=craft, bearing_span=bearing_span, rotor=tuple(rotor or ()), **dims)
     if g is not None:
         report.notes.append("g plays no part: the vehicle turns the rotor's axis at the rate given")

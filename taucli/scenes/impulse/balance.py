@@ -114,7 +114,8 @@ def _partial_balance(given: dict[str, float | None], missing: list[str], notes: 
     if impulse is None and None not in (i, w0, w1):
         impulse = i * (w1 - w0)
     delta_omega = None if w0 is None or w1 is None else w1 - w0
-    if impulse is None and delta_omega is None:
+    state = i is not None and w0 is not None  # a spinning body's own state, L₀ and KE₀, with nothing acting on it (#42 item 16)
+    if impulse is None and delta_omega is None and not state:
         raise InputError(
             " and ".join("{" + name + "}" for name in missing),
             "are missing: give four of {inertia}, {omega0}, {omega1}, {torque}, {duration}, and the fifth is solved for",
@@ -141,5 +142,13 @@ def _partial_balance(given: dict[str, float | None], missing: list[str], notes: 
                           "all the motion remembers of the torque"))
     if delta_omega is not None:
         steps.append(Step("The change of angular velocity", "Δω = ω₁ − ω₀", f"{term(w1, 'rad/s')} − {term(w0, 'rad/s')}", quantity_text(delta_omega, "rad/s"), "from the two given"))
-    known = " and ".join(name for name, value in (("J", impulse), ("Δω", delta_omega)) if value is not None)
+    if state:
+        steps.append(Step("Angular momentum before", "L₀ = Iω₀", f"{term(i, 'kg*m**2')} × {term(w0, 'rad/s')}", quantity_text(i * w0, "kg*m**2/s"),
+                          "the body's angular momentum about its axis"))
+        steps.append(Step("Kinetic energy before", "KE₀ = ½Iω₀²", f"½ × {term(i, 'kg*m**2')} × ({term(w0, 'rad/s')})²", quantity_text(0.5 * i * w0 * w0, "J"),
+                          "the energy of its spin"))
+    known = " and ".join(name for name, value in (("J", impulse), ("Δω", delta_omega), ("L₀ and KE₀", i * w0 if state else None)) if value is not None)
+    if impulse is None and delta_omega is None:  # the state alone: nothing acts on the body
+        steps = [step for step in steps if not step.title.startswith("Angular impulse")]
+        return Report("impulse", "a spinning body's state: L₀ = Iω₀, KE₀ = ½Iω₀² (no torque, no change given)", "closed form", results, steps, notes)
     return Report("impulse", f"constant torque: τΔt = IΔω, which fixes only {known} here", "closed form", results, steps, notes)

@@ -191,6 +191,11 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         rows.append((name, p.mass * p.speed * p.arm, p.mass * after[name] * p.arm, p.mass * p.arm * (after[name] - p.speed), after[name]))
     order = {name: n for n, name in enumerate(["body", *(r[0] for r in couple_rows), *(f"particle {k}" if len(particles) > 1 else "particle" for k in range(1, len(particles) + 1))])}
     rows.sort(key=lambda row: order[row[0]])
+    speeds = [row[4] for row in rows if row[0].startswith("particle")]  # each particle's speed after, signed (#42 item 16)
+    if speeds:
+        results.put("speed_after", speeds[0] if len(speeds) == 1 else None, " (signed: positive in the body's sense)")
+        if len(speeds) > 1:
+            notes.append("speed_after: given for one particle; with several, the parts table gives each one's (v after)")
     columns = (("part", None, "part"), ("L0", "kg*m**2/s", "L₀"), ("L1", "kg*m**2/s", "L₁"), ("J", "N*m*s", "J = ΔL"), ("speed_after", "m/s", "v after"))
     tables = {"parts": Table(columns, tuple(rows))}
     # Steps.

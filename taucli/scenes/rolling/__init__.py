@@ -44,6 +44,7 @@ def rolling(
     shape: str | None = None,
     k2: float | None = None,
     inertia: float | None = None,
+    gyration: float | None = None,
     mass: float | None = None,
     radius: float | None = None,
     angle: float | None = None,
@@ -70,7 +71,10 @@ def rolling(
     --omega0 with no slope, length or height) until it rolls; a body pulled (--pull), a spool
     (--axle-radius), a yo-yo (--yoyo), one spun in place (--in-place), a body joined to a hanging
     mass (--hanging-mass); --at r, a point of the body at r from its centre, or --at top, bottom,
-    front, back or an angle (a Value in radians), a point on its rim seen from the ground."""
+    front, back or an angle (a Value in radians), a point on its rim seen from the ground.
+    --gyration k with --radius R is the body's k² = I/(mR²) = (k/R)²."""
+    if gyration is not None:  # #42 item 15: the body by its radius of gyration
+        k2 = _by_gyration(gyration, radius, shape, k2, inertia)
     model, report = _solve(shape, k2, inertia, mass, radius, angle, mu_s, mu_k, length, height, v0, omega0, pull, pull_height, pull_angle,
                            axle_radius, yoyo, in_place, hanging_mass, string, pulley_mass, pulley_radius, g)
     if at is None:
@@ -145,6 +149,16 @@ def _yoyo_body(
     if inertia is not None and radius is None and axle_radius is not None and mass is not None and shape is None and k2 is None:
         return Roller(inertia / (mass * axle_radius**2), "body", mass, None), axle_radius
     return roller(shape, k2, inertia, mass, radius), None
+
+
+def _by_gyration(gyration: float, radius: float | None, shape: str | None, k2: float | None, inertia: float | None) -> float:
+    """k² = I/(mR²) = (k/R)² of a body of radius of gyration k rolling on radius R."""
+    for name, value in (("shape", shape), ("k2", k2), ("inertia", inertia)):
+        if value is not None:
+            raise InputError("gyration", f"conflicts with {{{name}}}: describe the body once")
+    if radius is None:
+        raise InputError("radius", "is required with {gyration} (the body's I/(mR²) is (k/R)²)", example="{gyration} 0.07m {radius} 0.1m")
+    return (gyration / radius) ** 2
 
 
 def _refuse(message: str, **options: float | None) -> None:

@@ -116,7 +116,6 @@ REFUSED = [
     (["--load-inertia", "1", "--ratio", "2,3"], "--ratio"),
     (["--load-inertia", "1", "--stall-torque", "3"], "--no-load-speed is required"),
     (["--load-inertia", "1", "--motor-torque", "3", "--stall-torque", "3", "--no-load-speed", "100rpm"], "--motor-torque conflicts"),
-    (["--load-inertia", "1", "--until-omega", "3rad/s", "--in-time", "1s"], "--motor-inertia is required"),
     (["--load-inertia", "1", "--motor-inertia", "1", "--until-omega", "3rad/s", "--in-time", "1s", "--alpha", "3rad/s^2"], "--in-time conflicts with --alpha"),
     (["--load-inertia", "1", "--motor-inertia", "1", "--in-time", "1s"], "--in-time needs the speed to reach"),
     (["--load-inertia", "1", "--motor-inertia", "1", "--motor-torque", "1", "--until-omega", "3rad/s", "--in-time", "1s"], "--in-time conflicts with the motor's law"),

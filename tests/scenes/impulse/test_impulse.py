@@ -66,7 +66,7 @@ def test_all_five_must_agree():
 @pytest.mark.parametrize(
     "args,fragment",
     [
-        ((0.1, 0.0, None, None, None), "omega1 and torque and duration are missing"),
+        ((0.1, None, None, None, 0.5), "omega0 and omega1 and torque are missing"),  # (I and ω₀ alone: the body's state, #42 item 16)
         ((None, 0.0, None, 2.0, None), "inertia and omega1 and duration are missing"),
         ((0.1, 0.0, 10.0, 0.0, None), "torque must not be zero"),
         ((0.1, 0.0, 10.0, -2.0, None), "torque must act in the sense"),

@@ -19,6 +19,7 @@ import math
 
 import mpmath
 import pytest
+from conftest import assert_usage_error, run_taucli
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -212,9 +213,10 @@ def test_what_the_hanging_mass_cannot_take_is_refused(options, name):
 
 
 def test_the_body_needs_its_mass():
-    with pytest.raises(InputError) as caught:
-        taucli.rolling("disc", hanging_mass="1kg")
-    assert caught.value.option == "mass"
+    # #42 item 14: what depends on the body's mass is null with the reason, and refused naming --mass when asked for
+    report = taucli.rolling("disc", hanging_mass="1kg")
+    assert report.results["a"].value is None and report.needs["a"][0] == "mass"
+    assert_usage_error(run_taucli("rolling", "disc", "--hanging-mass", "1kg", "--get", "a"), "--mass")
 
 
 def test_from_the_command_line_and_a_batch(taucli):
