@@ -351,6 +351,12 @@ def _in_angle(wheel: Wheel, torques: Torques, omega0, in_angle: float, targets: 
         report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, None, time=None, until_omega=until_omega,
                                        until_angle=in_angle, front=(front.steps, front.notes, front.results))
         return _with_front(report, front.results), targets, torques
+    w0 = omega0 or 0.0
+    if w0 * until_omega >= 0 and (in_angle == 0 or (w0 + until_omega) * in_angle <= 0):
+        # ω(t) is monotonic under a constant drive and these losses: with ω₀ and ω₁ on one side of 0 the wheel turns only that way
+        raise InputError("in_angle", "cannot be reached with these speeds: the mean speed must turn the wheel that way (ω₀ and ω₁ are on one side of 0, "
+                         "and under a constant drive the speed does not turn back on the way)",
+                         got=f"θ = {in_angle:g} rad, ω₀ = {w0:g} rad/s, ω₁ = {until_omega:g} rad/s", example="{omega0} -300rpm {until_omega} -100rpm {in_angle} -10rev")
     torques = drive_for_target(wheel.inertia, torques, omega0 or 0.0, None, until_omega, None, method, dt, rtol, in_angle=in_angle)
     front.notes.append(f"the constant drive torque that brings the wheel to ω = {quantity_text(until_omega, 'rad/s')} within θ = "
                        f"{quantity_text(in_angle, 'rad')}, found by bisection on the motion: τ = {quantity_text(torques.drive, 'N*m')}")
