@@ -319,13 +319,37 @@ def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: di
     if not torques.viscous and not torques.drag:
         report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, None, time=in_time, until_omega=until_omega,
                                        until_angle=until_angle, front=(front.steps, front.notes, front.results))
-        return _with_front(report, front.results), {"time": in_time, "until_omega": None, "until_angle": None}, torques
+        report = _as_given(_with_front(report, front.results), wheel.inertia, until_omega, until_angle)
+        return report, {"time": in_time, "until_omega": None, "until_angle": None}, torques
     torques = drive_for_target(wheel.inertia, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
     front.notes.append(f"the constant drive torque that meets the target in t = {fmt(in_time)} s, found by bisection on the motion: "
                        f"τ = {quantity_text(torques.drive, 'N*m')}")
     front.results.put("torque", torques.drive, " that meets the target")
     targets = {"time": in_time, "until_omega": None, "until_angle": None}
-    return _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), targets, torques
+    report = _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True)
+    return _as_given(report, wheel.inertia, until_omega, until_angle), targets, torques
+
+
+def _as_given(report: Report, inertia: float | None, until_omega: float | None, until_angle: float | None) -> Report:
+    """At --in-time the wheel is at the target given (the drive was found to put it there): ω (and
+    KE and each power, which follow from it) or θ is that target, not the motion's value at the
+    time, which keeps the rounding of the search (1.4e-14 rad/s for --until-omega 0) (#42 item 22)."""
+    results = report.results
+    if until_angle is not None and results.get("theta") is not None and results["theta"].value is not None:
+        results["theta"] = results["theta"]._replace(value=until_angle)
+        if results.get("revs") is not None:
+            results["revs"] = results["revs"]._replace(value=until_angle / (2 * math.pi))
+    if until_omega is None or results.get("omega") is None or results["omega"].value is None:
+        return report
+    w = until_omega
+    # ω, and KE = ½Iω², from the target; each power is a torque times ω (bω², k|ω|ⁿ⁺¹): 0 at a target of rest
+    exact = {"omega": w, "KE": None if inertia is None else inertia * w * w / 2}
+    if w == 0:
+        exact.update(dict.fromkeys(("power", "power_friction", "power_viscous", "power_drag"), 0.0))
+    for key, value in exact.items():
+        if key in results and results[key].value is not None and value is not None:
+            results[key] = results[key]._replace(value=value + 0.0)  # + 0.0: 0, not −0
+    return report
 
 
 def _within_angle(in_angle: float, until_omega, targets: dict, in_time, alpha, torque, push, power) -> float:
