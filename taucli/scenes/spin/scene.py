@@ -339,7 +339,7 @@ def _as_given(report: Report, inertia: float | None, until_omega: float | None, 
         results["theta"] = results["theta"]._replace(value=until_angle)
         if results.get("revs") is not None:
             results["revs"] = results["revs"]._replace(value=until_angle / (2 * math.pi))
-    if until_omega is None or results.get("omega") is None or results["omega"].value is None:
+    if until_omega is None:
         return report
     w = until_omega
     # ω, and KE = ½Iω², from the target; each power is a torque times ω (bω², k|ω|ⁿ⁺¹): 0 at a target of rest
@@ -387,7 +387,7 @@ def _in_angle(wheel: Wheel, torques: Torques, omega0, in_angle: float, targets: 
     front.results.put("torque", torques.drive, " that meets the target")
     # Timed to the speed, not the angle: at a stop dθ/dt = 0, and a time to an angle would keep half the digits.
     targets = {"time": None, "until_omega": until_omega, "until_angle": None}
-    return _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), targets, torques
+    return _as_given(_under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), wheel.inertia, until_omega, None), targets, torques
 
 
 def _under_torques(wheel: Wheel, torques: Torques, omega0, targets: dict, front: Front, formed: list, method, dt, rtol, energy: bool) -> Report:

@@ -41,3 +41,18 @@ def test_an_angle_given_with_a_time_is_that_angle(losses):
     r = taucli.spin_down(inertia=2, omega0="300 rpm", until_angle="10 rev", in_time="30 s", **losses).results
     assert r["theta"].value == 10 * 2 * math.pi
     assert r["revs"].value == 10
+
+
+@pytest.mark.parametrize("losses", [{"viscous": 0.01}, {"drag": 0.01}])
+def test_brought_to_rest_within_an_angle_is_at_rest(losses):
+    """--until-omega 0 --in-angle: the drive that stops the wheel in 10 rev (from one side only: a
+    little less drive and it stops short); at the target KE and the drive's power are 0, not −0."""
+    r = taucli.spin_down(inertia=2, omega0="300 rpm", until_omega=0, in_angle="10 rev", **losses).results
+    assert r["torque"].value < 0
+    assert r["KE"].value == 0
+    assert r["power"].value == 0 and math.copysign(1, r["power"].value) == 1
+
+
+def test_a_drive_power_at_rest_is_0_not_minus_0():
+    r = taucli.spin_down(inertia=2, omega0="300 rpm", until_omega=0, viscous=0.01, friction=0.1, torque="-1 N*m", energy=True).results
+    assert r["power"].value == 0 and math.copysign(1, r["power"].value) == 1
