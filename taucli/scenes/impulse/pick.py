@@ -71,8 +71,9 @@ def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia
              at, brake, face, band, g, body_options: dict, change: float | None = None) -> Report:
     """The model by what is given (see ``impulse``)."""
     if at is not None:
-        report = impulse(omega0=omega0, omega1=omega1, torque=torque, force=force, lever=lever, push_angle=push_angle, duration=duration, inertia_final=inertia_final,
-                         torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, band=band, g=g, **body_options)
+        # the run without --at (its ΔI from the parts that changed, where --part-after gave them), then the point
+        report = with_period(_impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method,
+                                      particle, couple, None, brake, face, band, g, body_options, change))
         given = {"omega0": omega0, "omega1": omega1, "torque": _with_push(torque, force, lever, push_angle)[0], "duration": duration, "inertia": _body(body_options)[0]}
         if brake or face or band:  # friction acts too: α and the angle from the braked motion (it may stop, or turn back)
             w0 = report.inputs["omega0"].value if "omega0" in report.inputs else omega0

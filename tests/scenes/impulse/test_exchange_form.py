@@ -117,3 +117,12 @@ def test_the_pivot_s_impulse_of_a_light_particle_on_a_heavy_rod():
         close(got["delta_omega"], omega1 - a)
         close(got["pivot_impulse"], M * L / 2 * (omega1 - a) + m * (omega1 * R - V), rel=1e-12)
         close(parts(report)["particle"][3], m * R * (omega1 * R - V), rel=1e-12)
+
+
+def test_part_after_with_a_point_keeps_the_small_change():
+    """--at r asks for a point of the body too: Δω is still ω₀(I₀ − I₁)/I₁ of the parts that moved,
+    5 × 1e-9 × (1 − 4)/1e9 = −1.5e-17 rad/s (it printed −0)."""
+    r = values(taucli.impulse(inertia="1e9 kg*m^2", omega0="5 rad/s", part="point mass=1e-9kg offset=1m", part_after="point mass=1e-9kg offset=2m",
+                              at="1 m"))
+    i0, i1 = mpf("1e9") + mpf("1e-9"), mpf("1e9") + 4 * mpf("1e-9")
+    close(r["delta_omega"], 5 * i0 / i1 - 5)
