@@ -201,6 +201,13 @@ def _check_line(kw: dict, inp: dict, res: dict, t: dict, c: Checker) -> None:
     driving = t["torque"] >= 0 if switch is None else stall >= switch
     j_e, t_e = drive if driving else back
     if stall <= t_e:
+        # going down, friction (T less gravity's part) holds against gravity and the load drives the motor through η (#42 item 11)
+        down = t["gravity_torque"] - (t["torque"] - t["gravity_torque"])
+        if down > 0 and eta * down / n > stall:
+            c.eq("α₀ = (τ_s − ηT_down/N)/(J_m + J_g + ηJ/N²), the load running back", res["alpha0"], (stall - eta * down / n) / back[0], stall / back[0],
+                 eta * down / n / back[0])
+            c.true("running back never reaches ω₁", res.get("t_accel") is None, str(res.get("t_accel")))
+            return
         c.true("cannot start ⇔ τ_s ≤ T_e", res["alpha0"] == 0 and res.get("t_accel") is None, str(res.get("t_accel")))
         return
     c.eq("α₀ = (τ_s − T_e)/J_e", res["alpha0"], (stall - t_e) / j_e, stall / j_e, t_e / j_e)

@@ -141,6 +141,8 @@ def run_up(train: Train, motor: Motor, target: float | None, energy: bool, resul
     first = parts[0]
     alpha0 = first.phase.constant / first.inertia
     steps.extend(_law_steps(train, motor, first))
+    if first.phase.constant <= 0 and _runs_back(train, motor, results, notes, steps, target, energy):
+        return None
     if first.phase.constant <= 0:
         back = _overhauled(train, motor.stall)
         results.put("alpha0", 0.0 if back is None else back)
@@ -177,6 +179,32 @@ def run_up(train: Train, motor: Motor, target: float | None, energy: bool, resul
     used = parts if len(parts) > 1 and target > parts[1].phase.omega0 else parts[:1]
     steps.extend(_target_steps(motor, used, target, found))
     return _curves(parts, found.time)
+
+
+def _runs_back(train: Train, motor: Motor, results: Results, notes: list[str], steps: list[Step], target: float | None, energy: bool) -> bool:
+    """A load whose weight beats the motor's stall torque runs the motor backwards (#42 item 11): going
+    down, friction (the rest of T) turns to hold against gravity, and the load drives the motor
+    through the teeth, which keep (1 − η): τ_s − ηT_down/N = (J_m + J_g + ηJ/N²)α, T_down = T_g − T_f.
+    False where gravity's pull, less what friction can hold, does not beat the motor at rest."""
+    friction = train.torque - train.gravity
+    down = train.gravity - friction
+    back = train.efficiency * down / train.ratio
+    if down <= 0 or back <= motor.stall:
+        return False
+    inertia = train.input_inertia + train.efficiency * train.load / (train.ratio * train.ratio)
+    alpha0 = (motor.stall - back) / inertia
+    results.put("alpha0", alpha0, ": negative, the load runs the motor backwards")
+    notes.append(f"the motor cannot hold the load: it gives {quantity_text(motor.stall, 'N*m')} at rest, gravity's pull less friction asks "
+                 f"{quantity_text(back, 'N*m')} at the motor, so the load runs down and turns the motor backwards")
+    steps.append(Step("The load runs the motor backwards", "α = (τ_s − ηT_down/N)/(J_m + J_g + ηJ/N²),  T_down = T_g − T_f",
+                      f"({quantity_text(motor.stall, 'N*m')} − {term(back, 'N*m')}) / {quantity_text(inertia, 'kg*m**2')}", quantity_text(alpha0, "rad/s**2"),
+                      "going down, friction turns to act against gravity, and the load drives the motor through the teeth, which keep (1 − η) of it"))
+    if motor.no_load is not None:
+        results.put("omega_steady", motor.no_load * (1 - back / motor.stall), ": negative, the load going down")
+    if target is not None:
+        _put_target(results, target, None, train, energy)
+        notes.append("t_accel, theta_accel: the motor never turns the load forward")
+    return True
 
 
 def _put_target(results: Results, target: float, found: RunUp | None, train: Train, energy: bool) -> None:

@@ -27,6 +27,7 @@ from collections.abc import Sequence
 from taucli.core.errors import InputError
 from taucli.options.gyro import COMMAND as TABLE, SPIN_SENSES
 from taucli.writing.report import Report, Step, fmt, quantity_text
+from taucli.scenes.angles import cos_exact, sin_exact
 from taucli.scenes.gyro.roots import finite
 from taucli.scenes.inertia import body
 from taucli.scenes.torque import cross, size
@@ -68,8 +69,9 @@ def spin_direction(sense: str) -> Vector:
 
 
 def lean_turned(v: Vector, lean: float) -> Vector:
-    """v turned about the forward axis x by the lean φ (right side down for φ > 0, that is about +x)."""
-    c, s = math.cos(lean), math.sin(lean)
+    """v turned about the forward axis x by the lean φ (right side down for φ > 0, that is about +x);
+    exact at whole right angles, so that a spin axis leaned onto the turn's axis has no couple (#42 item 10)."""
+    c, s = cos_exact(lean), sin_exact(lean)
     return (v[0], c * v[1] - s * v[2], s * v[1] + c * v[2])
 
 
@@ -215,7 +217,7 @@ def machine(
         theta = math.pi / 2 if tilt is None else tilt
         if not 0 <= theta <= math.pi + 1e-15:
             raise InputError("tilt", "expected an angle from 0 to 180 deg between the spin axis and the axis it is turned about", example="{tilt} 90deg")
-        sine = 1.0 if tilt is None else math.sin(theta)
+        sine = 1.0 if tilt is None else sin_exact(theta)
         couple = abs(angular_momentum) * precession * sine
         reactive = None
         results.put("couple", finite(couple), ", Iω_sΩ" + (" sin θ" if tilt is not None else ""))

@@ -22,7 +22,7 @@ from taucli.core.errors import InputError
 from taucli.options.impulse import COMMAND as TABLE
 from taucli.writing.report import Report, Step, quantity_text, term
 from taucli.scenes.given import Part, Particle
-from taucli.scenes.inertia import body, body_inertia, main_part
+from taucli.scenes.inertia import body, body_inertia, main_part, part_inertia
 from taucli.options.table import Results
 
 BODY_KEYS = ("inertia", "shape", "mass", "axis", "offset", "gyration", "density", "radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")
@@ -39,6 +39,22 @@ def body_after(part_after: Sequence[Part], inertia_final: float | None, body_opt
         raise InputError("part_after", "needs the body before: {inertia}, {shape} or {part}", example='{inertia} 3kg*m^2 {part_after} "point mass=5kg offset=0.2m"')
     moment, steps = body(**options)
     return moment, [Step(f"After: {s.title[0].lower()}{s.title[1:]}", s.equation, s.numbers, s.result, s.why) for s in steps]
+
+
+def inertia_change(part_after: Sequence[Part], body_options: dict) -> float:
+    """I₁ − I₀ where --part-after replaces the parts: the sum of the pieces after less those
+    before, each piece's I as the body's sum has it (the unchanged ones cancel exactly), not the
+    difference of the two totals, which loses a small part's change beside a large body."""
+    def moments(parts: Sequence[Part]) -> list[float]:
+        main = []
+        if body_options.get("inertia") is not None:
+            main = [body_options["inertia"]]
+        elif body_options.get("shape") is not None or body_options.get("gyration") is not None:
+            dims = {name: body_options.get(name) for name in ("radius", "inner_radius", "outer_radius", "length", "width", "height", "depth")}
+            main = [part_inertia(main_part(body_options.get("shape"), body_options.get("mass"), body_options.get("axis"), body_options.get("offset"), dims,
+                                           body_options.get("gyration"), body_options.get("density"))).inertia]
+        return main + [part_inertia(p).inertia for p in parts]
+    return math.fsum([*moments(part_after), *(-m for m in moments(body_options.get("part") or ()))])
 
 
 def with_period(report: Report) -> Report:
@@ -79,8 +95,10 @@ def body_centre(body_options: dict) -> tuple[float, float] | str:
 
 
 def put_momentum(results: Results, steps: list[Step], notes: list[str], centre: tuple[float, float] | str, particles: Sequence[Particle],
-                 omega0: float, omega1: float, after: dict[str, float]) -> None:
-    """p0, p1 and pivot_impulse for one particle meeting the body across its radius (angle 90°)."""
+                 omega0: float, omega1: float, after: dict[str, float], impulses: dict[str, float]) -> None:
+    """p0, p1 and pivot_impulse for one particle meeting the body across its radius (angle 90°);
+    ``impulses``: the angular impulse each part receives (the body's IΔω, the particle's m r Δv),
+    each formed from its exchange, so that p₁ − p₀ is too."""
     if not particles or centre == "no body mass":
         return
     why = None
@@ -105,7 +123,8 @@ def put_momentum(results: Results, steps: list[Step], notes: list[str], centre: 
     before = mass * d * omega0 + p.mass * p.speed
     after_p = mass * d * omega1 + p.mass * v1
     # the difference as the two exchanges, not p₁ − p₀ of near-equal totals
-    pivot = mass * d * (omega1 - omega0) + p.mass * (v1 - p.speed)
+    pivot = math.fsum([mass * d * impulses["body"] / results["inertia"].value, impulses["particle"] / p.radius]) if p.radius else \
+        mass * d * (omega1 - omega0) + p.mass * (v1 - p.speed)
     results.put("p0", before)
     results.put("p1", after_p)
     results.put("pivot_impulse", pivot)

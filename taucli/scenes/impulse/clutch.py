@@ -51,10 +51,12 @@ def solve_clutch(inertia: float, omega0: float, couple: Couple, *, inertia_steps
 
     results = Results(TABLE)
     results.put("omega1", common, " the clutch stops slipping: the common speed")
-    results.put("delta_omega", common - omega0)
+    # each body's change from what the clutch passes it, not ω_f − ω₀ (which loses a small change beside a large ω)
+    change = -other * difference / total
+    results.put("delta_omega", change)
     results.put("inertia", inertia)
     results.put("omega0", omega0, "")
-    results.put("J", inertia * (common - omega0), " the body receives, −T·t_slip in its sense of slipping")
+    results.put("J", -reduced * difference, " the body receives, −T·t_slip in its sense of slipping")
     results.put("t_slip", slip)
     results.put("heat", heat)
     results.put("L0", inertia * omega0 + other * omega_other)
@@ -92,7 +94,7 @@ def solve_clutch(inertia: float, omega0: float, couple: Couple, *, inertia_steps
                             note=f"plotted to twice the slip time, {quantity_text(horizon, 's')}")
     # each body's L before and after and the angular impulse the clutch gives it: ∓T·t_slip
     columns = (("part", None, "part"), ("L0", "kg*m**2/s", "L₀"), ("L1", "kg*m**2/s", "L₁"), ("J", "N*m*s", "J = ΔL"), ("speed_after", "m/s", "v after"))
-    rows = (("body", inertia * omega0, inertia * common, -sense * torque * slip, None),
-            ("couple", other * omega_other, other * common, sense * torque * slip, None))
+    rows = (("body", inertia * omega0, inertia * common, -reduced * difference, None),
+            ("couple", other * omega_other, other * common, reduced * difference, None))
     model = "a clutch that slips: constant torque T between the bodies until their speeds meet (L conserved)"
     return Report("impulse", model, "closed form", results, steps, notes, {}, {"parts": Table(columns, rows)}, trajectory=lambda: trajectory)

@@ -128,16 +128,29 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         raise InputError("inertia", "must be more than zero here", example="{inertia} 2kg*m^2")
     omega1 = numerator / i_effective
     # Δω from what each exchanges with the body, not ω₁ − ω₀, which loses the digits of a small change
-    # beside a large ω: (numerator − i_effective ω₀) written term by term.
-    exchange = math.fsum([
+    # beside a large ω: (numerator − i_effective ω₀) written term by term; likewise ω₁ − ω for any ω.
+    def rho_of(p: Particle) -> float:
+        return p.radius if p.radius_after is None else p.radius_after
+
+    def exchange(ref: float) -> float:
+        """(numerator − i_effective·ref) as a sum of what each thing gives up relative to ``ref``: ω₁ − ref times I_eff."""
+        return math.fsum([
+            inertia * (omega0 - ref),
+            *(i_c * (w_c - ref) for _, i_c, w_c in couple_rows),
+            *(p.mass * (p.speed * p.arm - rho_of(p) ** 2 * ref) for _, p in stick),
+            *(p.mass * (p.radius**2 * omega0 - rho_of(p) ** 2 * ref) for _, p in ride),
+            *(p.mass * p.arm * (p.speed - p.speed_after) for _, p in leave),
+            *(p.mass * p.arm * ((p.speed - ref * p.arm) + p.e * (p.speed - omega0 * p.arm)) for _, p in bounce),
+        ])
+
+    exchange_body = math.fsum([
         *(i_c * (w_c - omega0) for _, i_c, w_c in couple_rows),
-        *(p.mass * (p.speed * p.arm - (p.radius if p.radius_after is None else p.radius_after) ** 2 * omega0) for _, p in stick),
-        *(-p.mass * ((p.radius if p.radius_after is None else p.radius_after) - p.radius) * ((p.radius if p.radius_after is None else p.radius_after) + p.radius) * omega0
-          for _, p in ride),
+        *(p.mass * (p.speed * p.arm - rho_of(p) ** 2 * omega0) for _, p in stick),
+        *(-p.mass * (rho_of(p) - p.radius) * (rho_of(p) + p.radius) * omega0 for _, p in ride),
         *(p.mass * p.arm * (p.speed - p.speed_after) for _, p in leave),
         *(p.mass * p.arm * (1 + p.e) * (p.speed - omega0 * p.arm) for _, p in bounce),
     ])
-    delta_omega = exchange / i_effective
+    delta_omega = exchange_body / i_effective
     after = {name: p.speed_after for name, p in leave}
     after.update({name: omega1 * p.arm - p.e * (p.speed - omega0 * p.arm) for name, p in bounce})
     # Energies.
@@ -182,13 +195,20 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     # Each one's part: L before and after, the angular impulse it receives, its speed after.
     rows = [("body", inertia * omega0, inertia * omega1, inertia * delta_omega, None)]
     for name, i_c, w_c in couple_rows:
-        rows.append((name, i_c * w_c, i_c * omega1, i_c * (omega1 - w_c), None))
-    for name, p in (*stick, *ride):
-        rho = p.radius if p.radius_after is None else p.radius_after
-        l_before = p.mass * p.radius**2 * omega0 if p.speed is None else p.mass * p.speed * p.arm
-        rows.append((name, l_before, p.mass * rho**2 * omega1, p.mass * rho**2 * omega1 - l_before, omega1 * rho))
-    for name, p in (*leave, *bounce):
-        rows.append((name, p.mass * p.speed * p.arm, p.mass * after[name] * p.arm, p.mass * p.arm * (after[name] - p.speed), after[name]))
+        rows.append((name, i_c * w_c, i_c * omega1, i_c * exchange(w_c) / i_effective, None))  # I_c(ω₁ − ω_c), from the exchange
+    for name, p in stick:  # m(ρ²ω₁ − v r⊥) = mρ²(ω₁ − v r⊥/ρ²)
+        r1 = rho_of(p)
+        change = p.mass * r1**2 * exchange(p.speed * p.arm / r1**2) / i_effective if r1 else -p.mass * p.speed * p.arm
+        rows.append((name, p.mass * p.speed * p.arm, p.mass * r1**2 * omega1, change, omega1 * r1))
+    for name, p in ride:  # m(ρ²ω₁ − r²ω₀) = m(ρ²Δω + (ρ − r)(ρ + r)ω₀)
+        r1 = rho_of(p)
+        change = p.mass * math.fsum([r1**2 * delta_omega, (r1 - p.radius) * (r1 + p.radius) * omega0])
+        rows.append((name, p.mass * p.radius**2 * omega0, p.mass * r1**2 * omega1, change, omega1 * r1))
+    for name, p in leave:
+        rows.append((name, p.mass * p.speed * p.arm, p.mass * after[name] * p.arm, p.mass * p.arm * (p.speed_after - p.speed), after[name]))
+    for name, p in bounce:  # v′ − v = r⊥Δω − (1 + e)(v − ω₀r⊥)
+        change = p.mass * p.arm * math.fsum([p.arm * delta_omega, -(1 + p.e) * (p.speed - omega0 * p.arm)])
+        rows.append((name, p.mass * p.speed * p.arm, p.mass * after[name] * p.arm, change, after[name]))
     order = {name: n for n, name in enumerate(["body", *(r[0] for r in couple_rows), *(f"particle {k}" if len(particles) > 1 else "particle" for k in range(1, len(particles) + 1))])}
     rows.sort(key=lambda row: order[row[0]])
     speeds = [row[4] for row in rows if row[0].startswith("particle")]  # each particle's speed after, signed (#42 item 16)
@@ -265,6 +285,6 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     if bounce:
         what.append("a particle that rebounds (restitution)" if len(bounce) == 1 else "particles that rebound (restitution)")
     if centre is not None and not couples:
-        put_momentum(results, steps, notes, centre, particles, omega0, omega1, after)
+        put_momentum(results, steps, notes, centre, particles, omega0, omega1, after, {row[0]: row[3] for row in rows})
     model = "no external torque about the axis: L conserved; " + ", ".join(what)
     return Report("impulse", model, "closed form", results, steps, notes, {}, tables)

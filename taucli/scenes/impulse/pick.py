@@ -8,7 +8,7 @@ from taucli.core.errors import InputError, Unused
 from taucli.writing.report import Report, Step
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.given import Band, Brake, Couple, Face, Particle
-from taucli.scenes.impulse.after import body_after, body_centre, with_period
+from taucli.scenes.impulse.after import body_after, body_centre, inertia_change, with_period
 from taucli.scenes.impulse.balance import solve_balance
 from taucli.scenes.impulse.caught import inertia_after, then_torque
 from taucli.scenes.impulse.braked import braked_kinematics, solve_braked
@@ -55,10 +55,12 @@ def impulse(
     A push (--force at --lever) adds its torque F r sin φ to --torque's. --part-after gives the
     body after a change (its I is --inertia-final's); after each model, the period 2π/|ω₁|."""
     after_steps: list[Step] = []
+    change = None
     if part_after:
         inertia_final, after_steps = body_after(part_after, inertia_final, body_options)
+        change = inertia_change(part_after, body_options)
     report = _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
-                      at, brake, face, band, g, body_options)
+                      at, brake, face, band, g, body_options, change)
     said = body_notes(body_options) + (body_notes({**body_options, "part": tuple(part_after)}) if part_after else [])
     said += [note for c in couple if c.part is not None for note in part_inertia(c.part).notes]  # a body met, by its shape
     report.notes[:0] = [note for note in dict.fromkeys(said) if note not in report.notes]  # what was assumed of a body, first (#42 item 3)
@@ -66,11 +68,12 @@ def impulse(
 
 
 def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
-             at, brake, face, band, g, body_options: dict) -> Report:
+             at, brake, face, band, g, body_options: dict, change: float | None = None) -> Report:
     """The model by what is given (see ``impulse``)."""
     if at is not None:
-        report = impulse(omega0=omega0, omega1=omega1, torque=torque, force=force, lever=lever, push_angle=push_angle, duration=duration, inertia_final=inertia_final,
-                         torque_profile=torque_profile, method=method, particle=particle, couple=couple, brake=brake, face=face, band=band, g=g, **body_options)
+        # the run without --at (its ΔI from the parts that changed, where --part-after gave them), then the point
+        report = with_period(_impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method,
+                                      particle, couple, None, brake, face, band, g, body_options, change))
         given = {"omega0": omega0, "omega1": omega1, "torque": _with_push(torque, force, lever, push_angle)[0], "duration": duration, "inertia": _body(body_options)[0]}
         if brake or face or band:  # friction acts too: α and the angle from the braked motion (it may stop, or turn back)
             w0 = report.inputs["omega0"].value if "omega0" in report.inputs else omega0
@@ -121,7 +124,7 @@ def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia
                                        "inertia_final": inertia_final if mode != "inertia_final" else None,
                                        "torque_profile": torque_profile if mode != "torque_profile" else None})
     if mode == "inertia_final":
-        return solve_changing_inertia(inertia, inertia_final, omega0 or 0.0, inertia_steps=(*inertia_steps, *after_steps))
+        return solve_changing_inertia(inertia, inertia_final, omega0 or 0.0, inertia_steps=(*inertia_steps, *after_steps), change=change)
     assumed = Assumed()
     omega0 = _at_rest_unless_given(omega0, assumed)
     return assumed.applied(solve_profile(inertia, omega0, torque_profile, rule=method, inertia_steps=inertia_steps))

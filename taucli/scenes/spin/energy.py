@@ -46,7 +46,7 @@ def put_energy(motion, inertia: float, torques: Torques, omega0: float, time: fl
     omega_at = omega_there if omega_there is not None else motion.state_at(at)[0]
     when = " at the start" if time is None else at_words
     if torques.drive:
-        results.put("power", torques.drive * omega_at, when)
+        results.put("power", torques.drive * omega_at + 0.0, when)  # + 0.0: at rest 0, not −0
     if torques.friction:
         results.put("power_friction", torques.friction * abs(omega_at), when)
     if torques.viscous:

@@ -319,13 +319,37 @@ def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: di
     if not torques.viscous and not torques.drag:
         report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, None, time=in_time, until_omega=until_omega,
                                        until_angle=until_angle, front=(front.steps, front.notes, front.results))
-        return _with_front(report, front.results), {"time": in_time, "until_omega": None, "until_angle": None}, torques
+        report = _as_given(_with_front(report, front.results), wheel.inertia, until_omega, until_angle)
+        return report, {"time": in_time, "until_omega": None, "until_angle": None}, torques
     torques = drive_for_target(wheel.inertia, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
     front.notes.append(f"the constant drive torque that meets the target in t = {fmt(in_time)} s, found by bisection on the motion: "
                        f"τ = {quantity_text(torques.drive, 'N*m')}")
     front.results.put("torque", torques.drive, " that meets the target")
     targets = {"time": in_time, "until_omega": None, "until_angle": None}
-    return _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), targets, torques
+    report = _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True)
+    return _as_given(report, wheel.inertia, until_omega, until_angle), targets, torques
+
+
+def _as_given(report: Report, inertia: float | None, until_omega: float | None, until_angle: float | None) -> Report:
+    """At --in-time the wheel is at the target given (the drive was found to put it there): ω (and
+    KE and each power, which follow from it) or θ is that target, not the motion's value at the
+    time, which keeps the rounding of the search (1.4e-14 rad/s for --until-omega 0) (#42 item 22)."""
+    results = report.results
+    if until_angle is not None and results.get("theta") is not None and results["theta"].value is not None:
+        results["theta"] = results["theta"]._replace(value=until_angle)
+        if results.get("revs") is not None:
+            results["revs"] = results["revs"]._replace(value=until_angle / (2 * math.pi))
+    if until_omega is None:
+        return report
+    w = until_omega
+    # ω, and KE = ½Iω², from the target; each power is a torque times ω (bω², k|ω|ⁿ⁺¹): 0 at a target of rest
+    exact = {"omega": w, "KE": None if inertia is None else inertia * w * w / 2}
+    if w == 0:
+        exact.update(dict.fromkeys(("power", "power_friction", "power_viscous", "power_drag"), 0.0))
+    for key, value in exact.items():
+        if key in results and results[key].value is not None and value is not None:
+            results[key] = results[key]._replace(value=value + 0.0)  # + 0.0: 0, not −0
+    return report
 
 
 def _within_angle(in_angle: float, until_omega, targets: dict, in_time, alpha, torque, push, power) -> float:
@@ -351,13 +375,19 @@ def _in_angle(wheel: Wheel, torques: Torques, omega0, in_angle: float, targets: 
         report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, None, time=None, until_omega=until_omega,
                                        until_angle=in_angle, front=(front.steps, front.notes, front.results))
         return _with_front(report, front.results), targets, torques
+    w0 = omega0 or 0.0
+    if w0 * until_omega >= 0 and (in_angle == 0 or (w0 + until_omega) * in_angle <= 0):
+        # ω(t) is monotonic under a constant drive and these losses: with ω₀ and ω₁ on one side of 0 the wheel turns only that way
+        raise InputError("in_angle", "cannot be reached with these speeds: the mean speed must turn the wheel that way (ω₀ and ω₁ are on one side of 0, "
+                         "and under a constant drive the speed does not turn back on the way)",
+                         got=f"θ = {in_angle:g} rad, ω₀ = {w0:g} rad/s, ω₁ = {until_omega:g} rad/s", example="{omega0} -300rpm {until_omega} -100rpm {in_angle} -10rev")
     torques = drive_for_target(wheel.inertia, torques, omega0 or 0.0, None, until_omega, None, method, dt, rtol, in_angle=in_angle)
     front.notes.append(f"the constant drive torque that brings the wheel to ω = {quantity_text(until_omega, 'rad/s')} within θ = "
                        f"{quantity_text(in_angle, 'rad')}, found by bisection on the motion: τ = {quantity_text(torques.drive, 'N*m')}")
     front.results.put("torque", torques.drive, " that meets the target")
     # Timed to the speed, not the angle: at a stop dθ/dt = 0, and a time to an angle would keep half the digits.
     targets = {"time": None, "until_omega": until_omega, "until_angle": None}
-    return _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), targets, torques
+    return _as_given(_under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), wheel.inertia, until_omega, None), targets, torques
 
 
 def _under_torques(wheel: Wheel, torques: Torques, omega0, targets: dict, front: Front, formed: list, method, dt, rtol, energy: bool) -> Report:

@@ -322,4 +322,9 @@ def drive_for_target(inertia, torques: Torques, omega0, in_time, until_omega, un
         if mid in (low, high):
             break
         low, high = (mid, high) if miss(mid) < 0 else (low, mid)
+    if in_angle is not None:  # a bracket across a jump (a wheel that never gets there on one side) is no answer
+        missed = min(abs(miss(low)), abs(miss(high)))  # a target of rest is met from one side only (the other stops short)
+        if not missed <= 1e-6 * max(abs(until_omega), abs(omega0)):
+            raise InputError("in_angle", "cannot be reached by any constant drive with these losses: no drive brings the wheel to {until_omega} "
+                             "once it has turned this angle", example="{omega0} -300rpm {until_omega} -100rpm {in_angle} -10rev")
     return Torques((low + high) / 2, torques.friction, torques.viscous, torques.drag, torques.drag_exponent)

@@ -345,3 +345,33 @@ def test_the_run_up_is_continuous_where_the_switch_reaches_the_target():
             near = run(t_edge * (1 + side * eps))
             for key in ("t_accel", "theta_accel", "work_motor"):
                 assert near[key] == pytest.approx(at[key], rel=100 * eps), (key, side)
+
+
+def test_a_load_heavier_than_the_stall_torque_runs_the_motor_backwards():
+    """#42 item 11: 100 kg hung on a 0.1 m drum through N = 10 pulls 9.80665 N·m at the motor, more
+    than its 0.5 N·m stall torque: the load runs down and turns the motor backwards,
+    α₀ = (τ_s − mgr/N)/(J_m + mr²/N²) = (0.5 − 9.80665)/(1e-4 + 0.01) = −921.45 rad/s² (not 0)."""
+    r = taucli.drive(motor_inertia="1e-4 kg*m^2", load_mass="100 kg", drum_radius="0.1 m", incline="90 deg", ratio=10,
+                     stall_torque="0.5 N*m", no_load_speed="3000 rpm").results
+    assert r["alpha0"].value == pytest.approx((0.5 - 9.80665) / (1e-4 + 100 * 0.1**2 / 10**2), rel=1e-14)
+    assert r["alpha0"].value == pytest.approx(-921.45, abs=0.005)
+
+
+def test_running_back_with_losses_and_friction_that_turns_to_hold():
+    """Going down, the guide's friction μmg cos θ acts up the slope and the load drives the motor
+    through the teeth, which keep (1 − η): α₀ = (τ_s − η(mg sin θ − μmg cos θ)r/N)/(J_m + ηmr²/N²).
+    Where friction and the motor together hold the load, it stays: α₀ = 0."""
+    m, g, r_drum, n, eta, mu, stall, jm = 100, 9.80665, 0.1, 10, 0.8, 0.1, 0.5, 1e-4
+    theta = math.radians(60)
+    r = taucli.drive(motor_inertia=jm, load_mass=m, drum_radius=r_drum, incline="60 deg", ratio=n, efficiency=eta, mu=mu,
+                     stall_torque=stall, no_load_speed="3000 rpm").results
+    down = m * g * (math.sin(theta) - mu * math.cos(theta)) * r_drum
+    assert r["alpha0"].value == pytest.approx((stall - eta * down / n) / (jm + eta * m * r_drum**2 / n**2), rel=1e-12)
+    held = taucli.drive(motor_inertia=jm, load_mass=m, drum_radius=r_drum, incline="10 deg", ratio=100, mu=0.1, stall_torque="0.05 N*m", no_load_speed="3000 rpm").results
+    # uphill it asks mg(sin 10° + 0.1 cos 10°)r/100 = 0.267 N·m > 0.05: cannot start; downhill pull mg(sin 10° − 0.1 cos 10°)r/100 = 0.074 N·m
+    # through η = 1 beats 0.05 too, so it runs back: check the arithmetic of both sides
+    pull = m * g * (math.sin(math.radians(10)) - 0.1 * math.cos(math.radians(10))) * r_drum / 100
+    assert held["alpha0"].value == pytest.approx((0.05 - pull) / (jm + m * r_drum**2 / 100**2), rel=1e-12)
+    stays = taucli.drive(motor_inertia=jm, load_mass=m, drum_radius=r_drum, incline="5 deg", ratio=100, mu=0.1, stall_torque="0.05 N*m", no_load_speed="3000 rpm").results
+    # at 5°: sin 5° = 0.087 < μ cos 5° = 0.0996: friction alone holds it, and the motor cannot lift it (0.18 N·m asked)
+    assert stays["alpha0"].value == 0

@@ -588,3 +588,37 @@ def test_rotors_need_their_senses():
                                   "--rotor", "inertia=1 spin=1rad/s sense=sideways"), "--rotor", "sense=")
     assert_usage_error(run_taucli("gyro", "--inertia", "1", "--spin", "100rpm", "--precession", "1rad/s", "--spin-sense", "cw-from-rear", "--turn", "left",
                                   "--rotor", "inertia=1 spin=1rad/s"), "--rotor", "needs sense=")
+
+
+def test_a_couple_zero_by_the_geometry_is_zero_in_every_direction():
+    """#42 item 10: for every spin sense, turn and lean of whole right angles (and 45°), the couple
+    is |L × Ω| with L along the spin axis (towards the viewer for ccw: the right-hand rule) leaned
+    about the forward axis; where L lies along the turn's axis it is exactly 0 and no effect is
+    named (a lean of 90deg read as a float near π/2 once left 6.1e-15 N·m "rolling to the right")."""
+    from taucli.options.gyro import SPIN_SENSES, TURNS
+
+    toward = {"rear": (-1, 0, 0), "front": (1, 0, 0), "left": (0, 1, 0), "right": (0, -1, 0), "above": (0, 0, 1), "below": (0, 0, -1)}
+    axes = {"left": (0, 0, 1), "right": (0, 0, -1), "pitch-up": (0, -1, 0), "pitch-down": (0, 1, 0), "roll-right": (1, 0, 0), "roll-left": (-1, 0, 0)}
+    spin, omega = 100, 1
+    with mpmath.workdps(50):
+        for sense in SPIN_SENSES:
+            turn_word, _, end = sense.split("-", 2)
+            x, y, z = (c * (1 if turn_word == "ccw" else -1) for c in toward[end])
+            for lean in (0, 45, 90, 180, 270, -90):
+                c, s = mpmath.cos(mpmath.radians(lean)), mpmath.sin(mpmath.radians(lean))
+                L = [spin * mpmath.mpf(x), spin * (c * y - s * z), spin * (s * y + c * z)]
+                for turn in TURNS:
+                    a = [omega * k for k in axes[turn]]
+                    cross = [L[1] * a[2] - L[2] * a[1], L[2] * a[0] - L[0] * a[2], L[0] * a[1] - L[1] * a[0]]
+                    want = mpmath.sqrt(sum(k * k for k in cross))
+                    r = taucli.gyro(inertia=1, spin="100 rad/s", precession="1 rad/s", spin_sense=sense, turn=turn, lean=f"{lean} deg").results
+                    if want < 1e-30:
+                        assert r["couple"].value == 0, (sense, turn, lean, r["couple"].value)
+                        assert r["effect"].value == "none", (sense, turn, lean, r["effect"].value)
+                    else:
+                        assert r["couple"].value == pytest.approx(float(want), rel=1e-14), (sense, turn, lean)
+
+
+def test_a_rotor_turned_about_its_own_axis_by_tilt_has_no_couple():
+    """--tilt 180deg: the spin axis is along the axis it is turned about (sin 180° = 0), so C = 0."""
+    assert taucli.gyro(inertia=1, spin="100 rad/s", precession="1 rad/s", tilt="180 deg").results["couple"].value == 0

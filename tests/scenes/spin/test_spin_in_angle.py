@@ -51,3 +51,26 @@ def test_in_angle_needs_its_target_and_no_drive():
     assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--in-angle", "10rev"), "--in-angle needs --until-omega")
     assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--until-omega", "0", "--in-angle", "10rev", "--torque", "1"), "--in-angle")
     assert_usage_error(run_taucli("spin-down", "--inertia", "1", "--until-omega", "0", "--in-angle", "10rev", "--time", "1s"), "--time conflicts with --in-angle")
+
+
+@pytest.mark.parametrize("losses", [("--friction", "1", "--viscous", "0.001"), ("--drag", "0.001"), ("--viscous", "0.01")])
+def test_an_angle_against_the_motion_is_refused_with_losses(losses):
+    """#42 item 9: from −300 rpm to −100 rpm the speed stays negative under any constant drive (ω(t) is
+    monotonic), so the wheel cannot have turned +10 rev: refused as the lossless path refuses, not
+    answered with the search's bound (1 N·m) or a drive of 1e-59 N·m."""
+    result = run_taucli("spin-down", "--inertia", "2", "--omega0", "-300rpm", "--until-omega", "-100rpm", "--in-angle", "10rev", *losses)
+    assert_usage_error(result, "--in-angle", "the mean speed must turn the wheel that way")
+
+
+def test_an_angle_with_the_motion_backwards_with_losses_is_the_physics():
+    """The same turned the way it goes, −10 rev: with ω < 0, I ω dω/dθ = τ + f − bω, so
+    θ(τ) = ∫ I ω / (τ + f − bω) dω from ω₀ to ω₁; the drive is the τ at which θ = −20π rad."""
+    inertia, friction, viscous = mpmath.mpf(2), mpmath.mpf(1), mpmath.mpf("0.001")
+    w0, w1 = -10 * mpmath.pi, -10 * mpmath.pi / 3
+
+    def angle(tau):
+        return mpmath.quad(lambda w: inertia * w / (tau + friction - viscous * w), [w0, w1]) + 20 * mpmath.pi
+
+    tau = mpmath.findroot(angle, 10)
+    r = values(taucli.spin_down(inertia=2, omega0="-300 rpm", until_omega="-100 rpm", in_angle="-10 rev", friction=1, viscous=0.001))
+    assert r["torque"] == pytest.approx(float(tau), rel=1e-9)
