@@ -30,6 +30,7 @@ from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
 from taucli.options.table import FLAG, Command, Option
+from taucli.quantities.kinds import KINDS
 
 
 @dataclass
@@ -191,7 +192,9 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
 
     with _progress_bar(env, bool(finding.get("find") or finding["mc"])) as progress:
         def solve(options: dict):
-            return answer.solve(command, options, stdin=env.stdin, spell=command.flag, limit=limit, progress=progress, **finding)
+            report = answer.solve(command, options, stdin=env.stdin, spell=command.flag, limit=limit, progress=progress, **finding)
+            _made_what_is_named(command, report, output, asked["y"] or ())
+            return report
 
         if swept_range is None and swept_list is None:
             report = solve(scene_given)
@@ -234,6 +237,21 @@ def _turn_on_what_makes(command: Command, given: dict, asked: set) -> None:
     for option in command.options:
         if option.makes and not given.get(option.name) and asked & set(option.makes):
             given[option.name] = True
+
+
+def _made_what_is_named(command: Command, report, output: render.Output, y) -> None:
+    """A result named in --get, --y or --to that this run did not make because an option it
+    needs was not given: name that option (#42: "v needs --distance or --time")."""
+    for option, names in (("get", output.get), ("y", y), ("to", [to.partition("=")[0].strip() for to in output.to])):
+        for name in names:
+            result = command.result(name)
+            if name not in report.results and result is not None and result.needs:
+                first = command.option(result.needs[0])
+                value = KINDS[first.kind].example if first.kind in KINDS else None
+                if value and " " in value and not value.startswith("'"):
+                    value = f"'{value}'"  # one word, as the shell splits it
+                example = f"{{{first.name}}} {value}" if value else None
+                raise InputError(option, f"{name} needs {result.needed()}", example=example)
 
 
 def _format(asked: dict) -> Optional[str]:
