@@ -50,3 +50,55 @@ def test_python_names_the_keyword_that_makes_a_result():
     with pytest.raises(taucli.MissingResult) as raised:
         report.results["v"]
     assert "distance= or time=" in str(raised.value)
+
+
+# item 19: each surface spells names as it takes them
+
+
+def _keywords(command) -> tuple[list[str], dict[str, str]]:
+    """A scene's example as the Python API takes it: positional words, and keywords."""
+    words, given = [], {}
+    args = iter(shlex.split(command.example)[2:])
+    for arg in args:
+        if arg.startswith("--"):
+            given[arg[2:].replace("-", "_")] = next(args)
+        else:
+            words.append(arg)
+    return words, given
+
+
+def _variants(command):
+    """The example, and the example with each keyword left out in turn (a note or an error each)."""
+    words, given = _keywords(command)
+    yield words, given
+    for name in given:
+        yield words, {key: value for key, value in given.items() if key != name}
+
+
+def _flags_in(text: str, command) -> list[str]:
+    return [option.flag for option in command.options if option.flag in text.replace("—", " ")]
+
+
+@pytest.mark.parametrize("command", list(SCENES.values()), ids=list(SCENES))
+def test_python_notes_and_errors_name_keywords_not_flags(command):
+    function = getattr(taucli, command.function_name)
+    said = []
+    for words, given in _variants(command):
+        try:
+            said += function(*words, **given).notes
+        except taucli.InputError as err:
+            said.append(str(err))
+    for text in said:
+        assert not _flags_in(text, command), (text, command.name)
+
+
+def test_python_and_batch_spell_the_pulley_as_keywords():
+    notes = taucli.atwood(m1="4kg", m2="1kg", pulley_mass="2kg").notes
+    assert any("give pulley_radius for" in note for note in notes) and any("pulley_shape ring" in note for note in notes), notes
+    with pytest.raises(taucli.InputError, match=r"radius2 is required with radius1 \(or pulley_radius for it\)"):
+        taucli.atwood(m1="4kg", m2="1kg", radius1="0.1m")
+    lines = '{"m1": "4kg", "m2": "1kg", "pulley_mass": "2kg"}\n{"m1": "4kg", "m2": "1kg", "radius1": "0.1m"}\n'
+    run = run_taucli("atwood", "--batch", stdin=lines)
+    assert "give pulley_radius for" in run.out and "--pulley" not in run.out, run.out
+    cli = run_taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--radius1", "0.1m")
+    assert_usage_error(cli, "--radius2 is required with --radius1 (or --pulley-radius for it)")
