@@ -182,7 +182,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     if output.plot and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
     if asked["y"] and swept_range is None:
-        raise InputError("y", "names what a range's chart shows; give a range FROM..TO", example="{inertia} 0.5..4kg*m^2 {y} alpha0")
+        raise InputError("y", "names what a range's chart shows; give a range FROM..TO", example="{inertia} '0.5..4kg*m^2' {y} alpha0")
     if output.out is not None:
         from taucli.writing import plot  # deferred: charts (2 ms), only for --out
 

@@ -3,7 +3,11 @@ each surface spells names as it takes them, and every example in a message works
 
 from __future__ import annotations
 
+import ast
+import re
 import shlex
+import subprocess
+from pathlib import Path
 
 import pytest
 
@@ -102,3 +106,61 @@ def test_python_and_batch_spell_the_pulley_as_keywords():
     assert "give pulley_radius for" in run.out and "--pulley" not in run.out, run.out
     cli = run_taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--radius1", "0.1m")
     assert_usage_error(cli, "--radius2 is required with --radius1 (or --pulley-radius for it)")
+
+
+# item 20: every example in a message works as typed in zsh (and so in bash: the words shlex gives)
+
+_SOURCE = Path(taucli.__file__).parent
+
+
+def _texts(node, names: dict, deep: bool = True):
+    """The texts an expression may be: a string, an f-string (each hole a 1), either side of an
+    if, a concatenation, a dict's values, a name assigned a text in the module."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        yield node.value
+    elif isinstance(node, ast.JoinedStr):
+        yield "".join(part.value if isinstance(part, ast.Constant) else "1" for part in node.values)
+    elif isinstance(node, ast.IfExp):
+        yield from _texts(node.body, names, deep)
+        yield from _texts(node.orelse, names, deep)
+    elif isinstance(node, ast.BinOp):
+        yield from (left + right for left in _texts(node.left, names, deep) for right in _texts(node.right, names, deep))
+    elif isinstance(node, ast.Dict):
+        for value in node.values:
+            yield from _texts(value, names, deep)
+    elif isinstance(node, ast.Subscript):
+        yield from _texts(node.value, names, deep)
+    elif isinstance(node, ast.Name) and deep:
+        yield from names.get(node.id, ())
+
+
+def _examples():
+    """Every example= a message is given in taucli's source, and each kind's example after a flag."""
+    found = [(f"kinds.{kind.name}", "--x " + (kind.example if kind.example.startswith("'") or " " not in kind.example else f"'{kind.example}'"))
+             for kind in KINDS.values()]
+    for path in sorted(_SOURCE.rglob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        names: dict[str, list[str]] = {}
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name):
+                names.setdefault(node.targets[0].id, []).extend(_texts(node.value, names, deep=False))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.keyword) and node.arg == "example":
+                for text in _texts(node.value, names):
+                    if re.search(r"\{[a-z_0-9]+\}|--[a-z]|^taucli ", text):  # a command line (not a CSV header or a JSON line)
+                        found.append((f"{path.relative_to(_SOURCE)}:{node.value.lineno}", text))
+    return found
+
+
+def test_every_example_in_a_message_pastes_into_zsh_as_bash_reads_it(tmp_path):
+    examples = _examples()
+    assert len(examples) > 200
+    wrong = []
+    for where, text in examples:
+        flags = re.sub(r"\{([a-z][a-z0-9_]*)\}", lambda m: "--" + m[1].replace("_", "-"), text)
+        for line in flags.split(", or "):
+            line = re.split(r" [<>] ", line)[0]  # a redirection is the shell's own
+            zsh = subprocess.run(["zsh", "-f", "-c", "print -rl -- " + line], capture_output=True, text=True, cwd=tmp_path)
+            if zsh.returncode != 0 or zsh.stdout.splitlines() != shlex.split(line):
+                wrong.append((where, line, zsh.stderr.strip()))
+    assert not wrong, "\n".join(map(str, wrong))

@@ -80,7 +80,7 @@ def drive(
     if not any((moment, linear, torque, gear_inertia, load_mass is not None)):
         raise InputError("load_inertia", "or another load is required: a rotating load ({load_inertia}, {shape}, {part}), a mass "
                          "({load_mass} with {drum_radius} or {lead}), {load_torque} or {load_force}",
-                         example="{load_inertia} 0.05kg*m^2")
+                         example="{load_inertia} '0.05kg*m^2'")
     train = Train(n, eta, motor_inertia, gear_inertia or 0.0, (moment or 0.0) + linear, torque,
                   gravity_force * lever if gravity_force else 0.0, lever)
     steps[:0] = list(body_steps)
@@ -288,13 +288,13 @@ def _law(stall: float | None, no_load: float | None, constant: float | None) -> 
     if (stall is None) != (no_load is None):
         missing = "no_load_speed" if no_load is None else "stall_torque"
         raise InputError(missing, "is required: the line needs both ends, {stall_torque} and {no_load_speed}",
-                         example="{stall_torque} 2N*m {no_load_speed} 3000rpm")
+                         example="{stall_torque} '2N*m' {no_load_speed} 3000rpm")
     return None if stall is None else Motor(stall, no_load)
 
 
 def _needs_rotor(motor_inertia: float | None, what: str) -> None:
     if motor_inertia is None:
-        raise InputError("motor_inertia", f"is required for {what} (0 for a rotor too light to count)", example="{motor_inertia} 1.2kg*cm^2")
+        raise InputError("motor_inertia", f"is required for {what} (0 for a rotor too light to count)", example="{motor_inertia} '1.2kg*cm^2'")
 
 
 def _uniform_rate(rate: float | None, top: float | None, in_time: float | None, alpha: float | None) -> tuple[float, str]:

@@ -175,7 +175,7 @@ def _transfer(wheel: Wheel, omega0: float | None, uses: dict, efficiency: float 
         if value is not None:
             raise InputError(name, f"conflicts with {{{given[0]}}}: an energy balance, from the speed before to the speed after, takes no torques, times or targets")
     if wheel.inertia is None:
-        raise InputError(given[0], "needs a body ({inertia} or {shape}): its energy is ½Iω²", example="{inertia} 2kg*m^2 {omega0} 300rpm")
+        raise InputError(given[0], "needs a body ({inertia} or {shape}): its energy is ½Iω²", example="{inertia} '2kg*m^2' {omega0} 300rpm")
     if efficiency is not None and not 0 < efficiency <= 1:
         raise InputError("efficiency", "expected a number above 0 and at most 1", example="{efficiency} 0.8", got=f"{efficiency:g}")
     assumed = Assumed()
@@ -381,7 +381,7 @@ def _one_sense(brakes, bands, omega0: float | None, drive: float, in_time, in_an
     if omega0 and drive and (omega0 > 0) != (drive > 0):
         raise InputError(sided[0], "takes the torque for the sense the wheel turns, and a drive against ω₀ would stop it and turn it back "
                          "(the tight and slack ends, or the friction's moment, change over): give a drive along ω₀, or work the turn back in a second run",
-                         example='{torque} 5N*m {omega0} 100rpm')
+                         example="{torque} '5N*m' {omega0} 100rpm")
 
 
 def _with_parts(report: Report, parts: Table | None) -> Report:
