@@ -291,7 +291,8 @@ def _no_such_option(command: Command, unknown: str) -> str:
     is close (names compared without their dashes, which every flag shares)."""
     message = f"{unknown} is not an option of {command.name}"
     names = {option.flag[2:]: option.flag for option in (*command.options, *command.output) if not option.positional}
-    close = difflib.get_close_matches(unknown.lstrip("-"), list(names), n=1, cutoff=0.6)
+    names["help"] = "--help"  # --hlep (#42)
+    close = difflib.get_close_matches(unknown.lstrip("-").lower(), list(names), n=1, cutoff=0.6)  # --M1: flags are lower case
     return f"{message}; did you mean {names[close[0]]!r}?" if close else message
 
 

@@ -164,3 +164,34 @@ def test_every_example_in_a_message_pastes_into_zsh_as_bash_reads_it(tmp_path):
             if zsh.returncode != 0 or zsh.stdout.splitlines() != shlex.split(line):
                 wrong.append((where, line, zsh.stderr.strip()))
     assert not wrong, "\n".join(map(str, wrong))
+
+
+def test_no_dimension_in_pint_brackets_reaches_a_message():
+    """Every dimension a text may have, mass, length and time to the powers -3..3: said in words."""
+    from taucli.quantities.registry import _describe
+
+    for mass in range(-3, 4):
+        for length in range(-3, 4):
+            for time in range(-3, 4):
+                said = _describe({"[mass]": mass, "[length]": length, "[time]": time})
+                assert "[" not in said and "**" not in said and said.startswith(("a ", "an ")), said
+    run = run_taucli("spin-down", "--inertia", "1 lbf*ft^2", "--omega0", "1rad/s")
+    assert_usage_error(run, "got '1 lbf*ft^2', which is a torque or energy times a length")
+
+
+@pytest.mark.parametrize("typed, meant", [("--hlep", "--help"), ("--M1", "--m1")])
+def test_a_mistyped_flag_gets_its_did_you_mean(typed, meant):
+    assert_usage_error(run_taucli("atwood", typed, "4kg" if typed == "--M1" else "--m1", *(["--m1", "4kg"] if typed == "--M1" else ["4kg"])),
+                       f"{typed} is not an option of atwood; did you mean '{meant}'?")
+
+
+@pytest.mark.parametrize("scene", ["inertia", "rolling", "atwood"])
+def test_help_after_a_scene_is_its_help_where_help_is_no_value(scene):
+    run = run_taucli(scene, "help")
+    assert run.code == 0 and run.out.startswith(f"Usage: taucli {scene} "), run
+
+
+def test_python_says_it_takes_no_sweeps():
+    with pytest.raises(taucli.InputError, match=r"m2: takes one value: the Python API takes no sweeps") as raised:
+        taucli.atwood(m1="4kg", m2="1..3 kg")
+    assert "m2=x) for x in (1.0, 2.0, 3.0)" in str(raised.value)
