@@ -26,3 +26,18 @@ def test_every_code_fence_of_the_docs_is_closed_before_the_next_opens(page):
             assert line.strip() == "```", f"{page.name}:{number}: {line!r} opens a block inside the one opened on line {opened}"
             opened = None
     assert opened is None, f"{page.name}: the block opened on line {opened} is never closed"
+
+
+def test_a_drive_conflict_names_the_fix_and_the_fix_runs():
+    base = ("drive", "--motor-inertia", "1e-4 kg*m^2", "--load-mass", "10kg", "--drum-radius", "0.1m", "--ratio", "10")
+    refused = run_taucli(*base, "--distance", "1m", "--speed", "1m/s", "--accel-time", "0.5s")
+    assert_usage_error(refused, "--distance conflicts with the top speed", "(e.g. --distance 1m --accel-time 0.5s)", "leave out one of them")
+    fixed = run_taucli(*base, "--distance", "1m", "--accel-time", "0.5s", "--no-steps")
+    assert fixed.code == 0 and fixed.out.startswith("drive:"), fixed
+
+
+def test_bench_help_counts_its_scenes():
+    from taucli.options.tools import BENCH_SCENES
+
+    out = run_taucli("bench", "--help").out
+    assert "default both" not in out and f"default all {len(BENCH_SCENES)}" in out

@@ -332,7 +332,8 @@ def _move(top, given_rate, given_angle, in_time, accel_time, run_time, decel_tim
     run = run_time or 0.0
     if top is not None and angle is not None:
         raise InputError(angle_name, "conflicts with the top speed ({until_omega} or {speed}) beside {accel_time}: with the times, "
-                         "the travel sets the top speed and the top speed the travel")
+                         "the travel sets the top speed and the top speed the travel",
+                         hint="leave out one of them: the travel or the top speed", example="{distance} 1m {accel_time} 0.5s")
     if top is None:
         if angle is None:
             raise InputError("until_omega", "or {speed}, or the travel {distance}, is required with {accel_time}: the move's top speed",
