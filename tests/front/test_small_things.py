@@ -41,3 +41,14 @@ def test_bench_help_counts_its_scenes():
 
     out = run_taucli("bench", "--help").out
     assert "default both" not in out and f"default all {len(BENCH_SCENES)}" in out
+
+
+def test_fit_y_names_the_close_result_not_sixty(tmp_path):
+    data = tmp_path / "spin.csv"
+    data.write_text("t (s),omega (rad/s)\n0,30\n1,28\n2,26.1\n3,24\n")
+    close = run_taucli("fit", "spin-down", str(data), "--inertia", "1", "--fit", "friction", "--y", "omega (rad/s)=omegga")
+    assert_usage_error(close, "did you mean 'omega'?")
+    assert "theta_stop" not in close.err
+    far = run_taucli("fit", "spin-down", str(data), "--inertia", "1", "--fit", "friction", "--y", "omega (rad/s)=zzz")
+    assert_usage_error(far, "in all: docs/spin-down.md")
+    assert len(far.err) < 300, far.err
