@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -52,3 +53,18 @@ def test_fit_y_names_the_close_result_not_sixty(tmp_path):
     far = run_taucli("fit", "spin-down", str(data), "--inertia", "1", "--fit", "friction", "--y", "omega (rad/s)=zzz")
     assert_usage_error(far, "in all: docs/spin-down.md")
     assert len(far.err) < 300, far.err
+
+
+_SIGN = re.compile(r"(?<![\w.)\]\\])-(?=[\d.∞])")  # a hyphen written as a number's sign
+
+
+@pytest.mark.parametrize("form", ["md", "html"])
+def test_a_document_writes_one_minus_in_its_steps_and_labels(form):
+    """--format md and html: steps and labels write −, as the human view does; only a result's value
+    (a number a spreadsheet reads) keeps the ASCII sign."""
+    run = run_taucli("spin-down", "--inertia", "2", "--omega0", "-30rad/s", "--friction", "1", "--until-angle", "-10rev", "--format", form)
+    assert run.code == 0, run
+    assert "θ = −62.8319 rad" in run.out
+    for line in run.out.splitlines():
+        text = re.sub(r"^\| [^|]+ \| -?[\d.e+-]+ \|", "", line) if form == "md" else re.sub(r"<td[^>]*>-?[\d.e+-]+</td>", "", line)
+        assert not _SIGN.search(text), line
