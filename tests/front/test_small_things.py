@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -68,3 +69,14 @@ def test_a_document_writes_one_minus_in_its_steps_and_labels(form):
     for line in run.out.splitlines():
         text = re.sub(r"^\| [^|]+ \| -?[\d.e+-]+ \|", "", line) if form == "md" else re.sub(r"<td[^>]*>-?[\d.e+-]+</td>", "", line)
         assert not _SIGN.search(text), line
+
+
+@pytest.mark.parametrize("flag", ["--to", "--want"])
+def test_tab_completes_a_result_before_its_equals_sign(flag):
+    """--to and --want take RESULT=...: TAB offers the results, each with its "=" (bash)."""
+    script = ROOT / "completions" / "taucli.bash"
+    completed = subprocess.run(
+        ["bash", "-c", f'source "{script}"; COMP_WORDS=(taucli atwood {flag} T); COMP_CWORD=3; _taucli 2>/dev/null; echo "${{COMPREPLY[@]}}"'],
+        capture_output=True, text=True, timeout=30,
+    )
+    assert completed.stdout.split() == ["T1=", "T2="], completed
