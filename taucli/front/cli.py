@@ -193,7 +193,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     with _progress_bar(env, bool(finding.get("find") or finding["mc"])) as progress:
         def solve(options: dict):
             report = answer.solve(command, options, stdin=env.stdin, spell=command.flag, limit=limit, progress=progress, **finding)
-            _made_what_is_named(command, report, output, asked["y"] or ())
+            _made_what_is_named(command, report, output, asked["y"] or (), options)
             return report
 
         if swept_range is None and swept_list is None:
@@ -239,13 +239,13 @@ def _turn_on_what_makes(command: Command, given: dict, asked: set) -> None:
             given[option.name] = True
 
 
-def _made_what_is_named(command: Command, report, output: render.Output, y) -> None:
+def _made_what_is_named(command: Command, report, output: render.Output, y, given: dict) -> None:
     """A result named in --get, --y or --to that this run did not make because an option it
     needs was not given: name that option (#42: "v needs --distance or --time")."""
     for option, names in (("get", output.get), ("y", y), ("to", [to.partition("=")[0].strip() for to in output.to])):
         for name in names:
             result = command.result(name)
-            if name not in report.results and result is not None and result.needs:
+            if name not in report.results and result is not None and result.needs and not any(given.get(need) is not None for need in result.needs):
                 first = command.option(result.needs[0])
                 value = KINDS[first.kind].example if first.kind in KINDS else None
                 if value and " " in value and not value.startswith("'"):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import re
 import subprocess
 from pathlib import Path
@@ -80,3 +81,10 @@ def test_tab_completes_a_result_before_its_equals_sign(flag):
         capture_output=True, text=True, timeout=30,
     )
     assert completed.stdout.split() == ["T1=", "T2="], completed
+
+
+def test_a_spin_up_gives_its_revolutions_until_the_target():
+    run = run_taucli("spin-down", "--inertia", "2", "--omega0", "0", "--torque", "4", "--until-omega", "100rad/s", "--json")
+    results = run.json()["results"]
+    assert results["revs_until"]["unit"] == "rev" and results["revs_until"]["label"] == "revolutions until ω = 100 rad/s"
+    assert results["revs_until"]["value"] * 2 * math.pi == pytest.approx(results["theta_until"]["value"], rel=1e-15)

@@ -149,12 +149,26 @@ def spin_down(
         report = _under_torques(wheel, torques, omega0, targets, front, drive_steps(push, torque), method, dt, rtol, energy or ke0 is not None)
 
     report = assumed.applied(with_contacts(split_contacts(_with_parts(report, wheel.parts), axle, contact), contact))
+    _with_revs_until(report.results)
     if at is None:
         return report
     r, note = rim_radius(at, wheel.rim if wheel.rim is not None else body_options.get("radius", body_options.get("outer_radius")), "a body with {radius}")
     report = with_point(report, r, torques, wheel.inertia, power, omega0, **targets)
     report.notes += [note] if note else []
     return report
+
+
+def _with_revs_until(results) -> None:
+    """revs_until beside theta_until, as revs_stop is beside theta_stop (#42): in revolutions."""
+    found = results.get("theta_until") if hasattr(results, "put") else None
+    if found is None or "revs_until" in results:
+        return
+    after = list(results.items())
+    results.clear()
+    for key, value in after:
+        results[key] = value
+        if key == "theta_until":
+            results.put("revs_until", None if value.value is None else value.value / (2 * math.pi), value.label.removeprefix("angle turned until"))
 
 
 def _transfer(wheel: Wheel, omega0: float | None, uses: dict, efficiency: float | None, until_omega: float | None, g: float | None,
