@@ -67,13 +67,13 @@ _taucli() {
             --body-offset) _taucli_units m cm mm km in ft; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "I= k= I_cm= mass=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "mass density gyration radius inner_radius outer_radius length width height depth offset body_offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "I= k= I_cm= mass=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
@@ -131,14 +131,14 @@ _taucli() {
             --method) COMPREPLY=($(compgen -W "auto exact euler rk4 rk45" -- "$cur")); return 0 ;;
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag KE_after omega_after energy_delivered lift_height vehicle_speed v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until revs_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag KE_after omega_after energy_delivered lift_height vehicle_speed v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
+            --to) COMPREPLY=($(compgen -W "I= alpha0= t_stop= theta_stop= revs_stop= omega_inf= omega= theta= revs= theta_total= revs_total= t_until= theta_until= revs_until= alpha= omega0= torque_net= torque= KE0= KE= work_drive= work_friction= work_viscous= work_drag= power= power_mean= power_friction= power_viscous= power_drag= KE_after= omega_after= energy_delivered= lift_height= vehicle_speed= v_t= a_t= a_c= a_total= a_angle= s= v_t0= a_c0= a_total0= a_angle0= torque_brake= work_brake= power_brake= torque_face= work_face= power_face= force_brake= force_face= pressure_face= torque_band= work_band= power_band= tension_tight= tension_slack= pressure_band=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag KE_after omega_after energy_delivered lift_height vehicle_speed v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf omega theta revs theta_total revs_total t_until theta_until revs_until alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag KE_after omega_after energy_delivered lift_height vehicle_speed v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 work lift_mass vehicle_mass efficiency rim_accel rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "I= alpha0= t_stop= theta_stop= revs_stop= omega_inf= omega= theta= revs= theta_total= revs_total= t_until= theta_until= revs_until= alpha= omega0= torque_net= torque= KE0= KE= work_drive= work_friction= work_viscous= work_drag= power= power_mean= power_friction= power_viscous= power_drag= KE_after= omega_after= energy_delivered= lift_height= vehicle_speed= v_t= a_t= a_c= a_total= a_angle= s= v_t0= a_c0= a_total0= a_angle0= torque_brake= work_brake= power_brake= torque_face= work_face= power_face= force_brake= force_face= pressure_face= torque_band= work_band= power_band= tension_tight= tension_slack= pressure_band=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --band --g --viscous --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --work --lift-mass --vehicle-mass --efficiency --rim-accel --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
@@ -171,13 +171,13 @@ _taucli() {
             --time) _taucli_units s ms min h; return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
             --get) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "a= T1= T2= alpha= a2= a_rim= grips= rim_mu_min= holds= a_massless= t= v= distance= t_stop= distance_stop= v_t= a_t= a_c= a_total= a_angle= s= v_t0= a_c0= a_total0= a_angle0=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "m1 m2 pulley_mass pulley_radius pulley_inertia pulley_gyration axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "a= T1= T2= alpha= a2= a_rim= grips= rim_mu_min= holds= a_massless= t= v= distance= t_stop= distance_stop= v_t= a_t= a_c= a_total= a_angle= s= v_t0= a_c0= a_total0= a_angle0=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --pulley-gyration --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
@@ -207,13 +207,13 @@ _taucli() {
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
             --get) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T T2 a_hanging alpha_pulley a_hand v v_hanging omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 v_ground v_ground_angle a_ground a_ground_angle" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "a= alpha= friction= mu_min= rolls= critical_angle= T= T2= a_hanging= alpha_pulley= a_hand= v= v_hanging= omega= t= KE_trans= KE_rot= KE= d_climb= h_climb= t_climb= t_roll= d_roll= v_roll= omega_roll= energy_lost= v_t= a_t= a_c= a_total= a_angle= s= v_t0= a_c0= a_total0= a_angle0= v_ground= v_ground_angle= a_ground= a_ground_angle=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T T2 a_hanging alpha_pulley a_hand v v_hanging omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0 v_ground v_ground_angle a_ground a_ground_angle" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "a= alpha= friction= mu_min= rolls= critical_angle= T= T2= a_hanging= alpha_pulley= a_hand= v= v_hanging= omega= t= KE_trans= KE_rot= KE= d_climb= h_climb= t_climb= t_roll= d_roll= v_roll= omega_roll= energy_lost= v_t= a_t= a_c= a_total= a_angle= s= v_t0= a_c0= a_total0= a_angle0= v_ground= v_ground_angle= a_ground= a_ground_angle=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
@@ -258,13 +258,13 @@ _taucli() {
             --method) COMPREPLY=($(compgen -W "auto trapezoid simpson" -- "$cur")); return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
             --get) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat period omega_impact p0 p1 pivot_impulse speed_after torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "J= delta_omega= inertia= omega0= omega1= torque= duration= L0= L1= KE0= KE1= work= peak_torque= KE_lost= KE_lost_fraction= J_net= t_slip= heat= period= omega_impact= p0= p1= pivot_impulse= speed_after= torque_brake= work_brake= power_brake= torque_face= work_face= power_face= force_brake= force_face= pressure_face= torque_band= work_band= power_band= tension_tight= tension_slack= pressure_band= v_t= a_t= a_c= a_total= a_angle= s= v_t0= a_c0= a_total0= a_angle0=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat period omega_impact p0 p1 pivot_impulse speed_after torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm part_after.radius part_after.inner_radius part_after.outer_radius part_after.length part_after.width part_after.height part_after.depth part_after.offset part_after.mass part_after.inertia part_after.gyration particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.torque couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "J= delta_omega= inertia= omega0= omega1= torque= duration= L0= L1= KE0= KE1= work= peak_torque= KE_lost= KE_lost_fraction= J_net= t_slip= heat= period= omega_impact= p0= p1= pivot_impulse= speed_after= torque_brake= work_brake= power_brake= torque_face= work_face= power_face= force_brake= force_face= pressure_face= torque_band= work_band= power_band= tension_tight= tension_slack= pressure_band= v_t= a_t= a_c= a_total= a_angle= s= v_t0= a_c0= a_total0= a_angle0=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --torque --force --lever --push-angle --duration --brake --face --band --g --inertia-final --part-after --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
@@ -299,13 +299,13 @@ _taucli() {
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
             --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "I= cm_distance= alpha0= omega_bottom= KE_bottom= amplitude= rise= omega= t_angle= t_bottom= period_small= period= pivot_force0= pivot_force_bottom= pivot_force= pivot_radial0= pivot_tangential0= pivot_horizontal0= pivot_vertical0= pivot_radial_bottom= pivot_tangential_bottom= pivot_horizontal_bottom= pivot_vertical_bottom= pivot_radial= pivot_tangential= pivot_horizontal= pivot_vertical= equivalent_length= centre_of_percussion= goes_over= omega0_over= theta= a_t0= v_t= a_t= a_c=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 omega_bottom torsion g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "I= cm_distance= alpha0= omega_bottom= KE_bottom= amplitude= rise= omega= t_angle= t_bottom= period_small= period= pivot_force0= pivot_force_bottom= pivot_force= pivot_radial0= pivot_tangential0= pivot_horizontal0= pivot_vertical0= pivot_radial_bottom= pivot_tangential_bottom= pivot_horizontal_bottom= pivot_vertical_bottom= pivot_radial= pivot_tangential= pivot_horizontal= pivot_vertical= equivalent_length= centre_of_percussion= goes_over= omega0_over= theta= a_t0= v_t= a_t= a_c=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
@@ -322,13 +322,13 @@ _taucli() {
             --about) :; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "tau_x= tau_y= tau_z= tau= sense= lever_arm= L_x= L_y= L_z= L= L_sense=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "lever angle mass g force" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "tau_x= tau_y= tau_z= tau= sense= lever_arm= L_x= L_y= L_z= L= L_sense=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --momentum --about --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
@@ -364,13 +364,13 @@ _taucli() {
             --bearing-span) _taucli_units m cm mm km in ft; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
             --get) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min L_orbital pivot_force_vertical pivot_force_horizontal couple effect bearing_force" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "L= omega_p= period_p= omega_p_slow= omega_p_fast= spin_min= L_orbital= pivot_force_vertical= pivot_force_horizontal= couple= effect= bearing_force=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min L_orbital pivot_force_vertical pivot_force_horizontal couple effect bearing_force" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration rotor.inertia rotor.spin" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "L= omega_p= period_p= omega_p_slow= omega_p_fast= spin_min= L_orbital= pivot_force_vertical= pivot_force_horizontal= couple= effect= bearing_force=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --precession --spin-sense --turn --lean --craft --rotor --bearing-span --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
@@ -421,13 +421,13 @@ _taucli() {
             --distance) _taucli_units m cm mm km in ft; return 0 ;;
             --move-angle) _taucli_units deg rad rev; return 0 ;;
             --get) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean rms_to_rated within_rating" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "ratio_total= linear_inertia= reflected_inertia= total_inertia= inertia_ratio= ratio_optimal= load_torque_motor= torque_hold= alpha= torque_accel= t_accel= theta_accel= revs_accel= omega_steady= time_constant= alpha0= KE= work_motor= work_load= work_loss= omega_top= speed_top= t_run= t_decel= t_cycle= theta_move= travel= alpha_decel= torque_decel= torque_peak= torque_rms= power_peak= power_regen= power_mean= rms_to_rated= within_rating=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean rms_to_rated within_rating" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "ratio_total= linear_inertia= reflected_inertia= total_inertia= inertia_ratio= ratio_optimal= load_torque_motor= torque_hold= alpha= torque_accel= t_accel= theta_accel= revs_accel= omega_steady= time_constant= alpha0= KE= work_motor= work_load= work_loss= omega_top= speed_top= t_run= t_decel= t_cycle= theta_move= travel= alpha_decel= torque_decel= torque_peak= torque_rms= power_peak= power_regen= power_mean= rms_to_rated= within_rating=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --gear-inertia --load-inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
@@ -461,13 +461,13 @@ _taucli() {
             --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
             --allowable-stress) _taucli_units Pa kPa MPa GPa psi 'N/mm^2'; return 0 ;;
             --get) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area stress_margin" -- "$cur")); return 0 ;;
-            --to) :; return 0 ;;
+            --to) COMPREPLY=($(compgen -W "cs= energy_swing= I= omega_mean= omega_max= omega_min= KE_mean= mass= rim_speed= rim_speed_max= hoop_stress= hoop_stress_max= rim_area= stress_margin=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
             --y) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area stress_margin" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction rim_radius rim_speed density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" -- "$cur")); return 0 ;;
-            --want) :; return 0 ;;
+            --want) COMPREPLY=($(compgen -W "cs= energy_swing= I= omega_mean= omega_max= omega_min= KE_mean= mass= rim_speed= rim_speed_max= hoop_stress= hoop_stress_max= rim_area= stress_margin=" -- "$cur")); compopt -o nospace; return 0 ;;
             --mc) :; return 0 ;;
         esac
         COMPREPLY=($(compgen -W "--inertia --shape --mass --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --rim-radius --rim-speed --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))

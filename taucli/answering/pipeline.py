@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from functools import lru_cache
 from typing import TextIO
 
-from taucli.core.errors import InputError, Unused, spelled
+from taucli.core.errors import InputError, Unused, as_named, spelled
 from taucli.answering import cancels
 from taucli.answering.inputs import read
 from taucli.writing.report import Report
@@ -37,20 +37,25 @@ def solve(
     Notes name options as {name}; ``spell`` writes each as the caller's surface does (the
     command line: its flag; Python and batch: the name).
     """
-    arguments, inputs = read(command, given, stdin=stdin)
-    solver = library(command.library)
+    known = command.input_names.__contains__
     try:
-        report = solver(**arguments)
-    except Unused as unused:
-        if unused.option != "g" or not inputs.gravity_used:
-            raise
-        report = solver(**{name: value for name, value in arguments.items() if name != "g"})  # --g read a weight as a mass: it is used
-    except InputError as error:
-        found = cancels.stand_ins(arguments, error)  # a shape with no --mass: what the mass cancels from (#42 item 14)
-        if found is None:
-            raise
-        report = cancels.without(solver, *found, error)
+        arguments, inputs = read(command, given, stdin=stdin)
+        solver = library(command.library)
+        try:
+            report = solver(**arguments)
+        except Unused as unused:
+            if unused.option != "g" or not inputs.gravity_used:
+                raise
+            report = solver(**{name: value for name, value in arguments.items() if name != "g"})  # --g read a weight as a mass: it is used
+        except InputError as error:
+            found = cancels.stand_ins(arguments, error)  # a shape with no --mass: what the mass cancels from (#42 item 14)
+            if found is None:
+                raise
+            report = cancels.without(solver, *found, error)
+    except InputError as err:  # a solver's "--pulley-radius" is spelled as the caller's surface spells it (#42)
+        raise err.named(known)
     # the library's report is made for this call alone: completed in place (a batch line makes one per line)
-    report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in (*inputs.notes, *report.notes)]
+    notes = (as_named(note, known) if "--" in note else note for note in (*inputs.notes, *report.notes))
+    report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in notes]
     report.inputs = {**inputs.values, **report.inputs}
     return report

@@ -1,6 +1,8 @@
 """A torque profile from CSV text: "t [ms], torque [N*m]" then rows of numbers, streamed.
 
-The header names the columns and, in brackets, their units (none: SI, with a note). Rows are
+The header names the columns and, in brackets or parentheses, their units (none: SI, with a
+note); tabs, semicolons or commas separate the columns, and cells may be quoted: the rules
+``taucli fit`` reads its data by (csv_text.py). Rows are
 read one at a time and yielded as SI (t, τ), so a file of any length is never held in memory.
 Every defect (a missing header, a cell that is not a number, time that does not increase, too
 few rows) is an InputError naming the line.
@@ -13,12 +15,12 @@ import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
+from taucli.answering.csv_text import cells as _cells, delimiter as _delimiter, split_header
 from taucli.quantities import units
 from taucli.core.errors import InputError
 from taucli.quantities.kinds import BOUNDS, check_bounds, out_of_bounds
 
 OPTION = "--torque-profile"
-_HEADER_CELL = re.compile(r"^\s*([A-Za-z_][\w ]*?)\s*(?:\[(.*)\])?\s*$")
 
 
 @dataclass
@@ -66,21 +68,24 @@ def read_profile(lines: Iterable[str]) -> Profile:
         header_number, header = next(rows)
     except StopIteration:
         raise InputError(OPTION, "is empty: expected a header such as 't [s], torque [N*m]' and at least two rows") from None
-    cells = header.split(",")
-    matches = [_HEADER_CELL.match(cell) for cell in cells]
-    if len(cells) != 2 or not all(matches):
-        raise InputError(OPTION, f"line {header_number}: expected a header of two columns, time and torque, with units", example="t [ms], torque [N*m]", got=repr(header))
+    separator = _delimiter(header)
+    named = [split_header(cell) for cell in _cells(header, separator)]
+    if len(named) != 2 or not all(name and not _NUMBER.fullmatch(name) for name, _ in named):
+        raise InputError(OPTION, f"line {header_number}: expected a header of two columns, time and torque, with units", example="'t [ms], torque [N*m]'", got=repr(header))
     notes: list[str] = []
-    time_factor = _unit_factor(matches[0].group(2), "time", "time", notes)
-    torque_factor = _unit_factor(matches[1].group(2), "torque", "torque", notes)
-    return Profile(_samples(rows, time_factor, torque_factor), notes)
+    time_factor = _unit_factor(named[0][1], "time", "time", notes)
+    torque_factor = _unit_factor(named[1][1], "torque", "torque", notes)
+    return Profile(_samples(rows, time_factor, torque_factor, separator), notes)
 
 
-def _samples(rows: Iterator[tuple[int, str]], time_factor: float, torque_factor: float) -> Iterator[tuple[float, float]]:
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+
+
+def _samples(rows: Iterator[tuple[int, str]], time_factor: float, torque_factor: float, separator: str = ",") -> Iterator[tuple[float, float]]:
     previous = -math.inf
     count = 0
     for number, line in rows:
-        cells = line.split(",")
+        cells = _cells(line, separator)
         if len(cells) != 2:
             raise InputError(OPTION, f"line {number}: expected two numbers, time and torque", got=repr(line))
         try:

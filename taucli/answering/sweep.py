@@ -154,7 +154,7 @@ def find(command: Command, given: Mapping[str, object], points: int | None) -> t
     if not 2 <= count <= MAX_POINTS:
         raise InputError("points", f"expected a whole number from 2 to {MAX_POINTS:,}", example="{points} 50", got=str(count))
     if points is not None and not ranges:
-        raise InputError("points", "applies to a range (FROM..TO)", example="--inertia 0.5..4kg*m^2 {points} 20")
+        raise InputError("points", "applies to a range (FROM..TO)", example="--inertia '0.5..4kg*m^2' {points} 20")
     swept_range = _range(ranges[0], str(given[ranges[0]]), count, command.option(ranges[0]).kind) if ranges else None
     swept_list = _list(lists[0], str(given[lists[0]]), command.option(lists[0]).kind) if lists else None
     total = (len(swept_range.texts) if swept_range else 1) * (len(swept_list.texts) if swept_list else 1)

@@ -19,6 +19,16 @@ def spelled(text: str, spell: Callable[[str], str], known: Mapping[str, object] 
     return _NAMED.sub(lambda m: spell(m[1]) if found(m[1]) is not None else m[0], text)
 
 
+_FLAG = re.compile(r"(?<![\w-])--([a-z][a-z0-9]*(?:-[a-z0-9]+)*)")
+
+
+def as_named(text: str, known: Callable[[str], bool]) -> str:
+    """``text`` with each --flag of a ``known`` parameter written {name}, as ``spelled`` takes it: a
+    note or a message a solver wrote with the command line's flag is then spelled per surface
+    (--pulley-radius on the command line, pulley_radius in Python and batch, #42)."""
+    return _FLAG.sub(lambda m: f"{{{m[1].replace('-', '_')}}}" if known(m[1].replace("-", "_")) else m[0], text)
+
+
 class ExitStatus(IntEnum):
     """The exit statuses taucli uses, and only these."""
 
@@ -63,6 +73,16 @@ class InputError(TaucliError, ValueError):
 
     def __str__(self) -> str:
         return self.spelled(lambda name: name)
+
+    def named(self, known: Callable[[str], bool]) -> InputError:
+        """Itself, each --flag of a ``known`` parameter in its texts written {name} (see as_named)."""
+        if self.option.startswith("--") and known(self.option[2:].replace("-", "_")):
+            self.option = self.option[2:].replace("-", "_")
+        for field in ("expected", "example", "hint"):
+            text = getattr(self, field)
+            if text and "--" in text:
+                setattr(self, field, as_named(text, known))
+        return self
 
     def spelled(self, spell: Callable[[str], str]) -> str:
         """The one-line message, each parameter named as ``spell`` names it.

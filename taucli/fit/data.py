@@ -3,7 +3,8 @@ write it.
 
 - The first line that is neither blank nor a comment (``#``) names the columns; a header may carry
   its unit in parentheses or brackets, ``Time (s)`` or ``t [ms]``.
-- Columns are separated by tabs, else semicolons, else commas (the header says which).
+- Columns are separated by tabs, else semicolons, else commas (the header says which): the
+  rules of taucli.answering.csv_text, which a torque profile is read by too.
 - A decimal comma is read where the file shows that it is one (docs/units.md: a comma that could
   be a thousands separator is refused, never guessed): the columns are separated by semicolons or
   tabs, no number has a decimal point, and some number has other than three digits after its
@@ -24,6 +25,7 @@ import os
 import re
 from dataclasses import dataclass
 
+from taucli.answering.csv_text import delimiter as _delimiter, split_header
 from taucli.core.errors import InputError
 
 OPTION = "data"  # the argument the messages name (DATA)
@@ -32,7 +34,6 @@ MAX_ROWS = 2_000_000
 
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _COMMA_NUMBER = re.compile(r"[+-]?\d*,(\d+)(?:[eE][+-]?\d+)?")
-_WITH_UNIT = re.compile(r"^(.*?)\s*[(\[]\s*([^()\[\]]*?)\s*[)\]]\s*$")
 _NOT_FINITE = {"nan", "inf", "-inf", "+inf", "infinity", "-infinity", "+infinity"}
 
 
@@ -59,14 +60,6 @@ class DataTable:
         return next(column for column in self.columns if column.header == header)
 
 
-def split_header(header: str) -> tuple[str, str]:
-    """("Time", "s") from "Time (s)" or "Time [s]"; (header, "") where it names no unit."""
-    found = _WITH_UNIT.match(header)
-    if found is None or not found[1].strip():
-        return header.strip(), ""
-    return found[1].strip(), found[2].strip()
-
-
 def read(source, stdin=None) -> DataTable:
     """The table in the file ``source`` (``-``: stdin; an open file object, from Python), or a
     usage error naming what is wrong."""
@@ -77,7 +70,7 @@ def read(source, stdin=None) -> DataTable:
     if start is None:
         raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
                          example="t (s),omega (rad/s)")
-    delimiter = "\t" if "\t" in lines[start] else ";" if ";" in lines[start] else ","
+    delimiter = _delimiter(lines[start])  # the rules a torque profile is read by too
     rows = _rows(lines, start, delimiter, name)
     if not rows:
         raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",

@@ -151,8 +151,11 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         header = _find(tables, column, "y")
         key = target or tables[0].column(header).name
         if command.result(_key(key)) is None and command.result(key) is None:
-            raise InputError("y", f"expected a result of {command.name} for column {header!r}: {command.results_line()}", got=repr(key),
-                             example='{y} "w (rad/s)=omega"', hint=did_you_mean(key, [r.key for r in command.results]))
+            keys = [result.key for result in command.results]
+            close = did_you_mean(key, keys)  # a close name says enough; else the first few, not ~60 (#42)
+            listed = "" if close else ": " + (", ".join(keys) if len(keys) <= 12 else ", ".join(keys[:10]) + f", … ({len(keys)} in all: docs/{command.name}.md)")
+            raise InputError("y", f"expected a result of {command.name} for column {header!r}{listed}", got=repr(key),
+                             example='{y} "w (rad/s)=omega"', hint=close)
         chosen[header] = (key if command.result(key) is not None else _key(key), True, unit)
     sigma_header = _sigma_column(tables, sigma)
     _refuse_sigma_of_a_used_column(command, tables[0], chosen, sigma_header, y is not None)

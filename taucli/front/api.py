@@ -39,6 +39,7 @@ def _made(command: Command) -> Callable[..., Report]:
                 raise TypeError(f"{command.function_name}() got multiple values for argument {name!r}")
             given[name] = value
         given = {name.replace("-", "_"): plain(value, name) for name, value in given.items()}
+        _no_sweeps(command, given)
         return answer.solve(command, given, find=given.pop("find", None), want=given.pop("want", None))
 
     parameters = [
@@ -54,6 +55,16 @@ def _made(command: Command) -> Callable[..., Report]:
     scene.__module__ = "taucli"
     scene.__doc__ = docstring(command)
     return scene
+
+
+def _no_sweeps(command: Command, given: dict) -> None:
+    """A range "1..3 kg" is the command line's sweep; a function call solves one scene (#42)."""
+    for name, value in given.items():
+        option = command.option(name)
+        if isinstance(value, str) and ".." in value and option is not None and option.sweepable:
+            raise InputError(name, "takes one value: the Python API takes no sweeps (FROM..TO is the command line's); "
+                             "call once per value, as in [taucli." + command.function_name + "(..., " + name + "=x) for x in (1.0, 2.0, 3.0)] (a number is SI)",
+                             got=repr(value))
 
 
 def _kind(option: Option) -> str:

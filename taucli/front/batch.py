@@ -81,7 +81,7 @@ def run(command: Command, fixed: dict, output: Output, env, *, limit: float | No
                     raise line
                 given, answer = _line(line, keys, command, texts)
                 given = {**fixed, **given}
-                report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), spell=command.flag, limit=limit)
+                report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), limit=limit)  # notes name keys as a line gives them (#42)
                 shown = output._replace(**answer) if answer else output
                 text = document_text(prepared(report, shown), steps=shown.steps) + "\n"
             except TaucliError as err:

@@ -30,6 +30,7 @@ from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
 from taucli.options.table import FLAG, Command, Option
+from taucli.quantities.kinds import KINDS
 
 
 @dataclass
@@ -181,7 +182,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     if output.plot and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
     if asked["y"] and swept_range is None:
-        raise InputError("y", "names what a range's chart shows; give a range FROM..TO", example="{inertia} 0.5..4kg*m^2 {y} alpha0")
+        raise InputError("y", "names what a range's chart shows; give a range FROM..TO", example="{inertia} '0.5..4kg*m^2' {y} alpha0")
     if output.out is not None:
         from taucli.writing import plot  # deferred: charts (2 ms), only for --out
 
@@ -191,7 +192,9 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
 
     with _progress_bar(env, bool(finding.get("find") or finding["mc"])) as progress:
         def solve(options: dict):
-            return answer.solve(command, options, stdin=env.stdin, spell=command.flag, limit=limit, progress=progress, **finding)
+            report = answer.solve(command, options, stdin=env.stdin, spell=command.flag, limit=limit, progress=progress, **finding)
+            _made_what_is_named(command, report, output, asked["y"] or (), options)
+            return report
 
         if swept_range is None and swept_list is None:
             report = solve(scene_given)
@@ -236,6 +239,21 @@ def _turn_on_what_makes(command: Command, given: dict, asked: set) -> None:
             given[option.name] = True
 
 
+def _made_what_is_named(command: Command, report, output: render.Output, y, given: dict) -> None:
+    """A result named in --get, --y or --to that this run did not make because an option it
+    needs was not given: name that option (#42: "v needs --distance or --time")."""
+    for option, names in (("get", output.get), ("y", y), ("to", [to.partition("=")[0].strip() for to in output.to])):
+        for name in names:
+            result = command.result(name)
+            if name not in report.results and result is not None and result.needs and not any(given.get(need) is not None for need in result.needs):
+                first = command.option(result.needs[0])
+                value = KINDS[first.kind].example if first.kind in KINDS else None
+                if value and " " in value and not value.startswith("'"):
+                    value = f"'{value}'"  # one word, as the shell splits it
+                example = f"{{{first.name}}} {value}" if value else None
+                raise InputError(option, f"{name} needs {result.needed()}", example=example)
+
+
 def _format(asked: dict) -> Optional[str]:
     """--format (#36): one of md, latex, html, csv, alone among the ways to answer."""
     chosen = asked["format"]
@@ -273,7 +291,8 @@ def _no_such_option(command: Command, unknown: str) -> str:
     is close (names compared without their dashes, which every flag shares)."""
     message = f"{unknown} is not an option of {command.name}"
     names = {option.flag[2:]: option.flag for option in (*command.options, *command.output) if not option.positional}
-    close = difflib.get_close_matches(unknown.lstrip("-"), list(names), n=1, cutoff=0.6)
+    names["help"] = "--help"  # --hlep (#42)
+    close = difflib.get_close_matches(unknown.lstrip("-").lower(), list(names), n=1, cutoff=0.6)  # --M1: flags are lower case
     return f"{message}; did you mean {names[close[0]]!r}?" if close else message
 
 

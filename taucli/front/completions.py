@@ -22,6 +22,7 @@ from taucli.quantities.units import KINDS
 
 FILE_NAMES = {"bash": "taucli.bash", "zsh": "_taucli", "fish": "taucli.fish"}
 RESULT_NAMES = ("get", "y")  # options whose value is one of the command's results
+RESULT_IS = ("to", "want")  # options whose value is RESULT=...: completed to "RESULT=" (#42)
 FIND = "find"  # its value is an input of the command, or a key of a spec (taucli.answering.unknowns: particle.speed)
 
 
@@ -78,6 +79,8 @@ def _options(command: table.Command, options) -> tuple[Option, ...]:
         if option.name in RESULT_NAMES and command.results and (option.name == "get" or command.library is not None):  # fit's --y is a column
             choices = tuple(result.key for result in command.results)
             described = tuple((result.key, _sentence(result.label.replace(table.FILLED, ""))) for result in command.results)
+        if option.name in RESULT_IS and command.results and command.library is not None:
+            choices = tuple(result.key + "=" for result in command.results)
         if option.name == FIND and command.results:
             choices = unknowns.names(command)
         found.append(
@@ -166,6 +169,8 @@ def _bash(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
                 action = "_taucli_axes"
             elif option.choices:
                 action = f'COMPREPLY=($(compgen -W "{" ".join(option.choices)}" -- "$cur"))'
+                if all(choice.endswith("=") for choice in option.choices):  # RESULT= : the value goes on after it
+                    action += "; compopt -o nospace"
             elif option.files:
                 action = 'COMPREPLY=($(compgen -f -- "$cur"))'
             else:

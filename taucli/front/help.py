@@ -46,8 +46,8 @@ def requested(args: list[str]) -> Command | None:
     for word in words:
         if word == "--":
             return None
-        if word in HELP_WORDS or (word == "help" and not any(option.positional for option in command.options)):
-            return command  # (taucli atwood help: as --help, where "help" cannot be an argument)
+        if word in HELP_WORDS or (word == "help" and not any("help" in option.choices for option in command.options if option.positional)):
+            return command  # (taucli atwood help, taucli inertia help: as --help, where "help" is no argument's value)
         if word in takes_value:
             next(words, None)
     return None

@@ -24,7 +24,7 @@ COMMAND = Command(
         Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
         Option("part_after", PART, 'The body after a change with no torque, by parts, in place of --part (the body\'s --shape or --inertia stays), '
                'e.g. --part-after "point mass=25kg offset=0.5m" (repeatable).', repeatable=True, metavar='"SHAPE key=value ..."'),
-        Option("torque_profile", FILE, "CSV 't [ms], torque [N*m]' then rows; - for stdin.", metavar="FILE"),
+        Option("torque_profile", FILE, "CSV: a header ('t [ms], torque [N*m]'; tab, ; or , as fit reads), then rows; - for stdin.", metavar="FILE"),
         Option("particle", PARTICLE,
                'A particle that meets the body, e.g. "mass=30kg speed=4m/s radius=2m": speed signed (positive in the body\'s sense), '
                "radius the distance of its line from the axis (or with angle=, to where it meets the body, angle= between velocity and radius); "

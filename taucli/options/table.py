@@ -133,6 +133,12 @@ class Result:
     key: str
     unit: str | None
     label: str
+    needs: tuple[str, ...] = ()  # the options, any one of which a run needs to make it (v: distance or time)
+
+    def needed(self) -> str:
+        """What makes it, as a message says it: "{distance} or {time}" (each name spelled per surface)."""
+        names = [f"{{{name}}}" for name in self.needs]
+        return ", ".join(names[:-1]) + " or " + names[-1] if len(names) > 1 else "".join(names)
 
 
 @dataclass(frozen=True)
@@ -231,9 +237,15 @@ class MissingResult(KeyError):
         super().__init__(key)
         self.key, self.scene, self.present = key, command.name, present
         self.makers = tuple(option.name for option in command.options if key in option.makes)
-        self.in_table = command.result(key) is not None
+        result = command.result(key)
+        self.in_table = result is not None
+        self.needs = result.needs if result is not None else ()
 
     def __str__(self) -> str:
+        if self.needs:
+            keywords = " or ".join(f"{name}=" for name in self.needs)
+            flags = " or ".join("--" + name.replace("_", "-") for name in self.needs)
+            return f"{self.key} is not among this run's results: it needs {keywords} ({flags} on the command line)"
         if self.makers:
             turn_on = " or ".join(f"{name}=True" for name in self.makers)
             flags = " or ".join("--" + name.replace("_", "-") for name in self.makers)

@@ -14,7 +14,7 @@ BENCH = Command(
     ),
     example="taucli bench --quick",
     options=(
-        Option("scene", CHOICE, " or ".join(BENCH_SCENES) + " (repeatable; default both).", choices=BENCH_SCENES, repeatable=True, metavar="SCENE"),
+        Option("scene", CHOICE, " or ".join(BENCH_SCENES) + " (repeatable; default all " + str(len(BENCH_SCENES)) + ").", choices=BENCH_SCENES, repeatable=True, metavar="SCENE"),
         Option("quick", FLAG, "Fewer settings and repeats: a few seconds."),
         Option("out", FILE, "Also draw the charts to FILE.svg or FILE.png (needs matplotlib).", metavar="FILE"),
         Option("json", FLAG, "Print one strict JSON document on stdout."),

@@ -86,8 +86,29 @@ def registry():
     return ureg
 
 
+_BASES = (("[length]", "length", "m"), ("[time]", "time", "s"), ("[mass]", "mass", "kg"))
+
+
 def _describe(dimensionality) -> str:
-    return _DIMENSION_NAMES.get(frozenset(dict(dimensionality).items()), str(dimensionality))
+    """What a dimension is, in words: "a force", "a torque or energy times a length", else its SI
+    units ("a quantity in kg·m³/s²"): never pint's "[length] ** 3 * [mass]" (#42)."""
+    dims = {name: power for name, power in dict(dimensionality).items() if power}
+    named = _DIMENSION_NAMES.get(frozenset(dims.items()))
+    if named:
+        return named
+    for base, word, _ in _BASES:
+        for power, joiner in ((1, f"times a {word}"), (-1, f"per {word}")):
+            rest = {name: left for name, left in {**dims, base: dims.get(base, 0) - power}.items() if left}
+            if rest and (named := _DIMENSION_NAMES.get(frozenset(rest.items()))):
+                return f"{named} {joiner}"
+    symbols = {base: symbol for base, _, symbol in _BASES}
+    up = [symbols.get(name, name.strip("[]")) + _power(power) for name, power in sorted(dims.items()) if power > 0]
+    down = [symbols.get(name, name.strip("[]")) + _power(-power) for name, power in sorted(dims.items()) if power < 0]
+    return "a quantity in " + ("·".join(up) or "1") + ("/" + "·".join(down) if down else "")
+
+
+def _power(power) -> str:
+    return "" if power == 1 else str(power).translate(str.maketrans("0123456789.-", "⁰¹²³⁴⁵⁶⁷⁸⁹·⁻"))
 
 
 def expected(kind: Kind) -> str:

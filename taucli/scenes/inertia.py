@@ -446,5 +446,5 @@ def _body(inertia, shape, mass, axis, offset, part, gyration, density, dims) -> 
     if shape is None:
         if part and not shape_options:  # the parts make up the whole body
             return body_inertia(part)
-        raise InputError("inertia", "or {shape} is required", example="{inertia} 0.1kg*m^2, or {shape} disc {mass} 5kg {radius} 0.2m")
+        raise InputError("inertia", "or {shape} is required", example="{inertia} '0.1kg*m^2', or {shape} disc {mass} 5kg {radius} 0.2m")
     return body_inertia([main_part(shape, mass, axis, offset, dims), *part])

@@ -21,6 +21,7 @@ from typing import NamedTuple
 from taucli.quantities.measurement import with_uncertainty
 from taucli.core.names import FORMATS as FORMATS  # --format's choices
 from taucli.core.written import pretty_unit, shown
+from taucli.writing.display import equation_text, minus_signs
 
 class Row(NamedTuple):
     """One result as a person is shown it: its value already written (6 digits, or with ± σ)."""
@@ -83,11 +84,11 @@ def heading(name: str, unit: str | None) -> str:
 
 def step_lines(step) -> list[str]:
     """A step's equation, then "= numbers" and "= result" under its "=", as the human view sets them."""
-    lines = [step.equation] if step.equation else []
+    lines = [equation_text(step.equation)] if step.equation else []  # one minus, −, as the human view writes (#42)
     align = max(step.equation.find("="), 0)
     for line in (step.numbers, step.result if step.result != step.numbers else ""):
         if line:
-            lines.append(" " * align + "= " + line)
+            lines.append(" " * align + "= " + equation_text(line))
     return lines
 
 def one_line(text: str) -> str:
@@ -115,16 +116,16 @@ def _fence(lines: Sequence[str]) -> str:
 def markdown(sheet: Sheet) -> str:
     """The run as GitHub Markdown: the model line, the results table, tables, steps, notes."""
     out = [f"**{md_text(sheet.scene)}**: {md_text(sheet.model)}\\", f"*method: {md_text(sheet.method)}*", ""]
-    out += _md_table(("result", "value", "unit", "what it is"), [(r.name, r.value, pretty_unit(r.unit), r.label) for r in sheet.results], (False, True, False, False))
+    out += _md_table(("result", "value", "unit", "what it is"), [(r.name, r.value, pretty_unit(r.unit), minus_signs(r.label)) for r in sheet.results], (False, True, False, False))
     for part in sheet.tables:
-        out += ["", f"**{md_text(part.title)}**", ""]
+        out += ["", f"**{md_text(minus_signs(part.title))}**", ""]
         out += _md_table([heading(*column) for column in part.columns], part.rows, [unit is not None for _, unit in part.columns])
     if sheet.steps:
         out += ["", "### Steps", ""]
         for number, step in enumerate(sheet.steps, start=1):
             marker = f"{number}. "
             pad = " " * len(marker)
-            out.append(f"{marker}**{md_text(step.title)}**")
+            out.append(f"{marker}**{md_text(minus_signs(step.title))}**")
             lines = step_lines(step)
             if lines:
                 fence = _fence(lines)
@@ -164,13 +165,13 @@ def _html_notes(notes: Sequence[str]) -> list[str]:
 def html_fragment(sheet: Sheet) -> str:
     """The run as an HTML fragment: every tag closed, every text escaped."""
     out = ['<div class="taucli">', f"<p><strong>{_h(sheet.scene)}</strong>: {_h(sheet.model)}<br>", f"<em>method: {_h(sheet.method)}</em></p>"]
-    out += _html_table(("result", "value", "unit", "what it is"), [(r.name, r.value, pretty_unit(r.unit), r.label) for r in sheet.results], (False, True, False, False))
+    out += _html_table(("result", "value", "unit", "what it is"), [(r.name, r.value, pretty_unit(r.unit), minus_signs(r.label)) for r in sheet.results], (False, True, False, False))
     for part in sheet.tables:
-        out += _html_table([heading(*column) for column in part.columns], part.rows, [unit is not None for _, unit in part.columns], caption=part.title)
+        out += _html_table([heading(*column) for column in part.columns], part.rows, [unit is not None for _, unit in part.columns], caption=minus_signs(part.title))
     if sheet.steps:
         out += ["<p><strong>Steps</strong></p>", "<ol>"]
         for step in sheet.steps:
-            out.append(f"<li><strong>{_h(step.title)}</strong>")
+            out.append(f"<li><strong>{_h(minus_signs(step.title))}</strong>")
             lines = step_lines(step)
             if lines:
                 out.append("<pre>" + "\n".join(_h(line) for line in lines) + "</pre>")

@@ -64,7 +64,7 @@ def trajectory_of(report: Report) -> Trajectory:
         raise InputError(
             "--plot",
             f"needs a motion in time, and {report.scene} has none here (a range, FROM..TO, is charted against its parameter)",
-            example="taucli spin-down --inertia 0.1kg*m^2 --omega0 30rad/s --friction 0.3N*m --plot",
+            example="taucli spin-down --inertia '0.1kg*m^2' --omega0 30rad/s --friction '0.3N*m' --plot",
         )
     return report.trajectory()
 

@@ -81,7 +81,7 @@ def drive(
     if not any((moment, linear, torque, gear_inertia, load_mass is not None)):
         raise InputError("load_inertia", "or another load is required: a rotating load ({load_inertia}, {shape}, {part}), a mass "
                          "({load_mass} with {drum_radius} or {lead}), {load_torque} or {load_force}",
-                         example="{load_inertia} 0.05kg*m^2")
+                         example="{load_inertia} '0.05kg*m^2'")
     train = Train(n, eta, motor_inertia, gear_inertia or 0.0, (moment or 0.0) + linear, torque,
                   gravity_force * lever if gravity_force else 0.0, lever)
     steps[:0] = list(body_steps)
@@ -292,7 +292,7 @@ def _law(stall: float | None, no_load: float | None, constant: float | None) -> 
     if (stall is None) != (no_load is None):
         missing = "no_load_speed" if no_load is None else "stall_torque"
         raise InputError(missing, "is required: the line needs both ends, {stall_torque} and {no_load_speed}",
-                         example="{stall_torque} 2N*m {no_load_speed} 3000rpm")
+                         example="{stall_torque} '2N*m' {no_load_speed} 3000rpm")
     return None if stall is None else Motor(stall, no_load)
 
 
@@ -339,7 +339,8 @@ def _move(top, given_rate, given_angle, in_time, accel_time, run_time, decel_tim
     run = run_time or 0.0
     if top is not None and angle is not None:
         raise InputError(angle_name, "conflicts with the top speed ({until_omega} or {speed}) beside {accel_time}: with the times, "
-                         "the travel sets the top speed and the top speed the travel")
+                         "the travel sets the top speed and the top speed the travel",
+                         hint="leave out one of them: the travel or the top speed", example="{distance} 1m {accel_time} 0.5s")
     if top is None:
         if angle is None:
             raise InputError("until_omega", "or {speed}, or the travel {distance}, is required with {accel_time}: the move's top speed",

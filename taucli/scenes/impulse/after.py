@@ -36,7 +36,7 @@ def body_after(part_after: Sequence[Part], inertia_final: float | None, body_opt
     options = {**body_options, "part": tuple(part_after)}
     has_main = any(options.get(name) is not None for name in ("inertia", "shape", "gyration"))
     if not has_main and not any(body_options.get(name) for name in ("part",)):
-        raise InputError("part_after", "needs the body before: {inertia}, {shape} or {part}", example='{inertia} 3kg*m^2 {part_after} "point mass=5kg offset=0.2m"')
+        raise InputError("part_after", "needs the body before: {inertia}, {shape} or {part}", example='{inertia} "3kg*m^2" {part_after} "point mass=5kg offset=0.2m"')
     moment, steps = body(**options)
     return moment, [Step(f"After: {s.title[0].lower()}{s.title[1:]}", s.equation, s.numbers, s.result, s.why) for s in steps]
 

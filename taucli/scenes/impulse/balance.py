@@ -119,7 +119,7 @@ def _partial_balance(given: dict[str, float | None], missing: list[str], notes: 
         raise InputError(
             " and ".join("{" + name + "}" for name in missing),
             "are missing: give four of {inertia}, {omega0}, {omega1}, {torque}, {duration}, and the fifth is solved for",
-            example="{inertia} 0.1kg*m^2 {omega0} 0 {torque} 2N*m {duration} 0.5s",
+            example="{inertia} '0.1kg*m^2' {omega0} 0 {torque} '2N*m' {duration} 0.5s",
         )
     results = Results(TABLE)
     results.put("J", impulse, " τΔt")

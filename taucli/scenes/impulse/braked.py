@@ -25,7 +25,7 @@ def _motion(inertia: float, omega0: float, torque: float, brakes, faces, gravity
     if sided and omega0 and torque and (omega0 > 0) != (torque > 0):
         raise InputError(sided[0], "takes the torque for the sense the body turns, and a torque against ω₀ would stop it and turn it back "
                          "(the tight and slack ends, or the friction's moment, change over): give a torque along ω₀, or work the turn back in a second run",
-                         example="{torque} 5N*m {omega0} 100rpm")
+                         example="{torque} '5N*m' {omega0} 100rpm")
     contact = contacts(brakes, faces, body_options, body_mass(**body_options) if faces else body_options.get("mass"), gravity, bands)
     loads = Loads(drive=torque, friction=contact.kinetic, static=contact.static)
     return contact, evolve(inertia, loads, omega0, Evolver(Method("exact")))

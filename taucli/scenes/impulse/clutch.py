@@ -34,7 +34,7 @@ def solve_clutch(inertia: float, omega0: float, couple: Couple, *, inertia_steps
         raise InputError(couple.source, "needs inertia= above 0 with torque=: a body with no inertia takes the other's speed at once",
                          example='{couple} "inertia=3kg*m^2 omega0=0 torque=50N*m"')
     if not inertia:
-        raise InputError("inertia", "must be more than zero with a clutch that slips", example="{inertia} 2kg*m^2")
+        raise InputError("inertia", "must be more than zero with a clutch that slips", example="{inertia} '2kg*m^2'")
     omega_other = 0.0 if couple.omega0 is None else couple.omega0
     if couple.omega0 is None:
         notes.append(f"{couple.source}: no omega0=, taken at rest (ω = 0)")

@@ -119,13 +119,13 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     i_after = math.fsum([inertia, *(i_c for _, i_c, _ in couple_rows),
                          *(p.mass * (p.radius if p.radius_after is None else p.radius_after) ** 2 for p in staying)])
     if i_after <= 0 and (bounce or not leave):
-        raise InputError("inertia", "must be more than zero here: nothing would be left to turn", example="{inertia} 2kg*m^2")
+        raise InputError("inertia", "must be more than zero here: nothing would be left to turn", example="{inertia} '2kg*m^2'")
     momentum0 = momentum_joined + math.fsum(p.mass * p.speed * p.arm for _, p in (*leave, *bounce))
     # ω₁ (I₁ + Σ_e m r⊥²) = L₀ − Σ_leave m v′ r⊥ + Σ_e m r⊥ e (v − ω₀ r⊥)
     i_effective = i_after + math.fsum(p.mass * p.arm**2 for _, p in bounce)
     numerator = momentum0 - math.fsum(p.mass * p.speed_after * p.arm for _, p in leave) + math.fsum(p.mass * p.arm * p.e * (p.speed - omega0 * p.arm) for _, p in bounce)
     if i_effective <= 0:
-        raise InputError("inertia", "must be more than zero here", example="{inertia} 2kg*m^2")
+        raise InputError("inertia", "must be more than zero here", example="{inertia} '2kg*m^2'")
     omega1 = numerator / i_effective
     # Δω from what each exchanges with the body, not ω₁ − ω₀, which loses the digits of a small change
     # beside a large ω: (numerator − i_effective ω₀) written term by term; likewise ω₁ − ω for any ω.

@@ -171,7 +171,7 @@ def _check_braked(method: str, g: float | None, faces: Sequence[Face], inertia: 
     for name, value in (("inertia", inertia), ("torque", torque), ("duration", duration)):
         if value is None:
             raise InputError(name, "is required with {brake}, {face} or {band}: the friction's share is worked out over the motion, from the start",
-                             example={"inertia": "{inertia} 0.5kg*m^2", "torque": "{torque} 5N*m", "duration": "{duration} 2s"}[name])
+                             example={"inertia": "{inertia} '0.5kg*m^2'", "torque": "{torque} '5N*m'", "duration": "{duration} 2s"}[name])
 
 
 def _check_meeting(mode: str, method: str, inertia: float | None, conflicting: dict) -> None:
@@ -183,7 +183,7 @@ def _check_meeting(mode: str, method: str, inertia: float | None, conflicting: d
     if method != "auto":
         raise InputError("method", "applies to {torque_profile} (trapezoid or simpson)")
     if inertia is None:
-        raise InputError("inertia", f"or {{shape}} is required with {{{mode}}}: the body they meet", example="{inertia} 500kg*m^2")
+        raise InputError("inertia", f"or {{shape}} is required with {{{mode}}}: the body they meet", example="{inertia} '500kg*m^2'")
 
 
 def _check_changing_or_sampled(mode: str, inertia: float | None, conflicting: dict) -> None:
@@ -192,4 +192,4 @@ def _check_changing_or_sampled(mode: str, inertia: float | None, conflicting: di
         if value is not None:
             raise InputError(name, f"conflicts with {{{mode}}}")
     if inertia is None:
-        raise InputError("inertia", f"or {{shape}} is required with {{{mode}}}", example="{inertia} 2kg*m^2")
+        raise InputError("inertia", f"or {{shape}} is required with {{{mode}}}", example="{inertia} '2kg*m^2'")

@@ -54,11 +54,11 @@ def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsi
             assumed.notes.append("no --cm-distance: d = 0, gravity turns nothing (a torsion pendulum on a vertical wire)")
         if mass is not None and inertia < mass * cm_distance * cm_distance * (1 - 1e-12):
             raise InputError("inertia", f"expected at least M d² = {fmt(mass * cm_distance * cm_distance)} kg·m² about the pivot: "
-                             "I = I_cm + Md², and I_cm is never negative", example="{inertia} 0.5kg*m^2 {mass} 1kg {cm_distance} 0.5m",
+                             "I = I_cm + Md², and I_cm is never negative", example="{inertia} '0.5kg*m^2' {mass} 1kg {cm_distance} 0.5m",
                              got=f"{fmt(inertia)} kg·m²")
         return Body(inertia, mass, cm_distance, (), "a body of given I")
     if shape is None and gyration is None:
-        raise InputError("inertia", "or {shape} is required", example="{shape} rod {length} 1m {mass} 2kg {axis} end, or {inertia} 0.5kg*m^2 {mass} 2kg {cm_distance} 0.5m")
+        raise InputError("inertia", "or {shape} is required", example="{shape} rod {length} 1m {mass} 2kg {axis} end, or {inertia} '0.5kg*m^2' {mass} 2kg {cm_distance} 0.5m")
     found = body_inertia([main_part(shape, mass, axis, offset, dims, gyration, density), *part])
     assumed.notes.extend(found.notes)  # a thin disc about a diameter, said (#42 item 3)
     steps = list(found.steps)

@@ -92,7 +92,7 @@ def solve_unknowns(
     if alpha is None and len(targets) < 2:
         raise InputError(
             "inertia", "or {shape} (a body), or {alpha}, is required; without them, give two of {time}, {until_omega}, {until_angle} besides {omega0}",
-            example="{inertia} 0.1kg*m^2, or {omega0} 100rpm {until_omega} 500rpm {time} 10s",
+            example="{inertia} '0.1kg*m^2', or {omega0} 100rpm {until_omega} 500rpm {time} 10s",
         )
     t, w1, th = time, omega1, theta
     if t is not None and t <= 0 and (w1 is not None or th is not None):

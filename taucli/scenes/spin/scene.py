@@ -149,12 +149,26 @@ def spin_down(
         report = _under_torques(wheel, torques, omega0, targets, front, drive_steps(push, torque), method, dt, rtol, energy or ke0 is not None)
 
     report = assumed.applied(with_contacts(split_contacts(_with_parts(report, wheel.parts), axle, contact), contact))
+    _with_revs_until(report.results)
     if at is None:
         return report
     r, note = rim_radius(at, wheel.rim if wheel.rim is not None else body_options.get("radius", body_options.get("outer_radius")), "a body with {radius}")
     report = with_point(report, r, torques, wheel.inertia, power, omega0, **targets)
     report.notes += [note] if note else []
     return report
+
+
+def _with_revs_until(results) -> None:
+    """revs_until beside theta_until, as revs_stop is beside theta_stop (#42): in revolutions."""
+    found = results.get("theta_until") if hasattr(results, "put") else None
+    if found is None or "revs_until" in results:
+        return
+    after = list(results.items())
+    results.clear()
+    for key, value in after:
+        results[key] = value
+        if key == "theta_until":
+            results.put("revs_until", None if value.value is None else value.value / (2 * math.pi), value.label.removeprefix("angle turned until"))
 
 
 def _transfer(wheel: Wheel, omega0: float | None, uses: dict, efficiency: float | None, until_omega: float | None, g: float | None,
@@ -175,7 +189,7 @@ def _transfer(wheel: Wheel, omega0: float | None, uses: dict, efficiency: float 
         if value is not None:
             raise InputError(name, f"conflicts with {{{given[0]}}}: an energy balance, from the speed before to the speed after, takes no torques, times or targets")
     if wheel.inertia is None:
-        raise InputError(given[0], "needs a body ({inertia} or {shape}): its energy is ½Iω²", example="{inertia} 2kg*m^2 {omega0} 300rpm")
+        raise InputError(given[0], "needs a body ({inertia} or {shape}): its energy is ½Iω²", example="{inertia} '2kg*m^2' {omega0} 300rpm")
     if efficiency is not None and not 0 < efficiency <= 1:
         raise InputError("efficiency", "expected a number above 0 and at most 1", example="{efficiency} 0.8", got=f"{efficiency:g}")
     assumed = Assumed()
@@ -411,7 +425,7 @@ def _one_sense(brakes, bands, omega0: float | None, drive: float, in_time, in_an
     if omega0 and drive and (omega0 > 0) != (drive > 0):
         raise InputError(sided[0], "takes the torque for the sense the wheel turns, and a drive against ω₀ would stop it and turn it back "
                          "(the tight and slack ends, or the friction's moment, change over): give a drive along ω₀, or work the turn back in a second run",
-                         example='{torque} 5N*m {omega0} 100rpm')
+                         example="{torque} '5N*m' {omega0} 100rpm")
 
 
 def _with_parts(report: Report, parts: Table | None) -> Report:

@@ -1,0 +1,197 @@
+"""Messages that name the fix (#42 items 18-20): a result that needs another option says which,
+each surface spells names as it takes them, and every example in a message works as typed."""
+
+from __future__ import annotations
+
+import ast
+import re
+import shlex
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import taucli
+from conftest import assert_usage_error, run_taucli
+from taucli.options import SCENES
+from taucli.quantities.kinds import KINDS
+
+NEEDING = [(command, result) for command in SCENES.values() for result in command.results if getattr(result, "needs", ())]
+
+
+def test_results_that_need_an_option_say_so_in_the_table():
+    keys = {(command.name, result.key) for command, result in NEEDING}
+    assert {("atwood", "v"), ("atwood", "t"), ("spin-down", "omega")} <= keys
+    for command, result in NEEDING:
+        assert all(command.option(name) is not None for name in result.needs), (command.name, result.key)
+
+
+@pytest.mark.parametrize("command, result", NEEDING, ids=[f"{c.name}-{r.key}" for c, r in NEEDING])
+def test_a_result_that_needs_an_option_names_it(command, result):
+    """--get RESULT where no option that makes it was given: "RESULT needs --a or --b", and the
+    first of them, given as the example says, makes it."""
+    args = shlex.split(command.example)[1:]
+    assert not set(result.needs) & {arg[2:].replace("-", "_") for arg in args}
+    refused = run_taucli(*args, "--get", result.key)
+    flags = [command.option(name).flag for name in result.needs]
+    assert_usage_error(refused, f"--get: {result.key} needs ", *flags)
+    first = command.option(result.needs[0])
+    made = run_taucli(*args, first.flag, KINDS[first.kind].example.strip("'"), "--get", result.key)
+    assert made.code == 0 and made.out.strip(), (made, first.flag)
+
+
+def test_the_two_messages_of_the_issue():
+    assert_usage_error(run_taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--get", "v"),
+                       "--get: v needs --distance or --time (e.g. --distance '0.2 m')")
+    assert_usage_error(run_taucli("spin-down", "--inertia", "2", "--omega0", "30rad/s", "--friction", "1", "--get", "omega"),
+                       "--get: omega needs --time, --until-omega or --until-angle")
+    assert_usage_error(run_taucli("spin-down", "--inertia", "2", "--omega0", "30rad/s", "--friction", "1", "--to", "omega=rpm"),
+                       "--to: omega needs --time")
+
+
+def test_python_names_the_keyword_that_makes_a_result():
+    report = taucli.atwood(m1="4kg", m2="1kg")
+    with pytest.raises(taucli.MissingResult) as raised:
+        report.results["v"]
+    assert "distance= or time=" in str(raised.value)
+
+
+# item 19: each surface spells names as it takes them
+
+
+def _keywords(command) -> tuple[list[str], dict[str, str]]:
+    """A scene's example as the Python API takes it: positional words, and keywords."""
+    words, given = [], {}
+    args = iter(shlex.split(command.example)[2:])
+    for arg in args:
+        if arg.startswith("--"):
+            given[arg[2:].replace("-", "_")] = next(args)
+        else:
+            words.append(arg)
+    return words, given
+
+
+def _variants(command):
+    """The example, and the example with each keyword left out in turn (a note or an error each)."""
+    words, given = _keywords(command)
+    yield words, given
+    for name in given:
+        yield words, {key: value for key, value in given.items() if key != name}
+
+
+def _flags_in(text: str, command) -> list[str]:
+    return [option.flag for option in command.options if option.flag in text.replace("—", " ")]
+
+
+@pytest.mark.parametrize("command", list(SCENES.values()), ids=list(SCENES))
+def test_python_notes_and_errors_name_keywords_not_flags(command):
+    function = getattr(taucli, command.function_name)
+    said = []
+    for words, given in _variants(command):
+        try:
+            said += function(*words, **given).notes
+        except taucli.InputError as err:
+            said.append(str(err))
+    for text in said:
+        assert not _flags_in(text, command), (text, command.name)
+
+
+def test_python_and_batch_spell_the_pulley_as_keywords():
+    notes = taucli.atwood(m1="4kg", m2="1kg", pulley_mass="2kg").notes
+    assert any("give pulley_radius for" in note for note in notes) and any("pulley_shape ring" in note for note in notes), notes
+    with pytest.raises(taucli.InputError, match=r"radius2 is required with radius1 \(or pulley_radius for it\)"):
+        taucli.atwood(m1="4kg", m2="1kg", radius1="0.1m")
+    lines = '{"m1": "4kg", "m2": "1kg", "pulley_mass": "2kg"}\n{"m1": "4kg", "m2": "1kg", "radius1": "0.1m"}\n'
+    run = run_taucli("atwood", "--batch", stdin=lines)
+    assert "give pulley_radius for" in run.out and "--pulley" not in run.out, run.out
+    cli = run_taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--radius1", "0.1m")
+    assert_usage_error(cli, "--radius2 is required with --radius1 (or --pulley-radius for it)")
+
+
+# item 20: every example in a message works as typed in zsh (and so in bash: the words shlex gives)
+
+_SOURCE = Path(taucli.__file__).parent
+
+
+def _texts(node, names: dict, deep: bool = True):
+    """The texts an expression may be: a string, an f-string (each hole a 1), either side of an
+    if, a concatenation, a dict's values, a name assigned a text in the module."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        yield node.value
+    elif isinstance(node, ast.JoinedStr):
+        yield "".join(part.value if isinstance(part, ast.Constant) else "1" for part in node.values)
+    elif isinstance(node, ast.IfExp):
+        yield from _texts(node.body, names, deep)
+        yield from _texts(node.orelse, names, deep)
+    elif isinstance(node, ast.BinOp):
+        yield from (left + right for left in _texts(node.left, names, deep) for right in _texts(node.right, names, deep))
+    elif isinstance(node, ast.Dict):
+        for value in node.values:
+            yield from _texts(value, names, deep)
+    elif isinstance(node, ast.Subscript):
+        yield from _texts(node.value, names, deep)
+    elif isinstance(node, ast.Name) and deep:
+        yield from names.get(node.id, ())
+
+
+def _examples():
+    """Every example= a message is given in taucli's source, and each kind's example after a flag."""
+    found = [(f"kinds.{kind.name}", "--x " + (kind.example if kind.example.startswith("'") or " " not in kind.example else f"'{kind.example}'"))
+             for kind in KINDS.values()]
+    for path in sorted(_SOURCE.rglob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        names: dict[str, list[str]] = {}
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name):
+                names.setdefault(node.targets[0].id, []).extend(_texts(node.value, names, deep=False))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.keyword) and node.arg == "example":
+                for text in _texts(node.value, names):
+                    if re.search(r"\{[a-z_0-9]+\}|--[a-z]|^taucli ", text):  # a command line (not a CSV header or a JSON line)
+                        found.append((f"{path.relative_to(_SOURCE)}:{node.value.lineno}", text))
+    return found
+
+
+def test_every_example_in_a_message_pastes_into_zsh_as_bash_reads_it(tmp_path):
+    examples = _examples()
+    assert len(examples) > 200
+    wrong = []
+    for where, text in examples:
+        flags = re.sub(r"\{([a-z][a-z0-9_]*)\}", lambda m: "--" + m[1].replace("_", "-"), text)
+        for line in flags.split(", or "):
+            line = re.split(r" [<>] ", line)[0]  # a redirection is the shell's own
+            zsh = subprocess.run(["zsh", "-f", "-c", "print -rl -- " + line], capture_output=True, text=True, cwd=tmp_path)
+            if zsh.returncode != 0 or zsh.stdout.splitlines() != shlex.split(line):
+                wrong.append((where, line, zsh.stderr.strip()))
+    assert not wrong, "\n".join(map(str, wrong))
+
+
+def test_no_dimension_in_pint_brackets_reaches_a_message():
+    """Every dimension a text may have, mass, length and time to the powers -3..3: said in words."""
+    from taucli.quantities.registry import _describe
+
+    for mass in range(-3, 4):
+        for length in range(-3, 4):
+            for time in range(-3, 4):
+                said = _describe({"[mass]": mass, "[length]": length, "[time]": time})
+                assert "[" not in said and "**" not in said and said.startswith(("a ", "an ")), said
+    run = run_taucli("spin-down", "--inertia", "1 lbf*ft^2", "--omega0", "1rad/s")
+    assert_usage_error(run, "got '1 lbf*ft^2', which is a torque or energy times a length")
+
+
+@pytest.mark.parametrize("typed, meant", [("--hlep", "--help"), ("--M1", "--m1")])
+def test_a_mistyped_flag_gets_its_did_you_mean(typed, meant):
+    assert_usage_error(run_taucli("atwood", typed, "4kg" if typed == "--M1" else "--m1", *(["--m1", "4kg"] if typed == "--M1" else ["4kg"])),
+                       f"{typed} is not an option of atwood; did you mean '{meant}'?")
+
+
+@pytest.mark.parametrize("scene", ["inertia", "rolling", "atwood"])
+def test_help_after_a_scene_is_its_help_where_help_is_no_value(scene):
+    run = run_taucli(scene, "help")
+    assert run.code == 0 and run.out.startswith(f"Usage: taucli {scene} "), run
+
+
+def test_python_says_it_takes_no_sweeps():
+    with pytest.raises(taucli.InputError, match=r"m2: takes one value: the Python API takes no sweeps") as raised:
+        taucli.atwood(m1="4kg", m2="1..3 kg")
+    assert "m2=x) for x in (1.0, 2.0, 3.0)" in str(raised.value)
