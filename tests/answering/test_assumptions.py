@@ -72,7 +72,7 @@ def test_hz_read_as_revolutions_per_second_is_stated(args, option):
 
 def test_hz_is_stated_in_a_batch_line_too():
     result = run_taucli("spin-down", "--batch", "--no-steps", stdin=json.dumps({"inertia": "1", "omega0": "5Hz", "friction": "1"}) + "\n")
-    assert mentions(json.loads(result.out)["notes"], "--omega0 5Hz: Hz read as revolutions per second")
+    assert mentions(json.loads(result.out)["notes"], "omega0 5Hz: Hz read as revolutions per second")  # batch names keys (#42 item 19)
 
 
 def test_rpm_and_rad_per_s_need_no_note():

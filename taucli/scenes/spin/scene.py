@@ -22,6 +22,7 @@ from taucli.scenes.inertia import body, body_table
 from taucli.scenes.point import RIM, rim_radius
 from taucli.scenes.push import Push, drive_steps
 from taucli.scenes.spin.constant_alpha import constant_alpha_report
+from taucli.scenes.spin.targets import as_given, with_revs_until
 from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_contacts
 from taucli.scenes.spin.point import with_point
 from taucli.scenes.spin.power import power_report
@@ -149,26 +150,13 @@ def spin_down(
         report = _under_torques(wheel, torques, omega0, targets, front, drive_steps(push, torque), method, dt, rtol, energy or ke0 is not None)
 
     report = assumed.applied(with_contacts(split_contacts(_with_parts(report, wheel.parts), axle, contact), contact))
-    _with_revs_until(report.results)
+    with_revs_until(report.results)
     if at is None:
         return report
     r, note = rim_radius(at, wheel.rim if wheel.rim is not None else body_options.get("radius", body_options.get("outer_radius")), "a body with {radius}")
     report = with_point(report, r, torques, wheel.inertia, power, omega0, **targets)
     report.notes += [note] if note else []
     return report
-
-
-def _with_revs_until(results) -> None:
-    """revs_until beside theta_until, as revs_stop is beside theta_stop (#42): in revolutions."""
-    found = results.get("theta_until") if hasattr(results, "put") else None
-    if found is None or "revs_until" in results:
-        return
-    after = list(results.items())
-    results.clear()
-    for key, value in after:
-        results[key] = value
-        if key == "theta_until":
-            results.put("revs_until", None if value.value is None else value.value / (2 * math.pi), value.label.removeprefix("angle turned until"))
 
 
 def _transfer(wheel: Wheel, omega0: float | None, uses: dict, efficiency: float | None, until_omega: float | None, g: float | None,
@@ -333,7 +321,7 @@ def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: di
     if not torques.viscous and not torques.drag:
         report = constant_alpha_report(wheel.inertia, wheel.steps, torques, omega0, None, time=in_time, until_omega=until_omega,
                                        until_angle=until_angle, front=(front.steps, front.notes, front.results))
-        report = _as_given(_with_front(report, front.results), wheel.inertia, until_omega, until_angle)
+        report = as_given(_with_front(report, front.results), wheel.inertia, until_omega, until_angle)
         return report, {"time": in_time, "until_omega": None, "until_angle": None}, torques
     torques = drive_for_target(wheel.inertia, torques, omega0 or 0.0, in_time, until_omega, until_angle, method, dt, rtol)
     front.notes.append(f"the constant drive torque that meets the target in t = {fmt(in_time)} s, found by bisection on the motion: "
@@ -341,29 +329,7 @@ def _in_time(wheel: Wheel, torques: Torques, omega0, in_time: float, targets: di
     front.results.put("torque", torques.drive, " that meets the target")
     targets = {"time": in_time, "until_omega": None, "until_angle": None}
     report = _under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True)
-    return _as_given(report, wheel.inertia, until_omega, until_angle), targets, torques
-
-
-def _as_given(report: Report, inertia: float | None, until_omega: float | None, until_angle: float | None) -> Report:
-    """At --in-time the wheel is at the target given (the drive was found to put it there): ω (and
-    KE and each power, which follow from it) or θ is that target, not the motion's value at the
-    time, which keeps the rounding of the search (1.4e-14 rad/s for --until-omega 0) (#42 item 22)."""
-    results = report.results
-    if until_angle is not None and results.get("theta") is not None and results["theta"].value is not None:
-        results["theta"] = results["theta"]._replace(value=until_angle)
-        if results.get("revs") is not None:
-            results["revs"] = results["revs"]._replace(value=until_angle / (2 * math.pi))
-    if until_omega is None:
-        return report
-    w = until_omega
-    # ω, and KE = ½Iω², from the target; each power is a torque times ω (bω², k|ω|ⁿ⁺¹): 0 at a target of rest
-    exact = {"omega": w, "KE": None if inertia is None else inertia * w * w / 2}
-    if w == 0:
-        exact.update(dict.fromkeys(("power", "power_friction", "power_viscous", "power_drag"), 0.0))
-    for key, value in exact.items():
-        if key in results and results[key].value is not None and value is not None:
-            results[key] = results[key]._replace(value=value + 0.0)  # + 0.0: 0, not −0
-    return report
+    return as_given(report, wheel.inertia, until_omega, until_angle), targets, torques
 
 
 def _within_angle(in_angle: float, until_omega, targets: dict, in_time, alpha, torque, push, power) -> float:
@@ -401,7 +367,7 @@ def _in_angle(wheel: Wheel, torques: Torques, omega0, in_angle: float, targets: 
     front.results.put("torque", torques.drive, " that meets the target")
     # Timed to the speed, not the angle: at a stop dθ/dt = 0, and a time to an angle would keep half the digits.
     targets = {"time": None, "until_omega": until_omega, "until_angle": None}
-    return _as_given(_under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), wheel.inertia, until_omega, None), targets, torques
+    return as_given(_under_torques(wheel, torques, omega0, targets, front, (), method, dt, rtol, True), wheel.inertia, until_omega, None), targets, torques
 
 
 def _under_torques(wheel: Wheel, torques: Torques, omega0, targets: dict, front: Front, formed: list, method, dt, rtol, energy: bool) -> Report:
