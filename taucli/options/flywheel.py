@@ -49,7 +49,7 @@ COMMAND = Command(
         Result("hoop_stress", "Pa", "hoop stress in the rim at the mean speed, ρv²"),
         Result("hoop_stress_max", "Pa", "hoop stress at the top speed, ρv_max²"),
         Result("rim_area", "m**2", "cross-section of the rim, m/(2πRρ)"),
-        Result("stress_margin", "", "allowable stress over the hoop stress at the top speed"),
+        Result("stress_margin", "", "allowable stress over the hoop stress at the top speed", needs=("allowable_stress",)),
     ),
     output=ANSWER,
     headline="energy_swing",

@@ -79,7 +79,7 @@ COMMAND = Command(
         Result("period_p", "s", "precession period…"),
         Result("omega_p_slow", "rad/s", "slow steady precession (exact)"),
         Result("omega_p_fast", "rad/s", "fast steady precession (exact)"),
-        Result("spin_min", "rad/s", "least spin for a steady precession"),
+        Result("spin_min", "rad/s", "least spin for a steady precession", needs=("tilt",)),
         Result("L_orbital", "kg*m**2/s", "angular momentum of the centre of mass's orbit…"),
         Result("pivot_force_vertical", "N", "pivot's force on the body, vertical (up)"),
         Result("pivot_force_horizontal", "N", "pivot's force on the body, horizontal (towards the axis)…"),

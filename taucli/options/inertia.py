@@ -24,7 +24,7 @@ COMMAND = Command(
     results=(
         Result("I", "kg*m**2", "moment of inertia about the rotation axis"),
         Result("k", "m", "radius of gyration, √(I/M)"),
-        Result("I_cm", "kg*m**2", "moment of inertia about the parallel axis through the centre of mass"),
+        Result("I_cm", "kg*m**2", "moment of inertia about the parallel axis through the centre of mass", needs=("offset", "body_offset")),
         Result("mass", "kg", "total mass"),
     ),
     output=ANSWER,
