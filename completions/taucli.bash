@@ -38,6 +38,28 @@ _taucli_axes() {
     COMPREPLY=($(compgen -W "$axes" -- "$cur"))
 }
 
+_taucli_fit_names() {
+    # fit's --fit: the inputs of the scene typed, after the NAME, typed so far
+    local i scene="" names prefix=""
+    for ((i = 2; i < COMP_CWORD; i++)); do
+        case "${COMP_WORDS[i]}" in inertia|spin-down|atwood|rolling|impulse|pendulum|torque|gyro|drive|flywheel) scene="${COMP_WORDS[i]}"; break ;; esac
+    done
+    case "$scene" in
+        inertia) names="mass density gyration radius inner_radius outer_radius length width height depth offset body_offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" ;;
+        spin-down) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 work lift_mass vehicle_mass efficiency rim_accel rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm" ;;
+        atwood) names="m1 m2 pulley_mass pulley_radius pulley_inertia pulley_gyration axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" ;;
+        rolling) names="k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at" ;;
+        impulse) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm part_after.radius part_after.inner_radius part_after.outer_radius part_after.length part_after.width part_after.height part_after.depth part_after.offset part_after.mass part_after.inertia part_after.gyration particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.torque couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" ;;
+        pendulum) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 omega_bottom torsion g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" ;;
+        torque) names="lever angle mass g force" ;;
+        gyro) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration rotor.inertia rotor.spin" ;;
+        drive) names="motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" ;;
+        flywheel) names="inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction rim_radius rim_speed density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration" ;;
+    esac
+    [[ "$cur" == *,* ]] && prefix="${cur%,*},"
+    COMPREPLY=($(compgen -P "$prefix" -W "$names" -- "${cur##*,}"))
+}
+
 _taucli() {
     local cur="${COMP_WORDS[COMP_CWORD]}" prev="${COMP_WORDS[COMP_CWORD-1]}" command="" i
     COMPREPLY=()
@@ -474,7 +496,7 @@ _taucli() {
         ;;
     fit)
         case "$prev" in
-            --fit) :; return 0 ;;
+            --fit) _taucli_fit_names; return 0 ;;
             --x) :; return 0 ;;
             --y) :; return 0 ;;
             --sigma) :; return 0 ;;

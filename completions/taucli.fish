@@ -46,6 +46,36 @@ function __taucli_axes --description 'the axes of the shape typed so far (all wh
     end
 end
 
+function __taucli_fit_names --description 'the inputs of the scene typed, after the NAME, typed so far'
+    set -l scene
+    for word in (commandline -opc)
+        contains -- $word inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel; and set scene $word; and break
+    end
+    set -l prefix (string replace -r -- '[^,]*$' '' (commandline -ct))
+    switch "$scene"
+        case inertia
+            printf "$prefix%s\n" mass density gyration radius inner_radius outer_radius length width height depth offset body_offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration
+        case spin-down
+            printf "$prefix%s\n" inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 work lift_mass vehicle_mass efficiency rim_accel rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm
+        case atwood
+            printf "$prefix%s\n" m1 m2 pulley_mass pulley_radius pulley_inertia pulley_gyration axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration
+        case rolling
+            printf "$prefix%s\n" k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at
+        case impulse
+            printf "$prefix%s\n" inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm part_after.radius part_after.inner_radius part_after.outer_radius part_after.length part_after.width part_after.height part_after.depth part_after.offset part_after.mass part_after.inertia part_after.gyration particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e couple.inertia couple.omega0 couple.mass couple.torque couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth
+        case pendulum
+            printf "$prefix%s\n" inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 omega_bottom torsion g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration
+        case torque
+            printf "$prefix%s\n" lever angle mass g force
+        case gyro
+            printf "$prefix%s\n" inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration rotor.inertia rotor.spin
+        case drive
+            printf "$prefix%s\n" motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration
+        case flywheel
+            printf "$prefix%s\n" inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction rim_radius rim_speed density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration
+    end
+end
+
 complete -c taucli -f
 complete -c taucli -n __fish_use_subcommand -l version -d 'Print the version and exit.'
 complete -c taucli -n __fish_use_subcommand -l debug -d 'On an internal error (exit 1), print the traceback (or set TAUCLI_DEBUG=1).'
@@ -1072,7 +1102,7 @@ complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l no-limit -d 'Run
 complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l help -d 'Show this message and exit.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -a 'inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -F
-complete -c taucli -n '__fish_seen_subcommand_from fit' -l fit -x -d 'The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu); repeatable.'
+complete -c taucli -n '__fish_seen_subcommand_from fit' -l fit -x -a '(__taucli_fit_names)' -d 'The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu); repeatable.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l x -x -d 'A column that is an input of each sample, and which (default time), e.g. "Time (s)" or "amplitude (deg)=angle0" (repeatable).'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l y -x -d 'The column that was measured, and the result it is, e.g. "Gyroscope z (rad/s)=omega".'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l sigma -x -d 'Each sample\'s standard uncertainty: a column, or one value for all, e.g. 0.05rad/s.'

@@ -23,6 +23,7 @@ from taucli.quantities.units import KINDS
 FILE_NAMES = {"bash": "taucli.bash", "zsh": "_taucli", "fish": "taucli.fish"}
 RESULT_NAMES = ("get", "y")  # options whose value is one of the command's results
 RESULT_IS = ("to", "want")  # options whose value is RESULT=...: completed to "RESULT=" (#42)
+FIT = "fit"  # fit's --fit: NAME,NAME of the scene typed, as --find takes them
 FIND = "find"  # its value is an input of the command, or a key of a spec (taucli.answering.unknowns: particle.speed)
 
 
@@ -38,6 +39,7 @@ class Option:
     files: bool = False
     described: tuple[tuple[str, str], ...] = ()  # (choice, what it is): --get's results, each with its own label
     axes: bool = False  # --axis: the axes of the shape typed so far (names.SHAPE_AXES)
+    fit_names: bool = False  # fit's --fit: the inputs of the scene typed, after any NAME, typed (#42 item 23)
 
 
 @dataclass(frozen=True)
@@ -95,9 +97,17 @@ def _options(command: table.Command, options) -> tuple[Option, ...]:
                 files=option.kind == table.FILE,
                 described=described,
                 axes=option.name == "axis" and option.kind == table.CHOICE,
+                fit_names=command.name == FIT and option.name == FIT,
             )
         )
     return tuple(sorted(found, key=lambda option: option.flag == "--help"))
+
+
+def _fit_names() -> dict[str, tuple[str, ...]]:
+    """What fit's --fit offers after each scene: its inputs and the keys of its specs (as --find)."""
+    from taucli.options import SCENES
+
+    return {name: unknowns.names(command) for name, command in SCENES.items()}
 
 
 def _sentence(text: str | None) -> str:
@@ -145,6 +155,19 @@ def _bash(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
         '    COMPREPLY=($(compgen -W "$axes" -- "$cur"))',
         "}",
         "",
+        "_taucli_fit_names() {",
+        "    # fit's --fit: the inputs of the scene typed, after the NAME, typed so far",
+        '    local i scene="" names prefix=""',
+        "    for ((i = 2; i < COMP_CWORD; i++)); do",
+        '        case "${COMP_WORDS[i]}" in ' + "|".join(_fit_names()) + ') scene="${COMP_WORDS[i]}"; break ;; esac',
+        "    done",
+        '    case "$scene" in',
+        *(f'        {scene}) names="{" ".join(names)}" ;;' for scene, names in _fit_names().items()),
+        "    esac",
+        '    [[ "$cur" == *,* ]] && prefix="${cur%,*},"',
+        '    COMPREPLY=($(compgen -P "$prefix" -W "$names" -- "${cur##*,}"))',
+        "}",
+        "",
         "_taucli() {",
         '    local cur="${COMP_WORDS[COMP_CWORD]}" prev="${COMP_WORDS[COMP_CWORD-1]}" command="" i',
         "    COMPREPLY=()",
@@ -167,6 +190,8 @@ def _bash(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
                 action = f"_taucli_units {' '.join(_bash_word(u) for u in option.units)}"
             elif option.axes:
                 action = "_taucli_axes"
+            elif option.fit_names:
+                action = "_taucli_fit_names"
             elif option.choices:
                 action = f'COMPREPLY=($(compgen -W "{" ".join(option.choices)}" -- "$cur"))'
                 if all(choice.endswith("=") for choice in option.choices):  # RESULT= : the value goes on after it
@@ -209,6 +234,8 @@ def _zsh_option(option: Option) -> str:
             action = "{_taucli_units " + " ".join(f'"{unit}"' for unit in option.units) + "}"
         elif option.axes:
             action = "{_taucli_axes}"
+        elif option.fit_names:
+            action = "{_taucli_fit_names}"
         elif option.described:
             action = "((" + " ".join(f"{choice}\\:{_zsh_described(label)}" for choice, label in option.described) + "))"
         elif option.choices:
@@ -258,6 +285,19 @@ def _zsh(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
         f"        *) axes=({' '.join(dict.fromkeys(a for axes in SHAPE_AXES.values() for a in axes))}) ;;",
         "    esac",
         "    compadd -a axes",
+        "}",
+        "",
+        "_taucli_fit_names() {",
+        "    # fit's --fit: the inputs of the scene typed, NAME,NAME",
+        "    local word scene",
+        "    local -a names",
+        "    for word in $words; do",
+        "        case $word in " + "|".join(_fit_names()) + ") scene=$word; break ;; esac",
+        "    done",
+        "    case $scene in",
+        *(f"        {scene}) names=({' '.join(names)}) ;;" for scene, names in _fit_names().items()),
+        "    esac",
+        "    (( $#names )) && _values -s , input $names",
         "}",
         "",
         "_taucli() {",
@@ -330,6 +370,17 @@ def _fish(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
         "    end",
         "end",
         "",
+        "function __taucli_fit_names --description 'the inputs of the scene typed, after the NAME, typed so far'",
+        "    set -l scene",
+        "    for word in (commandline -opc)",
+        f"        contains -- $word {' '.join(_fit_names())}; and set scene $word; and break",
+        "    end",
+        "    set -l prefix (string replace -r -- '[^,]*$' '' (commandline -ct))",
+        "    switch \"$scene\"",
+        *(f"        case {scene}\n            printf \"$prefix%s\\n\" {' '.join(names)}" for scene, names in _fit_names().items()),
+        "    end",
+        "end",
+        "",
         "complete -c taucli -f",
     ]
     for option in own:
@@ -348,6 +399,8 @@ def _fish(own: tuple[Option, ...], commands: tuple[Command, ...]) -> str:
                 line += f" -x -a {_fish_text('(__taucli_units ' + ' '.join(_fish_word(u) for u in option.units) + ')')}"
             elif option.axes:
                 line += " -x -a '(__taucli_axes)'"
+            elif option.fit_names:
+                line += " -x -a '(__taucli_fit_names)'"
             elif option.described:  # one line a result, each with its own label
                 lines += [f"{line} -x -a {_fish_text(choice)} -d {_fish_text(label)}" for choice, label in option.described]
                 continue

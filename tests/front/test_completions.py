@@ -249,3 +249,22 @@ def test_each_result_of_get_has_its_own_label(shell, tmp_path):
     gets = [line for line in script.splitlines() if "from atwood'" in line and " -l get " in line]
     labels = [line.rsplit(" -d ", 1)[1] for line in gets]
     assert len(gets) == len(completions.COMMANDS["atwood"].results) and len(set(labels)) == len(labels)
+
+
+FIT = {
+    # typed -> (offered, not offered): fit's --fit offers the inputs of the scene typed (#42 item 23)
+    "taucli fit atwood a.csv --fit m\t\t": (["m1", "m2", "mu_k"], ["motor_inertia", "mass "]),
+    "taucli fit spin-down coast.csv --fit friction,visc\t": (["friction,viscous"], ["m1"]),
+}
+
+
+@pytest.mark.parametrize("shell", completions.SHELLS)
+@pytest.mark.parametrize("typed", list(FIT))
+def test_fit_offers_the_inputs_of_the_scene_typed(shell, typed, tmp_path):
+    argv, env, setup, ready = _install(shell, tmp_path) if shell != "bash" else _bash_without_the_package(tmp_path)
+    shown = _press_tab(argv, env, setup, ready, typed)
+    offered, not_offered = FIT[typed]
+    tail = shown.split("--fit", 1)[-1]
+    assert all(name in tail for name in offered), (shell, typed, shown)
+    assert not any(name in tail for name in not_offered), (shell, typed, shown)
+    assert not (tmp_path / "taucli-ran").exists()
