@@ -98,3 +98,14 @@ def test_svg_and_png_files(taucli, tmp_path):
     assert header[:8] == b"\x89PNG\r\n\x1a\n"
     width, height = struct.unpack(">II", header[16:24])
     assert width > 200 and height > 200
+
+
+def test_quick_takes_a_few_seconds():
+    """#42 item 23: `bench --quick` took 9 s (30 s on a busy machine); a few settings, each timed
+    briefly, make it about 2 s. Counted in CPU seconds and points, so a busy machine does not fail it."""
+    import time
+
+    started = time.process_time()
+    points = bench.run(quick=True)
+    assert time.process_time() - started < 4.5
+    assert len(points) <= 75 and bench.SECONDS_TIMED[True] <= 0.005
