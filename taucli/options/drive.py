@@ -89,7 +89,7 @@ COMMAND = Command(
         Result("total_inertia", "kg*m**2", "inertia at the motor, rotor and load"),
         Result("inertia_ratio", "", "inertia ratio, load over rotor"),
         Result("ratio_optimal", "", "ratio matching load to rotor, √(J/J_m)"),
-        Result("load_torque_motor", "N*m", "load torque at the motor, running", needs=("load_torque",)),
+        Result("load_torque_motor", "N*m", "load torque at the motor, running", needs=("load_torque", "load_force")),
         Result("torque_hold", "N*m", "motor torque holding the load at rest"),
         Result("alpha", "rad/s**2", "motor's angular acceleration…"),
         Result("torque_accel", "N*m", "motor torque while accelerating"),
