@@ -100,12 +100,11 @@ def test_svg_and_png_files(taucli, tmp_path):
     assert width > 200 and height > 200
 
 
-def test_quick_takes_a_few_seconds():
-    """#42 item 23: `bench --quick` took 9 s (30 s on a busy machine); a few settings, each timed
-    briefly, make it about 2 s. Counted in CPU seconds and points, so a busy machine does not fail it."""
-    import time
-
-    started = time.process_time()
+def test_quick_is_a_few_settings_each_timed_briefly():
+    """#42 item 23: `bench --quick` took 9 s (30 s on a busy machine); a few settings per method,
+    each timed for at least 4 ms rather than 20, make it about 2.5 s (measured with `time`, not
+    here: a unit test asserts no times). Every problem and method stays in it."""
     points = bench.run(quick=True)
-    assert time.process_time() - started < 4.5
+    full = {(p.problem, p.method) for p in points}
+    assert full >= {(name, "exact") for name in bench.PENDULUM_PROBLEMS}
     assert len(points) <= 75 and bench.SECONDS_TIMED[True] <= 0.005
