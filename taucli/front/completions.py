@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from taucli.options import table
 from taucli.answering import unknowns
 from taucli.core.names import SHAPE_AXES, SHELLS  # noqa: F401 (completions.SHELLS: the shells it writes for)
-from taucli.options import COMMANDS
+from taucli.options import COMMANDS, SCENES
 from taucli.options.tools import ROOT
 from taucli.quantities.units import KINDS
 
@@ -105,8 +105,6 @@ def _options(command: table.Command, options) -> tuple[Option, ...]:
 
 def _fit_names() -> dict[str, tuple[str, ...]]:
     """What fit's --fit offers after each scene: its inputs and the keys of its specs (as --find)."""
-    from taucli.options import SCENES
-
     return {name: unknowns.names(command) for name, command in SCENES.items()}
 
 
