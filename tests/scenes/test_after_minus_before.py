@@ -12,7 +12,9 @@ Each scene's results were read for such a difference:
 - spin-down putting its energy to use (--until-omega): E = ½I(ω₀² − ω₁²) as ½I(ω₀ − ω₁)(ω₀ + ω₁);
 - rolling, a ball skidding until it rolls: energy_lost = KE before − KE after, as ½m k²s²/(1 + k²);
 - pendulum: ω at --angle from ½Iω² = ½Iω₀² + mgd(cos θ − cos θ₀), θ near θ₀;
-- impulse: every Δω, J, work, p₁ − p₀ and each part's change: tests/scenes/impulse/test_exchange_form.py.
+- impulse: every Δω, J, work, p₁ − p₀ and each part's change: tests/scenes/impulse/test_exchange_form.py;
+  here a torque against a brake on a heavy wheel (Δω, J_net, work were ω₁ − ω₀ and KE₁ − KE₀:
+  7.0000006e-10 for 7e-10 before).
 
 Scenes with no such result: atwood (a, tensions; v = u + at and the displacement at --time are
 sums from the start, not differences of totals), drive (KE = ½Jω², work_load = Tθ/N, work_motor
@@ -110,3 +112,17 @@ def test_a_pendulum_just_past_its_start():
         r = taucli.pendulum(shape="rod", axis="end", length=f"{length!r} m", mass="1 kg", angle0=f"{th0!r} rad", angle=f"{th!r} rad").results
         L, g = mpf(length), mpf("9.80665")
         close(abs(r["omega"].value), mpmath.sqrt(2 * g * (L / 2) * (mpmath.cos(th) - mpmath.cos(th0)) / (L**2 / 3)))
+
+
+def test_impulse_against_a_brake_on_a_heavy_wheel():
+    """No stop within Δt: I dω/dt = τ − μFR (ω₀ > 0), so Δω = (τ − μFR)Δt/I, J_net = IΔω, work ½I(ω₁² − ω₀²)."""
+    for rng, ratio in _draws(7):
+        w0, torque, duration, force, mu, radius = rng.uniform(1, 100), rng.uniform(1, 10), rng.uniform(0.1, 5), rng.uniform(0.5, 5), 0.3, rng.uniform(0.1, 1)
+        inertia = duration / ratio
+        r = taucli.impulse(inertia=inertia, omega0=f"{w0!r} rad/s", torque=f"{torque!r} N*m", duration=f"{duration!r} s",
+                           brake=[f"force={force!r}N mu={mu!r} radius={radius!r}m"]).results
+        I, W0 = mpf(inertia), mpf(w0)
+        delta = (mpf(torque) - mpf(mu) * mpf(force) * mpf(radius)) * mpf(duration) / I
+        close(r["delta_omega"].value, delta)
+        close(r["J_net"].value, I * delta)
+        close(r["work"].value, I * ((W0 + delta) ** 2 - W0**2) / 2)
