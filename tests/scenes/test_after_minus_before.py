@@ -14,7 +14,7 @@ Each scene's results were read for such a difference:
 - pendulum: ω at --angle from ½Iω² = ½Iω₀² + mgd(cos θ − cos θ₀), θ near θ₀;
 - impulse: every Δω, J, work, p₁ − p₀ and each part's change: tests/scenes/impulse/test_exchange_form.py;
   here a torque against a brake on a heavy wheel (Δω, J_net, work were ω₁ − ω₀ and KE₁ − KE₀:
-  7.0000006e-10 for 7e-10 before).
+  7.0000006e-10 for 7e-10 before), and a particle caught then a torque for Δt (Δω was ω₁ − ω₀: 0).
 
 Scenes with no such result: atwood (a, tensions; v = u + at and the displacement at --time are
 sums from the start, not differences of totals), drive (KE = ½Jω², work_load = Tθ/N, work_motor
@@ -126,3 +126,15 @@ def test_impulse_against_a_brake_on_a_heavy_wheel():
         close(r["delta_omega"].value, delta)
         close(r["J_net"].value, I * delta)
         close(r["work"].value, I * ((W0 + delta) ** 2 - W0**2) / 2)
+
+
+def test_impulse_a_particle_caught_then_a_torque():
+    """Caught: Δω_c = m r(v − ω₀r)/(I + mr²); then τΔt/(I + mr²); Δω is their sum."""
+    for rng, ratio in _draws(8):
+        w0, v, radius, duration = rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(0.1, 1), rng.uniform(0.1, 3)
+        inertia, mass, torque = 10 ** rng.uniform(3, 9), rng.uniform(0.1, 10) * ratio, rng.uniform(-5, 5) * ratio
+        r = taucli.impulse(inertia=inertia, omega0=f"{w0!r} rad/s", particle=f"mass={mass!r}kg speed={v!r}m/s radius={radius!r}m",
+                           torque=f"{torque!r} N*m", duration=f"{duration!r} s").results
+        I, W0, m, V, R = (mpf(x) for x in (inertia, w0, mass, v, radius))
+        i1 = I + m * R**2
+        close(r["delta_omega"].value, m * R * (V - W0 * R) / i1 + mpf(torque) * mpf(duration) / i1)
