@@ -28,9 +28,10 @@ def put_motion(results: Results, motion, distance: float | None, time: float | N
         if reached is None:
             notes.append(_never_travel(motion, distance))
         results.put("t", reached, f" {fmt(distance)} m")
-        results.put("v", None if reached is None else motion.state_at(reached)[0], f" after {fmt(distance)} m")
+        results.put("v", None if reached is None else motion.state_at(reached)[0] + 0.0, f" after {fmt(distance)} m")  # + 0.0: 0, not −0
     if time is not None:
         speed, displacement = motion.state_at(time)
+        speed, displacement = speed + 0.0, displacement + 0.0  # at rest, or at --time 0: 0, not −0 (#42 item 22)
         if "v" not in results:
             results.put("v", speed, f" at t = {fmt(time)} s")
         results.put("distance", displacement, f" at t = {fmt(time)} s")

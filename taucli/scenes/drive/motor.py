@@ -305,15 +305,17 @@ def _curves(parts: list[Piece], t_end: float) -> Trajectory:
     return Trajectory(curves, t_end, state, marks=marks)
 
 
-def uniform(train: Train, alpha: float, target: float | None, energy: bool, results: Results, steps: list[Step], words: str) -> None:
-    """A constant α given (or ω₁/t): the torque it takes, and to the target its time, angle and energy."""
+def uniform(train: Train, alpha: float, target: float | None, energy: bool, results: Results, steps: list[Step], words: str,
+            in_time: float | None = None) -> None:
+    """A constant α given (or ω₁/t): the torque it takes, and to the target its time, angle and
+    energy; with --in-time the time is the one given (not ω₁/(ω₁/t), which may round off it: #42 item 22)."""
     torque = train.motor_torque(alpha)
     results.put("alpha", alpha, words)
     results.put("torque_accel", torque)
     steps.append(torque_step("Motor torque while accelerating", train, alpha, torque))
     if target is None:
         return
-    time = target / alpha
+    time = target / alpha if in_time is None else in_time
     theta = target * time / 2
     results.put("t_accel", time, f" to {fmt(target)} rad/s")
     results.put("theta_accel", theta)

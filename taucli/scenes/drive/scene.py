@@ -119,7 +119,7 @@ def drive(
         elif rate is not None or in_time is not None:
             rate, words = _uniform_rate(rate, top, in_time, alpha)
             train = _rotor(train, notes, "the torque to accelerate")
-            uniform(train, rate, top, energy, results, steps, words)
+            uniform(train, rate, top, energy, results, steps, words, in_time)
             regime = "acceleration at a constant α"
         elif top is not None:
             raise InputError(top_words, "needs a way to get there: {in_time}, {alpha} (or {accel}), or the motor's law "

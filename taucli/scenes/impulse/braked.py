@@ -64,15 +64,18 @@ def solve_braked(
     results = Results(TABLE)
     impulse = torque * duration
     results.put("omega1", omega_end, " Δt")
-    results.put("delta_omega", omega_end - omega0)
+    # with no stop within Δt the net torque is constant, so Δω = αΔt: not ω₁ − ω₀, which loses the
+    # digits of a small change of a heavy wheel's speed (#42 item 8); through a stop |Δω| ≥ |ω₀|
+    delta = motion.initial_rate * duration if stop is None else omega_end - omega0
+    results.put("delta_omega", delta)
     results.put("J", impulse, " of the applied torque, τΔt")
-    results.put("J_net", inertia * (omega_end - omega0))
+    results.put("J_net", inertia * delta)
     results.put("L0", inertia * omega0)
     results.put("L1", inertia * omega_end, " Δt")
     energy0, energy1 = inertia * omega0 * omega0 / 2, inertia * omega_end * omega_end / 2
     results.put("KE0", energy0, "")
     results.put("KE1", energy1, " Δt")
-    results.put("work", energy1 - energy0)
+    results.put("work", inertia * delta * (omega0 + omega_end) / 2)  # ½I(ω₁ − ω₀)(ω₁ + ω₀)
     speed0 = abs(omega0)
     for name, share, given in (("brake", contact.brake, brakes), ("face", contact.face, faces), ("band", contact.band, bands)):
         if given:

@@ -53,7 +53,11 @@ def then_torque(collision: Report, inertia1: float, omega1: float | None, torque
             value = stage.results[key]
             results[key] = value
     w0 = collision.results["omega0"].value
-    results.put("delta_omega", stage.results["omega1"].value - w0)
+    if omega1 is None and "delta_omega" in collision.results and "delta_omega" in stage.results:
+        # the collision's change and the torque's τΔt/I₁, each from its exchange, not ω₁ − ω₀ of the totals (#42 item 8)
+        results.put("delta_omega", collision.results["delta_omega"].value + stage.results["delta_omega"].value)
+    else:
+        results.put("delta_omega", stage.results["omega1"].value - w0)
     steps = [*collision.steps,
              Step("Then the torque acts on all that turns together", "I₁ = I + Σ m ρ² (+ Σ I_c)", "", quantity_text(inertia1, "kg*m**2"),
                   "what stays on the body after the blow turns with it, and the torque must turn it all"),

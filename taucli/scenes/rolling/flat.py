@@ -5,6 +5,7 @@ without slipping at v0, whose motion nothing changes.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 from taucli.core.errors import InputError
 from taucli.options.rolling import COMMAND as TABLE
@@ -25,6 +26,8 @@ def solve_flat(roller: Roller, g: float, *, mu_k: float | None, v0: float, omega
         raise InputError("radius", "is required with {omega0} (the slip is v − Rω)", example="{radius} 0.11m")
     rim_speed = 0.0 if not omega0 else radius * omega0
     slip = v0 - rim_speed
+    if slip and omega0:  # v₀ − Rω₀ without the rounding of Rω₀, which is all of a slip much smaller than v₀ (#42 item 8)
+        slip = float(Fraction(v0) - Fraction(radius) * Fraction(omega0))
     notes: list[str] = []
     if slip != 0 and mu_k is None:
         raise InputError("mu_k", "is required: the ball skids (v ≠ Rω) and kinetic friction brings it to rolling", example="{mu_k} 0.2")
