@@ -112,3 +112,11 @@ def modules_after_run(argv: list[str], env: dict[str, str]) -> set[str]:
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env={**os.environ, **env})
     assert done.returncode == 0, done.stderr
     return set(done.stdout.split())
+
+
+def with_notes_as_keys(doc: dict) -> dict:
+    """A command line's --json document with its notes naming options as batch and Python do: a
+    key, not a flag (--pulley-radius -> pulley_radius; #42 item 19), to compare with a batch line."""
+    import re
+
+    return {**doc, "notes": [re.sub(r"--([a-z][a-z0-9-]*)", lambda m: m[1].replace("-", "_"), note) for note in doc["notes"]]}
