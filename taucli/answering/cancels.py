@@ -60,7 +60,8 @@ def without(solver: Callable[..., Report], runs: list[dict], option: str, what: 
     steps = [step for step, other in zip(first.steps, second.steps) if step == other] if len(first.steps) == len(second.steps) else []
     notes = [note for note in first.notes if note in second.notes]
     if needs:
-        notes.append(f"no {what}: {', '.join(needs)} depend on it and are not given; the other results do not")
+        notes.append(f"no {what}: {', '.join(needs)} {'depends' if len(needs) == 1 else 'depend'} on it and {'is' if len(needs) == 1 else 'are'} not given; "
+                     "the other results do not")
     tables = {name: table for name, table in first.tables.items() if second.tables.get(name) == table}
     trajectory = first.trajectory if _same_motion(first, second) else None
     return replace(first, results=results, steps=steps, notes=notes, tables=tables, trajectory=trajectory,

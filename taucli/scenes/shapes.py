@@ -168,7 +168,8 @@ def unused(shape: Shape, axis: Axis, dim: str, dims: Mapping[str, float]) -> boo
     the other dimensions 1 m where not given."""
     probes = []
     for value in (1.0, 2.0):
-        lengths = {**{name: 1.0 for name in shape.dims}, **dims, dim: value}
+        own = {name: length for name, length in dims.items() if name in shape.dims or name in shape.optional}  # another shape's dimension is refused after
+        lengths = {**{name: 1.0 for name in shape.dims}, **own, dim: value}
         probes.append((axis.moment(1.0, **lengths), axis.centre[1](**lengths) if axis.centre is not None else 0.0))
     return probes[0] == probes[1]
 

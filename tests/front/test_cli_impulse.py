@@ -43,7 +43,7 @@ def test_profile_from_a_file_with_samples(taucli, tmp_path):
 @pytest.mark.parametrize(
     "args,fragments",
     [
-        (("--inertia", "0.1", "--omega0", "0"), ("are missing", "fifth")),
+        (("--inertia", "0.1", "--omega1", "2rad/s"), ("are missing", "fifth")),
         (("--inertia", "0.1", "--omega0", "0", "--omega1", "11rad/s", "--torque", "2", "--duration", "0.5s"), ("disagree",)),
         (("--inertia", "0.1", "--inertia-final", "0.05", "--torque", "2"), ("--torque conflicts with --inertia-final",)),
         (("--inertia-final", "0.05", "--omega0", "2rad/s"), ("--inertia", "required")),

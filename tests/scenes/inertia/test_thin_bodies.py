@@ -89,3 +89,14 @@ def test_a_disc_about_a_diameter_names_length_on_the_command_line(scene, args):
 ], ids=["inertia part", "atwood pulley part", "impulse couple", "impulse part after", "pendulum part"])
 def test_a_part_about_a_diameter_without_length_is_named_in_a_note(run):
     assert any("no length= in" in note for note in run().notes)
+
+
+@pytest.mark.parametrize("shape", sorted(SHAPES))
+def test_a_dimension_of_another_shape_is_refused_naming_it_not_a_crash(shape):
+    """Found by the fuzz test after #42 item 14: `inertia tube --radius=1m` (a disc's dimension on a
+    tube, no mass) crashed (exit 1, TypeError) where the check of an unused dimension probed I with
+    every dimension given. Each shape, with each dimension no shape of its own takes, and no mass."""
+    own = {*SHAPES[shape].dims, *SHAPES[shape].optional}
+    for other in sorted({d for s in SHAPES.values() for d in (*s.dims, *s.optional)} - own):
+        done = run_taucli("inertia", shape, f"--{other.replace('_', '-')}=1m")
+        assert done.code == 2 and "internal error" not in done.err and len(done.err.strip().splitlines()) == 1, (shape, other, done.err)
