@@ -120,3 +120,22 @@ def with_notes_as_keys(doc: dict) -> dict:
     import re
 
     return {**doc, "notes": [re.sub(r"--([a-z][a-z0-9-]*)", lambda m: m[1].replace("-", "_"), note) for note in doc["notes"]]}
+
+
+def example_keys(command) -> dict:
+    """A command's example in its table as a batch line's keys (``taucli atwood --m1 4kg …`` ->
+    {"m1": "4kg", …}; a flag True, the positional SHAPE by its name)."""
+    import shlex
+
+    from taucli.options.table import FLAG
+
+    words, given = shlex.split(command.example)[2:], {}
+    positional = [option.name for option in command.options if option.positional]
+    while words:
+        word = words.pop(0)
+        if word.startswith("--"):
+            option = command.option(word[2:].replace("-", "_"))
+            given[option.name] = True if option.kind == FLAG else words.pop(0)
+        else:
+            given[positional.pop(0)] = word
+    return given

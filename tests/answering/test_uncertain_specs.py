@@ -8,28 +8,15 @@ from __future__ import annotations
 import io
 import json
 import math
-import shlex
 
 import pytest
 
 import taucli
+from conftest import example_keys
 from taucli.front import cli
 from taucli.options import SCENES, table
 
 SPEC_KINDS = {table.PART, table.PARTICLE, table.COUPLE, table.BRAKE, table.FACE, table.BAND, table.SIDE, table.PULL, table.ROTOR}
-
-
-def _example(command) -> dict:
-    words, given = shlex.split(command.example)[2:], {}
-    positional = [option.name for option in command.options if option.positional]
-    while words:
-        word = words.pop(0)
-        if word.startswith("--"):
-            option = command.option(word[2:].replace("-", "_"))
-            given[option.name] = True if option.kind == table.FLAG else words.pop(0)
-        else:
-            given[positional.pop(0)] = word
-    return given
 
 
 # (scene, option, its value with {u} where "value ± σ" goes, value, σ, unit, keywords changed from the scene's example (None: left out))
@@ -63,7 +50,7 @@ CASES = [
 
 
 def _given(scene, option, value, extra, text):
-    base = {key: given for key, given in {**_example(SCENES[scene]), **extra}.items() if given is not None}
+    base = {key: given for key, given in {**example_keys(SCENES[scene]), **extra}.items() if given is not None}
     base[option] = [item.replace("{u}", text) for item in value] if isinstance(value, list) else value.replace("{u}", text)
     return base
 

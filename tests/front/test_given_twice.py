@@ -12,6 +12,7 @@ import shlex
 import pytest
 
 import taucli
+from conftest import example_keys
 from taucli.front.cli import Environment, main
 from taucli.options import COMMANDS, SCENES
 from taucli.options import table
@@ -85,7 +86,7 @@ def test_a_batch_key_given_twice_is_refused_in_every_scene(scene):
     names = [option.name for option in command.options] + ["to", "no_steps", "find", "want"]
     lines = [f'{{"{name}": "1", "{name}": "2"}}' for name in names]
     lines += [f'{{"{name}": "1", "{name.replace("_", "-")}": "2"}}' for name in names if "_" in name]
-    lines.append(f'{{{", ".join(json.dumps(key) + ": " + json.dumps(value) for key, value in _batch_example(command).items())}}}')
+    lines.append(f'{{{", ".join(json.dumps(key) + ": " + json.dumps(value) for key, value in example_keys(command).items())}}}')
     code, out, err = _run([scene, "--batch"], "\n".join(lines) + "\n")
     documents = [json.loads(line) for line in out.splitlines()]
     assert len(documents) == len(lines) and code == 2
@@ -94,14 +95,3 @@ def test_a_batch_key_given_twice_is_refused_in_every_scene(scene):
     assert "results" in documents[-1], documents[-1]  # the line that gives each key once is answered
 
 
-def _batch_example(command) -> dict:
-    words, given = _example(command), {}
-    positional = [option.name for option in command.options if option.positional]
-    while words:
-        word = words.pop(0)
-        if word.startswith("--"):
-            option = command.option(word[2:].replace("-", "_"))
-            given[option.name] = True if option.kind == table.FLAG else words.pop(0)
-        else:
-            given[positional.pop(0)] = word
-    return given
