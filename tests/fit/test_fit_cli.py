@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import run_taucli
+from conftest import modules_after_run, run_taucli
 from fit_synthetic import coast_down, csv
 from taucli.front import help as helptext
 from taucli.options import COMMANDS, SCENES
@@ -146,17 +146,8 @@ def test_the_command_line_without_the_fit_extra_exits_2_in_one_line_naming_it(bl
 
 
 def _modules_after(argv: list[str]) -> set[str]:
-    code = (
-        "import io, contextlib, runpy, sys\n"
-        f"sys.argv = ['taucli', *{argv!r}]\n"
-        "with contextlib.redirect_stdout(io.StringIO()):\n"
-        "    try:\n        runpy.run_module('taucli', run_name='__main__')\n"
-        "    except SystemExit as done:\n        assert not done.code, done.code\n"
-        "print(' '.join(sys.modules))"
-    )
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=os.environ.copy())
-    assert done.returncode == 0, done.stderr
-    return {name.split(".")[0] for name in done.stdout.split()}
+    """The top-level packages a whole run of ``taucli ARGV`` loads."""
+    return {name.split(".")[0] for name in modules_after_run(argv, {})}
 
 
 @pytest.mark.parametrize("argv", [
