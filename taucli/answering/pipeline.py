@@ -55,7 +55,21 @@ def solve(
     except InputError as err:  # a solver's "--pulley-radius" is spelled as the caller's surface spells it (#42)
         raise err.named(known)
     # the library's report is made for this call alone: completed in place (a batch line makes one per line)
-    notes = (as_named(note, known) if "--" in note else note for note in (*inputs.notes, *report.notes))
-    report.notes = [spelled(note, spell, command.option) if "{" in note else note for note in notes]
+    report.notes = [_spoken(note, command, known, spell) for note in (*inputs.notes, *report.notes)]
     report.inputs = {**inputs.values, **report.inputs}
     return report
+
+
+_SPOKEN: dict[tuple, str] = {}  # (command, surface, note) -> the note as that surface says it: most notes repeat line after line
+
+
+def _spoken(note: str, command: Command, known: Callable[[str], bool], spell: Callable[[str], str]) -> str:
+    """A note with each option named as the caller's surface names it (its flag, or its name)."""
+    key = (command.name, spell, note)
+    found = _SPOKEN.get(key)
+    if found is None:
+        found = as_named(note, known) if "--" in note else note
+        found = spelled(found, spell, command.option) if "{" in found else found
+        if len(_SPOKEN) < 4096:  # notes with numbers in them are new each time: bounded
+            _SPOKEN[key] = found
+    return found
