@@ -128,11 +128,11 @@ def part_inertia(part: Part) -> PartInertia:
     dims = dict(part.dims)
     for dim in shape.dims:
         if dim not in dims and not unused(shape, axis, dim, dims):
-            needs = ", ".join(Part("", 0, source=part.source).option(d) for d in ("mass", *shape.dims))
+            needs = ", ".join(part.mention(d) for d in ("mass", *shape.dims))
             raise InputError(part.option(dim), f"is needed for a {shape.title} (it takes {needs})", example=part.example(dim, "0.2m"))
     for dim in dims:
         if dim not in shape.dims and dim not in shape.optional:
-            takes = ", ".join(part.option(d) for d in (*shape.dims, *shape.optional))
+            takes = ", ".join(part.mention(d) for d in (*shape.dims, *shape.optional))
             raise InputError(part.option(dim), f"does not apply to a {shape.title} (it takes {takes or 'only the mass'})")
     if "inner_radius" in dims and dims["inner_radius"] > dims["outer_radius"]:
         raise InputError(

@@ -230,3 +230,34 @@ def test_python_says_it_takes_no_sweeps():
     with pytest.raises(taucli.InputError, match=r"m2: takes one value: the Python API takes no sweeps") as raised:
         taucli.atwood(m1="4kg", m2="1..3 kg")
     assert "m2=x) for x in (1.0, 2.0, 3.0)" in str(raised.value)
+
+
+def _parameters_named_bare(err: taucli.InputError, command) -> list[str]:
+    """Parameters a message's texts name as words rather than as {name} (which each surface spells:
+    --inner-radius on the command line): "it takes mass, inner_radius, outer_radius" reached the
+    command line as Python keywords."""
+    text = err.spelled(lambda name: "@")
+    keywords = {option.name for option in command.options if "_" in option.name}
+    return sorted(name for name in keywords if re.search(rf"(?<![\w-]){name}(?![\w=])", text))
+
+
+@pytest.mark.parametrize("command", list(SCENES.values()), ids=list(SCENES))
+def test_errors_name_parameters_as_the_surface_spells_them(command):
+    """Class check: every error of the example with a keyword left out, and for inertia every shape
+    with each dimension left out, names each parameter through {name}, never as a bare keyword."""
+    from taucli.scenes.shapes import SHAPES
+
+    function = getattr(taucli, command.function_name)
+    runs = list(_variants(command))
+    if command.name == "inertia":
+        for shape in SHAPES.values():
+            dims = {dim: "0.3m" for dim in shape.dims}
+            runs += [([shape.name], {"mass": "1kg", **{d: v for d, v in dims.items() if d != left}}) for left in shape.dims]
+            runs.append(([shape.name], {"mass": "1kg", **dims, "inner_radius" if "inner_radius" not in dims else "width": "0.1m"}))
+    bare = []
+    for words, given in runs:
+        try:
+            function(*words, **given)
+        except taucli.InputError as err:
+            bare += [(str(err), name) for name in _parameters_named_bare(err, command)]
+    assert not bare, bare
