@@ -29,7 +29,7 @@ from taucli.core.names import FORMATS
 from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
-from taucli.options.table import FLAG, Command, Option
+from taucli.options.table import FLAG, TEXT, Command, Option
 from taucli.quantities.kinds import KINDS
 
 
@@ -292,6 +292,8 @@ def _no_such_option(command: Command, unknown: str) -> str:
     message = f"{unknown} is not an option of {command.name}"
     names = {option.flag[2:]: option.flag for option in (*command.options, *command.output) if not option.positional}
     names["help"] = "--help"  # --hlep (#42)
+    if (unknown[1:2].isdigit() or unknown[1:2] == ".") and any(option.positional and option.kind == TEXT for option in command.options):
+        return f"{message}: an argument that starts with a minus goes after -- (e.g. taucli {command.name} -- '-40 N*m' 'lbf*ft')"
     close = difflib.get_close_matches(unknown.lstrip("-").lower(), list(names), n=1, cutoff=0.6)  # --M1: flags are lower case
     return f"{message}; did you mean {names[close[0]]!r}?" if close else message
 

@@ -163,7 +163,7 @@ def text(command: Command) -> str:
         lines += ["", "Commands:"]
         lines += _definitions([(c.name, c.summary) for c in COMMANDS.values()], columns)
         return "\n".join(lines) + "\n"
-    arguments = " ".join(option.flag for option in command.options if option.positional)
+    arguments = " ".join(f"[{option.flag}]" if option.default else option.flag for option in command.options if option.positional)
     lines = [*_wrap(f"Usage: taucli {command.name} [OPTIONS]{' ' + arguments if arguments else ''}", columns, "", "  "), ""]
     lines += _paragraph(command.summary, columns)
     if command.description:
