@@ -80,5 +80,8 @@ def convert(*, env, quantity: str | None = None, unit: str | None = None, json: 
 
     number = fmt(done.value) if done.uncertainty is None else with_uncertainty(done.value, done.uncertainty)
     env.stdout.write(f"{' '.join(quantity.split())} = {number} {pretty_unit(done.unit)}".rstrip() + f"  ({done.kind})\n")
-    env.stdout.write("".join(f"note: {note}\n" for note in done.notes))
+    import textwrap  # deferred: as above
+
+    width = max(40, shutil.get_terminal_size((80, 24)).columns)  # wrapped as the scenes' notes are
+    env.stdout.write("".join(textwrap.fill(f"note: {note}", width, break_on_hyphens=False) + "\n" for note in done.notes))
     return 0
