@@ -6,10 +6,11 @@ with the row's measurement. A column is matched to the scene:
 
 - named by ``--x COLUMN[=OPTION]`` (OPTION defaults to ``time``) or ``--y COLUMN[=RESULT]``;
   either may carry a unit for a header that has none: ``--y "w=omega (rad/s)"``;
-- else by its name (the header without its unit): an option's name (``m1``, ``angle0``,
-  ``pulley_mass`` or ``pulley-mass``) is an input; ``t`` or ``time`` is ``--time`` where the
-  scene has no result called so; a result's name (``period``, ``omega``) is what was measured,
-  where ``--y`` does not say;
+- else by its name (the header without its unit): an option's
+  name (``m1``, ``angle0``, ``pulley_mass`` or ``pulley-mass``) is an input; ``t`` or ``time``
+  is ``--time`` where the scene has no result called so; a result's name (``period``,
+  ``omega``) is what was measured, where ``--y`` does not say; two columns for one input are
+  refused (columns.py);
 - a column matched to nothing is left out, with a note.
 
 A header's unit converts its column to SI with taucli's rules (``Time (ms)``; ``rpm`` is
@@ -26,13 +27,14 @@ from dataclasses import dataclass, field
 from taucli.quantities import units
 from taucli.quantities.kinds import BOUNDS
 from taucli.core.errors import InputError, did_you_mean
+from taucli.fit import columns
 from taucli.fit.data import Column, DataTable, split_header
+from taucli.fit.columns import TIME_NAMES, key as _key, quoted as _quoted
 from taucli.writing.report import fmt, pretty_unit
 from taucli.options.table import Command
 
 MAX_SAMPLES = 5000  # each sample is a solve of the scene, many times over: beyond this, --every or --range
 AMBIGUOUS = frozenset({"angle", "angular velocity", "angular acceleration"})  # a bare number is refused (docs/units.md)
-TIME_NAMES = ("t", "time")
 
 
 @dataclass(frozen=True)
@@ -79,10 +81,6 @@ class Samples:
     def varying(self) -> list[str]:
         """The inputs that differ between samples, in the order of the columns."""
         return [name for name, values in self.inputs.items() if len(set(values)) > 1]
-
-
-def _key(name: str) -> str:
-    return name.strip().lower().replace("-", "_").replace(" ", "_")
 
 
 def _spec(text: str, option: str) -> tuple[str, str | None, str]:
@@ -145,10 +143,12 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         column, target, unit = _spec(text, "x")
         header = _find(tables, column, "x")
         target = _option_target(command, target or "time", text)
+        columns.refuse_a_column_mapped_twice(chosen, header, target, "x")
         chosen[header] = (target, False, unit)
     if y is not None:
         column, target, unit = _spec(y, "y")
         header = _find(tables, column, "y")
+        columns.refuse_a_column_mapped_twice(chosen, header, target, "y")
         key = target or tables[0].column(header).name
         if command.result(_key(key)) is None and command.result(key) is None:
             keys = [result.key for result in command.results]
@@ -159,7 +159,7 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         chosen[header] = (key if command.result(key) is not None else _key(key), True, unit)
     sigma_header = _sigma_column(tables, sigma)
     _refuse_sigma_of_a_used_column(command, tables[0], chosen, sigma_header, y is not None)
-    unused = _match_the_rest(command, tables[0], chosen, sigma_header, y is not None, notes)
+    unused = columns.match_by_name(command, tables[0], chosen, sigma_header, y is not None, notes)
     results = [header for header, (_, is_result, _) in chosen.items() if is_result]
     if not results:
         names = ", ".join(repr(h) for h in headers)
@@ -185,7 +185,7 @@ def _refuse_sigma_of_a_used_column(command: Command, table: DataTable, chosen: d
         return
     used = dict(chosen)
     if sigma_header not in used:
-        _match_the_rest(command, table, used, None, y_given, [])  # what the column would be, were it not σ
+        columns.match_by_name(command, table, used, None, y_given, [])  # what the column would be, were it not σ
     others_measured = any(is_result for header, (_, is_result, _) in used.items() if header != sigma_header)
     if sigma_header in used and not (used[sigma_header][1] and others_measured):  # (named like a result beside the measured column: σ)
         target, is_result, _ = used[sigma_header]
@@ -209,10 +209,6 @@ def _refuse_one_run_beside_unused(command: Command, tables: list[DataTable], fou
                          "or leave the column out of the table")
 
 
-def _quoted(text: str) -> str:
-    return f"'{text}'" if re.search(r"[\s()\[\]*^?'\"]", text) else text
-
-
 def _option_target(command: Command, name: str, text: str) -> str:
     option = command.option(_key(name)) or command.option(name)
     if option is None or option.name not in command.input_names or not option.is_quantity or option.repeatable:
@@ -230,28 +226,6 @@ def _sigma_column(tables: list[DataTable], sigma: str | None) -> str | None:
     headers = [column.header for column in tables[0].columns]
     names = [column.name for column in tables[0].columns]
     return sigma.strip() if sigma.strip() in headers else headers[names.index(sigma.strip())] if sigma.strip() in names else None
-
-
-def _match_the_rest(command: Command, table: DataTable, chosen: dict, sigma_header: str | None, y_given: bool, notes: list[str]) -> list[str]:
-    """Match the columns --x and --y leave by their names; the headers of those left unused."""
-    unused = []
-    for column in table.columns:
-        if column.header in chosen or column.header == sigma_header:
-            continue
-        key = _key(column.name)
-        option = command.option(key)
-        result = command.result(column.name) or command.result(key)
-        if option is not None and option.name in command.input_names and option.is_quantity and not option.repeatable:
-            chosen[column.header] = (option.name, False, "")
-        elif key in TIME_NAMES and result is None and command.option("time") is not None and "time" not in {t for t, r, _ in chosen.values() if not r}:
-            chosen[column.header] = ("time", False, "")
-        elif result is not None and not y_given:
-            chosen[column.header] = (result.key, True, "")
-        else:
-            unused.append(column.header)
-    if unused:
-        notes.append(f"columns not used: {', '.join(repr(header) for header in unused)} (neither an input of {command.name} nor the result measured)")
-    return unused
 
 
 def _mapped(command: Command, column: Column, target: str, is_result: bool, unit: str, fitted, given, notes: list[str]) -> Mapped:

@@ -1,0 +1,129 @@
+"""#44: how taucli fit maps a file's columns to the scene, on the files labs have.
+
+- Two columns that would give one input (``length (m)`` and ``length (cm)``; ``t (s)`` and
+  ``time (ms)``) are refused, naming both, the input and the --x that picks one: taking both
+  interleaved them (sample i got row i//2's value) or crashed.
+
+The data: a wheel coasting under friction alone, ω(t) = ω₀ − (τ_f/I)t until it stops (written
+here in mpmath), and a shell rolling down a slope, t = √(2L(1 + k²)/(g sin θ)); Gaussian noise
+from fixed seeds. Every fit is checked within 3σ of the truth.
+"""
+
+from __future__ import annotations
+
+import io
+import random
+
+import mpmath
+import pytest
+
+import taucli.fit
+from conftest import assert_usage_error, run_taucli
+from taucli.core.errors import InputError
+from taucli.fit import data, samples
+from taucli.options import SCENES
+from taucli.quantities import units
+
+MP_DPS = 30
+INERTIA, OMEGA0, FRICTION = mpmath.mpf("0.1"), mpmath.mpf(30), mpmath.mpf("0.3")  # stops at ω₀I/τ_f = 10 s
+NOISE = 0.05  # rad/s
+TIMES = [0.25 * i for i in range(36)]  # 0 .. 8.75 s: before the stop
+
+
+def omega(t: float) -> float:
+    return float(OMEGA0 - FRICTION / INERTIA * mpmath.mpf(t))
+
+
+def coast(seed: int, times=TIMES) -> list[tuple[float, float]]:
+    """(t in s, ω in rad/s) of the coast, with noise."""
+    rng = random.Random(seed)
+    return [(t, omega(t) + rng.gauss(0.0, NOISE)) for t in times]
+
+
+def table(header: str, rows) -> str:
+    return header + "\n" + "".join(",".join(str(cell) for cell in row) + "\n" for row in rows)
+
+
+def fit_coast(text: str, **options):
+    """The report of friction and ω₀ fitted to ``text`` (as stdin), I given."""
+    return taucli.fit.fit("spin-down", "-", fit="friction,omega0", inertia="0.1 kg*m^2", stdin=io.StringIO(text), **options)
+
+
+def assert_friction_within_3_sigma(report) -> None:
+    value, sigma = report.results["friction"].value, report.uncertainties["friction"]
+    assert sigma > 0 and abs(value - float(FRICTION)) < 3 * sigma, (value, sigma)
+    assert abs(report.results["omega0"].value - float(OMEGA0)) < 3 * report.uncertainties["omega0"]
+
+
+def refused(run) -> str:
+    with pytest.raises(InputError) as caught:
+        run()
+    assert "\n" not in str(caught.value)
+    return str(caught.value)
+
+
+# Item 1: two columns for one input
+
+def test_two_time_columns_are_refused_naming_both_and_the_x_that_picks_one(tmp_path):
+    """Before: t (s) and time (ms) both appended to the times, and the fit crashed (exit 1, IndexError)."""
+    rows = [(t, 1000 * t, f"{w:.6f}") for t, w in coast(11)]
+    path = tmp_path / "coast.csv"
+    path.write_text(table("t (s),time (ms),omega (rad/s)", rows))
+    done = run_taucli("fit", "spin-down", str(path), "--inertia", "0.1kg*m^2", "--fit", "friction,omega0", "--get", "friction")
+    assert_usage_error(done, "columns 't (s)' and 'time (ms)' would both give --time for each sample", "pick one: --x 't (s)=time'")
+    report = fit_coast(path.read_text(), x="t (s)")  # the way out the message gives
+    assert_friction_within_3_sigma(report)
+    assert "column 'time (ms)' not used: --x gives time from column 't (s)'" in report.notes
+
+
+def rolling_time(length: float, angle_deg: float, k2) -> float:
+    g = mpmath.mpf("9.80665")
+    return float(mpmath.sqrt(2 * mpmath.mpf(length) * (1 + k2) / (g * mpmath.sin(mpmath.radians(angle_deg)))))
+
+
+def test_a_length_in_metres_and_in_centimetres_is_refused_not_interleaved():
+    """The issue's runs table: before, both columns appended to length and k² came out wrong, exit 0."""
+    k2, rng = mpmath.mpf(2) / 3, random.Random(6)  # a thin shell
+    rows = [(a, L, round(100 * L, 6), f"{rolling_time(L, a, k2) + rng.gauss(0, 0.003):.6f}") for a in (4, 8, 12, 16) for L in (0.5, 1.0)]
+    text = table("angle (deg),length (m),length (cm),t (s)", rows)
+    said = refused(lambda: taucli.fit.fit("rolling", "-", fit="k2", stdin=io.StringIO(text)))
+    assert "columns 'length (m)' and 'length (cm)' would both give length for each sample" in said
+    assert "pick one: x 'length (m)=length'" in said
+    report = taucli.fit.fit("rolling", "-", fit="k2", x="length (cm)=length", stdin=io.StringIO(text))
+    assert abs(report.results["k2"].value - float(k2)) < 3 * report.uncertainties["k2"]
+
+
+def _name_matched_inputs(command):
+    """Each input a column's name gives (the options the name matching takes, and --time as t)."""
+    return [option.name for option in command.options
+            if option.name in command.input_names and option.is_quantity and not option.repeatable]
+
+
+@pytest.mark.parametrize("scene", sorted(SCENES))
+def test_in_every_scene_two_columns_named_for_one_input_are_refused(scene):
+    """The class: every input of every scene, spelled two ways a header may spell it (pulley_mass
+    and PULLEY-MASS, each in its SI unit), beside a result measured: never both taken (the old
+    tree took both, two values of the input for one row)."""
+    command = SCENES[scene]
+    result = next(r for r in command.results if r.unit and command.option(r.key) is None and r.key not in ("t", "time"))
+    measured = f"{result.key} ({result.unit})"
+
+    def build(first: str, second: str):
+        text = f"{first},{second},{measured}\n1,1,1\n"
+        with pytest.raises(InputError) as caught:
+            samples.build(command, [data.read("-", io.StringIO(text))])
+        return str(caught.value)
+
+    for name in _name_matched_inputs(command):
+        unit = units.KINDS[command.option(name).kind].si_unit
+        said = build(f"{name} ({unit})" if unit else name, f"{name.replace('_', '-').upper()} [{unit}]" if unit else name.upper())
+        assert f"would both give {name} for each sample" in said and "pick one: x" in said, (scene, name, said)
+    if command.option("time") is not None and command.result("t") is None:
+        assert "columns 'Time (s)' and 't' would both give time" in build("Time (s)", "t")
+
+
+def test_x_giving_one_input_two_columns_is_refused_and_x_naming_a_column_twice_too():
+    text = table("a (s),b (s),omega (rad/s)", [(t, t, w) for t, w in coast(1, TIMES[:5])])
+    assert "x: gives time from two columns, 'a (s)' and 'b (s)'" in refused(lambda: fit_coast(text, x=["a (s)", "b (s)=time"]))
+    assert "x: names column 'a (s)' again" in refused(lambda: fit_coast(text, x=["a (s)", "a (s)=omega0"]))
+    assert "y: names column 'a (s)' again" in refused(lambda: fit_coast(text, x=["a (s)"], y="a (s)=omega"))
