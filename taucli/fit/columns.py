@@ -1,5 +1,16 @@
-"""How a table's columns map to the scene:
+"""How a table's columns map to the scene: what a header tells beyond its unit
+(csv_text.split_header reads the unit), and the rules that follow from it:
 
+- A run mark: PASCO writes ``Time (ms) Run #1``, Vernier ``Run 1: Time (s)``. Where every marked
+  column of a table is of one run, the mark is left out of the names (``Time``), so the columns
+  match the scene by name as an unmarked export does; the header is kept as written. Columns of
+  several runs keep their marks (their names then differ).
+- A column with no unit (none in its header, none in the mapping that names it) is read in SI
+  only where its name is the input's or the result's own (``t`` or ``time`` for --time, ``m1``,
+  ``omega``), with a note; any other name is refused, naming the mapping that gives it a unit:
+  a bare ``millis`` column read as seconds is a wrong number where a refusal is possible. An
+  angle or an angular speed with no unit is refused whatever its name (radians or degrees?), as a
+  bare number for ``--angle`` is. A pure number (k², μ) has no unit to read.
 - A column is matched to the scene by --x and --y, else by its name (match_by_name: an option's
   name, ``t`` or ``time`` for --time, a result's name). Two columns that would give one input
   (``length (m)`` and ``length (cm)``; ``t (s)`` and ``time (s)``) are refused, naming both and
@@ -7,19 +18,25 @@
   interleave them); a column named like an input that --x gives from another is left out, with
   a note.
 
-Plain Python: no numpy, no pint.
+Plain Python: no numpy, no pint (the units are read by taucli.quantities.units).
 """
 
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 from taucli.core.errors import InputError
 from taucli.fit.data import Column, DataTable
 from taucli.options.table import Command
+from taucli.quantities import units
+from taucli.writing.report import pretty_unit
 
 TIME_NAMES = ("t", "time")
+AMBIGUOUS = frozenset({"angle", "angular velocity", "angular acceleration"})  # a bare number is refused (docs/units.md)
 
+_RUN_AFTER = re.compile(r"\s*\bRun\s*#?\s*(\d+)\s*$", re.IGNORECASE)  # PASCO: "Time Run #1"
+_RUN_BEFORE = re.compile(r"^\s*Run\s*#?\s*(\d+)\s*:\s*", re.IGNORECASE)  # Vernier: "Run 1: Time"
 
 
 def key(name: str) -> str:
@@ -30,6 +47,50 @@ def key(name: str) -> str:
 def quoted(text: str) -> str:
     """``text`` as typed in bash, zsh and fish: in single quotes where it holds a space or ( ) [ ] * ^ ?."""
     return f"'{text}'" if re.search(r"[\s()\[\]*^?'\"]", text) else text
+
+
+def run_of(name: str) -> tuple[str, str | None]:
+    """(the name without its run mark, the run's number) from "Time Run #1" or "Run 1: Time";
+    (name, None) where it has none."""
+    for mark in (_RUN_AFTER, _RUN_BEFORE):
+        found = mark.search(name)
+        if found is not None and (rest := (name[:found.start()] + name[found.end():]).strip()):
+            return rest, found[1]
+    return name, None
+
+
+def one_run_named(table: DataTable) -> DataTable:
+    """``table`` with its columns named without their run mark, where every marked column is of one run."""
+    runs = {run_of(column.name)[1] for column in table.columns} - {None}
+    if len(runs) != 1:
+        return table
+    return replace(table, columns=tuple(replace(column, name=run_of(column.name)[0]) for column in table.columns))
+
+
+def own_name(name: str, target: str, is_result: bool) -> bool:
+    """Whether a column called ``name`` is named as the input or result ``target`` itself is."""
+    return key(name) == key(target) or (not is_result and target == "time" and key(name) in TIME_NAMES)
+
+
+def bare_factor(column: Column, target: str, is_result: bool, kind: str | None, si_unit: str, label: str, notes: list[str]) -> float:
+    """SI per unit of a used column that names no unit (see the module's rule): 1, with a note,
+    or a usage error naming the mapping that gives it a unit."""
+    if kind in AMBIGUOUS:
+        example = {"angle": "theta (rad)", "angular velocity": "omega (rad/s)"}.get(kind, "alpha (rad/s^2)")
+        raise InputError("data", f"column {column.header!r} ({label}) has no unit, and a bare number is ambiguous for {units.article(kind)} "
+                         "(radians or degrees, rad/s or rpm)", hint=f"write its unit in the header, e.g. {example}")
+    if not si_unit:
+        return 1.0  # a pure number: nothing to read
+    shown = pretty_unit(si_unit)
+    if not own_name(column.name, target, is_result):
+        common = units.KINDS[kind].common_units if kind in units.KINDS else ()
+        example = (common[1] if len(common) > 1 else si_unit).replace("**", "^")
+        option = "y" if is_result else "x"
+        own = " or ".join(TIME_NAMES) if target == "time" and not is_result else target
+        raise InputError("data", f"column {column.header!r} ({label}) has no unit, and only a column named {own} is read in SI ({shown}) without one",
+                         hint=f"give the unit its numbers are in: {{{option}}} {quoted(column.header + '=' + target + ' (' + example + ')')}")
+    notes.append(f"column {column.header!r} has no unit: read in {shown}, the SI unit of {label}")
+    return 1.0
 
 
 def refuse_two_for_one(first: str, second: str, target: str, explicit: bool) -> None:

@@ -6,7 +6,7 @@ with the row's measurement. A column is matched to the scene:
 
 - named by ``--x COLUMN[=OPTION]`` (OPTION defaults to ``time``) or ``--y COLUMN[=RESULT]``;
   either may carry a unit for a header that has none: ``--y "w=omega (rad/s)"``;
-- else by its name (the header without its unit): an option's
+- else by its name (the header without its unit, and without a single run's mark): an option's
   name (``m1``, ``angle0``, ``pulley_mass`` or ``pulley-mass``) is an input; ``t`` or ``time``
   is ``--time`` where the scene has no result called so; a result's name (``period``,
   ``omega``) is what was measured, where ``--y`` does not say; two columns for one input are
@@ -14,8 +14,9 @@ with the row's measurement. A column is matched to the scene:
 - a column matched to nothing is left out, with a note.
 
 A header's unit converts its column to SI with taucli's rules (``Time (ms)``; ``rpm`` is
-revolutions, with a note). A column of angles or angular speeds with no unit is refused, as a
-bare number for ``--angle`` is.
+revolutions, with a note). A used column with no unit is SI only where its name is the input's
+or result's own, with a note; angles and angular speeds with no unit are refused, as a bare
+number for ``--angle`` is (columns.py).
 """
 
 from __future__ import annotations
@@ -34,7 +35,6 @@ from taucli.writing.report import fmt, pretty_unit
 from taucli.options.table import Command
 
 MAX_SAMPLES = 5000  # each sample is a solve of the scene, many times over: beyond this, --every or --range
-AMBIGUOUS = frozenset({"angle", "angular velocity", "angular acceleration"})  # a bare number is refused (docs/units.md)
 
 
 @dataclass(frozen=True)
@@ -106,14 +106,11 @@ def _find(tables: list[DataTable], wanted: str, option: str) -> str:
                      hint=did_you_mean(wanted, headers))
 
 
-def _factor(column: Column, unit: str, kind: str | None, si_unit: str, label: str, notes: list[str]) -> float:
-    """SI per unit of the column (its header's unit, or the unit its mapping gives)."""
+def _factor(column: Column, unit: str, kind: str | None, si_unit: str, label: str, notes: list[str], target: str = "", is_result: bool = False) -> float:
+    """SI per unit of the column (its header's unit, or the unit its mapping gives; with neither,
+    columns.bare_factor's rule for the input or result ``target``)."""
     if not unit:
-        if kind in AMBIGUOUS:
-            example = {"angle": "theta (rad)", "angular velocity": "omega (rad/s)"}.get(kind, "alpha (rad/s^2)")
-            raise InputError("data", f"column {column.header!r} ({label}) has no unit, and a bare number is ambiguous for {units.article(kind)} "
-                             "(radians or degrees, rad/s or rpm)", hint=f"write its unit in the header, e.g. {example}")
-        return 1.0
+        return columns.bare_factor(column, target, is_result, kind, si_unit, label, notes)
     where = f"column {column.header!r}"
     if kind is not None:
         parsed = units.parse(f"1 {unit}", where, kind, sign="positive")
@@ -138,6 +135,7 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         if [column.header for column in table.columns] != headers:
             raise InputError("data", f"{table.source} names other columns than {tables[0].source}: every file of one fit has the same columns",
                              got=", ".join(repr(column.header) for column in table.columns))
+    tables = [columns.one_run_named(table) for table in tables]
     chosen: dict[str, tuple[str, bool, str]] = {}  # header -> (target, is_result, unit given by the mapping)
     for text in x or ():
         column, target, unit = _spec(text, "x")
@@ -238,7 +236,7 @@ def _mapped(command: Command, column: Column, target: str, is_result: bool, unit
             raise InputError("y", f"expected a result that is a number; {target} is yes or no", got=repr(column.header))
         kind = _kind_of_result(result.unit)
         try:
-            factor = _factor(column, unit, kind, result.unit, f"the result {target}", notes)
+            factor = _factor(column, unit, kind, result.unit, f"the result {target}", notes, target, True)
         except InputError as err:
             if not unit or err.option != f"column {column.header!r}":
                 raise
@@ -252,7 +250,7 @@ def _mapped(command: Command, column: Column, target: str, is_result: bool, unit
         raise InputError("data", f"column {column.header!r} gives {{{target}}} for each sample, and {{{target}}} is given as well: one or the other")
     option = command.option(target)
     try:
-        factor = _factor(column, unit, option.kind, units.KINDS[option.kind].si_unit, f"--{target.replace('_', '-')}", notes)
+        factor = _factor(column, unit, option.kind, units.KINDS[option.kind].si_unit, f"--{target.replace('_', '-')}", notes, target)
     except InputError as err:
         if not unit or err.option != f"column {column.header!r}":
             raise

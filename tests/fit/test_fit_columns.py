@@ -3,6 +3,9 @@
 - Two columns that would give one input (``length (m)`` and ``length (cm)``; ``t (s)`` and
   ``time (ms)``) are refused, naming both, the input and the --x that picks one: taking both
   interleaved them (sample i got row i//2's value) or crashed.
+- A header's unit is read wherever it stands (PASCO's ``Time (ms) Run #1`` was read as seconds);
+  a used column with no unit is SI only where its name is the input's or result's own, with a
+  note, and refused otherwise, naming the mapping that gives it a unit (a bare ``millis`` column).
 
 The data: a wheel coasting under friction alone, ω(t) = ω₀ − (τ_f/I)t until it stops (written
 here in mpmath), and a shell rolling down a slope, t = √(2L(1 + k²)/(g sin θ)); Gaussian noise
@@ -19,6 +22,7 @@ import pytest
 
 import taucli.fit
 from conftest import assert_usage_error, run_taucli
+from taucli.answering.profile import read_profile
 from taucli.core.errors import InputError
 from taucli.fit import data, samples
 from taucli.options import SCENES
@@ -127,3 +131,87 @@ def test_x_giving_one_input_two_columns_is_refused_and_x_naming_a_column_twice_t
     assert "x: gives time from two columns, 'a (s)' and 'b (s)'" in refused(lambda: fit_coast(text, x=["a (s)", "b (s)=time"]))
     assert "x: names column 'a (s)' again" in refused(lambda: fit_coast(text, x=["a (s)", "a (s)=omega0"]))
     assert "y: names column 'a (s)' again" in refused(lambda: fit_coast(text, x=["a (s)"], y="a (s)=omega"))
+
+
+# Item 2: a unit after words, and columns with no unit
+
+@pytest.mark.parametrize("header,options", [
+    ("Time (ms) Run #1,Angular Velocity (rad/s) Run #1", {"x": "Time (ms) Run #1", "y": "Angular Velocity (rad/s) Run #1=omega"}),
+    ("Time (ms) Run #1,Angular Velocity (rad/s) Run #1", {"y": "Angular Velocity=omega"}),  # Time is --time by its name
+    ("Run 1: Time (ms),Run 1: omega (rad/s)", {}),  # Vernier's mark: every column matched by name
+    ("time [ms] run 1,omega [rad/s] run 1", {}),
+])  # fmt: skip
+def test_a_unit_after_words_is_read_pascos_time_in_milliseconds(header, options):
+    """Before: 'Time (ms) Run #1' named no unit and was read as seconds: friction 3.0e-4 for 0.3 N·m,
+    t_stop 9,981 s; or the headers were not matched at all."""
+    report = fit_coast(table(header, [(f"{1000 * t:g}", f"{w:.6f}") for t, w in coast(2)]), **options)
+    assert_friction_within_3_sigma(report)
+    assert abs(report.results["t_stop"].value - 10) < 3 * report.uncertainties["t_stop"]
+
+
+def test_a_bare_millis_column_is_refused_naming_the_mapping_that_gives_it_a_unit(tmp_path):
+    """Before: --x millis read milliseconds as seconds, exit 0."""
+    path = tmp_path / "logger.csv"
+    path.write_text(table("millis,omega (rad/s)", [(f"{1000 * t:g}", f"{w:.6f}") for t, w in coast(3)]))
+    done = run_taucli("fit", "spin-down", str(path), "--x", "millis", "--inertia", "0.1kg*m^2", "--fit", "friction,omega0", "--get", "friction")
+    assert_usage_error(done, "column 'millis' (--time) has no unit, and only a column named t or time is read in SI (s) without one",
+                       "give the unit its numbers are in: --x 'millis=time (ms)'")
+    assert_friction_within_3_sigma(fit_coast(path.read_text(), x="millis=time (ms)"))
+
+
+@pytest.mark.parametrize("name", ["t", "time", "Time", "T"])
+def test_a_column_named_as_its_input_is_si_without_a_unit_and_says_so(name):
+    report = fit_coast(table(f"{name},omega (rad/s)", [(t, f"{w:.6f}") for t, w in coast(4)]))
+    assert_friction_within_3_sigma(report)
+    assert f"column '{name}' has no unit: read in s, the SI unit of --time" in report.notes
+
+
+def test_a_result_with_no_unit_is_si_under_its_own_name_and_refused_under_another():
+    rows = "m1 (g),m2 (g),{}\n207,200,4.06\n206,201,5.00\n"
+    found = samples.build(SCENES["atwood"], [data.read("-", io.StringIO(rows.format("t")))])
+    assert found.y == [4.06, 5.0] and "column 't' has no unit: read in s, the SI unit of the result t" in found.notes
+    with pytest.raises(InputError, match=r"column 'secs' \(the result t\) has no unit, and only a column named t is read in SI \(s\) without one; "
+                                         r"give the unit its numbers are in: y 'secs=t \(ms\)'"):
+        samples.build(SCENES["atwood"], [data.read("-", io.StringIO(rows.format("secs")))], y="secs=t")
+    pure = samples.build(SCENES["rolling"], [data.read("-", io.StringIO("angle (deg),ratio,t (s)\n10,0.4,1\n"))], x=("ratio=k2",))
+    assert pure.inputs["k2"] == [0.4] and not any("ratio" in note for note in pure.notes)  # a pure number has no unit to read
+
+
+NAMES = ["pulley_mass", "pulley-mass", "Pulley Mass", "PULLEY-MASS"]
+UNITS = ["(g)", "[g]", "( g )", "(g )"]
+PLACES = ["{name} {unit}", "{name}{unit}", "{name} {unit} Run #1", "Run 1: {name} {unit}", '"{name} {unit}"', "{name} {unit} run 3"]
+
+
+@pytest.mark.parametrize("place", PLACES)
+@pytest.mark.parametrize("unit", UNITS)
+@pytest.mark.parametrize("name", NAMES)
+def test_every_way_a_header_names_a_column_gives_the_same_input_in_the_same_unit(name, unit, place):
+    """The class: the name forms the reader takes × the unit forms × where the unit stands (and a
+    single run's mark), matched by name and by --x alike, with every separator."""
+    header = place.format(name=name, unit=unit)
+    for separator in (",", ";", "\t"):
+        text = separator.join(["m1 (g)", "m2 (g)", header, "t (s)"]) + "\n" + separator.join(["207", "200", "50", "4.06"]) + "\n"
+        by_name = samples.build(SCENES["atwood"], [data.read("-", io.StringIO(text))])
+        assert by_name.inputs["pulley_mass"] == pytest.approx([0.05], rel=1e-15), (header, separator)
+        written = header.strip('"')
+        by_x = samples.build(SCENES["atwood"], [data.read("-", io.StringIO(text))], x=(f"{written}=pulley_mass",))
+        assert by_x.inputs["pulley_mass"] == pytest.approx([0.05], rel=1e-15)
+
+
+@pytest.mark.parametrize("place", [p for p in PLACES if "Run" not in p and "run" not in p] + ["{name} {unit} Run #1"])
+@pytest.mark.parametrize("unit", ["(ms)", "[ms]", "( ms )"])
+def test_a_torque_profile_reads_a_headers_unit_where_fit_does(place, unit):
+    """csv_text.split_header is the one reader of a header's unit, for --torque-profile too."""
+    header = place.format(name="t", unit=unit)
+    profile = read_profile([f"{header},torque (N*m)\n", "0,1\n", "2,3\n"])
+    assert list(profile.samples) == [(0.0, 1.0), (0.002, 3.0)]
+
+
+def test_several_runs_keep_their_marks_so_their_names_differ():
+    text = "Time (s) Run #1,omega (rad/s) Run #1,Time (s) Run #2,omega (rad/s) Run #2\n0,30,0,20\n1,27,1,18\n"
+    from taucli.fit import columns  # (new in #44: imported here so that the other tests run on the old tree)
+
+    found = data.read("-", io.StringIO(text))
+    assert [column.name for column in columns.one_run_named(found).columns] == ["Time Run #1", "omega Run #1", "Time Run #2", "omega Run #2"]
+    one = samples.build(SCENES["spin-down"], [found], x=("Time Run #2",), y="omega Run #2=omega")
+    assert one.inputs == {"time": [0.0, 1.0]} and one.y == [20.0, 18.0]
