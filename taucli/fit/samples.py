@@ -16,7 +16,8 @@ with the row's measurement. A column is matched to the scene:
 A header's unit converts its column to SI with taucli's rules (``Time (ms)``; ``rpm`` is
 revolutions, with a note). A used column with no unit is SI only where its name is the input's
 or result's own, with a note; angles and angular speeds with no unit are refused, as a bare
-number for ``--angle`` is (columns.py).
+number for ``--angle`` is (columns.py). A row with a blank or NaN cell in a column the fit uses
+is no measurement: it is left out, and a note counts it.
 """
 
 from __future__ import annotations
@@ -63,6 +64,7 @@ class Samples:
     y_column: Mapped | None = None
     places: list[tuple[str, int]] = field(default_factory=list)  # (file, line) of each sample
     outside: int = 0  # left out by --range
+    empty: list[tuple[str, int]] = field(default_factory=list)  # (file, line) of each row left out for a blank or NaN cell the fit uses
     thinned: int = 0  # left out by --every
     notes: list[str] = field(default_factory=list)
 
@@ -198,7 +200,7 @@ def _refuse_one_run_beside_unused(command: Command, tables: list[DataTable], fou
     (an amplitude, a mass), and fitting the runs as repeats of one would give a wrong number."""
     if found.varying or found.count < 2:
         return
-    varies = [header for header in unused if len({value for table in tables for value in table.column(header).values}) > 1]
+    varies = [header for header in unused if len({value for table in tables for value in table.column(header).values if not math.isnan(value)}) > 1]
     if varies:
         listed = ", ".join(repr(header) for header in varies)
         raise InputError("x", f"is needed: every sample is the same run of {command.name} (no column gives an input that differs between them), "
@@ -267,8 +269,12 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
     samples = Samples(y_column.target, y_column.si_unit, [], {m.target: [] for m in inputs_mapped}, [] if sigma is not None else None,
                       sigma_source, inputs_mapped, y_column, notes=notes)
     kept_in_window = 0
+    used = [m.column.header for m in (y_column, *inputs_mapped)] + ([sigma_header] if sigma_header is not None else [])
     for table in tables:
         for i, line in enumerate(table.lines):
+            if any(math.isnan(table.column(header).values[i]) for header in used):
+                samples.empty.append((table.source, line))  # no measurement: not a sample (data.py reads a blank or NaN cell so)
+                continue
             cells = {m.target: table.column(m.column.header).values[i] * m.factor for m in (y_column, *inputs_mapped)}
             if any(not low <= cells[name] <= high for name, low, high in windows):
                 samples.outside += 1
@@ -295,10 +301,28 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
             elif sigma_value is not None:
                 samples.sigma.append(sigma_value)
             samples.places.append((table.source, line))
+    _note_the_empty_rows(samples, used, len(tables) > 1)
     if samples.count > MAX_SAMPLES:
         raise InputError("data", f"gives {samples.count} samples, and fit takes at most {MAX_SAMPLES} (each is a solve of the scene, many times over)",
                          hint=f"thin them with --every {math.ceil(samples.count / MAX_SAMPLES)}, or fit a window with --range")
     return samples
+
+
+def _note_the_empty_rows(samples: Samples, used: list[str], files: bool) -> None:
+    """A note of the rows left out for a blank or NaN cell in a column the fit uses; a usage error
+    where that leaves no sample."""
+    if not samples.empty:
+        return
+    listed = ", ".join(repr(header) for header in used)
+    if not samples.count and not samples.outside:
+        raise InputError("data", f"has no row with a number in every column the fit uses ({listed}): each is blank or NaN in some row",
+                         hint="fill the cells, or map other columns with --x and --y")
+    count = len(samples.empty)
+    shown = samples.empty[:3]
+    places = ", ".join(f"{source} line {line}" if files else str(line) for source, line in shown)
+    places = ("" if files else "line " if count == 1 else "lines ") + places + (f", … ({count} in all)" if count > len(shown) else "")
+    samples.notes.append(f"{count} row{'s' if count != 1 else ''} left out ({places}): a column the fit uses ({listed}) is blank or NaN there, "
+                         "no measurement")
 
 
 def _check_unit_made(value: float, given: float, source: str, line: int, header: str) -> None:

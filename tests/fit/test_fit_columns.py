@@ -1,4 +1,4 @@
-"""#44: how taucli fit maps a file's columns to the scene, on the files labs have.
+"""#44 items 1, 2 and 8: how taucli fit maps a file's columns to the scene, on the files labs have.
 
 - Two columns that would give one input (``length (m)`` and ``length (cm)``; ``t (s)`` and
   ``time (ms)``) are refused, naming both, the input and the --x that picks one: taking both
@@ -6,6 +6,9 @@
 - A header's unit is read wherever it stands (PASCO's ``Time (ms) Run #1`` was read as seconds);
   a used column with no unit is SI only where its name is the input's or result's own, with a
   note, and refused otherwise, naming the mapping that gives it a unit (a bare ``millis`` column).
+- A blank or NaN cell (phyphox pads with NaN, Vernier and PASCO pad shorter runs with blanks) is
+  no measurement: the rows whose used cells hold one are left out and counted in a note; an
+  unused column's never refuses the file.
 
 The data: a wheel coasting under friction alone, ω(t) = ω₀ − (τ_f/I)t until it stops (written
 here in mpmath), and a shell rolling down a slope, t = √(2L(1 + k²)/(g sin θ)); Gaussian noise
@@ -15,6 +18,7 @@ from fixed seeds. Every fit is checked within 3σ of the truth.
 from __future__ import annotations
 
 import io
+import math
 import random
 
 import mpmath
@@ -215,3 +219,60 @@ def test_several_runs_keep_their_marks_so_their_names_differ():
     assert [column.name for column in columns.one_run_named(found).columns] == ["Time Run #1", "omega Run #1", "Time Run #2", "omega Run #2"]
     one = samples.build(SCENES["spin-down"], [found], x=("Time Run #2",), y="omega Run #2=omega")
     assert one.inputs == {"time": [0.0, 1.0]} and one.y == [20.0, 18.0]
+
+
+# Item 8: blank and NaN cells
+
+def test_a_phyphox_export_padded_with_nan_is_fitted_and_the_rows_left_out_counted():
+    """Before: any NaN refused the whole file, in a column used or not."""
+    lines = ['"Time (s)","Gyroscope z (rad/s)","Gyroscope x (rad/s)","Pressure (hPa)"']
+    for i, (t, w) in enumerate(coast(5)):
+        lines.append(f"{t:.9E},{w:.9E},{'NaN' if i % 4 else '1.0E-2'},{'NaN' if i else '1013.2'}")
+    lines += ["NaN,NaN,NaN,NaN", "9.25E0,NaN,NaN,NaN"]  # the sensor stopped before the clock
+    report = fit_coast("\n".join(lines) + "\n", x="Time (s)", y="Gyroscope z (rad/s)=omega")
+    assert_friction_within_3_sigma(report)
+    assert report.results["samples"].value == len(TIMES)
+    assert any(note.startswith("2 rows left out (lines 38, 39): a column the fit uses ('Gyroscope z (rad/s)', 'Time (s)') is blank or NaN there")
+               for note in report.notes), report.notes
+
+
+def test_vernier_runs_of_different_lengths_padded_with_blanks_are_each_fitted():
+    first, second = coast(8), coast(9, TIMES[:20])
+    header = "Run 1: Time (s),Run 1: Angular velocity (rad/s),Run 2: Time (s),Run 2: Angular velocity (rad/s)"
+    rows = [(t1, f"{w1:.6f}", *((t2, f"{w2:.6f}") if i < len(second) else ("", ""))) for i, ((t1, w1), (t2, w2)) in
+            enumerate(zip(first, second + first[len(second):]))]
+    text = table(header, rows)
+    run1 = fit_coast(text, x="Run 1: Time (s)", y="Run 1: Angular velocity (rad/s)=omega")
+    assert_friction_within_3_sigma(run1)
+    assert run1.results["samples"].value == len(first) and not any("left out (" in note for note in run1.notes)
+    run2 = fit_coast(text, x="Run 2: Time", y="Run 2: Angular velocity=omega")
+    assert_friction_within_3_sigma(run2)
+    assert run2.results["samples"].value == len(second)
+    assert f"{len(first) - len(second)} rows left out (lines 22, 23, 24, … ({len(first) - len(second)} in all))" in " ".join(run2.notes)
+
+
+@pytest.mark.parametrize("empty", ["", "NaN", "nan", " "])
+def test_a_blank_or_nan_used_cell_in_the_middle_is_skipped_and_counted_and_text_is_refused_with_its_line(empty, tmp_path):
+    rows = [(t, f"{w:.6f}") for t, w in coast(10)]
+    rows[7] = (rows[7][0], empty)
+    rows[20] = (empty, rows[20][1])
+    report = fit_coast(table("t (s),omega (rad/s)", rows))
+    assert_friction_within_3_sigma(report)
+    assert report.results["samples"].value == len(TIMES) - 2 and report.results["dropped"].value == 0
+    assert any(note.startswith("2 rows left out (lines 9, 22)") for note in report.notes)
+    rows[7] = (rows[7][0], "n/a")
+    path = tmp_path / "coast.csv"
+    path.write_text(table("t (s),omega (rad/s)", rows))
+    done = run_taucli("fit", "spin-down", str(path), "--inertia", "0.1kg*m^2", "--fit", "friction,omega0")
+    assert_usage_error(done, "coast.csv line 9: expected a number in column 'omega (rad/s)', got 'n/a'")
+
+
+def test_empty_rows_are_not_samples_for_every_nor_range_and_a_table_of_none_is_refused():
+    rows = [(t, f"{w:.6f}" if i % 2 else "NaN") for i, (t, w) in enumerate(coast(12))]
+    found = samples.build(SCENES["spin-down"], [data.read("-", io.StringIO(table("t (s),omega (rad/s)", rows)))], every="2", ranges=("t=..5s",))
+    assert found.inputs["time"] == [0.25, 0.75, 1.25, 1.75, 2.25, 2.75, 3.25, 3.75, 4.25, 4.75][::2]
+    assert (len(found.empty), found.outside, found.thinned) == (18, 8, 5)
+    with pytest.raises(InputError, match=r"has no row with a number in every column the fit uses \('omega \(rad/s\)', 't \(s\)'\)"):
+        samples.build(SCENES["spin-down"], [data.read("-", io.StringIO("t (s),omega (rad/s),u\n0,,1\n1,NaN,2\n"))])
+    runs = samples.build(SCENES["atwood"], [data.read("-", io.StringIO("note,t (s)\nNaN,4.06\n,4.03\nNaN,3.88\n"))])
+    assert runs.count == 3 and math.isnan(data.read("-", io.StringIO("note,t (s)\nNaN,4.06\n")).columns[0].values[0])
