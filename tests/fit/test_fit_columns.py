@@ -181,25 +181,37 @@ def test_a_result_with_no_unit_is_si_under_its_own_name_and_refused_under_anothe
     assert pure.inputs["k2"] == [0.4] and not any("ratio" in note for note in pure.notes)  # a pure number has no unit to read
 
 
-NAMES = ["pulley_mass", "pulley-mass", "Pulley Mass", "PULLEY-MASS"]
-UNITS = ["(g)", "[g]", "( g )", "(g )"]
+# What each matching names, the name forms the reader takes for it, its unit, and the table around it
+# ({} the header under test, its cell 50 in that unit).
+TARGETS = {
+    "input": ("atwood", "pulley_mass", ["pulley_mass", "pulley-mass", "Pulley Mass", "PULLEY-MASS"], "g", 0.05, ["m1 (g)", "m2 (g)", "{}", "t (s)"], ["207", "200", "50", "4.06"]),
+    "time": ("spin-down", "time", ["t", "time", "Time", "T"], "ms", 0.05, ["{}", "omega (rad/s)"], ["50", "3"]),
+    "result": ("atwood", "t", ["t", "T"], "ms", 0.05, ["m1 (g)", "m2 (g)", "{}"], ["207", "200", "50"]),
+}
+UNIT_FORMS = ["({})", "[{}]", "( {} )", "({} )"]
 PLACES = ["{name} {unit}", "{name}{unit}", "{name} {unit} Run #1", "Run 1: {name} {unit}", '"{name} {unit}"', "{name} {unit} run 3"]
 
 
 @pytest.mark.parametrize("place", PLACES)
-@pytest.mark.parametrize("unit", UNITS)
-@pytest.mark.parametrize("name", NAMES)
-def test_every_way_a_header_names_a_column_gives_the_same_input_in_the_same_unit(name, unit, place):
-    """The class: the name forms the reader takes × the unit forms × where the unit stands (and a
-    single run's mark), matched by name and by --x alike, with every separator."""
-    header = place.format(name=name, unit=unit)
-    for separator in (",", ";", "\t"):
-        text = separator.join(["m1 (g)", "m2 (g)", header, "t (s)"]) + "\n" + separator.join(["207", "200", "50", "4.06"]) + "\n"
-        by_name = samples.build(SCENES["atwood"], [data.read("-", io.StringIO(text))])
-        assert by_name.inputs["pulley_mass"] == pytest.approx([0.05], rel=1e-15), (header, separator)
-        written = header.strip('"')
-        by_x = samples.build(SCENES["atwood"], [data.read("-", io.StringIO(text))], x=(f"{written}=pulley_mass",))
-        assert by_x.inputs["pulley_mass"] == pytest.approx([0.05], rel=1e-15)
+@pytest.mark.parametrize("unit_form", UNIT_FORMS)
+@pytest.mark.parametrize("target", sorted(TARGETS))
+def test_every_way_a_header_names_a_column_gives_the_same_input_in_the_same_unit(target, unit_form, place):
+    """The class: for an input, --time and a result, each name form the reader takes × each unit
+    form × where the unit stands (and a single run's mark) × each separator gives the same input
+    (or result) in the same unit, matched by name and by --x or --y alike."""
+    scene, key, names, unit, expected, cells, values = TARGETS[target]
+    command = SCENES[scene]
+    for name in names:
+        header = place.format(name=name, unit=unit_form.format(unit))
+        for separator in (",", ";", "\t"):
+            text = separator.join(cell.format(header) for cell in cells) + "\n" + separator.join(values) + "\n"
+            by_name = samples.build(command, [data.read("-", io.StringIO(text))])
+            mapped = {"x": (f"{header.strip(chr(34))}={key}",)} if target != "result" else {"y": f"{header.strip(chr(34))}={key}"}
+            by_mapping = samples.build(command, [data.read("-", io.StringIO(text))], **mapped)
+            for found in (by_name, by_mapping):
+                got = found.y if target == "result" else found.inputs[key]
+                assert got == pytest.approx([expected], rel=1e-15), (header, separator, found.notes)
+                assert (found.y_key == key) if target == "result" else (found.y_key != key)
 
 
 @pytest.mark.parametrize("place", [p for p in PLACES if "Run" not in p and "run" not in p] + ["{name} {unit} Run #1"])
