@@ -45,8 +45,11 @@ def key(name: str) -> str:
 
 
 def quoted(text: str) -> str:
-    """``text`` as typed in bash, zsh and fish: in single quotes where it holds a space or ( ) [ ] * ^ ?."""
-    return f"'{text}'" if re.search(r"[\s()\[\]*^?'\"]", text) else text
+    """``text`` as typed in bash, zsh and fish: in single quotes where it holds a space or ( ) [ ] * ^ ?
+    (in double quotes, \\ " $ escaped, where it holds a single quote: a header "Newton's t (s)")."""
+    if not re.search(r"[\s()\[\]*^?'\"$#&;|<>~!{}\\]", text):
+        return text
+    return f"'{text}'" if "'" not in text else '"' + re.sub(r'([\\"$])', r"\\\1", text) + '"'
 
 
 def run_of(name: str) -> tuple[str, str | None]:

@@ -288,3 +288,20 @@ def test_empty_rows_are_not_samples_for_every_nor_range_and_a_table_of_none_is_r
         samples.build(SCENES["spin-down"], [data.read("-", io.StringIO("t (s),omega (rad/s),u\n0,,1\n1,NaN,2\n"))])
     runs = samples.build(SCENES["atwood"], [data.read("-", io.StringIO("note,t (s)\nNaN,4.06\n,4.03\nNaN,3.88\n"))])
     assert runs.count == 3 and math.isnan(data.read("-", io.StringIO("note,t (s)\nNaN,4.06\n")).columns[0].values[0])
+
+
+@pytest.mark.parametrize("shell", ["bash", "zsh", "fish"])
+def test_the_mapping_a_refusal_names_works_as_typed_in_each_shell(shell):
+    """The --x a message gives quotes the header as bash, zsh and fish read it, a header with a
+    quote, a $ or a # too (the old quoting wrapped "Newton's t (s)" in single quotes, broken)."""
+    import shutil
+    import subprocess
+
+    from taucli.fit.columns import quoted
+
+    if shutil.which(shell) is None:
+        pytest.skip(f"{shell} is not installed")
+    for header in ["t (s)", "Newton's t (s)", 'a$b "q" (s)', "x#1", "Run #1: w\\x (s)"]:
+        typed = quoted(f"{header}=time")
+        done = subprocess.run([shell, "-c", f"printf '%s' {typed}"], capture_output=True, text=True, timeout=30)
+        assert done.stdout == f"{header}=time", (shell, typed, done.stdout)
