@@ -3,8 +3,10 @@
 
 - Columns are separated by tabs, else semicolons, else commas: the header line says which.
 - Cells may be quoted as spreadsheets write them (``"time (s)","torque (N*m)"``).
-- A header carries its unit in parentheses or brackets, ``Time (s)`` or ``t [ms]``; a header
-  with none names no unit (the reader says what it takes it as).
+- A header carries its unit in parentheses or brackets, ``Time (s)`` or ``t [ms]``, wherever it
+  stands (PASCO writes ``Time (ms) Run #1``): the last bracketed group is the unit, the words
+  either side of it the name; a header with none names no unit (the reader says what it takes
+  it as).
 
 Plain Python (csv, re): no pint.
 """
@@ -14,7 +16,7 @@ from __future__ import annotations
 import csv
 import re
 
-_WITH_UNIT = re.compile(r"^(.*?)\s*[(\[]\s*([^()\[\]]*?)\s*[)\]]\s*$")
+_UNIT = re.compile(r"\(\s*([^()\[\]]*?)\s*\)|\[\s*([^()\[\]]*?)\s*\]")  # (unit) or [unit], nothing bracketed inside
 
 
 def delimiter(header: str) -> str:
@@ -28,8 +30,14 @@ def cells(line: str, separator: str) -> list[str]:
 
 
 def split_header(header: str) -> tuple[str, str]:
-    """("Time", "s") from "Time (s)" or "Time [s]"; (header, "") where it names no unit."""
-    found = _WITH_UNIT.match(header)
-    if found is None or not found[1].strip():
+    """("Time", "s") from "Time (s)" or "Time [s]"; ("Time Run #1", "ms") from "Time (ms) Run #1"
+    (the last bracketed group is the unit wherever it stands, the words either side the name);
+    (header, "") where it names none."""
+    found = None
+    for found in _UNIT.finditer(header):
+        pass
+    if found is None:
         return header.strip(), ""
-    return found[1].strip(), found[2].strip()
+    unit = (found[1] if found[1] is not None else found[2]).strip()
+    name = " ".join(part for part in (header[:found.start()].strip(), header[found.end():].strip()) if part)
+    return (name, unit) if name else (header.strip(), "")

@@ -9,8 +9,10 @@ write it.
   be a thousands separator is refused, never guessed): the columns are separated by semicolons or
   tabs, no number has a decimal point, and some number has other than three digits after its
   comma. A file whose every comma is followed by three digits (``1,500``) is refused.
-- Every cell of a row is a finite number: a row with an empty cell, NaN, infinity or text is
-  refused with its line, not skipped.
+- Every cell of a row is a finite number or empty: a blank or NaN cell (phyphox pads with NaN,
+  Vernier and PASCO pad shorter runs with blanks) is read as NaN, no measurement, and the fit
+  leaves out the rows where a column it uses has one (samples.py, with a note); infinity or
+  text is refused with its line.
 - A binary file, a file that is not UTF-8 or Windows-1252 text, ragged rows, an empty table and
   a line longer than csv's limit are refused, one line each.
 
@@ -21,6 +23,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 import os
 import re
 from dataclasses import dataclass
@@ -181,9 +184,10 @@ def _number(cell: str, line: int, header: str, name: str, decimal_comma: bool) -
     text = cell.strip()
     if decimal_comma:
         text = text.replace(",", ".", 1) if text.count(",") == 1 else text
-    if not text or text.lower() in _NOT_FINITE:
-        what = "is empty" if not text else f"is {text}"
-        raise InputError(OPTION, f"{name} line {line}: column {header!r} {what}, not a finite number; a row is refused, not skipped",
+    if not text or text.lower() == "nan":
+        return math.nan  # no measurement here (see the module's rule)
+    if text.lower() in _NOT_FINITE:
+        raise InputError(OPTION, f"{name} line {line}: column {header!r} is {text}, not a finite number; a row is refused, not skipped",
                          hint="remove the row, or fill the cell")
     if not _NUMBER.fullmatch(text):
         raise InputError(OPTION, f"{name} line {line}: expected a number in column {header!r}", got=repr(cell.strip()[:40]))
