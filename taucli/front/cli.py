@@ -178,7 +178,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     )
     named = {*output.get, *(asked["y"] or ()), *(to.partition("=")[0].strip() for to in output.to)}
     _point_at_the_rim(command, scene_given, named)
-    _turn_on_what_makes(command, scene_given, named)
+    answer.turn_on_what_makes(command, scene_given, named)
     if output.plot and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
     if asked["y"] and swept_range is None:
@@ -229,14 +229,6 @@ def _point_at_the_rim(command: Command, given: dict, asked: set) -> None:
     the scene finds, or refuses where the body has no one radius."""
     if command.option("at") is not None and given.get("at") is None and asked & {result.key for result in POINT_RESULTS}:
         given["at"] = "rim"
-
-
-def _turn_on_what_makes(command: Command, given: dict, asked: set) -> None:
-    """A result named in --get, --y or --to is made: the flag that makes it (--energy for KE0) is
-    turned on, as if given."""
-    for option in command.options:
-        if option.makes and not given.get(option.name) and asked & set(option.makes):
-            given[option.name] = True
 
 
 def _made_what_is_named(command: Command, report, output: render.Output, y, given: dict) -> None:
