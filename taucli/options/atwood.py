@@ -62,7 +62,7 @@ COMMAND = Command(
         Result("a_rim", "m/s**2", "tangential acceleration of the rim (m1's side moving down positive)", needs=("rim_mu",)),
         Result("grips", None, "the string grips the rim (does not slide over it)", needs=("rim_mu",)),
         Result("rim_mu_min", "", "least rim coefficient for the string to grip", needs=("rim_mu",)),
-        Result("holds", None, "the rope holds on the fixed drum (does not slide)"),
+        Result("holds", None, "the rope holds on the fixed drum (does not slide)", needs=("fixed_drum+rim_mu", "fixed_drum+mu_s+mu_k")),
         Result("a_massless", "m/s**2", "acceleration with a massless pulley, for comparison"),
         Result("t", "s", "time to travel…", needs=("distance", "time")),
         Result("v", "m/s", "velocity…", needs=("distance", "time")),

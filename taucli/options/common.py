@@ -51,6 +51,7 @@ PARTS = Option(
     panel=BODY,
     repeatable=True,
     metavar='"SHAPE key=value ..."',
+    example="point mass=100g offset=0.2m",
 )
 SHAPE_WORDS = ", ".join(SHAPE_NAMES)
 # pendulum: a part may sit on the other side of the pivot, its offset= negative (d = Σmᵢdᵢ/M, signed)
