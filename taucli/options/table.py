@@ -147,11 +147,15 @@ class Result:
         return tuple(tuple(alternative.split("+")) for alternative in self.needs)
 
     def needed(self, spell=lambda name: f"{{{name}}}") -> str:
-        """What makes it, as a message says it: "{distance} or {time}", "{time} and {alpha}, or
-        {in_time}" (each name as ``spell`` writes it: a placeholder spelled per surface by default)."""
-        ways = [" and ".join(spell(name) for name in alternative) for alternative in self.alternatives]
+        """What makes it, as a message says it: "{distance} or {time}"; "{time} with {alpha}, or
+        {in_time} with {until_omega}"; "{v0} with {mass}, {length} and {radius}" (each name as
+        ``spell`` writes it: a placeholder, spelled per surface, by default)."""
+        ways = []
+        for first, *rest in self.alternatives:
+            together = ", ".join(spell(name) for name in rest[:-1]) + " and " + spell(rest[-1]) if len(rest) > 1 else "".join(map(spell, rest))
+            ways.append(f"{spell(first)} with {together}" if rest else spell(first))
         if any(len(alternative) > 1 for alternative in self.alternatives):
-            return ", or ".join(ways)  # "{time} and {alpha}, or {in_time}": no "or" inside an "and"
+            return ", or ".join(ways)  # "or" between the ways, where a way may hold a comma
         return ", ".join(ways[:-1]) + " or " + ways[-1] if len(ways) > 1 else "".join(ways)
 
     def made_by(self, given) -> bool:
