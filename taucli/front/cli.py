@@ -245,7 +245,7 @@ def _made_what_is_named(command: Command, report, output: render.Output, y, give
         for name in names:
             result = command.result(name)
             if name not in report.results and result is not None and result.needs and not result.made_by(given.get):
-                raise InputError(option, f"{name} needs {result.needed()}", example=command.needs_example(result))
+                raise InputError(option, f"{name} needs {result.needed()}", example=command.needs_example(result, given.get))
 
 
 def _format(asked: dict) -> Optional[str]:

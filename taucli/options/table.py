@@ -218,10 +218,11 @@ class Command:
     def results_line(self) -> str:
         return ", ".join(result.key for result in self.results)
 
-    def needs_example(self, result: Result) -> str | None:
+    def needs_example(self, result: Result, given=lambda name: None) -> str | None:
         """The first way to make ``result`` as typed, each option a {name} placeholder with a value:
         the result's own example, else each option's (or its kind's) example value, quoted for the
-        shell; None where an option of it has no example value."""
+        shell, leaving out the options ``given`` holds already; None where an option of it has no
+        example value."""
         if result.example is not None or not result.needs:
             return result.example
         typed = []
@@ -230,6 +231,8 @@ class Command:
             if option is None:
                 return None
             value = option.example or (KINDS[option.kind].example if option.kind in KINDS else None)
+            if given(name) not in (None, False, (), []):
+                continue
             if option.kind == FLAG:
                 typed.append(f"{{{name}}}")
             elif value is None:
