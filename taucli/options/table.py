@@ -148,19 +148,31 @@ class Result:
 
     def needed(self, spell=lambda name: f"{{{name}}}") -> str:
         """What makes it, as a message says it: "{distance} or {time}"; "{time} with {alpha}, or
-        {in_time} with {until_omega}"; "{v0} with {mass}, {length} and {radius}" (each name as
-        ``spell`` writes it: a placeholder, spelled per surface, by default)."""
+        {in_time} with {until_omega}"; "{v0} with {mass}, {length} and {radius}"; "{ratio} twice"
+        (each name as ``spell`` writes it: a placeholder, spelled per surface, by default)."""
         ways = []
-        for first, *rest in self.alternatives:
-            together = ", ".join(spell(name) for name in rest[:-1]) + " and " + spell(rest[-1]) if len(rest) > 1 else "".join(map(spell, rest))
-            ways.append(f"{spell(first)} with {together}" if rest else spell(first))
+        for alternative in self.alternatives:
+            counted = [spell(name) + ("" if n == 1 else " twice" if n == 2 else f" {n} times") for name, n in _counted(alternative)]
+            first, rest = counted[0], counted[1:]
+            together = ", ".join(rest[:-1]) + " and " + rest[-1] if len(rest) > 1 else "".join(rest)
+            ways.append(f"{first} with {together}" if rest else first)
         if any(len(alternative) > 1 for alternative in self.alternatives):
             return ", or ".join(ways)  # "or" between the ways, where a way may hold a comma
         return ", ".join(ways[:-1]) + " or " + ways[-1] if len(ways) > 1 else "".join(ways)
 
     def made_by(self, given) -> bool:
-        """Whether ``given`` (a name -> value lookup) holds every option of one of its alternatives."""
-        return any(all(given(name) not in (None, False, (), []) for name in alternative) for alternative in self.alternatives)
+        """Whether ``given`` (a name -> value lookup) holds every option of one of its alternatives
+        (a repeatable option named n times in one, n values of it)."""
+        def holds(name: str, n: int) -> bool:
+            value = given(name)
+            return value not in (None, False, (), []) and (n == 1 or isinstance(value, (list, tuple)) and len(value) >= n)
+
+        return any(all(holds(name, n) for name, n in _counted(alternative)) for alternative in self.alternatives)
+
+
+def _counted(alternative: tuple[str, ...]) -> list[tuple[str, int]]:
+    """Each option of a way to make a result once, with the times it is named ("ratio+ratio": two stages)."""
+    return [(name, alternative.count(name)) for name in dict.fromkeys(alternative)]
 
 
 @dataclass(frozen=True)

@@ -104,8 +104,6 @@ def test_a_result_that_needs_an_option_names_it(command, result, tmp_path, monke
 # mode (a --couple, a contact, a motion profile) or an option of a kind without one example value.
 # This list may only shrink: a result in it that the example makes, or that declares what makes it, fails.
 _NOT_YET_DECLARED = {
-    "drive": "ratio_total linear_inertia torque_hold omega_steady time_constant alpha0 omega_top speed_top t_run t_decel t_cycle "
-             "theta_move travel alpha_decel torque_decel torque_peak torque_rms power_regen power_mean rms_to_rated within_rating",
 }
 
 
