@@ -17,6 +17,7 @@ from conftest import Run, assert_usage_error, run_taucli
 from taucli.core.errors import spelled
 from taucli.front.cli import Environment, main
 from taucli.options import SCENES
+from taucli.options.table import shell_word
 from taucli.quantities.kinds import KINDS
 
 NEEDING = [(command, result) for command in SCENES.values() for result in command.results if result.needs]
@@ -46,6 +47,10 @@ def test_what_makes_a_result_reads_as_a_sentence():
     assert said("time", "until_omega", "until_angle") == "--time, --until_omega or --until_angle"
     assert said("time+alpha", "in_time") == "--time with --alpha, or --in_time"
     assert said("a+b", "c+d+e+f", "g") == "--a with --b, or --c with --d, --e and --f, or --g"
+    assert said("ratio+ratio") == "--ratio twice"
+    made = Result("x", None, "x", needs=("ratio+ratio", "a+b"))
+    assert made.made_by({"ratio": [5, 3]}.get) and not made.made_by({"ratio": [5]}.get) and not made.made_by({"a": 1}.get)
+    assert made.made_by({"a": 1, "b": "2 m"}.get) and not made.made_by({"a": 1, "b": False}.get)
 
 
 def _run(*args: str) -> Run:
@@ -100,13 +105,6 @@ def test_a_result_that_needs_an_option_names_it(command, result, tmp_path, monke
     assert made.code == 0 and made.out.strip() not in ("", "null"), (made, example)
 
 
-# Results no declaration covers yet (#42 item 18, unfinished): each needs a combination of options, a
-# mode (a --couple, a contact, a motion profile) or an option of a kind without one example value.
-# This list may only shrink: a result in it that the example makes, or that declares what makes it, fails.
-_NOT_YET_DECLARED = {
-}
-
-
 @pytest.mark.parametrize("command", list(SCENES.values()), ids=list(SCENES))
 def test_every_result_is_made_by_the_example_or_says_what_makes_it(command):
     """Class check of item 18: a result the docs example does not make declares the options that
@@ -119,7 +117,7 @@ def test_every_result_is_made_by_the_example_or_says_what_makes_it(command):
     at_the_rim = {result.key for result in POINT_RESULTS} if command.option("at") is not None else set()
     silent = [result.key for result in command.results
               if result.key not in made | turned_on | at_the_rim and not result.needs]
-    assert silent == _NOT_YET_DECLARED.get(command.name, "").split(), (command.name, silent)
+    assert silent == [], (command.name, silent)
 
 
 def test_the_two_messages_of_the_issue():
@@ -136,6 +134,8 @@ def test_python_names_the_keyword_that_makes_a_result():
     with pytest.raises(taucli.MissingResult) as raised:
         report.results["v"]
     assert "distance= or time=" in str(raised.value)
+    with pytest.raises(taucli.MissingResult, match=r"it needs time= with alpha=, or time= with torque= \(--time with --alpha, or --time with --torque on the command line\)"):
+        taucli.spin_down(inertia=2, omega0="30 rad/s", friction=1).results["theta_total"]
 
 
 # item 19: each surface spells names as it takes them
@@ -220,6 +220,8 @@ def _examples():
     """Every example= a message is given in taucli's source, and each kind's example after a flag."""
     found = [(f"kinds.{kind.name}", "--x " + (kind.example if kind.example.startswith("'") or " " not in kind.example else f"'{kind.example}'"))
              for kind in KINDS.values()]
+    found += [(f"{command.name} {option.flag}", f"{option.flag} {shell_word(option.example)}")  # what a message suggests for it (#42 item 18)
+              for command in SCENES.values() for option in command.options if option.example]
     for path in sorted(_SOURCE.rglob("*.py")):
         tree = ast.parse(path.read_text(encoding="utf-8"))
         names: dict[str, list[str]] = {}
