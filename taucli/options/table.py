@@ -164,8 +164,10 @@ class Result:
         """Whether ``given`` (a name -> value lookup) holds every option of one of its alternatives
         (a repeatable option named n times in one, n values of it)."""
         def holds(name: str, n: int) -> bool:
-            value = given(name)
-            return value not in (None, False, (), []) and (n == 1 or isinstance(value, (list, tuple)) and len(value) >= n)
+            value = given(name)  # a text, a list of them, True for a flag; a number at a point of a sweep (0.0 is given: no ==, as 0.0 == False)
+            if value is None or value is False or isinstance(value, (list, tuple)) and len(value) < n:
+                return False
+            return n == 1 or isinstance(value, (list, tuple))
 
         return any(all(holds(name, n) for name, n in _counted(alternative)) for alternative in self.alternatives)
 
@@ -243,7 +245,7 @@ class Command:
             if option is None:
                 return None
             value = option.example or (KINDS[option.kind].example if option.kind in KINDS else None)
-            if given(name) not in (None, False, (), []):
+            if Result(name, None, "", needs=(name,)).made_by(given):
                 continue
             if option.kind == FLAG:
                 typed.append(f"{{{name}}}")

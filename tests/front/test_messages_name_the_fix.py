@@ -51,6 +51,7 @@ def test_what_makes_a_result_reads_as_a_sentence():
     made = Result("x", None, "x", needs=("ratio+ratio", "a+b"))
     assert made.made_by({"ratio": [5, 3]}.get) and not made.made_by({"ratio": [5]}.get) and not made.made_by({"a": 1}.get)
     assert made.made_by({"a": 1, "b": "2 m"}.get) and not made.made_by({"a": 1, "b": False}.get)
+    assert made.made_by({"a": 0.0, "b": 0}.get) and not made.made_by({"a": 1, "b": ()}.get)  # a sweep's point 0 is given
 
 
 def _run(*args: str) -> Run:
