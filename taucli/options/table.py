@@ -163,18 +163,21 @@ class Result:
     def made_by(self, given) -> bool:
         """Whether ``given`` (a name -> value lookup) holds every option of one of its alternatives
         (a repeatable option named n times in one, n values of it)."""
-        def holds(name: str, n: int) -> bool:
-            value = given(name)  # a text, a list of them, True for a flag; a number at a point of a sweep (0.0 is given: no ==, as 0.0 == False)
-            if value is None or value is False or isinstance(value, (list, tuple)) and len(value) < n:
-                return False
-            return n == 1 or isinstance(value, (list, tuple))
-
-        return any(all(holds(name, n) for name, n in _counted(alternative)) for alternative in self.alternatives)
+        return any(all(holds(given, name, n) for name, n in _counted(alternative)) for alternative in self.alternatives)
 
 
 def _counted(alternative: tuple[str, ...]) -> list[tuple[str, int]]:
     """Each option of a way to make a result once, with the times it is named ("ratio+ratio": two stages)."""
     return [(name, alternative.count(name)) for name in dict.fromkeys(alternative)]
+
+
+def holds(given, name: str, times: int = 1) -> bool:
+    """Whether ``given`` (a name -> value lookup) holds the option ``name`` (``times`` values of it):
+    a text, a list, True for a flag, a number at a sweep's point (0.0 is given: no ==, as 0.0 == False)."""
+    value = given(name)
+    if value is None or value is False or isinstance(value, (list, tuple)) and len(value) < times:
+        return False
+    return times == 1 or isinstance(value, (list, tuple))
 
 
 @dataclass(frozen=True)
@@ -245,7 +248,7 @@ class Command:
             if option is None:
                 return None
             value = option.example or (KINDS[option.kind].example if option.kind in KINDS else None)
-            if Result(name, None, "", needs=(name,)).made_by(given):
+            if holds(given, name):
                 continue
             if option.kind == FLAG:
                 typed.append(f"{{{name}}}")
@@ -284,7 +287,7 @@ class Results(dict):
 
 
 FILLED = "…"  # where a result's label takes the part its solver fills in
-_PLAIN = re.compile(r"[A-Za-z0-9_.,:/+=@%-]+")  # a word every shell (bash, zsh, fish) takes as it is
+_PLAIN = re.compile(r"[A-Za-z0-9_.,:/+@%-][A-Za-z0-9_.,:/+=@%-]*")  # a word every shell (bash, zsh, fish) takes as it is (zsh expands a leading =)
 
 
 def shell_word(value: str) -> str:
