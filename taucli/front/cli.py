@@ -30,7 +30,6 @@ from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
 from taucli.options.table import FLAG, TEXT, Command, Option
-from taucli.quantities.kinds import KINDS
 
 
 @dataclass
@@ -237,13 +236,8 @@ def _made_what_is_named(command: Command, report, output: render.Output, y, give
     for option, names in (("get", output.get), ("y", y), ("to", [to.partition("=")[0].strip() for to in output.to])):
         for name in names:
             result = command.result(name)
-            if name not in report.results and result is not None and result.needs and not any(given.get(need) is not None for need in result.needs):
-                first = command.option(result.needs[0])
-                value = KINDS[first.kind].example if first.kind in KINDS else None
-                if value and " " in value and not value.startswith("'"):
-                    value = f"'{value}'"  # one word, as the shell splits it
-                example = f"{{{first.name}}} {value}" if value else None
-                raise InputError(option, f"{name} needs {result.needed()}", example=example)
+            if name not in report.results and result is not None and result.needs and not result.made_by(given.get):
+                raise InputError(option, f"{name} needs {result.needed()}", example=command.needs_example(result, given.get))
 
 
 def _format(asked: dict) -> Optional[str]:

@@ -232,7 +232,8 @@ def markdown(command: Command) -> str:
         lines.append(f"| `{option.flag}` | {takes} | {option.help_text().replace('|', '/')} |")
     lines += ["", "| result | unit | what it is |", "|---|---|---|"]
     for result in command.results:
-        lines.append(f"| `{result.key}` | {pretty_unit(result.unit) or '–'} | {result.label} |")
+        needs = f" — needs {result.needed(lambda name: f'`{command.flag(name)}`')}" if result.needs else ""
+        lines.append(f"| `{result.key}` | {pretty_unit(result.unit) or '–'} | {result.label}{needs} |")
     return "\n".join(lines)
 
 
