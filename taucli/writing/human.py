@@ -12,10 +12,12 @@ from collections.abc import Sequence
 from contextlib import contextmanager
 from typing import TextIO
 
-from taucli.core.written import DIGITS, shown as written_shown
+from dataclasses import replace
+
+from taucli.core.written import DIGITS, printable, shown as written_shown
 from taucli.quantities.measurement import with_uncertainty
 from taucli.writing.display import equation_text, minus_signs, wrap_expression
-from taucli.writing.report import Report, pretty_unit
+from taucli.writing.report import Report, Step, Table, Value, pretty_unit
 
 # The widths charts and tables are drawn at, whatever COLUMNS or the terminal says: COLUMNS=100000
 # took 5 s and 434 MB for one chart, and 10**7 was killed for memory.
@@ -106,7 +108,24 @@ def draw_table(console, headings: Sequence[str], rows: Sequence[Sequence[str]], 
 def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> None:
     """The rich table of results, then the steps (equation, numbers, result, why) and notes."""
     with drawing(stream) as console:
-        _draw_report(report, console, show_steps)
+        _draw_report(printable_report(report, show_steps), console, show_steps)
+
+
+def printable_report(report: Report, steps: bool = True) -> Report:
+    """The report with every text in it printable (taucli.core.written.printable): a file's name
+    in a fit's steps, a part's name, a note that quotes what was typed, shown with its control
+    characters escaped (\\x1b, \\n), never sent to the terminal raw (#43 item 14)."""
+
+    def p(text):
+        return printable(text) if isinstance(text, str) else text
+
+    return replace(
+        report, scene=p(report.scene), model=p(report.model), method=p(report.method), notes=[p(note) for note in report.notes],
+        results={p(name): Value(p(v.value), p(v.unit), p(v.label)) for name, v in report.results.items()},
+        steps=[Step(*map(p, (s.title, s.equation, s.numbers, s.result, s.why))) for s in report.steps] if steps else report.steps,
+        tables={p(name): Table(tuple((key, p(unit), p(heading)) for key, unit, heading in table.columns), tuple(tuple(map(p, row)) for row in table.rows))
+                for name, table in report.tables.items()},
+    )  # fmt: skip
 
 
 def _draw_report(report: Report, console, show_steps: bool) -> None:
