@@ -192,6 +192,20 @@ def html_grid(grid: Grid) -> str:
 
 # CSV: for a spreadsheet. A header of "name (unit)", the unit as the unit parser reads it (as
 # --json gives it), then one row per point at full precision (repr: the double read back exactly).
+# A cell that is not a number and starts with =, +, - or @ (--find's roots, "-2.0 2.0"; a word)
+# would be read by a spreadsheet as a formula (OWASP's CSV injection): it is written after a single
+# quote, '-2.0 2.0, which a spreadsheet shows as text and does not keep (docs/output.md). A number,
+# -2.5 or 1e-05, is written as it is.
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+_CSV_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def spreadsheet_text(text: str) -> str:
+    """A cell's text as a spreadsheet takes it for what it is: a number as it is, any other text
+    that starts as a formula would after a single quote."""
+    return "'" + text if text.startswith(_FORMULA_START) and not _CSV_NUMBER.fullmatch(text) else text
+
+
 def _csv_cell(value) -> str:
     if value is None:
         return ""
@@ -218,14 +232,14 @@ def csv_grid(grid: Grid) -> str:
         header.append(f"{name} ({unit})" if unit else name)
         if has:
             header.append(f"{name} uncertainty ({unit})" if unit else f"{name} uncertainty")
-    writer.writerow(header)
+    writer.writerow(map(spreadsheet_text, header))
     for row, spread in zip(grid.rows, spreads):
         cells = []
         for cell, sigma, has in zip(row, spread, uncertain):
             cells.append(_csv_cell(cell))
             if has:
                 cells.append(_csv_cell(sigma))
-        writer.writerow(cells)
+        writer.writerow(map(spreadsheet_text, cells))
     return buffer.getvalue()
 
 def single_grid(report) -> Grid:
