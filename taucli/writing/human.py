@@ -40,20 +40,35 @@ NARROW = 60  # columns below which results are listed rather than tabled
 LABEL_MIN = 12  # the least width a folding text column ("what it is") is given before a table gives way to a list
 
 
+def plain() -> bool:
+    """No colour whatever the stream: NO_COLOR set (no-color.org), or TERM=dumb."""
+    return bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
+
+
+def coloured(stream: TextIO) -> bool:
+    """Whether the human view (its tables, steps and --plot's chart) is drawn in colour on
+    ``stream``: on a terminal, or where FORCE_COLOR is set and not empty (force-color.org: a CI
+    log or ``less -R`` that shows colour from a pipe); never under NO_COLOR or TERM=dumb
+    (docs/running.md). Only the human view: --json, --get, --format and --batch never hold an
+    escape code, whatever the environment says."""
+    return not plain() and (stream.isatty() or bool(os.environ.get("FORCE_COLOR")))
+
+
 @contextmanager
 def drawing(stream: TextIO):
-    """A rich Console that draws for ``stream``: in colour on a terminal (or with FORCE_COLOR);
-    elsewhere (a file, a pipe) plain, into a buffer whose lines are written without the trailing
-    spaces rich pads them with."""
+    """A rich Console that draws for ``stream``: in colour where ``coloured`` says so; elsewhere
+    (a file, a pipe) plain, into a buffer whose lines are written without the trailing spaces
+    rich pads them with. rich's own reading of the environment (TTY_COMPATIBLE, FORCE_COLOR) is
+    not asked: ``coloured`` is the one rule."""
     from rich.console import Console  # deferred: rich (about 30 ms), only for the human view
 
-    plain = bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
     # rich takes a dumb terminal to be 80 columns; it has a width as any other (help uses it too)
     width = shutil.get_terminal_size((80, 24)).columns if os.environ.get("TERM") == "dumb" and stream.isatty() else None
-    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain else "auto", width=width)
+    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain() else "auto", width=width,
+                      force_terminal=coloured(stream) or stream.isatty())  # fmt: skip
     if console.width != clamped(console.width):
         console.width = clamped(console.width)
-    if console.is_terminal:  # a terminal, or FORCE_COLOR
+    if console.is_terminal:  # a terminal, or FORCE_COLOR (where not plain)
         yield console
         return
     buffer = io.StringIO()

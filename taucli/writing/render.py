@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import re
 import math
-import os
 import shutil
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
@@ -19,7 +18,7 @@ from taucli.quantities import units
 from taucli.core.errors import InputError, did_you_mean
 from taucli.core.written import printable
 from taucli.writing.document import document_text
-from taucli.writing.human import clamped, render_human
+from taucli.writing.human import clamped, coloured, render_human
 from taucli.writing.report import Report, Value
 
 
@@ -50,10 +49,10 @@ class Output(NamedTuple):
 
 
 def terminal_style(stream: TextIO) -> tuple[int, bool]:
-    """(columns, colour) for text drawn on ``stream``: no colour under NO_COLOR, TERM=dumb or a pipe."""
+    """(columns, colour) for a chart drawn on ``stream``: colour as the tables have it
+    (human.coloured: a terminal or FORCE_COLOR, never NO_COLOR or TERM=dumb)."""
     columns = shutil.get_terminal_size((80, 24)).columns  # in a pipe, 80: the width tables are drawn at
-    colour = stream.isatty() and not os.environ.get("NO_COLOR") and os.environ.get("TERM") != "dumb"
-    return clamped(columns), colour
+    return clamped(columns), coloured(stream)
 
 
 def chart_units(report: Report, to: Sequence[str]) -> dict[str, tuple[str, float]]:
