@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 from taucli.answering.csv_text import delimiter as _delimiter, split_header
 from taucli.core.errors import InputError
+from taucli.core.written import printable
 
 OPTION = "data"  # the argument the messages name (DATA)
 MAX_BYTES = 200 * 1024 * 1024
@@ -66,7 +67,7 @@ class DataTable:
 def read(source, stdin=None) -> DataTable:
     """The table in the file ``source`` (``-``: stdin; an open file object, from Python), or a
     usage error naming what is wrong."""
-    name = "stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object")
+    name = _name(source)
     text = _text(source, stdin)
     lines = text.splitlines()
     start = next((i for i, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("#")), None)
@@ -98,8 +99,13 @@ def read(source, stdin=None) -> DataTable:
     return DataTable(name, columns, tuple(line for line, _ in body), delimiter, decimal_comma)
 
 
+def _name(source) -> str:
+    """The file's name as messages and steps show it: its control characters escaped (#43)."""
+    return printable("stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object"))
+
+
 def _text(source, stdin) -> str:
-    name = "stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object")
+    name = _name(source)
     if not isinstance(source, str):  # an open file object (the Python API)
         try:
             raw = source.read(MAX_BYTES + 1)
