@@ -73,7 +73,7 @@ COMMAND = Command(
         Result("a_hand", "m/s**2", "acceleration of the string's free end (the hand), upward", needs=("in_place+radius",)),
         Result("v", "m/s", "speed…"),
         Result("v_hanging", "m/s", "velocity of the hanging mass, downward…", needs=(HANGING + "+length",)),
-        Result("omega", "rad/s", "angular velocity…", needs=("length+radius", "height+radius", "v0+radius", "yoyo+height+radius", HANGING + "+length+radius"), example=ON_THE_FLAT + " {radius} 0.2m"),
+        Result("omega", "rad/s", "angular velocity…", needs=("length+radius", "height+radius", "v0+radius", "yoyo+height+radius", HANGING + "+length+radius"), example="{length} 2m {radius} 0.1m"),
         Result("t", "s", "time…"),
         Result("KE_trans", "J", "kinetic energy of translation…", needs=("mass",)),
         Result("KE_rot", "J", "kinetic energy of rotation…", needs=("mass",)),
