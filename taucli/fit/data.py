@@ -170,7 +170,8 @@ def _rows(numbered, start: int, delimiter: str, name: str):
                 continue
             count += 1
             if count > MAX_ROWS + 1:  # (the header besides)
-                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows: give a part of it (fit takes at most 5000 samples)")
+                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows, the most fit reads of a table (it takes at most 5000 samples)",
+                                 hint=too_large(OPTION, name).hint)
             yield line, cells
     except csv.Error as err:
         raise InputError(OPTION, f"{name} line {start + reader.line_num}: cannot be read as a table ({err})") from None
