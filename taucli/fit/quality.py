@@ -45,15 +45,18 @@ SHAPE_Z = 3.2905  # the normal's two-sided 0.1 % point: the lag-1 autocorrelatio
 CHI2_P = 1e-3  # a χ² this unlikely for a model that fits, either way (each tail at half of it): a warning
 RUNS_LEAST = 10  # fewer samples than this: neither shape test can reach SHAPE_P
 STEP = 1e-3  # relative step of the differences for the Jacobian
+FLOOR = 1e-3  # of an input's natural scale: the least size its step is taken at (an input at 0 has no size of its own)
 
 
-def jacobian(model: Model, p: np.ndarray, moved=None, *, rough: bool = False) -> np.ndarray:
+def jacobian(model: Model, p: np.ndarray, moved=None, *, rough: bool = False, scale: np.ndarray | None = None) -> np.ndarray:
     """∂f(xᵢ; p)/∂pⱼ: n × m, by differences (central with Richardson; one-sided near a bound);
-    ``rough``: forward differences, one solve per input (enough to see dependent columns)."""
+    ``rough``: forward differences, one solve per input (enough to see dependent columns). The step
+    is STEP of |pⱼ|, and at least FLOOR of the input's natural scale (``scale``: the size its start
+    had): an input at 0 (on its bound) is still moved by a step its samples feel."""
     columns = []
     base = model.predict(p, moved)
     for j in range(len(p)):
-        h = max(STEP * abs(p[j]), 1e-300)
+        h = max(STEP * abs(p[j]), STEP * FLOOR * (scale[j] if scale is not None else 0.0), 1e-300)
 
         def f(x: float) -> np.ndarray:
             q = np.array(p, dtype=float)
@@ -80,15 +83,17 @@ class Degeneracy:
     flat: list[str]  # inputs the samples do not depend on at all
 
 
-def degeneracy(J: np.ndarray, names: list[str], p: np.ndarray, f: np.ndarray) -> Degeneracy:
+def degeneracy(J: np.ndarray, names: list[str], p: np.ndarray, f: np.ndarray, scale: np.ndarray | None = None) -> Degeneracy:
     """How near the columns of J are to dependent (scaled to unit length: the ratio does not depend
     on the inputs' units), and which inputs the weakest direction moves (where the columns are
     dependent, an input outside the dependence has a component of rounding size there). An input
-    that moves f (weighted as J is) by less than FLAT of f for a relative change is one the samples
-    do not depend on: its column is rounding."""
+    that moves f (weighted as J is) by less than FLAT of f when it changes by its natural size
+    (the larger of |pⱼ| and ``scale``, the size its start had: an input at or near 0 is not flat
+    for being there) is one the samples do not depend on: its column is rounding."""
     norms = np.linalg.norm(J, axis=0)
     size = float(np.linalg.norm(f)) if np.all(np.isfinite(f)) else 0.0
-    flat = [name for name, norm, x in zip(names, norms, p) if not norm > 0 or (x != 0 and norm * abs(x) <= FLAT * size)]
+    sizes = np.maximum(np.abs(p), scale if scale is not None else 0.0)
+    flat = [name for name, norm, x in zip(names, norms, sizes) if not norm > 0 or (x != 0 and norm * x <= FLAT * size)]
     if flat or J.shape[1] == 0:
         return Degeneracy(0.0, flat, flat)
     s, vt = np.linalg.svd(J / norms, full_matrices=False)[1:]
@@ -215,13 +220,15 @@ class Quality:
         return np.where(np.isfinite(rho), rho, 0.0)
 
 
-def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray | None, order: np.ndarray, names: list[str], p: np.ndarray) -> Quality:
-    """The covariance and the diagnostics of a fit (J unweighted; ``sigma`` each sample's σ or None)."""
+def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray | None, order: np.ndarray, names: list[str], p: np.ndarray,
+           scale: np.ndarray | None = None) -> Quality:
+    """The covariance and the diagnostics of a fit (J unweighted; ``sigma`` each sample's σ or None;
+    ``scale`` each input's natural size, for the test of inputs the samples do not depend on)."""
     n, m = J.shape
     r = y - fitted
     weights = 1.0 / sigma if sigma is not None else np.ones(n)
     Jw = J * weights[:, None]
-    found = degeneracy(Jw, names, p, fitted * weights)
+    found = degeneracy(Jw, names, p, fitted * weights, scale)
     if found.flat or found.ratio < DEGENERATE:
         refuse_degenerate(found, "the result")
     norms = np.linalg.norm(Jw, axis=0)

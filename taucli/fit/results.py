@@ -18,7 +18,7 @@ import numpy as np
 
 from taucli.quantities import units
 from taucli.core.errors import InputError, spelled
-from taucli.fit import quality
+from taucli.fit import quality, solve
 from taucli.fit.model import REFUSALS
 from taucli.fit.solve import Fit
 from taucli.options.fit import COMMAND as FIT
@@ -55,8 +55,12 @@ def written(found: Fit) -> Measured:
     results: dict[str, Value] = {}
     spreads: dict[str, float] = {}
     for j, unknown in enumerate(model.unknowns):
-        results[unknown.name] = Value(float(found.p[j]), units_of[j], f"{label(unknown)}, fitted")
+        results[unknown.name] = Value(float(found.p[j]), units_of[j], f"{label(unknown)}, fitted" + (" (at its bound)" if j in found.bounded else ""))
         spreads[unknown.name] = float(sigma[j])
+    for j in found.bounded:  # at its bound: the one-sided 95 % upper limit, bound + 1.645σ
+        name = model.names[j]
+        results[f"{name}_upper95"] = Value(float(found.p[j] + solve.UPPER * sigma[j]), units_of[j],
+                                           f"one-sided 95 % upper limit of {name}, at its bound: bound + {solve.UPPER:.3f}σ")
     tables = {}
     if len(model.unknowns) > 1:
         rho = [[round(float(x), 6) for x in row] for row in fitted.correlation]
@@ -275,8 +279,14 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
     if fitted.degeneracy.ratio < quality.NEARLY:
         notes.append(f"warning: {', '.join(fitted.degeneracy.involved)} are barely told apart by these samples (correlation near ±1): "
                      "their uncertainties are large and their values move together")
-    for name, value, s in zip(model.names, found.p, sigma):
-        if s > abs(value):
+    for j in found.bounded:
+        name, unit = model.names[j], units.KINDS[model.unknowns[j].kind].si_unit
+        notes.append(f"warning: {name} is at its least value, {quantity_text(float(found.p[j]), unit)}: the samples ask for no more (their best "
+                     f"lies at or past it, within noise), so it is given there with its one-sided 95 % upper limit, {name} ≤ "
+                     f"{quantity_text(float(found.p[j] + solve.UPPER * sigma[j]), unit, 3)} (bound + {solve.UPPER:.3f}σ, σ = {fmt(sigma[j], 2)}); "
+                     "the other inputs are fitted with it there")
+    for j, (name, value, s) in enumerate(zip(model.names, found.p, sigma)):
+        if s > abs(value) and j not in found.bounded:
             notes.append(f"{name} is not determined better than its own size ({fmt(value, 3)} ± {fmt(s, 2)}): the samples barely depend on it")
     if fitted.dof < FEW and fitted.scaled:
         notes.append(f"only {fitted.dof} degree{'s' if fitted.dof != 1 else ''} of freedom: the residual variance is a rough stand-in for the samples' own uncertainty")
