@@ -279,6 +279,11 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
     if fitted.degeneracy.ratio < quality.NEARLY:
         notes.append(f"warning: {', '.join(fitted.degeneracy.involved)} are barely told apart by these samples (correlation near ±1): "
                      "their uncertainties are large and their values move together")
+    for q, chi2 in found.rivals:
+        best = float(np.sum((fitted.residuals / (model.samples.sigma if model.samples.sigma is not None else 1.0)) ** 2)) / (1.0 if not fitted.scaled else fitted.s2)
+        notes.append(f"warning: another minimum fits about as well ({'χ²' if not fitted.scaled else 'Σr²/s²'} = {fmt(chi2, 4)} against {fmt(best, 4)}, "
+                     f"within {fmt(solve.AMBIGUOUS, 3)}) at " + model.shown(dict(zip(model.names, (float(x) for x in q))))
+                     + ": the samples do not pick one clearly (another start beside --fit, or samples over more of the motion, may)")
     for j in found.bounded:
         name, unit = model.names[j], units.KINDS[model.unknowns[j].kind].si_unit
         notes.append(f"warning: {name} is at its least value, {quantity_text(float(found.p[j]), unit)}: the samples ask for no more (their best "

@@ -45,6 +45,7 @@ class Fit:
     steps: list[Step] = field(default_factory=list)
     starts: list[str] = field(default_factory=list)  # how each input's start was found: "given", "closed form", "root"
     bounded: list[int] = field(default_factory=list)  # the inputs held at their bound (0), the samples asking for no more
+    rivals: list[tuple[np.ndarray, float]] = field(default_factory=list)  # other minima from other starts that fit as well: (p, χ²)
 
 
 def names_of(text) -> list[str]:
@@ -92,13 +93,16 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
                          hint="give more samples, or fit fewer inputs")
     y = np.asarray(samples.y, dtype=float)
     sigma = np.asarray(samples.sigma, dtype=float) if samples.sigma is not None else None
-    p0, steps, how = start.start(model, starts)
+    candidates = start.starts(model, starts)
+    p0, steps, how = candidates[0]
     if not np.any(np.isfinite(model.predict(p0))):
         raise InputError("fit", f"the scene gives no {samples.y_key} for any sample at the start ({model.why_refused()})")
     natural = np.where(np.abs(p0) > 0, np.abs(p0), 1.0)  # each input's natural size: its start's (1 SI where that is 0)
     shape = linear.affine(model, p0, np.where(p0 != 0, linear.STEP * np.abs(p0), 1.0))
     # at the start: inputs the samples cannot tell apart, before a search that cannot end (one that does not act there may further on)
-    _refuse_degenerate(model, shape.X if shape is not None else quality.jacobian(model, p0, rough=True, scale=natural), sigma, p0, natural, start=True)
+    flat = _refuse_degenerate(model, shape.X if shape is not None else quality.jacobian(model, p0, rough=True, scale=natural), sigma, p0, natural, start=True)
+    if flat:  # an input that does not act at the start says nothing of the model's shape elsewhere: searched for, not solved as linear
+        shape = None
     bounded: list[int] = []
     is_linear = False
     if shape is not None:
@@ -110,20 +114,21 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         method = f"linear least squares (the model is linear in {', '.join(model.names)}: solved exactly, no iteration)"
         steps.append(_linear_step(model, shape, n))
     else:
-        outcome = nonlinear.minimize(model, y, sigma, p0)
-        if not outcome.converged:  # inputs the samples cannot tell apart leave a valley the search wanders in: say so first
-            _refuse_degenerate(model, quality.jacobian(model, outcome.p, scale=natural), sigma, outcome.p, natural)
-            raise InputError("fit", f"did not converge ({outcome.message.rstrip('.')}) after {outcome.iterations} steps from the start "
-                             + ", ".join(f"{name} = {p:.6g}" for name, p in zip(model.names, p0)), hint="give a start beside --fit, or fit fewer inputs")
-        p = outcome.p
-        if outcome.at_bound:
-            p, bounded = _at_bound(model, outcome.at_bound, p, y, sigma, natural)
-        missing = nonlinear.stuck(model, p)
-        if missing:
-            raise InputError("fit", f"ends where the scene gives no {samples.y_key} for {missing} of the samples ({model.why_refused()})")
-        polished = _polished(model, p, quality.jacobian(model, p, scale=natural), y, sigma, bounded)
-        J = quality.jacobian(model, polished, scale=natural) if not np.array_equal(polished, p) else quality.jacobian(model, p, scale=natural)
-        p = polished
+        searches, refusals = [], []
+        for number, (q0, q_steps, q_how) in enumerate(candidates):
+            if number and not _worth(model, q0, [c[0] for c in candidates[:number]], y, sigma):
+                continue
+            try:
+                searches.append((_search(model, y, sigma, q0, natural), q_steps, q_how))
+            except InputError as err:
+                refusals.append(err)
+        if not searches:
+            raise refusals[0]
+        least = min(found.cost for found, _, _ in searches)
+        best = next(k for k, (found, _, _) in enumerate(searches) if found.cost <= least * (1 + SAME_COST) + 1e-300)  # ties: the first start
+        (search, steps, how), others = searches[best], [found for k, (found, _, _) in enumerate(searches) if k != best]
+        steps = list(steps)
+        p, bounded, J, outcome = search.p, search.bounded, search.J, search.outcome
         started = "a closed-form start" if "closed form" in how else "the starts given" if set(how) == {"given"} else "a start from single samples"
         method = f"bounded nonlinear least squares (trust region reflective, scipy.optimize.least_squares) from {started}"
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
@@ -133,6 +138,7 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
             p, held = _at_bound(model, [*bounded, j], p, y, sigma, natural)
             bounded = held
     covariance, from_held = _with_held(model, p, J, sigma, found.covariance)
+    rivals = _rivals(p, search.cost, others, found, sigma is None) if not is_linear else []
     if not is_linear:
         spread = np.sqrt(np.abs(np.diag(covariance)))
         steps.append(Step(
@@ -142,9 +148,67 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
                              for u, value, uncertainty in zip(model.unknowns, p, spread)),
             why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, {_count(outcome.evaluations, 'solve')} of the scene per sample "
             f"(its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them; "
-            f"shown to a thousandth of each one's uncertainty (the digits past that are the search's rounding)",
+            f"shown to a thousandth of each one's uncertainty (the digits past that are the search's rounding)"
+            + (f"; searched from {len(searches)} starts, this the least sum" if len(searches) > 1 else ""),
         ))
-    return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how, bounded)
+    return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how, bounded, rivals)
+
+
+SAME_COST = 1e-8  # two minima whose sums differ by less than this of them are one (the first start's is kept)
+WORSE = 4.0  # a further start whose sum is more than this times an earlier start's is not searched from
+AMBIGUOUS = 3.84  # χ² (in the residual variance where no σ is given) within which another minimum fits as well: χ²'s 95 % point for one degree of freedom
+APART = 3.0  # σ apart: another minimum with an input this far from the best is another answer
+
+
+@dataclass
+class Search:
+    p: np.ndarray
+    bounded: list[int]
+    J: np.ndarray
+    outcome: nonlinear.Outcome
+    cost: float  # Σ((yᵢ − f)/σᵢ)² at p
+
+
+def _cost(model: Model, p: np.ndarray, y: np.ndarray, sigma) -> float:
+    r = (y - model.predict(p)) / (sigma if sigma is not None else 1.0)
+    return float(np.sum(r**2)) if np.all(np.isfinite(r)) else math.inf
+
+
+def _worth(model: Model, q0: np.ndarray, earlier: list[np.ndarray], y: np.ndarray, sigma) -> bool:
+    """A further start is searched from unless its sum is more than WORSE times an earlier one's."""
+    return _cost(model, q0, y, sigma) <= WORSE * min(_cost(model, e, y, sigma) for e in earlier)
+
+
+def _search(model: Model, y: np.ndarray, sigma, p0: np.ndarray, natural: np.ndarray) -> Search:
+    """The bounded nonlinear least squares from p0, polished; refused where it does not converge,
+    ends past a bound the samples ask for, or where the scene gives no value."""
+    outcome = nonlinear.minimize(model, y, sigma, p0)
+    if not outcome.converged:  # inputs the samples cannot tell apart leave a valley the search wanders in: say so first
+        _refuse_degenerate(model, quality.jacobian(model, outcome.p, scale=natural), sigma, outcome.p, natural)
+        raise InputError("fit", f"did not converge ({outcome.message.rstrip('.')}) after {outcome.iterations} steps from the start "
+                         + ", ".join(f"{name} = {p:.6g}" for name, p in zip(model.names, p0)), hint="give a start beside --fit, or fit fewer inputs")
+    p, bounded = outcome.p, []
+    if outcome.at_bound:
+        p, bounded = _at_bound(model, outcome.at_bound, p, y, sigma, natural)
+    missing = nonlinear.stuck(model, p)
+    if missing:
+        raise InputError("fit", f"ends where the scene gives no {model.samples.y_key} for {missing} of the samples ({model.why_refused()})")
+    polished = _polished(model, p, quality.jacobian(model, p, scale=natural), y, sigma, bounded)
+    J = quality.jacobian(model, polished, scale=natural) if not np.array_equal(polished, p) else quality.jacobian(model, p, scale=natural)
+    return Search(polished, bounded, J, outcome, _cost(model, polished, y, sigma))
+
+
+def _rivals(p: np.ndarray, cost: float, others: list[Search], found: quality.Quality, scaled: bool) -> list[tuple[np.ndarray, float]]:
+    """The other minima that fit about as well (χ² within AMBIGUOUS of the best, in the residual
+    variance where no σ is given) with some input APART σ or more from the best: (p, χ²) each."""
+    unit = found.s2 if scaled else 1.0
+    spread = np.sqrt(np.abs(np.diag(found.covariance)))
+    kept: list[tuple[np.ndarray, float]] = []
+    for other in others:
+        if math.isfinite(other.cost) and (other.cost - cost) / unit < AMBIGUOUS and np.any(np.abs(other.p - p) > APART * spread):
+            if all(np.any(np.abs(other.p - q) > APART * spread) for q, _ in kept):
+                kept.append((other.p, other.cost / unit))
+    return kept
 
 
 GUARD = 3  # decimal places shown past an uncertainty's leading digit: a thousandth of it
@@ -208,23 +272,25 @@ def _with_held(model: Model, p: np.ndarray, J: np.ndarray, sigma, covariance: np
     return total, slopes
 
 
-def _refuse_degenerate(model: Model, J: np.ndarray, sigma, p: np.ndarray, natural: np.ndarray, *, start: bool = False) -> None:
+def _refuse_degenerate(model: Model, J: np.ndarray, sigma, p: np.ndarray, natural: np.ndarray, *, start: bool = False) -> list[str]:
     """Refused where the samples cannot tell the inputs apart (or do not depend on one). At the
     ``start``, an input the samples do not depend on there is left to the search (a start such as
     --viscous 3 stops the wheel before the second sample, where friction does not act), and the
     others are checked among themselves; the fit's end checks them all."""
     weighted = J / sigma[:, None] if sigma is not None else J
     if not np.all(np.isfinite(weighted)):
-        return  # some sample has no value here: the fit decides
+        return []  # some sample has no value here: the fit decides
     f = model.predict(p) / (sigma if sigma is not None else 1.0)
     found = quality.degeneracy(weighted, model.names, p, f, natural)
-    if start and found.flat:
-        acting = [j for j, name in enumerate(model.names) if name not in found.flat]
+    flat = list(found.flat)
+    if start and flat:
+        acting = [j for j, name in enumerate(model.names) if name not in flat]
         if len(acting) < 2:
-            return
+            return flat
         found = quality.degeneracy(weighted[:, acting], [model.names[j] for j in acting], p[acting], f, natural[acting])
     if found.flat or found.ratio < quality.DEGENERATE:
         quality.refuse_degenerate(found, model.samples.y_key, f" (the scene gives {_at_first(model, p)})")
+    return flat
 
 
 def _at_first(model: Model, p: np.ndarray) -> str:
