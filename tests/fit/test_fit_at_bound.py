@@ -83,3 +83,14 @@ def test_samples_that_ask_for_far_less_than_the_bound_are_still_refused():
     text = table(OMEGA0 + 0.5 * TIMES + rng.normal(0, NOISE, len(TIMES)))
     with pytest.raises(InputError, match=r"the samples ask for (friction|viscous|friction and viscous) at or past (its|their) least value .*χ² would fall by"):
         fitted(text)
+
+
+@pytest.mark.parametrize("viscous", ["3 N*m*s", "0.5 N*m*s"])
+def test_a_start_where_an_input_does_not_act_is_not_taken_for_samples_that_do_not_depend_on_it(viscous):
+    """--viscous 3 beside --fit stops the wheel before the second sample, where neither friction
+    nor b acts: refused before ("the samples do not depend on friction and viscous"); now the fit
+    searches from there and from the closed form, and keeps the better."""
+    rng = np.random.default_rng(2047)
+    _, found = fitted(table(coast(TIMES, 0.06) + rng.normal(0, NOISE, len(TIMES))), viscous=viscous)
+    j = found.model.names.index("friction")
+    assert abs(found.p[j] - 0.06) < 4 * math.sqrt(found.covariance[j, j])
