@@ -83,6 +83,16 @@ def fit_numbers_agree(got_lines: list[str], page_lines: list[str]) -> bool:
     return True
 
 
+def fit_output_agrees(command: str, out: str, err: str, printed: str) -> bool:
+    """What an example printed (stdout, then stderr) against its page: a fit's numbers for a
+    machine within the tolerances above, the lines on stderr beside them (its warnings) as text;
+    anything else as text."""
+    if not fit_machine_output(command):
+        return lines_of(out + err) == lines_of(printed)
+    page, numbers = lines_of(printed), lines_of(out) if out.strip() else []
+    return fit_numbers_agree(numbers, page[:len(numbers)]) and lines_of(err) == page[len(numbers):] if err.strip() else fit_numbers_agree(numbers, page)
+
+
 def piped(command: str) -> bool:
     return bool(re.search(r"[|<>]", command))
 
