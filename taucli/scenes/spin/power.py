@@ -213,13 +213,20 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
     if power < 0 and omega0 == 0:
         notes.append("a load with the wheel at rest: nothing turns")
     stop = motion.stop()
-    results.put("t_stop", None if stop is None else stop[0])
-    results.put("theta_stop", None if stop is None else sense * stop[1])
-    results.put("revs_stop", None if stop is None else sense * stop[1] / TWO_PI)
     steady = motion.steady_speed()
-    results.put("omega_inf", 0.0 if power < 0 else None if steady is None else sense * steady)
+    if stop is None:  # a motor (P > 0) keeps it turning: its stop does not apply (#42 item 23)
+        results.not_applicable("t_stop", "theta_stop", "revs_stop")
+        notes.append("the motor keeps it turning, so the wheel never stops and t_stop, theta_stop, revs_stop do not apply"
+                     + ("; nor has it a steady speed (with no losses the motor's power all goes into the wheel, so ω grows without bound): "
+                        "omega_inf does not apply either" if steady is None else ""))
+    else:
+        results.put("t_stop", stop[0])
+        results.put("theta_stop", sense * stop[1])
+        results.put("revs_stop", sense * stop[1] / TWO_PI)
     if power > 0 and steady is None:
-        notes.append("omega_inf: no steady speed; with no losses the motor's power all goes into the wheel, so ω grows without bound")
+        results.not_applicable("omega_inf")
+    else:
+        results.put("omega_inf", 0.0 if power < 0 else sense * steady)
     omega_at = omega0
     at = None
     if time is not None:
