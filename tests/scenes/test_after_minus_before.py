@@ -10,6 +10,10 @@ Each scene's results were read for such a difference:
   (k∫ω³dt) on the motion in closed form (failed before: 1.4e-5 off at a ratio of 1e-12);
 - spin-down with --power: the same residue KE₀ − KE + Pt − W_f (failed before);
 - spin-down putting its energy to use (--until-omega): E = ½I(ω₀² − ω₁²) as ½I(ω₀ − ω₁)(ω₀ + ω₁);
+- spin-down on a heavy wheel (I = 1e6 … 1e12) that a small torque hardly moves, by exact, euler,
+  rk4 and rk45, with a viscous, a quadratic, a power-law drag and under a constant power: the
+  balance's ½I(ω₁² − ω₀²) took ω₁ − ω₀ as two near-equal speeds (1.85e-5 off in closed form, 5 %
+  by euler and rk4); now the motion's own change (closed form, the steps' sum);
 - rolling, a ball skidding until it rolls: energy_lost = KE before − KE after, as ½m k²s²/(1 + k²);
 - pendulum: ω at --angle from ½Iω² = ½Iω₀² + mgd(cos θ − cos θ₀), θ near θ₀;
 - impulse: every Δω, J, work, p₁ − p₀ and each part's change: tests/scenes/impulse/test_exchange_form.py;
