@@ -1,10 +1,13 @@
 """Time steppers with event location, for motion that has no closed form (or when asked for).
 
-The state is (ω, θ) with dω/dt = f(ω), dθ/dt = ω. Every method locates events (the wheel
-reaching ω = 0, or a requested speed) by re-stepping from the start of the step that crosses
-it, with the step size found by the Illinois method, so a stop is never stepped over and
-Coulomb friction never chatters. Fixed-step methods report when their step leaves the stable
-region of the linearised equation (|h λ| above the method's limit on the negative real axis).
+The state is (ω, θ) with dω/dt = f(ω), dθ/dt = ω; beside it each run keeps Δω, the sum of its
+steps' increments (compensated), so that a change much smaller than ω (a heavy wheel a small
+torque hardly moves) keeps its digits rather than being ω₁ − ω₀ of two near-equal speeds. Every
+method locates events (the wheel reaching ω = 0, or a requested speed) by re-stepping from the
+start of the step that crosses it, with the step size found by the Illinois method, so a stop
+is never stepped over and Coulomb friction never chatters. Fixed-step methods report when their
+step leaves the stable region of the linearised equation (|h λ| above the method's limit on the
+negative real axis).
 """
 
 from __future__ import annotations
@@ -70,6 +73,7 @@ class Solution:
     unstable: bool  # a fixed step left the method's stable region
     worst_rate: float  # the largest |h λ| met
     settled: bool = False  # ended early, before t_end, because ``settled`` said the state had settled
+    change: float = 0.0  # ω − ω₀, the steps' increments summed (not the difference of the two speeds)
 
 
 def _step(tableau: Tableau, f: Rate, omega: float, h: float) -> tuple[float, float, tuple[float, float]]:
@@ -89,12 +93,14 @@ def _step(tableau: Tableau, f: Rate, omega: float, h: float) -> tuple[float, flo
     return d_omega, d_theta, (abs(h * fsum(map(mul, differences, slopes))), abs(h * fsum(map(mul, differences, speeds))))
 
 
-def _locate(tableau: Tableau, f: Rate, omega: float, h: float, target: float) -> tuple[float, float, float]:
-    """The step size h* in (0, h] at which the step from ω lands on ω = target (Illinois method)."""
+def _locate(tableau: Tableau, f: Rate, omega: float, h: float, target: float) -> tuple[float, float, float, float]:
+    """The step size h* in (0, h] at which the step from ω lands on ω = target (Illinois method):
+    (h*, target, Δθ, Δω) of that step."""
     low, high = 0.0, h
     f_low, f_high = omega - target, omega + _step(tableau, f, omega, h)[0] - target
     if f_high == 0:
-        return h, target, _step(tableau, f, omega, h)[1]
+        d_omega, d_theta, _ = _step(tableau, f, omega, h)
+        return h, target, d_theta, d_omega
     side = 0
     for _ in range(200):
         mid = (low * f_high - high * f_low) / (f_high - f_low)
@@ -114,7 +120,8 @@ def _locate(tableau: Tableau, f: Rate, omega: float, h: float, target: float) ->
             if side == 1:
                 f_low /= 2
             side = 1
-    return high, target, _step(tableau, f, omega, high)[1]
+    d_omega, d_theta, _ = _step(tableau, f, omega, high)
+    return high, target, d_theta, d_omega
 
 
 def integrate(
@@ -143,6 +150,9 @@ def integrate(
     limit = MAX_STEPS[method] if max_steps is None else max_steps
     adaptive = tableau.embedded is not None
     t, omega, theta = 0.0, omega0, 0.0
+    # ω, θ and Δω each summed with its rounding carried: a step's increment far below ω (a heavy
+    # wheel) would otherwise lose its low digits to every addition, and Δω is their sum
+    omega_lo = theta_lo = change = change_lo = 0.0
     if adaptive:
         slope = abs(f(omega0))
         h = dt or min(t_end, 0.01 * max(abs(omega0), 1.0) / slope if slope else t_end)
@@ -183,14 +193,26 @@ def integrate(
         steps += 1
         landed = omega + d_omega
         if event_at is not None and (landed - event_at) * (omega - event_at) <= 0 and omega != event_at:
-            h_event, landed, d_theta = _locate(tableau, f, omega, step, event_at)
-            return Solution(t + h_event, landed, theta + d_theta, True, steps, _unstable(tableau, worst), worst)
+            h_event, landed, d_theta, d_omega = _locate(tableau, f, omega, step, event_at)
+            return Solution(t + h_event, landed, theta + (d_theta + theta_lo), True, steps, _unstable(tableau, worst), worst,
+                            change=change + (d_omega + change_lo))
         if not math.isfinite(landed):
             return Solution(t + step, math.nan, math.nan, False, steps, True, worst)
-        t, omega, theta = t + step, landed, theta + d_theta
+        t = t + step
+        # Kahan's summation, inline (a step costs ~2 us): each sum's rounding is carried into its
+        # next increment, ω's too, so that its carry decays with a motion that decays
+        added = d_omega + omega_lo
+        total = omega + added
+        omega_lo, omega = added - (total - omega), total
+        added = d_theta + theta_lo
+        total = theta + added
+        theta_lo, theta = added - (total - theta), total
+        added = d_omega + change_lo
+        total = change + added
+        change_lo, change = added - (total - change), total
         if settled is not None and t < t_end and settled(omega):
-            return Solution(t, omega, theta, False, steps, _unstable(tableau, worst), worst, settled=True)
-    return Solution(t, omega, theta, False, steps, _unstable(tableau, worst), worst)
+            return Solution(t, omega + omega_lo, theta + theta_lo, False, steps, _unstable(tableau, worst), worst, settled=True, change=change + change_lo)
+    return Solution(t, omega + omega_lo, theta + theta_lo, False, steps, _unstable(tableau, worst), worst, change=change + change_lo)
 
 
 def _unstable(tableau: Tableau, worst_rate: float) -> bool:

@@ -15,7 +15,7 @@ import re
 from dataclasses import dataclass, field
 
 from taucli.quantities.kinds import KINDS
-from taucli.writing.report import Value
+from taucli.writing.report import NotApplicable, Value
 
 # Kinds that are not quantities.
 CHOICE = "choice"  # a word from ``choices``
@@ -284,6 +284,13 @@ class Results(dict):
             raise KeyError(f"{key!r} is not a result of {self.command.name} in its table")
         unit, label, open_part = found
         self[key] = Value(value, unit, label.replace(FILLED, part) if open_part else label)
+
+    def not_applicable(self, *keys: str) -> None:
+        """Each of ``keys`` null because the scene cannot have it (NotApplicable: a note says why;
+        the human views leave its row out)."""
+        for key in keys:
+            self.put(key, None)
+            self[key] = NotApplicable(*self[key])
 
 
 FILLED = "…"  # where a result's label takes the part its solver fills in

@@ -132,6 +132,24 @@ class ClosedFormPhase(NamedTuple):  # NamedTuples, as report.Value: made on ever
         beta = (self.viscous + root) / 2
         return _real((w0 * e + (self.constant + k * steady * w0) * g) / (e + (k * w0 + beta) * g))
 
+    def change(self, t: float) -> float:
+        """Δω = ω(t) − ω₀ from what makes it, not as the difference of two speeds (which, for a
+        heavy wheel a small torque hardly moves, loses every digit of it; #42 item 8):
+
+            Δω = N₀ (G/I) / (E + (kω₀ + β) G/I),   N₀ = A − bω₀ − kω₀²  (the net torque at the start),
+
+        ω(t) − ω₀ of the form in ``omega``, since (ω₀ − r₊)(kω₀ + β) = −N₀ (kr₊ = β − b, βr₊ = A).
+        """
+        if self.uniform:
+            return self.constant / self.inertia * t
+        root, _ = self._roots()
+        k, w0, inertia = self.drag, self.omega0, self.inertia
+        decay = root * t / inertia
+        e = cmath.exp(-decay) if isinstance(decay, complex) else math.exp(-decay)
+        g = t * exp_fraction(decay) / inertia  # G/I
+        start = self.constant - self.viscous * w0 - k * w0 * w0
+        return _real(start * g / (e + (k * w0 + (self.viscous + root) / 2) * g))
+
     def rate(self, t: float) -> float:
         """dω/dt at t, from the phase variable rather than from ω(t), which near the steady speed
         would leave A − bω − kω² a difference of near-equal numbers:

@@ -22,7 +22,7 @@ from taucli.numerics import steppers as numerics
 from taucli.numerics.roots import falling_root
 from taucli.core.errors import InputError
 from taucli.writing.report import fmt
-from taucli.scenes.closed_forms import ClosedFormPhase, exp_fraction
+from taucli.scenes.closed_forms import ClosedFormPhase, exp_fraction2
 
 DEFAULT_RTOL = 1e-10
 DEFAULT_DT = 1e-3
@@ -119,11 +119,15 @@ class Phase(NamedTuple):
 
         return check
 
-    def carry(self, omega: float, dt: float) -> tuple[float, float]:
-        """(ω, Δθ) after dt more on the settled exponential approach from ω (see ``settled``)."""
+    def carry(self, omega: float, dt: float) -> tuple[float, float, float]:
+        """(ω, Δθ, Δω) after dt more on the settled exponential approach from ω (see ``settled``):
+        δ = ω − ω∞ goes as e^(−λt), so Δω = δ(e^(−λdt) − 1) and Δθ = ω dt − δλdt²·g2(λdt), each
+        from ω rather than from ω∞, which may be far larger than ω and the change (a heavy wheel
+        driven towards a high steady speed: #42 item 8)."""
         steady, rate, _ = self.asymptote()
         gap = omega - steady
-        return steady + gap * math.exp(-rate * dt), steady * dt + gap * dt * exp_fraction(rate * dt)
+        change = gap * math.expm1(-rate * dt)
+        return omega + change, omega * dt - gap * rate * dt * dt * exp_fraction2(rate * dt), change
 
     def steady_speed(self) -> float | None:
         if self.exponent == 2 or self.closed.drag == 0:
@@ -216,14 +220,27 @@ class Evolver:
         phase's start, or on from ``start`` = (t₀, ω, θ) with t₀ ≤ t."""
         if self.method.name == "exact":
             return phase.closed.omega(t), phase.closed.theta(t)
+        return self._stepped(phase, t, start)[:2]
+
+    def advance(self, phase: Phase, t: float) -> tuple[float, float, float]:
+        """(ω, θ, Δω) at time t within the phase (before its stop), Δω = ω − ω₀ formed from what
+        makes it (the closed form's N₀G/(I(E + cG)), or the sum of the steps' increments), not as
+        the difference of two speeds, which for a heavy wheel loses every digit of it (#42 item 8)."""
+        if self.method.name == "exact":
+            closed = phase.closed
+            return closed.omega(t), closed.theta(t), closed.change(t)
+        return self._stepped(phase, t, None)
+
+    def _stepped(self, phase: Phase, t: float, start: tuple[float, float, float] | None) -> tuple[float, float, float]:
+        """(ω, θ, ω − ω at the start) by stepping: ``state``'s stepping half, Δω as in ``advance``."""
         t0, omega0, theta0 = start or (0.0, phase.closed.omega0, 0.0)
         if t == t0:
-            return omega0, theta0
+            return omega0, theta0, 0.0
         solution = self._run(phase, t - t0, None, omega_start=omega0)
         if solution.settled:
-            omega, theta = phase.carry(solution.omega, t - t0 - solution.t)
-            return omega, theta0 + solution.theta + theta
-        return solution.omega, theta0 + solution.theta
+            omega, theta, change = phase.carry(solution.omega, t - t0 - solution.t)
+            return omega, theta0 + solution.theta + theta, solution.change + change
+        return solution.omega, theta0 + solution.theta, solution.change
 
     def reach(self, phase: Phase, target: float) -> tuple[float, float] | None:
         """(t, θ) when the phase first reaches ω = target, or None if it never does."""

@@ -48,38 +48,54 @@ def point_set(r: float, omega: float, alpha: float | None) -> tuple[float, float
     return v, a_t, a_c, total, angle
 
 
-def put_point(results: Results, r: float, omega: float | None, alpha: float | None, theta: float | None, when: str, notes: list[str]) -> list[Step]:
+def put_point(results: Results, r: float, omega: float | None, alpha: float | None, theta: float | None, when: str, notes: list[str],
+              string: tuple[float, float, float | None, float | None] | None = None) -> list[Step]:
     """The point's results at one instant (``when``: " at t = 2 s"), and the steps that give them.
-    ``omega`` None: the instant never comes, so each result is null with a note."""
+    ``omega`` None: the instant never comes, so each result is null with a note. ``string`` =
+    (R, v, a, x): ω, α and θ are a string's v/R, a/R and x/R, which a point at r = R moves with, so
+    its v_t, a_t and s there are the string's own v, a and x (2 m of string given, s = 2 m, not
+    (2/R)·R: #42 item 22); a None where α is not the string's a/R."""
     if omega is None:
         for key in KEYS:
             results.put(key, None, when)
         notes.append(f"{', '.join(KEYS)}: there is no such instant")
         return []
     v, a_t, a_c, total, angle = point_set(r, omega, alpha)
+    if string is not None and r == string[0]:
+        _, speed, accel, travelled = string
+        v, arc = abs(speed), travelled
+        if accel is not None and alpha is not None:
+            a_t = along(accel, speed)
+            total = math.hypot(a_t, a_c)
+            angle = math.atan2(a_t, a_c) if total else None
+    else:
+        arc = None if theta is None else r * theta
     results.put("v_t", v, when)
     results.put("a_t", a_t, when)
     results.put("a_c", a_c, when)
     results.put("a_total", total, when)
     results.put("a_angle", angle, when)
-    results.put("s", None if theta is None else r * theta, " by then" if when != " at the start" else " at the start")
+    results.put("s", arc, " by then" if when != " at the start" else " at the start")
     if alpha is None:
         notes.append("a_t, a_total, a_angle: α is not defined at this instant")
     elif angle is None:
         notes.append("a_angle: the point has no acceleration at this instant, so no direction")
-    return point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when)
+    return point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when, arc)
 
 
-def put_start(results: Results, r: float, omega0: float, alpha0: float | None) -> None:
-    """v_t0, a_c0, a_total0 and a_angle0: the point at the start, where the first set is later."""
+def put_start(results: Results, r: float, omega0: float, alpha0: float | None, string: tuple[float, float] | None = None) -> None:
+    """v_t0, a_c0, a_total0 and a_angle0: the point at the start, where the first set is later;
+    ``string`` = (R, v₀): ω₀ is a string's v₀/R, and a point at r = R moves at v₀ itself (see put_point)."""
     v0, _, a_c0, total0, angle0 = point_set(r, omega0, alpha0)
+    if string is not None and r == string[0]:
+        v0 = abs(string[1])
     results.put("v_t0", v0)
     results.put("a_c0", a_c0)
     results.put("a_total0", total0)
     results.put("a_angle0", angle0)
 
 
-def point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when) -> list[Step]:
+def point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when, arc=None) -> list[Step]:
     """v = ωr, a_c = ω²r, a_t = αr, a = √(a_t² + a_c²) with φ, s = rθ: each with its numbers."""
     radius = term(r, "m")
     steps = [
@@ -96,6 +112,6 @@ def point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when) -> list
                           quantity_text(total, "m/s**2") + ("" if angle is None else f", φ = {quantity_text(angle, 'rad')}"),
                           "the two components are at right angles; φ is measured from the radius pointing to the axis, positive toward the motion"))
     if theta:
-        steps.append(Step("Arc the point has travelled", "s = rθ", f"{radius} × {term(theta, 'rad')}", quantity_text(r * theta, "m"),
+        steps.append(Step("Arc the point has travelled", "s = rθ", f"{radius} × {term(theta, 'rad')}", quantity_text(r * theta if arc is None else arc, "m"),
                           "an arc is its radius times the angle it spans (the string a drum winds, the tread a tyre moves)"))
     return steps

@@ -150,7 +150,8 @@ def _draw_report(report: Report, console, show_steps: bool) -> None:
     console.print(Text.assemble((f"{report.scene}", "bold"), f": {minus_signs(report.model)}"))
     console.print(Text(f"method: {report.method}", style="dim"))
 
-    rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items() if name not in report.tables]
+    rows = [(name, shown(value.value), pretty_unit(value.unit), value.label) for name, value in report.results.items()
+            if name not in report.tables and (value.value is not None or not value.moot)]  # (a result the scene cannot have: its note says why)
     spreads = getattr(report, "uncertainties", None)
     if spreads:  # #22: 4.90 ± 0.08, digits matched to the uncertainty
         rows = [(name, minus_signs(with_uncertainty(report.results[name].value, spreads[name])) if name in spreads else value, unit, label) for name, value, unit, label in rows]

@@ -1,7 +1,8 @@
 """Report, Value, Step, Table: the one contract between solvers and renderers.
 
 A solver returns a Report and nothing else. Values are SI; ``unit`` is a string the unit parser
-reads back ("kg*m**2", "N*m", "rad/s"). A result that does not exist is ``None`` with a note.
+reads back ("kg*m**2", "N*m", "rad/s"). A result that does not exist is ``None`` with a note
+(a NotApplicable one where the scene cannot have it: the human views leave its row out).
 """
 
 from __future__ import annotations
@@ -27,6 +28,19 @@ class Value(NamedTuple):
     value: Number
     unit: str | None
     label: str
+
+    moot = False  # (not a field) True for a NotApplicable result: the human views leave its row out while it is null
+
+
+class NotApplicable(Value):
+    """A result null only because the scene cannot have it: a wheel a drive keeps turning has no
+    stop (t_stop, theta_stop, revs_stop), one that speeds up without bound no steady speed. JSON
+    keeps it null (its key stable, a note saying why); the human views (the table, md, html,
+    latex, a notebook) leave its row out, the note saying why in its stead (#42 item 23). A
+    result null for another reason (an input it needs left out) is a plain Value: its row stays."""
+
+    __slots__ = ()
+    moot = True
 
 
 @dataclass(frozen=True)

@@ -42,7 +42,8 @@ def _point(report: Report, r: float, string_radius: float | None, v0: float, dis
     alpha = start_alpha = values.get("alpha")
     a = values.get("a")
     instant = values.get("t") if distance is not None else time
-    if alpha is not None and a and v0 * a < 0 and instant is not None and instant > -v0 / a:
+    stopped = alpha is not None and a and v0 * a < 0 and instant is not None and instant > -v0 / a
+    if stopped:
         alpha = from_rest()
     results = Results(TABLE)
     results.update(report.results)
@@ -56,7 +57,10 @@ def _point(report: Report, r: float, string_radius: float | None, v0: float, dis
     if values.get("a") is None:  # the motion is not known (μk not given): nor is the point's
         speed = None
     omega = None if speed is None else speed / string_radius
-    steps += put_point(results, r, omega, alpha, None if travelled is None else travelled / string_radius, when, notes)
+    # a point at the string's radius moves with the string: its v_t, a_t and s are the string's v, a
+    # and distance (the distance given, exactly: #42 item 22)
+    string = (string_radius, speed, None if stopped else a, travelled)
+    steps += put_point(results, r, omega, alpha, None if travelled is None else travelled / string_radius, when, notes, string)
     if omega is not None and when != " at the start":
-        put_start(results, r, v0 / string_radius, start_alpha)
+        put_start(results, r, v0 / string_radius, start_alpha, (string_radius, v0))
     return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)

@@ -46,8 +46,13 @@ def _alpha_at_time(report: Report, torques: Torques, inertia: float | None, powe
     return evolve(inertia, torques, omega0, Evolver(Method("exact"))).rate_at(t)
 
 
-def with_point(report: Report, r: float, torques: Torques, inertia, power, omega0, *, time, until_omega, until_angle) -> Report:
-    """The report with the results of a point at radius r, at --time or the target, else the start."""
+def with_point(report: Report, r: float, torques: Torques, inertia, power, omega0, *, time, until_omega, until_angle,
+               rim: tuple[float | None, float | None, float | None, float | None] = (None, None, None, None)) -> Report:
+    """The report with the results of a point at radius r, at --time or the target, else the start.
+    ``rim`` = (R, --rim-speed, --rim-accel, --until-arc), each None where not given: a point at the
+    rim moves at the rim speed given, accelerates at the rim acceleration given and has run the arc
+    given, exactly (not v/R times R: #42 item 22)."""
+    rim_r, rim_speed, rim_accel, arc = rim
     values = {key: value.value for key, value in report.results.items()}
     results = Results(TABLE)
     results.update(report.results)
@@ -76,9 +81,17 @@ def with_point(report: Report, r: float, torques: Torques, inertia, power, omega
         alpha = _alpha_at_time(report, torques, inertia, power, w0, time) if time is not None else None
         if alpha is None:
             alpha = _alpha_at(report, torques, inertia, power, omega) if later else alpha0
-        steps += put_point(results, r, omega, alpha, theta, when, notes)
+        string = None  # the rim's own speed, acceleration and arc where they were given
+        if rim_r is not None and (rim_speed is not None or rim_accel is not None or arc is not None):
+            speed = rim_speed if not later and rim_speed is not None else omega * rim_r
+            if later and until_angle is not None and arc is not None:
+                run = arc
+            else:
+                run = None if theta is None else theta * rim_r
+            string = (rim_r, speed, rim_accel, run)
+        steps += put_point(results, r, omega, alpha, theta, when, notes, string)
         if alpha is None:
             notes[-1] = "a_t, a_total, a_angle: α is not defined at this instant (a constant power at rest)"
     if later:
-        put_start(results, r, w0, alpha0)
+        put_start(results, r, w0, alpha0, None if rim_r is None or rim_speed is None else (rim_r, rim_speed))
     return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)

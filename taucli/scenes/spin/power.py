@@ -114,21 +114,25 @@ class PowerMotion:
 
     def state(self, t: float) -> tuple[float, float]:
         """(ω, θ) at t, signed."""
-        if self.lossless:
-            stop = self.stop()
-            if stop is not None and t >= stop[0]:
-                return 0.0, self.sense * stop[1]
-            u, theta = self.lossless_state(t)
-            return self.sense * u, self.sense * theta
+        omega, theta, _ = self.state_change(t)
+        return omega, theta
+
+    def state_change(self, t: float) -> tuple[float, float, float]:
+        """(ω, θ, Δu) at t, ω and θ signed, Δu = |ω| − |ω₀| formed from what makes it (#42 item 8):
+        2Pt/(I(u + u₀)) without losses (u² − u₀² = 2Pt/I), the sum of the steps' increments when
+        stepped, never the difference of two speeds a heavy wheel's motor hardly parts."""
         stop = self.stop()
         if stop is not None and t >= stop[0]:
-            return 0.0, self.sense * stop[1]
+            return 0.0, self.sense * stop[1], -self.u0
+        if self.lossless:
+            u, theta = self.lossless_state(t)
+            return self.sense * u, self.sense * theta, (2 * self.power * t / (self.inertia * (u + self.u0)) if u + self.u0 else 0.0)
         t0, u0, theta0 = self._start()
         if t <= t0:
             u, theta = PowerMotion(self.inertia, self.power, Torques(), self.u0, self.method, self.sense).lossless_state(t)
-            return self.sense * u, self.sense * theta
+            return self.sense * u, self.sense * theta, u - self.u0
         solution = self._run(u0, t - t0, None)
-        return self.sense * solution.omega, self.sense * (theta0 + solution.theta)
+        return self.sense * solution.omega, self.sense * (theta0 + solution.theta), solution.change + (u0 - self.u0)
 
     def time_to(self, target: float) -> tuple[float, float] | None:
         """(t, θ) when |ω| = target, or None."""
@@ -150,11 +154,14 @@ class PowerMotion:
             return None
         return t0 + solution.t, self.sense * (theta0 + solution.theta)
 
-    def viscous_work(self, end: float, u_end: float, coefficient: float | None = None, exponent: float = 2.0) -> float:
-        """b∫ω²dt over [0, end], the wheel at u_end then. dω/dt = f(ω) alone, so ω is monotone and
-        the integral is b∫ω²/f(ω) dω from u₀ to u_end, where a fast fall from a high speed (drag)
-        is resolved however short it is; the last approach to a steady speed ω*, where f → 0 and
-        that integral turns ill-conditioned, is taken in time instead."""
+    def viscous_work(self, end: float, u_end: float, change: float, coefficient: float | None = None, exponent: float = 2.0) -> float:
+        """b∫ω²dt over [0, end], the wheel at u_end = u₀ + ``change`` then (the change as the motion
+        formed it, ``state_change``). dω/dt = f(ω) alone, so ω is monotone and the integral is
+        b∫ω²/f(ω) dω from u₀ to u_end, where a fast fall from a high speed (drag) is resolved
+        however short it is; it is taken as Δu∫₀¹ over u₀ + sΔu, so that its width is the change
+        itself, not u_end − u₀ of two near-equal speeds (a heavy wheel; #42 item 8). The last
+        approach to a steady speed ω*, where f → 0 and that integral turns ill-conditioned, is
+        taken in time instead."""
         viscous, u0 = (self.torques.viscous if coefficient is None else coefficient), self.u0  # or c∫|ω|ᵖdt, the drag's
         steady = self.steady_speed()
         if steady is not None and u0 == steady:
@@ -164,7 +171,7 @@ class PowerMotion:
             return u ** exponent / self.rate(u) if u > 0 else 0.0
 
         if steady is None or abs(u_end - steady) > 1e-3 * abs(u0 - steady):
-            return viscous * adaptive_gauss(per_speed, u0, u_end)
+            return viscous * change * adaptive_gauss(lambda s: per_speed(u0 + s * change), 0.0, 1.0)
         near = steady + 1e-3 * (u0 - steady)
         reached = self.time_to(self.sense * near)
         if reached is None:  # the stepper does not resolve the approach: the time integral throughout
@@ -206,13 +213,20 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
     if power < 0 and omega0 == 0:
         notes.append("a load with the wheel at rest: nothing turns")
     stop = motion.stop()
-    results.put("t_stop", None if stop is None else stop[0])
-    results.put("theta_stop", None if stop is None else sense * stop[1])
-    results.put("revs_stop", None if stop is None else sense * stop[1] / TWO_PI)
     steady = motion.steady_speed()
-    results.put("omega_inf", 0.0 if power < 0 else None if steady is None else sense * steady)
+    if stop is None:  # a motor (P > 0) keeps it turning: its stop does not apply (#42 item 23)
+        results.not_applicable("t_stop", "theta_stop", "revs_stop")
+        notes.append("the motor keeps it turning, so the wheel never stops and t_stop, theta_stop, revs_stop do not apply"
+                     + ("; nor has it a steady speed (with no losses the motor's power all goes into the wheel, so ω grows without bound): "
+                        "omega_inf does not apply either" if steady is None else ""))
+    else:
+        results.put("t_stop", stop[0])
+        results.put("theta_stop", sense * stop[1])
+        results.put("revs_stop", sense * stop[1] / TWO_PI)
     if power > 0 and steady is None:
-        notes.append("omega_inf: no steady speed; with no losses the motor's power all goes into the wheel, so ω grows without bound")
+        results.not_applicable("omega_inf")
+    else:
+        results.put("omega_inf", 0.0 if power < 0 else sense * steady)
     omega_at = omega0
     at = None
     if time is not None:
@@ -245,8 +259,10 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
     results.put("KE0", inertia * omega0 * omega0 / 2)
     end = at if at is not None else (stop[0] if stop is not None else None)
     if end is not None:
-        omega_end = motion.state(end)[0] if at is None else omega_at
-        theta_end = motion.state(end)[1]
+        stepped_end, theta_end, speed_change = motion.state_change(end)
+        omega_end = stepped_end if at is None else omega_at
+        if at is not None and omega_at != stepped_end:  # the target's speed as given: its change from ω₀ is of two inputs
+            speed_change = abs(omega_at) - abs(omega0)
         ke = inertia * omega_end * omega_end / 2
         results.put("KE", ke, f" at t = {fmt(end)} s" if at is not None else " at the stop")
         driving_time = min(end, stop[0]) if stop is not None else end
@@ -258,20 +274,21 @@ def power_report(inertia, inertia_steps, power, torques: Torques, omega0, *, tim
         friction = torques.friction * abs(theta_end)
         if torques.friction:
             results.put("work_friction", friction, by)
-        rest = inertia * (abs(omega0) - abs(omega_end)) * (abs(omega0) + abs(omega_end)) / 2 + work - friction
+        # ½I(ω₀² − ω²) with ω − ω₀ the motion's own change, not the difference of two near-equal speeds (#42 item 8)
+        rest = -inertia * speed_change * (abs(omega0) + abs(omega_end)) / 2 + work - friction
         # a loss much smaller than the terms it is the difference of is its own integral (#42 item 8)
         cancels = abs(rest) < 1e-2 * max(abs(work), friction, inertia * omega0 * omega0 / 2, ke)
         if torques.viscous and torques.drag and cancels:
-            results.put("work_viscous", motion.viscous_work(end, abs(omega_end)), by)
-            results.put("work_drag", motion.viscous_work(end, abs(omega_end), torques.drag, torques.drag_exponent + 1), by)
+            results.put("work_viscous", motion.viscous_work(end, abs(omega_end), speed_change), by)
+            results.put("work_drag", motion.viscous_work(end, abs(omega_end), speed_change, torques.drag, torques.drag_exponent + 1), by)
         elif torques.viscous and torques.drag:
-            viscous = motion.viscous_work(end, abs(omega_end))
+            viscous = motion.viscous_work(end, abs(omega_end), speed_change)
             results.put("work_viscous", viscous, by)
             results.put("work_drag", max(0.0, rest - viscous), by)
         elif torques.viscous:
-            results.put("work_viscous", motion.viscous_work(end, abs(omega_end)) if cancels else max(0.0, rest), by)
+            results.put("work_viscous", motion.viscous_work(end, abs(omega_end), speed_change) if cancels else max(0.0, rest), by)
         elif torques.drag:
-            results.put("work_drag", motion.viscous_work(end, abs(omega_end), torques.drag, torques.drag_exponent + 1) if cancels else max(0.0, rest), by)
+            results.put("work_drag", motion.viscous_work(end, abs(omega_end), speed_change, torques.drag, torques.drag_exponent + 1) if cancels else max(0.0, rest), by)
     tables, checked = {}, ""
     if chosen.name in ("euler", "rk4"):
         against = f"rk45 at rtol {REFERENCE_RTOL:g}"

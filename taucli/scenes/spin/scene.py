@@ -154,7 +154,7 @@ def spin_down(
     if at is None:
         return report
     r, note = rim_radius(at, wheel.rim if wheel.rim is not None else body_options.get("radius", body_options.get("outer_radius")), "a body with {radius}")
-    report = with_point(report, r, torques, wheel.inertia, power, omega0, **targets)
+    report = with_point(report, r, torques, wheel.inertia, power, omega0, **targets, rim=(wheel.rim, rim_speed, rim_accel, until_arc))
     report.notes += [note] if note else []
     return report
 

@@ -109,17 +109,27 @@ def solve(
             f"static friction holds the wheel at rest: |τ_drive| = {quantity_text(abs(torques.drive), 'N*m')} "
             f"does not exceed τ_f = {quantity_text(torques.holding, 'N*m')}"
         )
-    elif stop is None and not first.stops:  # (a stop that a stepper blew up before finding is said below)
+    # a drive (or no torque at all) keeps it turning: nothing can stop it, so the stop does not apply
+    kept_turning = not held_from_start and stop is None and not first.stops and (first.closed.constant > 0 or not (torques.viscous or torques.drag))
+    omega_inf = motion.final_speed()
+    if kept_turning:
+        notes.append(_kept_turning_note(torques, first, motion.initial_rate * motion.direction > 0, omega_inf is None))
+    elif stop is None and not first.stops and not held_from_start:  # (a stop that a stepper blew up before finding is said below)
         notes.append(_never_stops_note(torques, first))
     answers = method_answers(motion, time, until_omega, until_angle)
-    results.put("t_stop", answers["t_stop"])
-    results.put("theta_stop", answers["theta_stop"])
-    results.put("revs_stop", None if answers["theta_stop"] is None else answers["theta_stop"] / TWO_PI)
+    if kept_turning:
+        results.not_applicable("t_stop", "theta_stop", "revs_stop")
+    else:
+        results.put("t_stop", answers["t_stop"])
+        results.put("theta_stop", answers["theta_stop"])
+        results.put("revs_stop", None if answers["theta_stop"] is None else answers["theta_stop"] / TWO_PI)
 
-    omega_inf = motion.final_speed()
-    if omega_inf is None:
-        notes.append("omega_inf: no steady speed; the driving torque is not balanced by drag, so ω grows without bound")
-    results.put("omega_inf", omega_inf)
+    if omega_inf is None:  # ω grows without bound: no steady speed to have
+        if not kept_turning:
+            notes.append("omega_inf: no steady speed; the driving torque is not balanced by drag, so ω grows without bound")
+        results.not_applicable("omega_inf")
+    else:
+        results.put("omega_inf", omega_inf)
 
     if time is not None:
         omega_t, theta_t = answers["omega"], answers["theta"]
@@ -223,12 +233,24 @@ def _trajectory(motion, time: float | None, omega_inf: float | None) -> Trajecto
     return Trajectory(curves, t_end, motion.sampler(), marks=marks, note=note)
 
 
+def _kept_turning_note(torques: Torques, phase: Phase, speeding_up: bool, unbounded: bool) -> str:
+    """The one note for a wheel nothing can stop, in place of the rows of its stop (and of a
+    steady speed it never reaches): JSON keeps them null, the human views leave them out."""
+    if phase.closed.constant <= 0:
+        why = "no net torque, so ω stays constant and the wheel never stops"
+    else:
+        drive = "the driving torque exceeds friction" if torques.friction else "the driving torque keeps it turning"
+        why = f"{'it speeds up: ' if speeding_up else ''}{drive}, so the wheel never stops"
+    words = f"{why} and t_stop, theta_stop, revs_stop do not apply"
+    if unbounded:
+        words += "; nor has it a steady speed (no drag balances the drive, so ω grows without bound): omega_inf does not apply either"
+    return words
+
+
 def _never_stops_note(torques: Torques, phase: Phase) -> str:
-    if phase.closed.constant > 0:
-        return "t_stop: the driving torque exceeds friction, so the wheel never stops" if torques.friction else "t_stop: the driving torque keeps it turning, so the wheel never stops"
     if torques.viscous or torques.drag:
         return "t_stop: drag alone slows the wheel ever more gently and never quite stops it"
-    return "t_stop: no net torque, so ω stays constant and the wheel never stops"
+    return "t_stop: the wheel never stops"
 
 
 def _kinematics_steps(torques, first, second, stop, results, time, method, omega0) -> list[Step]:
