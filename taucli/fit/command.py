@@ -11,7 +11,8 @@ from __future__ import annotations
 from taucli.writing import render
 from taucli.writing.document import document_text
 from taucli.core.errors import InputError, did_you_mean
-from taucli.fit import chart, data, results, samples, solve
+from taucli.fit import budget, chart, data, results, samples, solve
+from taucli.answering.answer import LIMIT_SECONDS
 from taucli.answering.inputs import read
 from taucli.options import SCENES
 from taucli.options.fit import COMMAND as FIT
@@ -64,12 +65,14 @@ def split_words(command: Command, words: list[str]) -> tuple[list[str], dict[str
 
 
 def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> Report:
-    """The fit's report (what the Python API returns)."""
+    """The fit's report (what the Python API returns: no time limit, as --find's has none there)."""
     return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, stdin=stdin, spell=spell)[0]
 
 
-def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> tuple[Report, solve.Fit]:
-    """The fit's report, and the fit itself (for the chart)."""
+def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None,
+           limit: float | None = None, progress=None) -> tuple[Report, solve.Fit]:
+    """The fit's report, and the fit itself (for the chart). ``limit`` (seconds) refuses a fit
+    estimated to take longer (taucli.fit.budget); ``progress`` is told the solves done and planned."""
     command = _scene(scene)
     spell = spell or command.flag
     tables = [data.read(source, stdin) for source in files]
@@ -77,6 +80,9 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     gravity = read(command, {"g": given["g"]})[0].get("g") if given.get("g") is not None else None
     found_samples = samples.build(command, tables, x=x, y=y, sigma=sigma, ranges=ranges, every=every, fitted=names, given=set(given), gravity=gravity)
     model, starts, notes = solve.model_of(command, given, names, found_samples, stdin=stdin, spell=spell)
+    if limit is not None or progress is not None:
+        faster = [name for name in ("dt", "method") if command.option(name) is not None]
+        model.budget = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
     found = solve.fit(model, starts)
     report = results.written(found)
     report.notes[:0] = notes
@@ -98,8 +104,10 @@ def run(env, given: dict) -> int:
 
         plot.check_file(given["out"])
     try:
-        report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
-                               sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin)
+        with render.progress_bar(env.stderr, True) as progress:
+            report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
+                                   sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin,
+                                   limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress)
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
     if output.json:

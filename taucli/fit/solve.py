@@ -23,7 +23,7 @@ import numpy as np
 from taucli.quantities import units
 from taucli.answering import unknowns
 from taucli.core.errors import InputError
-from taucli.fit import linear, nonlinear, quality, start
+from taucli.fit import budget, linear, nonlinear, quality, start
 from taucli.fit.model import Model, held
 from taucli.fit.samples import Samples
 from taucli.answering.inputs import read
@@ -91,6 +91,8 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
                          hint="give more samples, or fit fewer inputs")
     y = np.asarray(samples.y, dtype=float)
     sigma = np.asarray(samples.sigma, dtype=float) if samples.sigma is not None else None
+    if model.budget is not None:  # the least the fit takes, estimated (and refused past the limit) before the work
+        budget.before(model, np.array([starts.get(name, 0.0 if model.sign(j) != "positive" else 1.0) for j, name in enumerate(model.names)]))
     p0, steps, how = start.start(model, starts)
     if not np.any(np.isfinite(model.predict(p0))):
         raise InputError("fit", f"the scene gives no {samples.y_key} for any sample at the start ({model.why_refused()})")
@@ -106,6 +108,8 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         method = f"linear least squares (the model is linear in {', '.join(model.names)}: solved exactly, no iteration)"
         steps.append(_linear_step(model, shape, n))
     else:
+        if model.budget is not None:
+            model.budget.plan(n, budget.nonlinear_evaluations(m), m)
         outcome = nonlinear.minimize(model, y, sigma, p0)
         if not outcome.converged:  # inputs the samples cannot tell apart leave a valley the search wanders in: say so first
             _refuse_degenerate(model, quality.jacobian(model, outcome.p), sigma, outcome.p)
