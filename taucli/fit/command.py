@@ -14,7 +14,7 @@ from taucli.core.errors import InputError, did_you_mean
 from taucli.fit import budget, chart, data, results, samples, solve
 from taucli.answering.answer import LIMIT_SECONDS
 from taucli.answering.inputs import read
-from taucli.options import SCENES
+from taucli.options import COMMANDS, SCENES
 from taucli.options.fit import COMMAND as FIT
 from taucli.writing.report import Report
 from taucli.options.table import FLAG, Command
@@ -39,9 +39,7 @@ def split_words(command: Command, words: list[str]) -> tuple[list[str], dict[str
             flag, equals, value = word.partition("=")
             option = flags.get(flag)
             if option is None:
-                own = {o.flag for o in (*FIT.options, *FIT.output)}
-                known = sorted(flags) + sorted(own)
-                raise InputError("", f"{flag} is not an option of fit, nor an input of {command.name}", hint=did_you_mean(flag, known))
+                raise _not_taken(command, flag, sorted(flags) + sorted({o.flag for o in (*FIT.options, *FIT.output)}))
             if option.kind == FLAG:
                 given[option.name] = True
                 continue
@@ -62,6 +60,20 @@ def split_words(command: Command, words: list[str]) -> tuple[list[str], dict[str
     if not files:
         raise InputError("data", "expected a data file (CSV) after the scene", example=f"taucli fit {command.name} runs.csv --fit NAME")
     return files, given
+
+
+def _not_taken(command: Command, flag: str, known: list[str]) -> InputError:
+    """A flag that is neither fit's nor an input of the scene: where another command takes it, say
+    so (fit … --format suggested --force), else the nearest name."""
+    if any(option.flag == flag for option in command.output):
+        writes = flag in ("--format", "--jsonl", "--batch", "--points", "--y")
+        return InputError("", f"{flag} is an option of taucli {command.name}'s own runs, not of fit",
+                          hint="fit answers as text, as one JSON document (--json), or as numbers (--get NAME, with --uncertainty)" if writes else None)
+    takers = [other.name for other in COMMANDS.values() if other.name not in ("fit", command.name)
+              and any(option.flag == flag for option in (*other.options, *other.output))]
+    if takers:
+        return InputError("", f"{flag} is not an input of {command.name} nor an option of fit ({', '.join(takers)} take{'s' if len(takers) == 1 else ''} it)")
+    return InputError("", f"{flag} is not an option of fit, nor an input of {command.name}", hint=did_you_mean(flag, known))
 
 
 def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> Report:
@@ -110,6 +122,11 @@ def run(env, given: dict) -> int:
                                    limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress)
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
+    drawn = chart.chart(found) if given.get("out") is not None or (given.get("plot") and not output.json) else None
+    if given.get("out") is not None:  # the file first, as the scenes do: one that cannot be written (a full disk) is refused before any answer
+        from taucli.writing import plot  # deferred: matplotlib, only for --out
+
+        plot.write_file(drawn, given["out"], said_to=env.stderr)
     if output.json:
         shown = render.prepared(report, output)
         document = chart.document(found) if given.get("plot") else None
@@ -120,10 +137,6 @@ def run(env, given: dict) -> int:
             from taucli.writing import plot  # deferred: charts, only for --plot
 
             columns, colour = render.terminal_style(env.stdout)
-            env.stdout.write("\n" + plot.terminal(chart.chart(found), columns, colour=colour))
-    if given.get("out") is not None:
-        from taucli.writing import plot  # deferred: matplotlib, only for --out
-
-        plot.write_file(chart.chart(found), given["out"])
+            env.stdout.write("\n" + plot.terminal(drawn, columns, colour=colour))
     env.stdout.flush()
     return 0
