@@ -35,6 +35,16 @@ def nonlinear_evaluations(m: int) -> int:
     return 4 + 16 * m
 
 
+class Spent(Exception):
+    """The fit passed its budget: carries the refusal (an OverBudget) out through the fit's own
+    handlers, which take an InputError from a solve for a sample the scene refuses (taucli.fit.command
+    raises the refusal)."""
+
+    def __init__(self, refusal: OverBudget):
+        super().__init__(str(refusal))
+        self.refusal = refusal
+
+
 def before(model, p) -> None:
     """Time the scene's solve at p on a few samples spread over the table (after one untimed: the
     first solve imports its solver), and plan the least a fit takes: refused here where even that
@@ -88,7 +98,7 @@ class Budget:
         each = self.spent / self.solves
         estimate = max(each * max(self.planned, self.solves), self.spent)
         if estimate > self.limit:
-            raise self._refusal(each, estimate)
+            raise Spent(self._refusal(each, estimate))
 
     def _refusal(self, each: float, estimate: float) -> OverBudget:
         took = (f"is estimated to take about {estimate:,.0f} s ({_count(self.evaluations, 'evaluation')} of the scene at "

@@ -95,8 +95,11 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     if limit is not None or progress is not None:
         faster = [name for name in ("dt", "method") if command.option(name) is not None]
         model.budget = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
-    found = solve.fit(model, starts)
-    report = results.written(found)
+    try:
+        found = solve.fit(model, starts)
+        report = results.written(found)
+    except budget.Spent as spent:
+        raise spent.refusal from None
     report.notes[:0] = notes
     return report, found
 

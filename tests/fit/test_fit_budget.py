@@ -75,3 +75,15 @@ def test_a_progress_bar_on_stderr_only_when_it_is_a_terminal(coast):
         assert main(args, Environment(stdin=None, stdout=stdout, stderr=stderr)) == 0, stderr.getvalue()
         assert float(stdout.getvalue()) > 0
         assert ("solving" in stderr.getvalue()) is shown, stderr.getvalue()[:200]
+
+
+def test_the_limit_passed_inside_a_search_that_takes_a_sample_the_scene_refuses_still_refuses(tmp_path, monkeypatch):
+    """The start's root search (and the model) take an InputError from a solve as a sample the scene
+    refuses: the budget's refusal passes through them, not read as "finds no start"."""
+    from taucli.fit import budget
+
+    monkeypatch.setattr(budget, "before", lambda model, p: None)  # no estimate first: the limit is passed in the search
+    path = tmp_path / "periods.csv"
+    path.write_text("amplitude (deg),period (s)\n10,2.01\n20,2.02\n30,2.04\n40,2.07\n")
+    with pytest.raises(OverBudget, match=r"^fit is estimated to take about"):
+        command.fit_of("pendulum", [str(path)], {"shape": "point", "mass": "50g", "radius": "1m"}, fit="g", x=("amplitude=angle0",), limit=1e-9)

@@ -112,3 +112,13 @@ def test_a_chart_that_cannot_be_written_is_refused_before_any_answer(tmp_path, c
                           capture_output=True, text=True, preexec_fn=_small_files, timeout=60)
     assert done.returncode == 2 and done.stdout == "", (done.stdout, done.stderr)
     assert done.stderr.startswith("taucli: error: --out: expected a file that can be written") and "File too large" in done.stderr
+
+
+@pytest.mark.parametrize("shape", ["dics", "19.8kg", ",".join(["19.8kg"] * 2000)])
+def test_a_held_option_the_scene_refuses_is_said_as_the_scene_says_it_not_as_no_start(taucli, tmp_path, shape):
+    """fit … --shape dics said "finds no start for g"; a 2,000-value --shape took seconds a solve in difflib."""
+    path = tmp_path / "periods.csv"
+    path.write_text("amplitude (deg),period (s)\n10,2.01\n20,2.02\n30,2.04\n40,2.07\n")
+    done = taucli("fit", "pendulum", str(path), "--shape", shape, "--mass", "50g", "--radius", "1m", "--x", "amplitude=angle0", "--fit", "g")
+    assert_usage_error(done, "--shape: expected a shape: point, ring, disc")
+    assert ("did you mean 'disc'?" in done.err) is (shape == "dics")
