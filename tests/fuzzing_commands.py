@@ -20,7 +20,7 @@ from pathlib import Path
 
 from hypothesis import strategies as st
 
-from fuzzing import SCENES, UNITS, Vector, command_options, numbers, option_value, quantity_texts, sane_value
+from fuzzing import SCENES, Vector, command_options, numbers, option_value, quantity_texts, sane_value
 
 ROOT = Path(__file__).resolve().parent.parent
 FIT_LIMIT = 1.5  # seconds: fit's budget in the fuzz (60 s on the command line)

@@ -109,7 +109,7 @@ class Budget:
         if self.samples // thinned >= 3:
             ways.append(f"{{every}} {thinned * self.every} fits")
         if self.faster:
-            ways.append("a faster solve (" + ", or ".join(f"{{method}} auto where a closed form exists" if name == "method" else f"a larger {{{name}}}"
+            ways.append("a faster solve (" + ", or ".join("{method} auto where a closed form exists" if name == "method" else f"a larger {{{name}}}"
                                                           for name in self.faster) + ")")
         hint = (" or ".join(ways) if ways else "fewer samples ({range})") + "; {no_limit} runs it as asked"
         return OverBudget("fit", took, hint=hint)

@@ -16,7 +16,7 @@ import resource
 
 import pytest
 
-from conftest import assert_usage_error, run_taucli
+from conftest import assert_usage_error
 from taucli.core.errors import InputError
 from taucli.front.cli import Environment, main
 from taucli.options import SCENES
