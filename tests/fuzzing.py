@@ -21,6 +21,7 @@ import io
 import json
 import math
 import os
+import re
 import signal
 import sys
 import tempfile
@@ -152,7 +153,7 @@ class Vector:
     def __repr__(self) -> str:  # as a shell line, to paste into a terminal
         import shlex
 
-        return f"taucli {shlex.join([self.scene, *self.args])}" + (f"  <<< {self.stdin[:200]!r}" if self.stdin else "")
+        return f"taucli {shlex.join([self.scene, *self.args] if self.scene else self.args)}" + (f"  <<< {self.stdin[:200]!r}" if self.stdin else "")
 
 
 @functools.lru_cache(maxsize=None)
@@ -381,11 +382,13 @@ def _run_once(vector: Vector, workdir: str, seconds: float = SECONDS) -> Outcome
 
 
 def _asks_for_help(vector: Vector, outcome: Outcome) -> bool:
-    """-h or --help, or no command at all (taucli alone prints its help on stderr, exit 2: taucli.front.help):
-    the help is the answer, whatever else the line holds."""
-    shown = (outcome.out or outcome.err).startswith("Usage: taucli")
+    """-h or --help, or no command at all (taucli alone prints its help on stderr, exit 2: taucli.front.help),
+    or --version before any command: the help or the version is the answer, whatever else the line holds."""
     words = [vector.scene, *vector.args] if vector.scene else vector.args
     no_command = all(word.startswith("-") for word in words)
+    if no_command and "--version" in words and re.fullmatch(r"taucli \S+\n", outcome.out):  # --version is answered before anything else
+        return True
+    shown = (outcome.out or outcome.err).startswith("Usage: taucli")
     return shown and (any(word in ("-h", "--help") for word in words) or no_command)
 
 

@@ -8,6 +8,8 @@ the writer, and the chart where asked for.
 
 from __future__ import annotations
 
+import numpy as np
+
 from taucli.writing import render
 from taucli.writing.document import document_text
 from taucli.core.errors import InputError, did_you_mean
@@ -96,10 +98,14 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
         faster = [name for name in ("dt", "method") if command.option(name) is not None]
         model.budget = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
     try:
-        found = solve.fit(model, starts)
-        report = results.written(found)
+        with np.errstate(all="ignore"):  # numbers past a double's range are looked for where they matter (NaN, inf: refused or said)
+            found = solve.fit(model, starts)
+            report = results.written(found)
     except budget.Spent as spent:
         raise spent.refusal from None
+    except np.linalg.LinAlgError as err:  # a least squares on numbers that leave it without a solution
+        raise InputError("fit", f"the least squares has no solution with these samples and inputs ({err})",
+                         hint="give magnitudes nearer everyday sizes, or fit fewer inputs") from None
     report.notes[:0] = notes
     return report, found
 

@@ -126,6 +126,7 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         p = polished
         started = "a closed-form start" if "closed form" in how else "the starts given" if set(how) == {"given"} else "a start from single samples"
         method = f"bounded nonlinear least squares (trust region reflective, scipy.optimize.least_squares) from {started}"
+    _refuse_not_finite(model, J / sigma[:, None] if sigma is not None else J, p)
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
     found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p)
     covariance, from_held = _with_held(model, p, J, sigma, found.covariance)
@@ -168,6 +169,8 @@ def _polished(model: Model, p: np.ndarray, J: np.ndarray, y: np.ndarray, sigma) 
     weights = 1.0 / sigma if sigma is not None else np.ones(len(y))
     for _ in range(2):
         before = (y - model.predict(p)) * weights
+        if not (np.all(np.isfinite(J * weights[:, None])) and np.all(np.isfinite(before))):
+            return p  # (numbers past a double's range: the fit is refused after, where its Jacobian is looked at)
         moved = p + np.linalg.lstsq(J * weights[:, None], before, rcond=None)[0]
         if not all(model.allowed(j, moved[j]) for j in range(len(p))):
             return p
@@ -199,6 +202,18 @@ def _with_held(model: Model, p: np.ndarray, J: np.ndarray, sigma, covariance: np
         slopes[name] = dp
         total += np.outer(dp, dp) * spread**2
     return total, slopes
+
+
+def _refuse_not_finite(model: Model, J: np.ndarray, p: np.ndarray) -> None:
+    """The (weighted) Jacobian at the fitted inputs must be finite for the covariance: where the
+    scene has no value just beside them (an input at its bound) or its result changes past what a
+    double holds, the fit is refused (a linear algebra routine given a NaN fails, and LAPACK says
+    so on stdout)."""
+    if not np.all(np.isfinite(J)):
+        at = ", ".join(f"{name} = {value:.6g}" for name, value in zip(model.names, p))
+        why = model.why_refused() if model.refusal is not None else f"{model.samples.y_key} changes past what a double holds"
+        raise InputError("fit", f"ends where the scene has no {model.samples.y_key}, or none a double holds, just beside the inputs fitted "
+                         f"({at}: {why}), so the fit's uncertainties cannot be worked out there", hint="give magnitudes nearer everyday sizes, or fit fewer inputs")
 
 
 def _refuse_degenerate(model: Model, J: np.ndarray, sigma, p: np.ndarray) -> None:
