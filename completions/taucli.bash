@@ -67,7 +67,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel fit bench completions --version --debug --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel fit bench completions convert --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in
@@ -527,6 +527,12 @@ _taucli() {
             return 0
         fi
         COMPREPLY=($(compgen -W "--help" -- "$cur"))
+        ;;
+    convert)
+        case "$prev" in
+            --get) COMPREPLY=($(compgen -W "value uncertainty unit kind si_value si_uncertainty si_unit" -- "$cur")); return 0 ;;
+        esac
+        COMPREPLY=($(compgen -W "--json --get --help" -- "$cur"))
         ;;
     esac
     return 0

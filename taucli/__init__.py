@@ -9,6 +9,7 @@ texts or SI numbers; each returns the Report the command line renders:
 
 A value the scene cannot use raises taucli.InputError (a ValueError) naming the parameter; a
 result the run did not make, taucli.MissingResult (a KeyError) naming what makes it.
+taucli.convert("3000 rpm", "rad/s") reads a quantity as the options do and writes it in a unit.
 """
 
 from __future__ import annotations
@@ -19,13 +20,18 @@ from taucli.writing.report import Report
 from taucli.options.table import MissingResult
 from taucli.core.version import __version__ as __version__  # taucli.__version__
 
-__all__ = ["InputError", "MissingResult", "Report", *(command.function_name for command in SCENES.values())]
+__all__ = ["InputError", "MissingResult", "Report", "convert", *(command.function_name for command in SCENES.values())]
 
 
 def __getattr__(name: str):
     """taucli.atwood and the other scenes, made from their tables when first asked for."""
     if name not in __all__:  # a submodule not imported yet, or no such name
         raise AttributeError(f"module 'taucli' has no attribute {name!r}")
+    if name == "convert":
+        from taucli.front.api import convert  # deferred: pint, only when converting
+
+        globals()[name] = convert
+        return convert
     from taucli.front import api  # deferred: the API's functions are made on first use, not by a plain import
 
     found = api.function(name)

@@ -93,6 +93,8 @@ def docs_tables() -> dict[str, str]:
         "coast-de.csv": decimal_comma(coast, "t [s];omega [rad/s]"),
         "torsion.csv": csv("mass (g),period (s)", torsion, ("g", ".3f")),
         "friction.csv": csv("t (s),omega (rad/s)", friction, ("g", ".3f")),
+        "pasco.csv": csv("Time (ms) Run #1,Angular Velocity (rad/s) Run #1", [(1000 * t, w) for t, w in friction], ("g", ".3f")),
+        "millis.csv": csv("millis,omega (rad/s)", [(1000 * t, w) for t, w in friction[:4]], ("g", ".3f")),
         "spin-up.csv": csv("t (s),torque (N*m),omega0 (rad/s),omega (rad/s)", spin_up, ("g", "g", "g", ".3f")),
         "periods.csv": csv("amplitude (deg),period (s)", periods, ("g", ".4f")),
         "ramp.csv": csv("angle (deg),length (m),t (s)", ramp, ("g", "g", ".3f")),

@@ -3,8 +3,10 @@ numbers for a machine are compared with a page (tests/front/test_readme.py, test
 
 from __future__ import annotations
 
+import io
 import os
 import re
+import shlex
 import shutil
 import sys
 
@@ -81,6 +83,16 @@ def fit_numbers_agree(got_lines: list[str], page_lines: list[str]) -> bool:
     return True
 
 
+def fit_output_agrees(command: str, out: str, err: str, printed: str) -> bool:
+    """What an example printed (stdout, then stderr) against its page: a fit's numbers for a
+    machine within the tolerances above, the lines on stderr beside them (its warnings) as text;
+    anything else as text."""
+    if not fit_machine_output(command):
+        return lines_of(out + err) == lines_of(printed)
+    page, numbers = lines_of(printed), lines_of(out) if out.strip() else []
+    return fit_numbers_agree(numbers, page[:len(numbers)]) and lines_of(err) == page[len(numbers):] if err.strip() else fit_numbers_agree(numbers, page)
+
+
 def piped(command: str) -> bool:
     return bool(re.search(r"[|<>]", command))
 
@@ -104,3 +116,43 @@ def needs(program: str) -> None:
         if os.environ.get("CI"):
             pytest.fail(f"{program} is not installed: .ci/run installs it")
         pytest.skip(f"{program} is not installed (apt-get install {program})")
+
+
+# What an example prints for a machine, or to a file, left off when it is asked for as a document.
+MACHINE_FLAGS = {"--json", "--jsonl", "--plot", "--uncertainty"}
+MACHINE_OPTIONS = {"--get", "--format", "--out", "--y"}
+
+
+def as_format(command: str, fmt: str) -> list[str]:
+    """An example's words with what it prints for a machine left off and --format FMT added."""
+    words, kept, skip = shlex.split(command)[1:], [], False
+    for word in words:
+        if skip:
+            skip = False
+        elif word in MACHINE_OPTIONS:
+            skip = True
+        elif word not in MACHINE_FLAGS:
+            kept.append(word)
+    return [*kept, "--format", fmt]
+
+
+def examples_as(fmt: str, folder) -> list[tuple[str, str, int, str, str]]:
+    """(command, what its page printed, exit status, stdout, stderr) of each scene's and fit's
+    example of README and docs/ (no pipe; help, completions and bench aside), run in this process in
+    ``folder`` (which it changes to: the block's files written there, docs/ beside them) as
+    --format FMT."""
+    from taucli.front.cli import Environment, main
+    from taucli.options import SCENES
+
+    with_docs(folder)
+    os.chdir(folder)
+    found = []
+    for command, printed, files in sessions():
+        if command.split()[1] not in (*SCENES, "fit") or piped(command):
+            continue
+        for name, text in files.items():
+            (folder / name).write_text(text, encoding="utf-8")
+        env = Environment(stdin=io.StringIO(""), stdout=io.StringIO(), stderr=io.StringIO())
+        code = main(as_format(command, fmt), env)
+        found.append((command, printed, code, env.stdout.getvalue(), env.stderr.getvalue()))
+    return found

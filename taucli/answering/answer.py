@@ -38,6 +38,14 @@ def plain(given: Mapping[str, object], find=None, want=None, mc=None) -> bool:
     return True
 
 
+def turn_on_what_makes(command: Command, given: dict, asked: set) -> None:
+    """A result named in --get, --y, --to or --want is made: the flag that makes it (--energy for
+    KE0) is turned on, as if given."""
+    for option in command.options:
+        if option.makes and not given.get(option.name) and asked & set(option.makes):
+            given[option.name] = True
+
+
 def solve(
     command: Command,
     given: Mapping[str, object],
@@ -54,6 +62,9 @@ def solve(
     carries one, solved for the input ``find`` where ``want`` (RESULT=VALUE) says. ``limit``
     (seconds) refuses --find and --mc work estimated to take longer; ``progress`` is told how many
     of its planned solves are done."""
+    if isinstance(want, str) and find is not None:  # --want KE0=…: what makes KE0 (--energy) is on, as for --get (#48 item 3)
+        given = dict(given)
+        turn_on_what_makes(command, given, {want.partition("=")[0].strip()})
     if plain(given, find, want, mc):
         return pipeline.solve(command, given, stdin=stdin, spell=spell)
     from taucli.answering import find as finding  # deferred: find and propagate, with what they import, only for these runs

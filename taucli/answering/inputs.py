@@ -66,11 +66,11 @@ def _file(option: Option, given, inputs: Inputs, stdin):
     if source == "-":
         if stdin is None:
             raise InputError(option.name, "cannot be - here: no stdin to read it from", example='"torque_profile": "pulse.csv"')
-        profile = read_profile(stdin)
+        profile = read_profile(stdin, "stdin")
     else:
         try:
             handle = open(source, encoding="utf-8")  # noqa: SIM115 (closed when its samples are read, or by the collector)
-            profile = read_profile(handle)
+            profile = read_profile(handle, source)
         except OSError as err:
             raise InputError(option.name, "expected a readable CSV file (or - for stdin)", got=f"{source!r}: {err.strerror}") from None
         except UnicodeDecodeError:

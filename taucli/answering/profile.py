@@ -15,7 +15,7 @@ import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
-from taucli.answering.csv_text import cells as _cells, delimiter as _delimiter, split_header
+from taucli.answering.csv_text import MAX_BYTES, cells as _cells, delimiter as _delimiter, split_header, too_large
 from taucli.quantities import units
 from taucli.core.errors import InputError
 from taucli.quantities.kinds import BOUNDS, check_bounds, out_of_bounds
@@ -44,25 +44,30 @@ def _unit_factor(text: str | None, kind: str, column: str, notes: list[str]) -> 
 MAX_LINE = 4096  # characters in one line: a row is two numbers; a file with no newline (/dev/zero) is not CSV
 
 
-def _lines(source: Iterable[str]) -> Iterator[str]:
+def _lines(source: Iterable[str], name: str) -> Iterator[str]:
     """The lines of ``source``, each read at most MAX_LINE characters at a time, so that a file
-    with no line end is refused rather than read into memory without end."""
+    with no line end is refused rather than read into memory without end, and at most MAX_BYTES
+    in all (csv_text's cap on any table: an endless FIFO or stdin is refused, not integrated forever)."""
     readline = getattr(source, "readline", None)
     if readline is None:
         yield from source
         return
-    number = 0
+    number = total = 0
     while line := readline(MAX_LINE + 1):
         number += 1
+        total += len(line)
+        if total > MAX_BYTES:
+            raise too_large(OPTION, name)
         if len(line) > MAX_LINE:
             raise InputError(OPTION, f"line {number}: longer than {MAX_LINE} characters; expected CSV rows of two numbers, time and torque",
                              example="t [ms], torque [N*m]", got=repr(line[:20] + "…"))
         yield line
 
 
-def read_profile(lines: Iterable[str]) -> Profile:
-    """A Profile over CSV lines: a header "t [ms], torque [N*m]", then "time, torque" rows."""
-    numbered = ((number, line.strip()) for number, line in enumerate(_lines(lines), start=1))
+def read_profile(lines: Iterable[str], name: str = "the profile") -> Profile:
+    """A Profile over CSV lines: a header "t [ms], torque [N*m]", then "time, torque" rows
+    (``name``: the file's, as the messages say it)."""
+    numbered = ((number, line.strip()) for number, line in enumerate(_lines(lines, name), start=1))
     rows = ((number, line) for number, line in numbered if line and not line.startswith("#"))
     try:
         header_number, header = next(rows)

@@ -25,6 +25,7 @@ from taucli.writing.document import document_text
 from taucli.writing.human import draw_table, drawing
 from taucli.writing.display import minus_signs
 from taucli.core.errors import InputError, did_you_mean
+from taucli.core.written import printable
 from taucli.options import scene
 from taucli.writing.report import Report, pretty_unit
 from taucli.options.table import Command
@@ -349,7 +350,7 @@ def _write_format(table: formats.Grid, format: str, stream, notes_to) -> None:
         stream.write(formats.csv_grid(table))
         stream.flush()  # the rows, then the notes beside them
         if notes_to is not None:
-            notes_to.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in table.notes))
+            notes_to.write(renderer.said_notes(table.notes))
         return
     if format == "latex":
         from taucli.writing import latex  # deferred: LaTeX's tables of symbols, only for --format latex
@@ -365,17 +366,17 @@ def _render_table(points: list[Point], swept: list[Swept], stream) -> None:
 
     table = grid(points, swept)
     with drawing(stream) as console:
-        scene_name, _, what = table.title.partition(": ")
+        scene_name, _, what = printable(table.title).partition(": ")  # every text printable, as a single run's (#43 item 14)
         console.print(Text.assemble((scene_name, "bold"), f": {what}"))
-        console.print(Text(f"model: {table.model}", style="dim"))
+        console.print(Text(f"model: {printable(table.model)}", style="dim"))
         headings = []
         for name, unit in table.columns:
-            shown_unit = pretty_unit(unit)
-            headings.append(f"{name} ({shown_unit})" if shown_unit else name)
-        rows = [[minus_signs(cell) for cell in row] for row in formats.grid_cells(table)]  # 4.90 ± 0.08 where a value has one
+            shown_unit = printable(pretty_unit(unit))
+            headings.append(f"{printable(name)} ({shown_unit})" if shown_unit else printable(name))
+        rows = [[minus_signs(printable(cell)) for cell in row] for row in formats.grid_cells(table)]  # 4.90 ± 0.08 where a value has one
         # numbers are never split: a table too wide for the terminal becomes a list, one point at a time
         draw_table(console, headings, rows, right=[True] * len(headings), bold_first=True)
-        for note in table.notes:
+        for note in map(printable, table.notes):
             if note.startswith("… and "):
                 console.print(Text(note, style="dim"))
             else:

@@ -10,6 +10,8 @@ import re
 from collections.abc import Callable, Mapping
 from enum import IntEnum
 
+from taucli.core.written import printable
+
 _NAMED = re.compile(r"\{([a-z][a-z0-9_]*)\}")
 
 
@@ -114,7 +116,6 @@ _PARAMETER = re.compile(r"[a-z][a-z0-9_]*")
 QUOTED = 80
 GOT = 2 * QUOTED
 _LONG_WORD = re.compile(r"\S{%d,}" % (QUOTED + 1))
-_UNDECODED = re.compile("[\udc80-\udcff]")  # a byte that was not UTF-8, as Python's surrogateescape reads it
 
 
 def clipped(text: str, limit: int = QUOTED) -> str:
@@ -126,10 +127,11 @@ def clipped(text: str, limit: int = QUOTED) -> str:
 
 
 def bounded(message: str) -> str:
-    """A message that can be written anywhere as UTF-8: each word of it at most QUOTED characters,
-    and each byte that was not UTF-8 (read as a lone surrogate) written as its escape, \\xff."""
-    message = _LONG_WORD.sub(lambda word: clipped(word.group()), message)
-    return _UNDECODED.sub(lambda char: f"\\x{ord(char.group()) - 0xDC00:02x}", message)
+    """A message that can be written anywhere as UTF-8, on one line, and shown safely on a
+    terminal: each control character of it (an ESC, a newline in a file's name) and each byte
+    that was not UTF-8 (read as a lone surrogate) written as its escape, \\x1b, \\n, \\xff
+    (taucli.core.written.printable); each word at most QUOTED characters."""
+    return _LONG_WORD.sub(lambda word: clipped(word.group()), printable(message))
 
 
 class Unused(InputError):

@@ -1,4 +1,5 @@
-"""How a number and a unit are written for a person: the digits shown, the unit's symbols.
+"""How a number and a unit are written for a person: the digits shown, the unit's symbols; and
+any text a person is shown, its control characters escaped (``printable``).
 
 Plain text, no taucli import: the solvers write their steps with these, and so do the writers
 (the human view, --format md, latex, html) and a Report shown in Python.
@@ -7,6 +8,7 @@ Plain text, no taucli import: the solvers write their steps with these, and so d
 from __future__ import annotations
 
 import math
+import re
 
 
 DIGITS = 6  # significant figures of every number a person is shown: the results table and the steps alike
@@ -74,3 +76,30 @@ def shown(value, digits: int = DIGITS) -> str:
     if isinstance(value, list):  # --find's roots (#22)
         return ", ".join(shown(item, digits) for item in value)
     return str(value)
+
+
+# What no text taucli shows may carry raw (#43 item 14): C0 and C1 controls (ESC starts a
+# terminal's escape sequences, OSC 8 links and OSC 52 clipboard writes among them; a newline or
+# carriage return splits or overwrites a line), DEL, the line and paragraph separators, the
+# invisible marks that reorder or hide text (bidi overrides, zero-width joiners, BOM), and a lone
+# surrogate (a byte of a file's name that was not UTF-8, as Python's surrogateescape reads it).
+_UNPRINTABLE = re.compile("[\x00-\x1f\x7f-\x9f\u00ad\u061c\u200b-\u200f\u2028-\u202e\u2060-\u2069\ufeff\ud800-\udfff]")
+_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+
+
+def _escape(found: re.Match) -> str:
+    char = found.group()
+    code = ord(char)
+    if char in _ESCAPES:
+        return _ESCAPES[char]
+    if 0xDC80 <= code <= 0xDCFF:  # an undecoded byte: its value, \xff
+        return f"\\x{code - 0xDC00:02x}"
+    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
+
+
+def printable(text: str) -> str:
+    """``text`` with each control or invisible character written as Python's repr writes it
+    (\\x1b, \\n, \\u202e), as a header or cell of a data file is quoted in a message: the name
+    of a file, a path or anything else typed, shown on one line and unable to drive the terminal.
+    A text with none (nearly all) is returned as it is."""
+    return _UNPRINTABLE.sub(_escape, text) if _UNPRINTABLE.search(text) else text

@@ -148,4 +148,15 @@ def run(env, given: dict) -> int:
             columns, colour = render.terminal_style(env.stdout)
             env.stdout.write("\n" + plot.terminal(drawn, columns, colour=colour))
     env.stdout.flush()
+    if output.json or output.get:  # a script reads the numbers alone: the fit's warnings beside them, one line each
+        env.stderr.write("".join(f"taucli: warning: {text}\n" for text in warnings(report)))
     return 0
+
+
+WARNING = "warning: "  # a note that says the numbers may be wrong (taucli.fit.results)
+
+
+def warnings(report: Report) -> list[str]:
+    """The fit's warnings, each on one line without its prefix: what --get and --json also say on
+    stderr, as the human view says them among the notes (a result is never hidden behind a flag)."""
+    return [" ".join(note[len(WARNING):].split()) for note in report.notes if note.startswith(WARNING)]

@@ -9,8 +9,13 @@ write it.
   be a thousands separator is refused, never guessed): the columns are separated by semicolons or
   tabs, no number has a decimal point, and some number has other than three digits after its
   comma. A file whose every comma is followed by three digits (``1,500``) is refused.
-- Every cell of a row is a finite number: a row with an empty cell, NaN, infinity or text is
-  refused with its line, not skipped.
+- Every cell of a row is a finite number or empty: a blank or NaN cell (phyphox pads with NaN,
+  Vernier and PASCO pad shorter runs with blanks) is read as NaN, no measurement, and the fit
+  leaves out the rows where a column it uses has one (samples.py, with a note); infinity or
+  text is refused with its line.
+- The text is read as csv_text says (UTF-8, Windows-1252, UTF-16 or -32 with a BOM; lines end at
+  \\n, \\r\\n or \\r only), streamed: at most MAX_BYTES of any source (a file, a device, a FIFO,
+  stdin) and MAX_ROWS rows are read, the rest refused as soon as it passes them.
 - A binary file, a file that is not UTF-8 or Windows-1252 text, ragged rows, an empty table and
   a line longer than csv's limit are refused, one line each.
 
@@ -20,21 +25,40 @@ Plain Python (csv): no numpy, no pint.
 from __future__ import annotations
 
 import csv
-import io
+import itertools
+import math
 import os
 import re
+from array import array
+from collections.abc import Sequence
 from dataclasses import dataclass
 
-from taucli.answering.csv_text import delimiter as _delimiter, split_header
+from taucli.answering.csv_text import MAX_BYTES, delimiter as _delimiter, lines as text_lines, split_header, too_large
 from taucli.core.errors import InputError
+from taucli.core.written import printable
 
 OPTION = "data"  # the argument the messages name (DATA)
-MAX_BYTES = 200 * 1024 * 1024
 MAX_ROWS = 2_000_000
 
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _COMMA_NUMBER = re.compile(r"[+-]?\d*,(\d+)(?:[eE][+-]?\d+)?")
 _NOT_FINITE = {"nan", "inf", "-inf", "+inf", "infinity", "-infinity", "+infinity"}
+
+
+class Numbers(array):
+    """A column's numbers (or the rows' lines) as a compact array, 8 bytes each, equal to any
+    tuple or list of the same numbers as the tuple it replaces was (``column.values == (1.5, 2.5)``)."""
+
+    def __eq__(self, other):
+        if isinstance(other, (tuple, list, array)):
+            return len(self) == len(other) and all(a == b for a, b in zip(self, other))
+        return NotImplemented
+
+    def __ne__(self, other):
+        equal = self.__eq__(other)
+        return equal if equal is NotImplemented else not equal
+
+    __hash__ = None
 
 
 @dataclass(frozen=True)
@@ -45,14 +69,14 @@ class Column:
     header: str
     name: str
     unit: str  # "" where the header names none
-    values: tuple[float, ...]
+    values: Sequence[float]  # Numbers: 8 bytes a number, not a tuple's 32
 
 
 @dataclass(frozen=True)
 class DataTable:
     source: str  # the file's name, or "stdin"
     columns: tuple[Column, ...]
-    lines: tuple[int, ...]  # the line of the file each row is on
+    lines: Sequence[int]  # the line of the file each row is on (Numbers)
     delimiter: str
     decimal_comma: bool
 
@@ -62,128 +86,153 @@ class DataTable:
 
 def read(source, stdin=None) -> DataTable:
     """The table in the file ``source`` (``-``: stdin; an open file object, from Python), or a
-    usage error naming what is wrong."""
-    name = "stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object")
-    text = _text(source, stdin)
-    lines = text.splitlines()
-    start = next((i for i, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("#")), None)
-    if start is None:
+    usage error naming what is wrong. The source is read as it streams (csv_text.lines: at most
+    MAX_BYTES of it, whatever it is), each row turned into numbers as it comes: what is kept is the
+    numbers, 8 bytes each, and the line each row is on."""
+    name = _name(source)
+    numbered = enumerate(_lines(source, stdin, name), start=1)
+    found = next(((number, line) for number, line in numbered if line.strip() and not line.lstrip().startswith("#")), None)
+    if found is None:
         raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
                          example="t (s),omega (rad/s)")
-    delimiter = _delimiter(lines[start])  # the rules a torque profile is read by too
-    rows = _rows(lines, start, delimiter, name)
-    if not rows:
+    start, header_line = found[0] - 1, found[1]
+    delimiter = _delimiter(header_line)  # the rules a torque profile is read by too
+    rows = _rows(itertools.chain([(found[0], header_line)], numbered), start, delimiter, name)
+    first = next(rows, None)
+    if first is None:
         raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
                          example="t (s),omega (rad/s)")
-    headers = [cell.strip() for cell in rows[0][1]]
+    headers = [cell.strip() for cell in first[1]]
     if any(not header for header in headers):
-        raise InputError(OPTION, f"{name} line {rows[0][0]}: expected a name for every column", got=repr(lines[start][:80]))
+        raise InputError(OPTION, f"{name} line {first[0]}: expected a name for every column", got=repr(header_line[:80]))
     if len(set(headers)) != len(headers):
         twice = sorted({header for header in headers if headers.count(header) > 1})
-        raise InputError(OPTION, f"{name} line {rows[0][0]}: names a column twice: {', '.join(twice)}")
+        raise InputError(OPTION, f"{name} line {first[0]}: names a column twice: {', '.join(twice)}")
     if all(_NUMBER.fullmatch(header) for header in headers):
-        raise InputError(OPTION, f"{name} line {rows[0][0]}: expected a header naming the columns before the numbers", example="t (s),omega (rad/s)")
-    body = rows[1:]
-    if not body:
-        raise InputError(OPTION, f"{name} has a header and no rows of numbers")
-    for line, cells in body:
+        raise InputError(OPTION, f"{name} line {first[0]}: expected a header naming the columns before the numbers", example="t (s),omega (rad/s)")
+    values = [Numbers("d") for _ in headers]
+    lines = Numbers("q")
+    commas = _Commas()
+    for line, cells in rows:
         if len(cells) != len(headers):
             raise InputError(OPTION, f"{name} line {line}: expected {len(headers)} cells, as the header names, got {len(cells)}")
-    decimal_comma = _decimal_comma(body, delimiter, name)
-    numbers = [[_number(cell, line, header, name, decimal_comma) for cell, header in zip(cells, headers)] for line, cells in body]
-    columns = tuple(Column(header, *split_header(header), tuple(row[i] for row in numbers)) for i, header in enumerate(headers))
-    return DataTable(name, columns, tuple(line for line, _ in body), delimiter, decimal_comma)
+        for cell, header, column in zip(cells, headers, values):
+            # A comma is read as a decimal comma here; the file's commas, all seen, then say whether it is one or the table is refused.
+            column.append(_number(cell, line, header, name, commas.seen(line, cell)))
+        lines.append(line)
+    if not lines:
+        raise InputError(OPTION, f"{name} has a header and no rows of numbers")
+    decimal_comma = commas.decided(delimiter, name)
+    columns = tuple(Column(header, *split_header(header), column) for header, column in zip(headers, values))
+    return DataTable(name, columns, lines, delimiter, decimal_comma)
 
 
-def _text(source, stdin) -> str:
-    name = "stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object")
+def _name(source) -> str:
+    """The file's name as messages and steps show it: its control characters escaped (#43)."""
+    return printable("stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object"))
+
+
+def _lines(source, stdin, name: str):
+    """The lines of the source, streamed (csv_text.lines), a file larger than the cap refused before it is read."""
     if not isinstance(source, str):  # an open file object (the Python API)
-        try:
-            raw = source.read(MAX_BYTES + 1)
-        except (OSError, ValueError, TypeError) as err:
-            raise InputError(OPTION, "expected an open file to read a table from", got=f"{name}: {err}") from None
-        if not isinstance(raw, (str, bytes)):
-            raise InputError(OPTION, "expected a file object whose read() gives text or bytes", got=f"{name}: {type(raw).__name__}")
-        if len(raw) > MAX_BYTES:
-            raise InputError(OPTION, f"{name} is larger than {MAX_BYTES // 1024 // 1024} MB: give a part of it (fit takes at most 5000 samples)")
-    elif source == "-":
+        return _guarded(source.read, name, "expected an open file to read a table from")
+    if source == "-":
         if stdin is None:
             raise InputError(OPTION, "cannot be - here: no stdin to read it from")
-        raw = stdin.buffer.read() if hasattr(stdin, "buffer") else stdin.read()
-    else:
-        try:
-            if os.path.getsize(source) > MAX_BYTES:
-                raise InputError(OPTION, f"{name} is larger than {MAX_BYTES // 1024 // 1024} MB: give a part of it (fit takes at most 5000 samples)")
-            with open(source, "rb") as handle:
-                raw = handle.read()
-        except OSError as err:
-            raise InputError(OPTION, "expected a readable data file (or - for stdin)", got=f"{source!r}: {err.strerror or err}") from None
-    if isinstance(raw, str):
-        return raw
-    if b"\x00" in raw[:65536]:
-        raise InputError(OPTION, f"{name} is not a text table (it holds NUL bytes: a binary file?)", hint="export the data as CSV")
-    for encoding in ("utf-8-sig", "cp1252"):
-        try:
-            return raw.decode(encoding)
-        except UnicodeDecodeError:
-            continue
-    raise InputError(OPTION, f"{name} is not text in UTF-8 or Windows-1252", hint="export the data as CSV in UTF-8")
+        return _guarded((stdin.buffer if hasattr(stdin, "buffer") else stdin).read, name, "expected a readable stdin")
+    try:
+        if os.path.getsize(source) > MAX_BYTES:  # a regular file says its size (a device or a FIFO says 0: the stream's cap holds there)
+            raise too_large(OPTION, name, _WHAT)
+        handle = open(source, "rb")  # noqa: SIM115 (closed when its lines are read: _closing)
+    except OSError as err:
+        raise InputError(OPTION, "expected a readable data file (or - for stdin)", got=f"{source!r}: {err.strerror or err}") from None
+    return _closing(handle, _guarded(handle.read, name, "expected a readable data file (or - for stdin)"))
 
 
-def _rows(lines: list[str], start: int, delimiter: str, name: str) -> list[tuple[int, list[str]]]:
-    """(line number, cells) of the header and each row after it, blank lines and comments left out."""
-    rows = []
-    reader = csv.reader(io.StringIO("\n".join(lines[start:])), delimiter=delimiter)
+_WHAT = "fit takes at most 5000 samples"
+
+
+def _guarded(read, name: str, expected: str):
+    """csv_text.lines over ``read``, an error of the read itself (an I/O error, a closed file) one line."""
+    try:
+        yield from text_lines(read, name, OPTION, _WHAT)
+    except (OSError, ValueError, TypeError) as err:
+        if isinstance(err, InputError):
+            raise
+        raise InputError(OPTION, expected, got=f"{name}: {err}") from None
+
+
+def _closing(handle, lines):
+    with handle:
+        yield from lines
+
+
+def _rows(numbered, start: int, delimiter: str, name: str):
+    """(line number, cells) of the header and each row after it, blank lines and comments left
+    out, streamed; a table past MAX_ROWS refused as soon as it passes."""
+    reader = csv.reader((line + "\n" for _, line in numbered), delimiter=delimiter)
+    count = 0
     try:
         for cells in reader:
             line = start + reader.line_num
             if not cells or all(not cell.strip() for cell in cells) or cells[0].lstrip().startswith("#"):
                 continue
-            rows.append((line, cells))
-            if len(rows) > MAX_ROWS:
-                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows: give a part of it (fit takes at most 5000 samples)")
+            count += 1
+            if count > MAX_ROWS + 1:  # (the header besides)
+                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows, the most fit reads of a table (it takes at most 5000 samples)",
+                                 hint=too_large(OPTION, name).hint)
+            yield line, cells
     except csv.Error as err:
         raise InputError(OPTION, f"{name} line {start + reader.line_num}: cannot be read as a table ({err})") from None
-    return rows
 
 
-def _decimal_comma(body: list[tuple[int, list[str]]], delimiter: str, name: str) -> bool:
-    """Whether the numbers use a decimal comma (see the module's rule), or a usage error where a
-    comma could be a thousands separator."""
-    with_comma = with_point = None
-    decimal = False
-    for line, cells in body:
-        for cell in cells:
+class _Commas:
+    """Whether the numbers use a decimal comma (see the module's rule), learnt from each cell as
+    the rows stream (``seen``), decided when all are seen (``decided``): True, False, or a usage
+    error where a comma could be a thousands separator."""
+
+    def __init__(self) -> None:
+        self.with_comma: tuple[int, str] | None = None
+        self.with_point: tuple[int, str] | None = None
+        self.decimal = False
+
+    def seen(self, line: int, cell: str) -> bool:
+        """Takes in one cell; whether it holds a comma (read as a decimal one until decided)."""
+        if "," in cell:
             cell = cell.strip()
-            if "," in cell:
-                with_comma = with_comma or (line, cell)
-                found = _COMMA_NUMBER.fullmatch(cell)
-                if found is not None and len(found[1]) != 3:
-                    decimal = True
-            if "." in cell and _NUMBER.fullmatch(cell):
-                with_point = with_point or (line, cell)
-    if with_comma is None:
+            self.with_comma = self.with_comma or (line, cell)
+            found = _COMMA_NUMBER.fullmatch(cell)
+            if found is not None and len(found[1]) != 3:
+                self.decimal = True
+            return True
+        if self.with_point is None and "." in cell and _NUMBER.fullmatch(cell.strip()):
+            self.with_point = (line, cell.strip())
         return False
-    line, cell = with_comma
-    if delimiter == ",":
-        raise InputError(OPTION, f"{name} line {line}: a comma inside a cell of a comma-separated table could be a decimal comma or a thousands separator",
-                         got=repr(cell), hint="write 4.5, or separate the columns with ; for a decimal comma")
-    if with_point is not None:
-        raise InputError(OPTION, f"{name} line {line}: numbers with a comma beside numbers with a point ({with_point[1]!r} on line {with_point[0]}): "
-                         "the comma could be a thousands separator", got=repr(cell), hint="write every number with a point")
-    if not decimal:
-        raise InputError(OPTION, f"{name} line {line}: every comma is followed by three digits, so it could be a thousands separator "
-                         "or a decimal comma", got=repr(cell), hint="write 1.5 or 1500")
-    return True
+
+    def decided(self, delimiter: str, name: str) -> bool:
+        if self.with_comma is None:
+            return False
+        line, cell = self.with_comma
+        if delimiter == ",":
+            raise InputError(OPTION, f"{name} line {line}: a comma inside a cell of a comma-separated table could be a decimal comma or a thousands separator",
+                             got=repr(cell), hint="write 4.5, or separate the columns with ; for a decimal comma")
+        if self.with_point is not None:
+            raise InputError(OPTION, f"{name} line {line}: numbers with a comma beside numbers with a point ({self.with_point[1]!r} on line {self.with_point[0]}): "
+                             "the comma could be a thousands separator", got=repr(cell), hint="write every number with a point")
+        if not self.decimal:
+            raise InputError(OPTION, f"{name} line {line}: every comma is followed by three digits, so it could be a thousands separator "
+                             "or a decimal comma", got=repr(cell), hint="write 1.5 or 1500")
+        return True
 
 
 def _number(cell: str, line: int, header: str, name: str, decimal_comma: bool) -> float:
     text = cell.strip()
     if decimal_comma:
         text = text.replace(",", ".", 1) if text.count(",") == 1 else text
-    if not text or text.lower() in _NOT_FINITE:
-        what = "is empty" if not text else f"is {text}"
-        raise InputError(OPTION, f"{name} line {line}: column {header!r} {what}, not a finite number; a row is refused, not skipped",
+    if not text or text.lower() == "nan":
+        return math.nan  # no measurement here (see the module's rule)
+    if text.lower() in _NOT_FINITE:
+        raise InputError(OPTION, f"{name} line {line}: column {header!r} is {text}, not a finite number; a row is refused, not skipped",
                          hint="remove the row, or fill the cell")
     if not _NUMBER.fullmatch(text):
         raise InputError(OPTION, f"{name} line {line}: expected a number in column {header!r}", got=repr(cell.strip()[:40]))

@@ -23,7 +23,8 @@ from taucli.core.errors import InputError, spelled
 from taucli.fit.samples import Samples
 from taucli.answering.inputs import read
 from taucli.quantities.measurement import split
-from taucli.writing.report import Report
+from taucli.quantities import units
+from taucli.writing.report import Report, quantity_text
 from taucli.options.table import Command
 from taucli.answering.unknowns import Unknown
 
@@ -118,6 +119,10 @@ class Model:
             return math.nan
         value = None if result is None else result.value
         return float(value) if isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value) else math.nan
+
+    def shown(self, values: Mapping[str, float]) -> str:
+        """Values of fitted inputs as a step shows them: "friction = 0.06 N·m, omega0 = 30 rad/s"."""
+        return ", ".join(f"{name} = {quantity_text(value, units.KINDS[self.unknowns[self.names.index(name)].kind].si_unit)}" for name, value in values.items())
 
     def sign(self, j: int) -> str:
         return self.unknowns[j].sign

@@ -18,6 +18,7 @@ from taucli.fit.model import Model
 
 TOLERANCE = 1e-10  # scipy's ftol, xtol and gtol
 MOST_EVALUATIONS = 300  # of f at every sample (the Jacobian's differences not counted)
+AT_BOUND = 1e-6  # of an input's start: this near its bound, it ends on it
 PENALTY = 1e6  # a sample without a value: this many times the largest weighted measurement
 
 
@@ -47,7 +48,8 @@ def minimize(model: Model, y: np.ndarray, sigma: np.ndarray | None, p0: np.ndarr
     found = least_squares(residuals, p0 / scale, bounds=(lower, np.full(len(p0), np.inf)), method="trf", jac="2-point", diff_step=1e-7,
                           x_scale=1.0, ftol=TOLERANCE, xtol=TOLERANCE, gtol=TOLERANCE, max_nfev=MOST_EVALUATIONS)
     p = found.x * scale
-    at_bound = [j for j in range(len(p)) if found.active_mask[j] != 0 or (model.sign(j) != "any" and p[j] <= lower[j] * scale[j] + 1e-12 * scale[j])]
+    # on its bound, or within AT_BOUND of its start's size of it (the reflective search nears a bound without reaching it)
+    at_bound = [j for j in range(len(p)) if found.active_mask[j] != 0 or (model.sign(j) != "any" and p[j] <= lower[j] * scale[j] + AT_BOUND * scale[j])]
     evaluations = (model.solves - before) // max(model.samples.count, 1)
     return Outcome(p, found.status > 0, str(found.message), evaluations, int(found.nfev), at_bound)
 

@@ -11,13 +11,19 @@ diagnostics.
 - The covariance C = (JᵀWJ)⁻¹ with W = diag(1/σᵢ²) where the samples' uncertainties are given; else
   s²(JᵀJ)⁻¹, s² = Σrᵢ²/(n − m) the residual variance standing in for them. The correlation
   ρⱼₖ = Cⱼₖ/√(CⱼⱼCₖₖ).
-- The residual RMS √(Σrᵢ²/n), R² = 1 − Σrᵢ²/Σ(yᵢ − ȳ)², and with uncertainties χ²/ν (ν = n − m)
-  and the chance of a χ² this large for a model that fits.
+- The residual RMS √(Σrᵢ²/n), R² = 1 − Σrᵢ²/Σ(yᵢ − ȳ)² (below 0: the model does worse than the
+  samples' mean), and with uncertainties χ²/ν (ν = n − m) and the chance of a χ² this far from ν
+  either way for a model that fits (too large: the residuals exceed the σ given; too small: the σ
+  given exceed the scatter).
 - Two tests of the residuals in the order of the samples' input, for a shape the model does not
-  have (a line through a curve): the runs test (Wald–Wolfowitz) of their signs, which change at
-  random for a model that fits (far fewer runs than expected: z < −3.3), and their lag-1
-  autocorrelation r₁, near −1/n for a model that fits (r₁ ~ N(−1/n, 1/n): z = (r₁ + 1/n)√n > 3.3).
-  Either is p < 0.05 %: a model that fits is seldom flagged, and one flagged is said to be wrong.
+  have, both two-sided: the runs test (Wald–Wolfowitz) of their signs, which change at random for
+  a model that fits (too few runs: a curve the model lacks; too many: residuals that alternate, as
+  two runs interleaved and fitted as one do), its chance from the exact distribution of the runs
+  given the counts of each sign; and their lag-1 autocorrelation r₁, near −1/n for a model that
+  fits (r₁ ~ N(−1/n, 1/n): z = (r₁ + 1/n)√n). Each flags at a chance below ``SHAPE_P`` both ways
+  (0.1 %): a model that fits is seldom flagged, and one flagged is said to be wrong. A test that
+  cannot reach that chance with these samples (the runs test with fewer than about 15, the
+  autocorrelation with fewer than 10) is too weak to run: it is left out, and the fit says so.
 """
 
 from __future__ import annotations
@@ -34,20 +40,23 @@ DEGENERATE = 1e-7  # smallest singular value / largest (columns scaled): below, 
 NEARLY = 1e-3  # below: barely told apart (a note)
 FLAT = 1e-9  # an input whose relative change moves f by less than this of f: the samples do not depend on it
 INVOLVED = 1e-4  # of the weakest direction's largest component: an input it moves (one it leaves is rounding there)
-RUNS_Z = -3.3  # the runs test's z below which the residuals are structured (one-sided p ≈ 0.0005)
-LAG_Z = 3.3  # the lag-1 autocorrelation's z above which they are
-CHI2_P = 1e-3  # a χ² this unlikely for a model that fits: a note
-RUNS_LEAST = 10  # fewer samples than this: no runs test
+SHAPE_P = 1e-3  # a test of the residuals' shape flags at a chance below this, both ways together
+SHAPE_Z = 3.2905  # the normal's two-sided 0.1 % point: the lag-1 autocorrelation's |z| above which the residuals are structured
+CHI2_P = 1e-3  # a χ² this unlikely for a model that fits, either way (each tail at half of it): a warning
+RUNS_LEAST = 10  # fewer samples than this: neither shape test can reach SHAPE_P
 STEP = 1e-3  # relative step of the differences for the Jacobian
+FLOOR = 1e-3  # of an input's natural scale: the least size its step is taken at (an input at 0 has no size of its own)
 
 
-def jacobian(model: Model, p: np.ndarray, moved=None, *, rough: bool = False) -> np.ndarray:
+def jacobian(model: Model, p: np.ndarray, moved=None, *, rough: bool = False, scale: np.ndarray | None = None) -> np.ndarray:
     """∂f(xᵢ; p)/∂pⱼ: n × m, by differences (central with Richardson; one-sided near a bound);
-    ``rough``: forward differences, one solve per input (enough to see dependent columns)."""
+    ``rough``: forward differences, one solve per input (enough to see dependent columns). The step
+    is STEP of |pⱼ|, and at least FLOOR of the input's natural scale (``scale``: the size its start
+    had): an input at 0 (on its bound) is still moved by a step its samples feel."""
     columns = []
     base = model.predict(p, moved)
     for j in range(len(p)):
-        h = max(STEP * abs(p[j]), 1e-300)
+        h = max(STEP * abs(p[j]), STEP * FLOOR * (scale[j] if scale is not None else 0.0), 1e-300)
 
         def f(x: float) -> np.ndarray:
             q = np.array(p, dtype=float)
@@ -74,15 +83,17 @@ class Degeneracy:
     flat: list[str]  # inputs the samples do not depend on at all
 
 
-def degeneracy(J: np.ndarray, names: list[str], p: np.ndarray, f: np.ndarray) -> Degeneracy:
+def degeneracy(J: np.ndarray, names: list[str], p: np.ndarray, f: np.ndarray, scale: np.ndarray | None = None) -> Degeneracy:
     """How near the columns of J are to dependent (scaled to unit length: the ratio does not depend
     on the inputs' units), and which inputs the weakest direction moves (where the columns are
     dependent, an input outside the dependence has a component of rounding size there). An input
-    that moves f (weighted as J is) by less than FLAT of f for a relative change is one the samples
-    do not depend on: its column is rounding."""
+    that moves f (weighted as J is) by less than FLAT of f when it changes by its natural size
+    (the larger of |pⱼ| and ``scale``, the size its start had: an input at or near 0 is not flat
+    for being there) is one the samples do not depend on: its column is rounding."""
     norms = np.linalg.norm(J, axis=0)
     size = float(np.linalg.norm(f)) if np.all(np.isfinite(f)) else 0.0
-    flat = [name for name, norm, x in zip(names, norms, p) if not norm > 0 or (x != 0 and norm * abs(x) <= FLAT * size)]
+    sizes = np.maximum(np.abs(p), scale if scale is not None else 0.0)
+    flat = [name for name, norm, x in zip(names, norms, sizes) if not norm > 0 or (x != 0 and norm * x <= FLAT * size)]
     if flat or J.shape[1] == 0:
         return Degeneracy(0.0, flat, flat)
     s, vt = np.linalg.svd(J / norms, full_matrices=False)[1:]
@@ -119,6 +130,22 @@ def _listed(names: list[str]) -> str:
 
 
 @dataclass
+class Runs:
+    """The runs test of the residuals' signs: the runs counted, their mean and σ for signs in a
+    random order, z, the two-sided chance p of a count this far from the mean, and the least p
+    any order of these signs could give (above SHAPE_P: the test is too weak to run)."""
+
+    runs: int
+    expected: float
+    spread: float
+    z: float
+    p: float
+    least: float
+    plus: int
+    minus: int
+
+
+@dataclass
 class Quality:
     n: int
     m: int
@@ -131,14 +158,51 @@ class Quality:
     chi2: float | None
     chi2_dof: float | None
     chi2_p: float | None
-    runs: tuple[int, float, float, float] | None  # (runs, expected, its σ, z)
+    runs: Runs | None  # the runs test of the residuals' signs (None: fewer than RUNS_LEAST samples)
     lag: tuple[float, float] | None  # (r₁, z)
     degeneracy: Degeneracy
+    chi2_low: float | None = None  # the chance of a χ² this small or smaller
+
+    @property
+    def runs_weak(self) -> bool:
+        """The runs test cannot reach SHAPE_P with these samples: left out."""
+        return self.runs is None or self.runs.least > SHAPE_P
+
+    @property
+    def lag_weak(self) -> bool:
+        """The autocorrelation cannot reach SHAPE_Z with these samples: left out."""
+        return self.lag is None or lag_reach(self.n) <= SHAPE_Z
+
+    @property
+    def shape_tested(self) -> bool:
+        return not (self.runs_weak and self.lag_weak)
+
+    @property
+    def runs_flag(self) -> bool:
+        return not self.runs_weak and self.runs.p < SHAPE_P
+
+    @property
+    def lag_flag(self) -> bool:
+        return not self.lag_weak and abs(self.lag[1]) > SHAPE_Z
 
     @property
     def structured(self) -> bool:
-        """The residuals have a shape: the runs test or the autocorrelation says so."""
-        return (self.runs is not None and self.runs[3] < RUNS_Z) or (self.lag is not None and self.lag[1] > LAG_Z)
+        """The residuals have a shape: the runs test or the autocorrelation says so (either way)."""
+        return self.runs_flag or self.lag_flag
+
+    @property
+    def alternating(self) -> bool:
+        """Flagged for too many runs or a negative autocorrelation: residuals that alternate."""
+        return (self.runs_flag and self.runs.z > 0) or (self.lag_flag and self.lag[1] < 0)
+
+    @property
+    def chi2_flag(self) -> str | None:
+        """"high" or "low" where χ² is that unlikely for a model that fits with the σ given."""
+        if self.chi2_p is not None and self.chi2_p < CHI2_P / 2:
+            return "high"
+        if self.chi2_low is not None and self.chi2_low < CHI2_P / 2:
+            return "low"
+        return None
 
     @property
     def dof(self) -> int:
@@ -156,13 +220,15 @@ class Quality:
         return np.where(np.isfinite(rho), rho, 0.0)
 
 
-def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray | None, order: np.ndarray, names: list[str], p: np.ndarray) -> Quality:
-    """The covariance and the diagnostics of a fit (J unweighted; ``sigma`` each sample's σ or None)."""
+def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray | None, order: np.ndarray, names: list[str], p: np.ndarray,
+           scale: np.ndarray | None = None) -> Quality:
+    """The covariance and the diagnostics of a fit (J unweighted; ``sigma`` each sample's σ or None;
+    ``scale`` each input's natural size, for the test of inputs the samples do not depend on)."""
     n, m = J.shape
     r = y - fitted
     weights = 1.0 / sigma if sigma is not None else np.ones(n)
     Jw = J * weights[:, None]
-    found = degeneracy(Jw, names, p, fitted * weights)
+    found = degeneracy(Jw, names, p, fitted * weights, scale)
     if found.flat or found.ratio < DEGENERATE:
         refuse_degenerate(found, "the result")
     norms = np.linalg.norm(Jw, axis=0)
@@ -174,14 +240,14 @@ def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray |
     s2 = (chi2 if chi2 is not None else rss) / dof
     covariance = inverse if sigma is not None else inverse * s2
     tss = float(np.sum((y - np.mean(y)) ** 2))
-    chi2_p = None
+    chi2_p = chi2_low = None
     if chi2 is not None:
         from scipy.stats import chi2 as chi2_distribution  # deferred: scipy.stats (about 150 ms), only with uncertainties given
 
-        chi2_p = float(chi2_distribution.sf(chi2, dof))
+        chi2_p, chi2_low = float(chi2_distribution.sf(chi2, dof)), float(chi2_distribution.cdf(chi2, dof))
     ordered = r[np.argsort(order, kind="stable")]
     return Quality(n, m, r, covariance, sigma is None, s2, math.sqrt(rss / n), 1.0 - rss / tss if tss > 0 else None, chi2,
-                   chi2 / dof if chi2 is not None else None, chi2_p, runs_test(ordered), lag_test(ordered), found)
+                   chi2 / dof if chi2 is not None else None, chi2_p, runs_test(ordered), lag_test(ordered), found, chi2_low)
 
 
 def lag_test(residuals: np.ndarray) -> tuple[float, float] | None:
@@ -194,17 +260,44 @@ def lag_test(residuals: np.ndarray) -> tuple[float, float] | None:
     return r1, (r1 + 1 / n) * math.sqrt(n)
 
 
-def runs_test(residuals: np.ndarray) -> tuple[int, float, float, float] | None:
-    """(runs, expected, σ, z) of the signs of ``residuals`` in order (zeros left out), or None for
-    fewer than RUNS_LEAST samples."""
+def lag_reach(n: int) -> float:
+    """The largest |z| the lag-1 autocorrelation of n residuals can reach: |r₁| ≤ cos(π/(n + 1))."""
+    return (math.cos(math.pi / (n + 1)) + 1 / n) * math.sqrt(n) if n > 1 else 0.0
+
+
+def runs_test(residuals: np.ndarray) -> Runs | None:
+    """The runs test of the signs of ``residuals`` in order (zeros left out), or None for fewer
+    than RUNS_LEAST samples. Its chance is exact: for n₊ and n₋ signs in a random order,
+    P(R = 2k) = 2C(n₊−1, k−1)C(n₋−1, k−1)/C(n, n₊) and P(R = 2k+1) = (C(n₊−1, k−1)C(n₋−1, k) +
+    C(n₊−1, k)C(n₋−1, k−1))/C(n, n₊); p = 2 min(P(R ≤ r), P(R ≥ r)). Every residual of one sign has
+    the chance 2^(1−n) of n fair coins landing alike."""
     signs = np.sign(residuals[residuals != 0])
-    if len(signs) < RUNS_LEAST:
+    total = len(signs)
+    if total < RUNS_LEAST:
         return None
     plus, minus = int(np.sum(signs > 0)), int(np.sum(signs < 0))
-    if not plus or not minus:
-        return 1, 1.0, 0.0, -math.inf  # every residual of one sign: as structured as they come
+    if not plus or not minus:  # every residual of one sign: as structured as they come
+        chance = 2.0 ** (1 - total)
+        return Runs(1, 1.0, 0.0, -math.inf, chance, chance, plus, minus)
     runs = 1 + int(np.sum(signs[1:] != signs[:-1]))
-    total = plus + minus
     expected = 2 * plus * minus / total + 1
     spread = math.sqrt((expected - 1) * (expected - 2) / (total - 1))
-    return runs, expected, spread, (runs - expected) / spread if spread > 0 else 0.0
+    counts, chances = _runs_distribution(plus, minus)
+    below, above = float(np.sum(chances[counts <= runs])), float(np.sum(chances[counts >= runs]))
+    least = min(1.0, 2 * min(chances[0], chances[-1]))
+    return Runs(runs, expected, spread, (runs - expected) / spread if spread > 0 else 0.0, min(1.0, 2 * min(below, above)), least, plus, minus)
+
+
+def _runs_distribution(plus: int, minus: int) -> tuple[np.ndarray, np.ndarray]:
+    """(each possible count of runs, its chance) for ``plus`` and ``minus`` signs in a random order
+    (logarithms of the binomial coefficients: exact to rounding for thousands of samples)."""
+    def log_choose(a: int, b: int) -> float:
+        return math.lgamma(a + 1) - math.lgamma(b + 1) - math.lgamma(a - b + 1) if 0 <= b <= a else -math.inf
+
+    whole = log_choose(plus + minus, plus)
+    found: dict[int, float] = {}
+    for k in range(1, min(plus, minus) + 2):
+        found[2 * k] = math.log(2) + log_choose(plus - 1, k - 1) + log_choose(minus - 1, k - 1) - whole
+        found[2 * k + 1] = float(np.logaddexp(log_choose(plus - 1, k - 1) + log_choose(minus - 1, k), log_choose(plus - 1, k) + log_choose(minus - 1, k - 1))) - whole
+    counts = np.array([count for count, chance in sorted(found.items()) if chance > -math.inf])
+    return counts, np.exp(np.array([found[count] for count in counts]))

@@ -18,7 +18,7 @@ import numpy as np
 
 from taucli.quantities import units
 from taucli.core.errors import InputError, spelled
-from taucli.fit import quality
+from taucli.fit import quality, solve
 from taucli.fit.model import REFUSALS
 from taucli.fit.solve import Fit
 from taucli.options.fit import COMMAND as FIT
@@ -55,8 +55,12 @@ def written(found: Fit) -> Measured:
     results: dict[str, Value] = {}
     spreads: dict[str, float] = {}
     for j, unknown in enumerate(model.unknowns):
-        results[unknown.name] = Value(float(found.p[j]), units_of[j], f"{label(unknown)}, fitted")
+        results[unknown.name] = Value(float(found.p[j]), units_of[j], f"{label(unknown)}, fitted" + (" (at its bound)" if j in found.bounded else ""))
         spreads[unknown.name] = float(sigma[j])
+    for j in found.bounded:  # at its bound: the one-sided 95 % upper limit, bound + 1.645σ
+        name = model.names[j]
+        results[f"{name}_upper95"] = Value(float(found.p[j] + solve.UPPER * sigma[j]), units_of[j],
+                                           f"one-sided 95 % upper limit of {name}, at its bound: bound + {solve.UPPER:.3f}σ")
     tables = {}
     if len(model.unknowns) > 1:
         rho = [[round(float(x), 6) for x in row] for row in fitted.correlation]
@@ -205,26 +209,41 @@ def _quality_step(found: Fit) -> Step:
     equation = "r = y − f(x; p):  RMS = √(Σrᵢ²/n),  R² = 1 − Σrᵢ²/Σ(yᵢ − ȳ)²"
     if fitted.chi2_dof is not None:
         equation += ",  χ²/ν = Σ(rᵢ/σᵢ)²/(n − m)"
-        chance = f"P = {fitted.chi2_p:.2g}" if fitted.chi2_p > 1e-300 else "P below 1e-300"
-        parts.append(f"χ²/ν = {fmt(fitted.chi2, 4)}/{fitted.dof} = {fmt(fitted.chi2_dof, 4)} (a χ² this large or larger: {chance})")
+        low = fitted.chi2_low is not None and fitted.chi2_low < fitted.chi2_p  # the nearer tail
+        p = fitted.chi2_low if low else fitted.chi2_p
+        chance = f"P = {p:.2g}" if p > 1e-300 else "P below 1e-300"
+        parts.append(f"χ²/ν = {fmt(fitted.chi2, 4)}/{fitted.dof} = {fmt(fitted.chi2_dof, 4)} (a χ² this {'small or smaller' if low else 'large or larger'}: {chance})")
     return Step("The fit's quality", equation, ", ".join(parts), "", _shape(fitted))
 
 
 def _shape(fitted: quality.Quality) -> str:
-    """What the two tests of the residuals' shape say."""
-    if fitted.runs is None:
-        return f"too few samples ({fitted.n}) to test the residuals for a shape (at least {quality.RUNS_LEAST})"
+    """What the two tests of the residuals' shape say, and which of them these samples are too few for."""
+    if not fitted.shape_tested:
+        return (f"too few samples ({fitted.n}) for a test of the residuals' shape to reach a chance of {_percent(quality.SHAPE_P)}: "
+                "the runs test of their signs needs about 15, their lag-1 autocorrelation 10; not tested")
     verdict = "structured: the model does not describe the samples" if fitted.structured else "no shape seen beyond chance"
     return f"{_tested(fitted)}: {verdict}"
 
 
+def _percent(p: float) -> str:
+    return f"{fmt(100 * p, 2)} %"
+
+
 def _tested(fitted: quality.Quality) -> str:
     runs, lag = fitted.runs, fitted.lag
-    if math.isinf(runs[3]):
-        said = "every residual has one sign"
+    if fitted.runs_weak:
+        said = (f"the runs test of their signs cannot reach a chance of {_percent(quality.SHAPE_P)} with {fitted.n} samples "
+                + (f"({runs.plus} above, {runs.minus} below the fit: its least is {_percent(runs.least)}), left out" if runs is not None else "(left out)"))
+    elif math.isinf(runs.z):
+        said = f"every residual has one sign (chance {fmt(runs.p, 2)})"
     else:
-        said = f"{runs[0]} runs of one sign among the residuals, {fmt(runs[1], 3)} ± {fmt(runs[2], 2)} expected by chance (z = {runs[3]:.1f})"
-    return said + (f"; their lag-1 autocorrelation r₁ = {lag[0]:.2f} (z = {lag[1]:.1f})" if lag is not None else "")
+        said = (f"{runs.runs} runs of one sign among the residuals, {fmt(runs.expected, 3)} ± {fmt(runs.spread, 2)} expected by chance "
+                f"(z = {runs.z:.1f}, chance {fmt(runs.p, 2)} both ways)")
+    if not fitted.lag_weak:
+        said += f"; their lag-1 autocorrelation r₁ = {lag[0]:.2f} (z = {lag[1]:.1f})"
+    else:
+        said += f"; their lag-1 autocorrelation cannot reach |z| = {quality.SHAPE_Z:.1f} with {fitted.n} samples, left out"
+    return said
 
 
 def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
@@ -238,17 +257,41 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
         notes.append(f"the samples lie on the model to rounding (residual RMS at most {fmt(EXACT, 1)} of the largest measured, {fmt(largest, 3)}): "
                      "the uncertainties from their scatter are of rounding size, not a measurement's (--sigma gives the samples' own)")
     elif fitted.structured:
-        notes.append(f"warning: the residuals have a shape ({_tested(fitted)}): the model does not describe these samples, "
+        how = (" (they alternate in sign more often than chance: samples of two runs or more, interleaved and fitted as one?)"
+               if fitted.alternating else "")
+        notes.append(f"warning: the residuals have a shape ({_tested(fitted)}){how}: the model does not describe these samples, "
                      "and the uncertainties assume that it does (--plot shows the residuals)")
-    if fitted.chi2_p is not None and fitted.chi2_p < quality.CHI2_P:
-        chance = f"P = {fitted.chi2_p:.1g}" if fitted.chi2_p > 1e-300 else "P below 1e-300"
-        notes.append(f"warning: χ²/ν = {fmt(fitted.chi2_dof, 3)} is unlikely for a model that fits with the uncertainties given ({chance}): "
-                     + ("the residuals are larger than the uncertainties" if fitted.chi2_dof > 1 else "the uncertainties given are larger than the scatter"))
+    elif not fitted.shape_tested:
+        notes.append(f"the residuals are not tested for a shape: {fitted.n} samples are too few for the runs test or the autocorrelation "
+                     f"to reach a chance of {_percent(quality.SHAPE_P)}, so a model that does not describe them would not be seen here")
+    if fitted.r2 is not None and fitted.r2 < 0:
+        notes.append(f"warning: R² = {fmt(fitted.r2, 3)} is below 0: the model describes the samples worse than their mean does "
+                     "(the wrong scene, the wrong inputs held, or a search that ended far from the samples)")
+    flag = fitted.chi2_flag
+    if flag is not None:
+        p = fitted.chi2_p if flag == "high" else fitted.chi2_low
+        chance = f"P = {p:.1g}" if p > 1e-300 else "P below 1e-300"
+        scale = math.sqrt(fitted.chi2 / fitted.n)  # the residuals' RMS in units of each sample's σ
+        notes.append(f"warning: χ²/ν = {fmt(fitted.chi2_dof, 3)} is unlikely for a model that fits with the uncertainties given ({chance}, "
+                     f"{'this large or larger' if flag == 'high' else 'this small or smaller'}): "
+                     + (f"the residuals are larger than the uncertainties (their RMS is {fmt(scale, 2)} σ)" if flag == "high"
+                        else f"the uncertainties given are larger than the scatter (the residuals' RMS is {fmt(scale, 2)} σ)"))
     if fitted.degeneracy.ratio < quality.NEARLY:
         notes.append(f"warning: {', '.join(fitted.degeneracy.involved)} are barely told apart by these samples (correlation near ±1): "
                      "their uncertainties are large and their values move together")
-    for name, value, s in zip(model.names, found.p, sigma):
-        if s > abs(value):
+    for q, chi2 in found.rivals:
+        best = float(np.sum((fitted.residuals / (model.samples.sigma if model.samples.sigma is not None else 1.0)) ** 2)) / (1.0 if not fitted.scaled else fitted.s2)
+        notes.append(f"warning: another minimum fits about as well ({'χ²' if not fitted.scaled else 'Σr²/s²'} = {fmt(chi2, 4)} against {fmt(best, 4)}, "
+                     f"within {fmt(solve.AMBIGUOUS, 3)}) at " + model.shown(dict(zip(model.names, (float(x) for x in q))))
+                     + ": the samples do not pick one clearly (another start beside --fit, or samples over more of the motion, may)")
+    for j in found.bounded:
+        name, unit = model.names[j], units.KINDS[model.unknowns[j].kind].si_unit
+        notes.append(f"warning: {name} is at its least value, {quantity_text(float(found.p[j]), unit)}: the samples ask for no more (their best "
+                     f"lies at or past it, within noise), so it is given there with its one-sided 95 % upper limit, {name} ≤ "
+                     f"{quantity_text(float(found.p[j] + solve.UPPER * sigma[j]), unit, 3)} (bound + {solve.UPPER:.3f}σ, σ = {fmt(sigma[j], 2)}); "
+                     "the other inputs are fitted with it there")
+    for j, (name, value, s) in enumerate(zip(model.names, found.p, sigma)):
+        if s > abs(value) and j not in found.bounded:
             notes.append(f"{name} is not determined better than its own size ({fmt(value, 3)} ± {fmt(s, 2)}): the samples barely depend on it")
     if fitted.dof < FEW and fitted.scaled:
         notes.append(f"only {fitted.dof} degree{'s' if fitted.dof != 1 else ''} of freedom: the residual variance is a rough stand-in for the samples' own uncertainty")

@@ -6,15 +6,18 @@ with the row's measurement. A column is matched to the scene:
 
 - named by ``--x COLUMN[=OPTION]`` (OPTION defaults to ``time``) or ``--y COLUMN[=RESULT]``;
   either may carry a unit for a header that has none: ``--y "w=omega (rad/s)"``;
-- else by its name (the header without its unit): an option's name (``m1``, ``angle0``,
-  ``pulley_mass`` or ``pulley-mass``) is an input; ``t`` or ``time`` is ``--time`` where the
-  scene has no result called so; a result's name (``period``, ``omega``) is what was measured,
-  where ``--y`` does not say;
+- else by its name (the header without its unit, and without a single run's mark): an option's
+  name (``m1``, ``angle0``, ``pulley_mass`` or ``pulley-mass``) is an input; ``t`` or ``time``
+  is ``--time`` where the scene has no result called so; a result's name (``period``,
+  ``omega``) is what was measured, where ``--y`` does not say; two columns for one input are
+  refused (columns.py);
 - a column matched to nothing is left out, with a note.
 
 A header's unit converts its column to SI with taucli's rules (``Time (ms)``; ``rpm`` is
-revolutions, with a note). A column of angles or angular speeds with no unit is refused, as a
-bare number for ``--angle`` is.
+revolutions, with a note). A used column with no unit is SI only where its name is the input's
+or result's own, with a note; angles and angular speeds with no unit are refused, as a bare
+number for ``--angle`` is (columns.py). A row with a blank or NaN cell in a column the fit uses
+is no measurement: it is left out, and a note counts it.
 """
 
 from __future__ import annotations
@@ -26,13 +29,13 @@ from dataclasses import dataclass, field
 from taucli.quantities import units
 from taucli.quantities.kinds import BOUNDS
 from taucli.core.errors import InputError, did_you_mean
+from taucli.fit import columns
 from taucli.fit.data import Column, DataTable, split_header
+from taucli.fit.columns import TIME_NAMES, key as _key, quoted as _quoted
 from taucli.writing.report import fmt, pretty_unit
 from taucli.options.table import Command
 
 MAX_SAMPLES = 5000  # each sample is a solve of the scene, many times over: beyond this, --every or --range
-AMBIGUOUS = frozenset({"angle", "angular velocity", "angular acceleration"})  # a bare number is refused (docs/units.md)
-TIME_NAMES = ("t", "time")
 
 
 @dataclass(frozen=True)
@@ -61,6 +64,7 @@ class Samples:
     y_column: Mapped | None = None
     places: list[tuple[str, int]] = field(default_factory=list)  # (file, line) of each sample
     outside: int = 0  # left out by --range
+    empty: list[tuple[str, int]] = field(default_factory=list)  # (file, line) of each row left out for a blank or NaN cell the fit uses
     thinned: int = 0  # left out by --every
     notes: list[str] = field(default_factory=list)
 
@@ -79,10 +83,6 @@ class Samples:
     def varying(self) -> list[str]:
         """The inputs that differ between samples, in the order of the columns."""
         return [name for name, values in self.inputs.items() if len(set(values)) > 1]
-
-
-def _key(name: str) -> str:
-    return name.strip().lower().replace("-", "_").replace(" ", "_")
 
 
 def _spec(text: str, option: str) -> tuple[str, str | None, str]:
@@ -108,14 +108,11 @@ def _find(tables: list[DataTable], wanted: str, option: str) -> str:
                      hint=did_you_mean(wanted, headers))
 
 
-def _factor(column: Column, unit: str, kind: str | None, si_unit: str, label: str, notes: list[str]) -> float:
-    """SI per unit of the column (its header's unit, or the unit its mapping gives)."""
+def _factor(column: Column, unit: str, kind: str | None, si_unit: str, label: str, notes: list[str], target: str = "", is_result: bool = False) -> float:
+    """SI per unit of the column (its header's unit, or the unit its mapping gives; with neither,
+    columns.bare_factor's rule for the input or result ``target``)."""
     if not unit:
-        if kind in AMBIGUOUS:
-            example = {"angle": "theta (rad)", "angular velocity": "omega (rad/s)"}.get(kind, "alpha (rad/s^2)")
-            raise InputError("data", f"column {column.header!r} ({label}) has no unit, and a bare number is ambiguous for {units.article(kind)} "
-                             "(radians or degrees, rad/s or rpm)", hint=f"write its unit in the header, e.g. {example}")
-        return 1.0
+        return columns.bare_factor(column, target, is_result, kind, si_unit, label, notes)
     where = f"column {column.header!r}"
     if kind is not None:
         parsed = units.parse(f"1 {unit}", where, kind, sign="positive")
@@ -140,15 +137,18 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         if [column.header for column in table.columns] != headers:
             raise InputError("data", f"{table.source} names other columns than {tables[0].source}: every file of one fit has the same columns",
                              got=", ".join(repr(column.header) for column in table.columns))
+    tables = [columns.one_run_named(table) for table in tables]
     chosen: dict[str, tuple[str, bool, str]] = {}  # header -> (target, is_result, unit given by the mapping)
     for text in x or ():
         column, target, unit = _spec(text, "x")
         header = _find(tables, column, "x")
         target = _option_target(command, target or "time", text)
+        columns.refuse_a_column_mapped_twice(chosen, header, target, "x")
         chosen[header] = (target, False, unit)
     if y is not None:
         column, target, unit = _spec(y, "y")
         header = _find(tables, column, "y")
+        columns.refuse_a_column_mapped_twice(chosen, header, target, "y")
         key = target or tables[0].column(header).name
         if command.result(_key(key)) is None and command.result(key) is None:
             keys = [result.key for result in command.results]
@@ -159,7 +159,7 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         chosen[header] = (key if command.result(key) is not None else _key(key), True, unit)
     sigma_header = _sigma_column(tables, sigma)
     _refuse_sigma_of_a_used_column(command, tables[0], chosen, sigma_header, y is not None)
-    unused = _match_the_rest(command, tables[0], chosen, sigma_header, y is not None, notes)
+    unused = columns.match_by_name(command, tables[0], chosen, sigma_header, y is not None, notes)
     results = [header for header, (_, is_result, _) in chosen.items() if is_result]
     if not results:
         names = ", ".join(repr(h) for h in headers)
@@ -185,7 +185,7 @@ def _refuse_sigma_of_a_used_column(command: Command, table: DataTable, chosen: d
         return
     used = dict(chosen)
     if sigma_header not in used:
-        _match_the_rest(command, table, used, None, y_given, [])  # what the column would be, were it not σ
+        columns.match_by_name(command, table, used, None, y_given, [])  # what the column would be, were it not σ
     others_measured = any(is_result for header, (_, is_result, _) in used.items() if header != sigma_header)
     if sigma_header in used and not (used[sigma_header][1] and others_measured):  # (named like a result beside the measured column: σ)
         target, is_result, _ = used[sigma_header]
@@ -200,17 +200,13 @@ def _refuse_one_run_beside_unused(command: Command, tables: list[DataTable], fou
     (an amplitude, a mass), and fitting the runs as repeats of one would give a wrong number."""
     if found.varying or found.count < 2:
         return
-    varies = [header for header in unused if len({value for table in tables for value in table.column(header).values}) > 1]
+    varies = [header for header in unused if len({value for table in tables for value in table.column(header).values if not math.isnan(value)}) > 1]
     if varies:
         listed = ", ".join(repr(header) for header in varies)
         raise InputError("x", f"is needed: every sample is the same run of {command.name} (no column gives an input that differs between them), "
                          f"and {listed} differ{'s' if len(varies) == 1 else ''} between them but {'is' if len(varies) == 1 else 'are'} not used",
                          hint=f"say which input {'it is' if len(varies) == 1 else 'each is'}: {{x}} {_quoted(varies[0] + '=OPTION')}, "
                          "or leave the column out of the table")
-
-
-def _quoted(text: str) -> str:
-    return f"'{text}'" if re.search(r"[\s()\[\]*^?'\"]", text) else text
 
 
 def _option_target(command: Command, name: str, text: str) -> str:
@@ -232,28 +228,6 @@ def _sigma_column(tables: list[DataTable], sigma: str | None) -> str | None:
     return sigma.strip() if sigma.strip() in headers else headers[names.index(sigma.strip())] if sigma.strip() in names else None
 
 
-def _match_the_rest(command: Command, table: DataTable, chosen: dict, sigma_header: str | None, y_given: bool, notes: list[str]) -> list[str]:
-    """Match the columns --x and --y leave by their names; the headers of those left unused."""
-    unused = []
-    for column in table.columns:
-        if column.header in chosen or column.header == sigma_header:
-            continue
-        key = _key(column.name)
-        option = command.option(key)
-        result = command.result(column.name) or command.result(key)
-        if option is not None and option.name in command.input_names and option.is_quantity and not option.repeatable:
-            chosen[column.header] = (option.name, False, "")
-        elif key in TIME_NAMES and result is None and command.option("time") is not None and "time" not in {t for t, r, _ in chosen.values() if not r}:
-            chosen[column.header] = ("time", False, "")
-        elif result is not None and not y_given:
-            chosen[column.header] = (result.key, True, "")
-        else:
-            unused.append(column.header)
-    if unused:
-        notes.append(f"columns not used: {', '.join(repr(header) for header in unused)} (neither an input of {command.name} nor the result measured)")
-    return unused
-
-
 def _mapped(command: Command, column: Column, target: str, is_result: bool, unit: str, fitted, given, notes: list[str]) -> Mapped:
     if column.unit and unit and column.unit != unit:
         raise InputError("x" if not is_result else "y", f"gives column {column.header!r} the unit {unit}, and its header says {column.unit}", got=repr(unit))
@@ -264,7 +238,7 @@ def _mapped(command: Command, column: Column, target: str, is_result: bool, unit
             raise InputError("y", f"expected a result that is a number; {target} is yes or no", got=repr(column.header))
         kind = _kind_of_result(result.unit)
         try:
-            factor = _factor(column, unit, kind, result.unit, f"the result {target}", notes)
+            factor = _factor(column, unit, kind, result.unit, f"the result {target}", notes, target, True)
         except InputError as err:
             if not unit or err.option != f"column {column.header!r}":
                 raise
@@ -278,7 +252,7 @@ def _mapped(command: Command, column: Column, target: str, is_result: bool, unit
         raise InputError("data", f"column {column.header!r} gives {{{target}}} for each sample, and {{{target}}} is given as well: one or the other")
     option = command.option(target)
     try:
-        factor = _factor(column, unit, option.kind, units.KINDS[option.kind].si_unit, f"--{target.replace('_', '-')}", notes)
+        factor = _factor(column, unit, option.kind, units.KINDS[option.kind].si_unit, f"--{target.replace('_', '-')}", notes, target)
     except InputError as err:
         if not unit or err.option != f"column {column.header!r}":
             raise
@@ -294,9 +268,13 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
     sigma_value, sigma_factor, sigma_source = _sigma(tables[0], sigma, sigma_header, y_column, gravity)
     samples = Samples(y_column.target, y_column.si_unit, [], {m.target: [] for m in inputs_mapped}, [] if sigma is not None else None,
                       sigma_source, inputs_mapped, y_column, notes=notes)
-    kept_in_window = 0
+    kept_in_window = beyond = 0  # beyond: samples past MAX_SAMPLES, only counted (the fit is refused; its message says how many)
+    used = [m.column.header for m in (y_column, *inputs_mapped)] + ([sigma_header] if sigma_header is not None else [])
     for table in tables:
         for i, line in enumerate(table.lines):
+            if any(math.isnan(table.column(header).values[i]) for header in used):
+                samples.empty.append((table.source, line))  # no measurement: not a sample (data.py reads a blank or NaN cell so)
+                continue
             cells = {m.target: table.column(m.column.header).values[i] * m.factor for m in (y_column, *inputs_mapped)}
             if any(not low <= cells[name] <= high for name, low, high in windows):
                 samples.outside += 1
@@ -304,6 +282,9 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
             kept_in_window += 1
             if (kept_in_window - 1) % step:
                 samples.thinned += 1
+                continue
+            if samples.count >= MAX_SAMPLES:
+                beyond += 1
                 continue
             for m in (y_column, *inputs_mapped):  # in SI, a value its unit takes past a double's range, or to 0, is refused as a typed one is
                 _check_unit_made(cells[m.target], table.column(m.column.header).values[i], table.source, line, m.column.header)
@@ -323,10 +304,29 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
             elif sigma_value is not None:
                 samples.sigma.append(sigma_value)
             samples.places.append((table.source, line))
-    if samples.count > MAX_SAMPLES:
-        raise InputError("data", f"gives {samples.count} samples, and fit takes at most {MAX_SAMPLES} (each is a solve of the scene, many times over)",
-                         hint=f"thin them with --every {math.ceil(samples.count / MAX_SAMPLES)}, or fit a window with --range")
+    _note_the_empty_rows(samples, used, len(tables) > 1)
+    if beyond:
+        count = samples.count + beyond
+        raise InputError("data", f"gives {count} samples, and fit takes at most {MAX_SAMPLES} (each is a solve of the scene, many times over)",
+                         hint=f"thin them with --every {math.ceil(count / MAX_SAMPLES)}, or fit a window with --range")
     return samples
+
+
+def _note_the_empty_rows(samples: Samples, used: list[str], files: bool) -> None:
+    """A note of the rows left out for a blank or NaN cell in a column the fit uses; a usage error
+    where that leaves no sample."""
+    if not samples.empty:
+        return
+    listed = ", ".join(repr(header) for header in used)
+    if not samples.count and not samples.outside:
+        raise InputError("data", f"has no row with a number in every column the fit uses ({listed}): each is blank or NaN in some row",
+                         hint="fill the cells, or map other columns with --x and --y")
+    count = len(samples.empty)
+    shown = samples.empty[:3]
+    places = ", ".join(f"{source} line {line}" if files else str(line) for source, line in shown)
+    places = ("" if files else "line " if count == 1 else "lines ") + places + (f", … ({count} in all)" if count > len(shown) else "")
+    samples.notes.append(f"{count} row{'s' if count != 1 else ''} left out ({places}): a column the fit uses ({listed}) is blank or NaN there, "
+                         "no measurement")
 
 
 def _check_unit_made(value: float, given: float, source: str, line: int, header: str) -> None:

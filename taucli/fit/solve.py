@@ -44,6 +44,8 @@ class Fit:
     method: str
     steps: list[Step] = field(default_factory=list)
     starts: list[str] = field(default_factory=list)  # how each input's start was found: "given", "closed form", "root"
+    bounded: list[int] = field(default_factory=list)  # the inputs held at their bound (0), the samples asking for no more
+    rivals: list[tuple[np.ndarray, float]] = field(default_factory=list)  # other minima from other starts that fit as well: (p, χ²)
 
 
 def names_of(text) -> list[str]:
@@ -93,11 +95,17 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
     sigma = np.asarray(samples.sigma, dtype=float) if samples.sigma is not None else None
     if model.budget is not None:  # the least the fit takes, estimated (and refused past the limit) before the work
         budget.before(model, np.array([starts.get(name, 0.0 if model.sign(j) != "positive" else 1.0) for j, name in enumerate(model.names)]))
-    p0, steps, how = start.start(model, starts)
+    candidates = start.starts(model, starts)
+    p0, steps, how = candidates[0]
     if not np.any(np.isfinite(model.predict(p0))):
         raise InputError("fit", f"the scene gives no {samples.y_key} for any sample at the start ({model.why_refused()})")
+    natural = np.where(np.abs(p0) > 0, np.abs(p0), 1.0)  # each input's natural size: its start's (1 SI where that is 0)
     shape = linear.affine(model, p0, np.where(p0 != 0, linear.STEP * np.abs(p0), 1.0))
-    _refuse_degenerate(model, shape.X if shape is not None else quality.jacobian(model, p0, rough=True), sigma, p0)  # at the start: before a search that cannot end
+    # at the start: inputs the samples cannot tell apart, before a search that cannot end (one that does not act there may further on)
+    flat = _refuse_degenerate(model, shape.X if shape is not None else quality.jacobian(model, p0, rough=True, scale=natural), sigma, p0, natural, start=True)
+    if flat:  # an input that does not act at the start says nothing of the model's shape elsewhere: searched for, not solved as linear
+        shape = None
+    bounded: list[int] = []
     is_linear = False
     if shape is not None:
         p = linear.solve(shape, y, sigma)
@@ -110,26 +118,32 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
     else:
         if model.budget is not None:
             model.budget.plan(n, budget.nonlinear_evaluations(m), m)
-        outcome = nonlinear.minimize(model, y, sigma, p0)
-        if not outcome.converged:  # inputs the samples cannot tell apart leave a valley the search wanders in: say so first
-            _refuse_degenerate(model, quality.jacobian(model, outcome.p), sigma, outcome.p)
-            raise InputError("fit", f"did not converge ({outcome.message.rstrip('.')}) after {outcome.iterations} steps from the start "
-                             + ", ".join(f"{name} = {p:.6g}" for name, p in zip(model.names, p0)), hint="give a start beside --fit, or fit fewer inputs")
-        p = outcome.p
-        if outcome.at_bound:
-            _refuse_bound(model, outcome.at_bound, p)
-        missing = nonlinear.stuck(model, p)
-        if missing:
-            raise InputError("fit", f"ends where the scene gives no {samples.y_key} for {missing} of the samples ({model.why_refused()})")
-        polished = _polished(model, p, quality.jacobian(model, p), y, sigma)
-        J = quality.jacobian(model, polished) if not np.array_equal(polished, p) else quality.jacobian(model, p)
-        p = polished
+        searches, refusals = [], []
+        for number, (q0, q_steps, q_how) in enumerate(candidates):
+            if number and not _worth(model, q0, [c[0] for c in candidates[:number]], y, sigma):
+                continue
+            try:
+                searches.append((_search(model, y, sigma, q0, natural), q_steps, q_how))
+            except InputError as err:
+                refusals.append(err)
+        if not searches:
+            raise refusals[0]
+        least = min(found.cost for found, _, _ in searches)
+        best = next(k for k, (found, _, _) in enumerate(searches) if found.cost <= least * (1 + SAME_COST) + 1e-300)  # ties: the first start
+        (search, steps, how), others = searches[best], [found for k, (found, _, _) in enumerate(searches) if k != best]
+        steps = list(steps)
+        p, bounded, J, outcome = search.p, search.bounded, search.J, search.outcome
         started = "a closed-form start" if "closed form" in how else "the starts given" if set(how) == {"given"} else "a start from single samples"
         method = f"bounded nonlinear least squares (trust region reflective, scipy.optimize.least_squares) from {started}"
     _refuse_not_finite(model, J / sigma[:, None] if sigma is not None else J, p)
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
-    found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p)
+    found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p, natural)
+    for j in range(m):  # nearer its bound than a millionth of its σ (the reflective search nears a bound without reaching it): on it
+        if j not in bounded and model.sign(j) == "nonnegative" and p[j] - model.lower(j) <= NEAR_BOUND * math.sqrt(max(found.covariance[j, j], 0.0)):
+            p, held = _at_bound(model, [*bounded, j], p, y, sigma, natural)
+            bounded = held
     covariance, from_held = _with_held(model, p, J, sigma, found.covariance)
+    rivals = _rivals(p, search.cost, others, found, sigma is None) if not is_linear else []
     if not is_linear:
         spread = np.sqrt(np.abs(np.diag(covariance)))
         steps.append(Step(
@@ -139,9 +153,67 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
                              for u, value, uncertainty in zip(model.unknowns, p, spread)),
             why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, {_count(outcome.evaluations, 'solve')} of the scene per sample "
             f"(its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them; "
-            f"shown to a thousandth of each one's uncertainty (the digits past that are the search's rounding)",
+            f"shown to a thousandth of each one's uncertainty (the digits past that are the search's rounding)"
+            + (f"; searched from {len(searches)} starts, this the least sum" if len(searches) > 1 else ""),
         ))
-    return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how)
+    return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how, bounded, rivals)
+
+
+SAME_COST = 1e-8  # two minima whose sums differ by less than this of them are one (the first start's is kept)
+WORSE = 4.0  # a further start whose sum is more than this times an earlier start's is not searched from
+AMBIGUOUS = 3.84  # χ² (in the residual variance where no σ is given) within which another minimum fits as well: χ²'s 95 % point for one degree of freedom
+APART = 3.0  # σ apart: another minimum with an input this far from the best is another answer
+
+
+@dataclass
+class Search:
+    p: np.ndarray
+    bounded: list[int]
+    J: np.ndarray
+    outcome: nonlinear.Outcome
+    cost: float  # Σ((yᵢ − f)/σᵢ)² at p
+
+
+def _cost(model: Model, p: np.ndarray, y: np.ndarray, sigma) -> float:
+    r = (y - model.predict(p)) / (sigma if sigma is not None else 1.0)
+    return float(np.sum(r**2)) if np.all(np.isfinite(r)) else math.inf
+
+
+def _worth(model: Model, q0: np.ndarray, earlier: list[np.ndarray], y: np.ndarray, sigma) -> bool:
+    """A further start is searched from unless its sum is more than WORSE times an earlier one's."""
+    return _cost(model, q0, y, sigma) <= WORSE * min(_cost(model, e, y, sigma) for e in earlier)
+
+
+def _search(model: Model, y: np.ndarray, sigma, p0: np.ndarray, natural: np.ndarray) -> Search:
+    """The bounded nonlinear least squares from p0, polished; refused where it does not converge,
+    ends past a bound the samples ask for, or where the scene gives no value."""
+    outcome = nonlinear.minimize(model, y, sigma, p0)
+    if not outcome.converged:  # inputs the samples cannot tell apart leave a valley the search wanders in: say so first
+        _refuse_degenerate(model, quality.jacobian(model, outcome.p, scale=natural), sigma, outcome.p, natural)
+        raise InputError("fit", f"did not converge ({outcome.message.rstrip('.')}) after {outcome.iterations} steps from the start "
+                         + ", ".join(f"{name} = {p:.6g}" for name, p in zip(model.names, p0)), hint="give a start beside --fit, or fit fewer inputs")
+    p, bounded = outcome.p, []
+    if outcome.at_bound:
+        p, bounded = _at_bound(model, outcome.at_bound, p, y, sigma, natural)
+    missing = nonlinear.stuck(model, p)
+    if missing:
+        raise InputError("fit", f"ends where the scene gives no {model.samples.y_key} for {missing} of the samples ({model.why_refused()})")
+    polished = _polished(model, p, quality.jacobian(model, p, scale=natural), y, sigma, bounded)
+    J = quality.jacobian(model, polished, scale=natural) if not np.array_equal(polished, p) else quality.jacobian(model, p, scale=natural)
+    return Search(polished, bounded, J, outcome, _cost(model, polished, y, sigma))
+
+
+def _rivals(p: np.ndarray, cost: float, others: list[Search], found: quality.Quality, scaled: bool) -> list[tuple[np.ndarray, float]]:
+    """The other minima that fit about as well (χ² within AMBIGUOUS of the best, in the residual
+    variance where no σ is given) with some input APART σ or more from the best: (p, χ²) each."""
+    unit = found.s2 if scaled else 1.0
+    spread = np.sqrt(np.abs(np.diag(found.covariance)))
+    kept: list[tuple[np.ndarray, float]] = []
+    for other in others:
+        if math.isfinite(other.cost) and (other.cost - cost) / unit < AMBIGUOUS and np.any(np.abs(other.p - p) > APART * spread):
+            if all(np.any(np.abs(other.p - q) > APART * spread) for q, _ in kept):
+                kept.append((other.p, other.cost / unit))
+    return kept
 
 
 GUARD = 3  # decimal places shown past an uncertainty's leading digit: a thousandth of it
@@ -162,11 +234,14 @@ def _count(n: int, what: str) -> str:
     return f"{n} {what}{'' if n == 1 else 's'}"
 
 
-def _polished(model: Model, p: np.ndarray, J: np.ndarray, y: np.ndarray, sigma) -> np.ndarray:
+def _polished(model: Model, p: np.ndarray, J: np.ndarray, y: np.ndarray, sigma, held=()) -> np.ndarray:
     """Up to two Gauss–Newton steps with the accurate Jacobian from where the search stopped (within
     its tolerance of the least squares), each kept where it does not raise the sum (beyond rounding)
-    and stays within the bounds: the solution does not depend on the search's path to its last digits."""
+    and stays within the bounds: the solution does not depend on the search's path to its last digits.
+    The inputs ``held`` at their bounds stay there."""
     weights = 1.0 / sigma if sigma is not None else np.ones(len(y))
+    J = np.array(J, dtype=float)
+    J[:, list(held)] = 0.0  # the least-norm step leaves them where they are
     for _ in range(2):
         before = (y - model.predict(p)) * weights
         if not (np.all(np.isfinite(J * weights[:, None])) and np.all(np.isfinite(before))):
@@ -216,14 +291,25 @@ def _refuse_not_finite(model: Model, J: np.ndarray, p: np.ndarray) -> None:
                          f"({at}: {why}), so the fit's uncertainties cannot be worked out there", hint="give magnitudes nearer everyday sizes, or fit fewer inputs")
 
 
-def _refuse_degenerate(model: Model, J: np.ndarray, sigma, p: np.ndarray) -> None:
+def _refuse_degenerate(model: Model, J: np.ndarray, sigma, p: np.ndarray, natural: np.ndarray, *, start: bool = False) -> list[str]:
+    """Refused where the samples cannot tell the inputs apart (or do not depend on one). At the
+    ``start``, an input the samples do not depend on there is left to the search (a start such as
+    --viscous 3 stops the wheel before the second sample, where friction does not act), and the
+    others are checked among themselves; the fit's end checks them all."""
     weighted = J / sigma[:, None] if sigma is not None else J
     if not np.all(np.isfinite(weighted)):
-        return  # some sample has no value here: the fit decides
+        return []  # some sample has no value here: the fit decides
     f = model.predict(p) / (sigma if sigma is not None else 1.0)
-    found = quality.degeneracy(weighted, model.names, p, f)
+    found = quality.degeneracy(weighted, model.names, p, f, natural)
+    flat = list(found.flat)
+    if start and flat:
+        acting = [j for j, name in enumerate(model.names) if name not in flat]
+        if len(acting) < 2:
+            return flat
+        found = quality.degeneracy(weighted[:, acting], [model.names[j] for j in acting], p[acting], f, natural[acting])
     if found.flat or found.ratio < quality.DEGENERATE:
         quality.refuse_degenerate(found, model.samples.y_key, f" (the scene gives {_at_first(model, p)})")
+    return flat
 
 
 def _at_first(model: Model, p: np.ndarray) -> str:
@@ -242,10 +328,50 @@ def _bound(model: Model, j: int) -> str:
     return f"{name} {'> 0' if sign == 'positive' else '≥ 0' if sign == 'nonnegative' else 'free'}"
 
 
-def _refuse_bound(model: Model, at: list[int], p: np.ndarray) -> None:
+NEAR_BOUND = 1e-6  # of an input's σ: this near its bound it is on it
+BOUND_P = 1e-3  # the chance of χ² falling this much past the bounds by noise alone: more, and the samples ask for a value past them
+UPPER = 1.6449  # the normal's one-sided 95 % point: an input held at its bound is given as at most bound + UPPER·σ
+
+
+def _at_bound(model: Model, at: list[int], p: np.ndarray, y: np.ndarray, sigma, natural: np.ndarray) -> tuple[np.ndarray, list[int]]:
+    """The inputs the search left on their bounds, held there: each one that may be 0 (a friction
+    torque, a drag), where the samples' best without the bounds lies within noise of them (the fit
+    then reports it at the bound with a one-sided upper limit). The best without the bounds is one
+    Gauss–Newton step from them, δ = (JᵀWJ)⁻¹JᵀWr, and it would lower χ² by |J δ|²_W (in units of
+    the residual variance where no σ is given): more than χ²'s 0.1 % point for as many degrees of
+    freedom as inputs held (10.8 for one), and the samples ask for a value far past
+    the bounds: the model does not describe them, refused. An input that may not be 0 (a moment of
+    inertia) is refused on its bound."""
+    strict = [j for j in at if model.sign(j) == "positive"]
+    if strict:
+        _refuse_bound(model, strict, p)
+    p = np.array(p, dtype=float)
+    for j in at:
+        p[j] = model.lower(j)
+    J = quality.jacobian(model, p, scale=natural)
+    weights = 1.0 / sigma if sigma is not None else np.ones(len(y))
+    r = (y - model.predict(p)) * weights
+    Jw = J * weights[:, None]
+    if not (np.all(np.isfinite(Jw)) and np.all(np.isfinite(r))):
+        return p, list(at)
+    step = np.linalg.lstsq(Jw, r, rcond=None)[0]
+    n, m = Jw.shape
+    s2 = 1.0 if sigma is not None else float(np.sum((r - Jw @ step) ** 2)) / max(n - m, 1)
+    past = [j for j in at if step[j] < 0]
+    if past:
+        from scipy.stats import chi2  # deferred: scipy.stats, only for an input on its bound
+
+        gain = float(np.sum((Jw @ step) ** 2)) / s2 if s2 > 0 else math.inf
+        if gain > float(chi2.isf(BOUND_P, len(past))):
+            _refuse_bound(model, past, p, gain)
+    return p, list(at)
+
+
+def _refuse_bound(model: Model, at: list[int], p: np.ndarray, gain: float | None = None) -> None:
     names = [model.names[j] for j in at]
     shown = ", ".join(f"{model.names[j]} = {quantity_text(p[j], units.KINDS[model.unknowns[j].kind].si_unit, 3)}" for j in at)
-    raise InputError("fit", f"the samples ask for {' and '.join(names)} at or past {'its' if len(at) == 1 else 'their'} least value ({shown}), "
+    far = (f"; past the bound χ² would fall by {fmt(gain, 3)}, beyond what noise gives at {fmt(100 * BOUND_P, 1)} %" if gain is not None else "")
+    raise InputError("fit", f"the samples ask for {' and '.join(names)} at or past {'its' if len(at) == 1 else 'their'} least value ({shown}{far}), "
                      f"which the scene cannot take: the model does not describe these samples with {' and '.join(names)} free",
                      hint=f"leave {' and '.join(names)} out of --fit, or look at the samples (--range, the plot)")
 

@@ -11,13 +11,18 @@ In this order, for each fitted input:
    - atwood, each run's acceleration (a, or 2d/t², or v²/2d): the equations of the masses and the
      pulley added, (m₁ − m₂)g − (I/R²)a − τ_f/R = (m₁ + m₂)a, linear in g, I and τ_f;
    - rolling down an incline, each run's acceleration: g sin θ − a k² = a, linear in g and k²;
-   - a pendulum's swing θ(t): the amplitude, and the period from the zero crossings, g from the
-     scene's own period at one g (the period goes as 1/√g at a given amplitude); runs of periods
-     at their amplitudes: T = √(g₀/g)·T₀ for each, linear in √(g₀/g);
+   - a pendulum's swing θ(t): the amplitude and the period from its spectrum, g from the scene's
+     own period at one g (the period goes as 1/√g at a given amplitude); runs of periods at their
+     amplitudes: T = √(g₀/g)·T₀ for each, linear in √(g₀/g) (taucli.fit.swing);
 3. else the roots of a few samples, as ``--find`` finds them (taucli.numerics.steppers.roots), the others at their
    starts (or 0): the one that best meets the samples (least squares over up to 40 of them).
 
 Where none gives a value, the fit is refused, asking for a start.
+
+``starts`` gives the fit more than one start where one may mislead: the closed form beside the
+values given (a start such as --viscous 3 may stop the wheel before the second sample), and a
+scene's other closed forms (a swing's period from its zero crossings beside its spectrum's). The
+fit searches from each and keeps the least χ² (taucli.fit.solve).
 """
 
 from __future__ import annotations
@@ -30,6 +35,7 @@ import numpy as np
 from taucli.numerics import roots
 from taucli.quantities import units
 from taucli.core.errors import InputError
+from taucli.fit import swing
 from taucli.fit.model import Model
 from taucli.writing.report import Step, fmt, quantity_text
 from taucli.scenes.assumed import STANDARD_GRAVITY
@@ -113,7 +119,7 @@ def _atwood(model: Model) -> tuple[dict[str, float], Step] | None:
     return found, Step(
         "A start from the machine's equations, linear in the inputs sought",
         "(m₁ − m₂)g − (I/R²)a − τ_f/R = (m₁ + m₂)a",
-        result=_said(model, found),
+        result=model.shown(found),
         why=f"each run's a from its measured {model.samples.y_key}" + (" (a = 2d/t²)" if model.samples.y_key == "t" else "")
         + f", least squares over {len(a)} runs: the equations of m₁, m₂ and the pulley added (the tensions cancel) are linear in g, I and "
         "τ_f once a is known; the fit below then matches the measured result itself",
@@ -150,7 +156,7 @@ def _rolling(model: Model) -> tuple[dict[str, float], Step] | None:
     return found, Step(
         "A start from rolling's equation, linear in the inputs sought",
         "g sin θ − a k² = a",
-        result=_said(model, found),
+        result=model.shown(found),
         why=f"each run's a from its measured {model.samples.y_key}" + (" (a = 2L/t²)" if model.samples.y_key == "t" else "")
         + f", least squares over {len(a)} runs: a = g sin θ/(1 + k²) for a body rolling without slipping, rearranged; "
         "the fit below then matches the measured result itself",
@@ -222,87 +228,17 @@ def _spin_down(model: Model) -> tuple[dict[str, float], Step] | None:
         f"ω(t) − ω(t₁) = {terms}",
         f"(τ − τ_f)/I = {fmt(c['rate'])} rad/s²" + (f", b/I = {fmt(-c['viscous'])} 1/s" if "viscous" in c else "")
         + (f", k/I = {fmt(-c['drag'])}" if "drag" in c else "") + f", I = {quantity_text(inertia, 'kg*m**2')}",
-        _said(model, found),
+        model.shown(found),
         "I dω/dt = τ − τ_f − bω − kωⁿ integrated from the first sample is linear in its coefficients: least squares over the "
         f"{len(t)} samples where it turns" + (" (ω from the differences of θ)" if model.samples.y_key != "omega" else "")
         + ", the integrals of ω by the trapezoid rule (integrating smooths the noise that differentiating would raise)",
     )
 
 
-def _periods(model: Model) -> tuple[dict[str, float], Step] | None:
-    """Runs of periods (at their amplitudes): T = T₀ √(g₀/g) with T₀ the scene's period at g₀ for
-    each run, so T is c·T₀ with c = √(g₀/g), linear in c: c = ΣwTT₀/ΣwT₀² is the least squares,
-    and g = g₀/c² the start (the fit then finds it again)."""
-    y = np.asarray(model.samples.y)
-    weights = 1.0 / np.asarray(model.samples.sigma) ** 2 if model.samples.sigma is not None else np.ones(len(y))
-    at_standard = np.array([model.value(np.array([STANDARD_GRAVITY]), i) for i in range(len(y))])
-    if not np.all(np.isfinite(at_standard)) or not np.all(at_standard > 0):
-        return None
-    c = float(np.sum(weights * y * at_standard) / np.sum(weights * at_standard**2))
-    if not c > 0:
-        return None
-    found = {"g": STANDARD_GRAVITY / c**2}
-    return found, Step(
-        "A start from the periods: T ∝ 1/√g for each run",
-        "Tᵢ = c·T₀ᵢ,  c = √(g₀/g)  ⇒  c = ΣwᵢTᵢT₀ᵢ/ΣwᵢT₀ᵢ²,  g = g₀/c²",
-        f"T₀ᵢ = the scene's period of run i at g₀ = {quantity_text(STANDARD_GRAVITY, 'm/s**2')}; c = {fmt(c)}",
-        _said(model, found),
-        f"at a given amplitude (and body) the period goes as 1/√g exactly, so the {len(y)} runs are linear in c: its least squares "
-        "is the start, and the fit below finds the same g",
-    )
-
-
-def _pendulum(model: Model) -> tuple[dict[str, float], Step] | None:
-    """A swing θ(t) from rest: the amplitude, and the period from the zero crossings; g from the
-    period the scene gives at a known g, T ∝ 1/√g at a given amplitude. Runs of periods: _periods."""
-    plain = ("torsion", "omega0", "omega_bottom")
-    if any(name in model.held or name in model.samples.inputs for name in plain) or not set(model.names) <= {"g", "angle0"}:
-        return None
-    if model.samples.y_key == "period" and model.names == ["g"]:
-        return _periods(model)
-    if set(model.samples.inputs) != {"time"} or model.samples.y_key != "theta":
-        return None
-    t = np.asarray(model.samples.inputs["time"])
-    order = np.argsort(t)
-    t, theta = t[order], np.asarray(model.samples.y)[order]
-    level = theta - np.mean(theta)
-    crossings = [t[i] - level[i] * (t[i + 1] - t[i]) / (level[i + 1] - level[i]) for i in range(len(t) - 1) if level[i] * level[i + 1] < 0]
-    if len(crossings) < 2:
-        return None
-    period = 2 * float(np.mean(np.diff(crossings)))
-    found: dict[str, float] = {}
-    amplitude = model.si.get("angle0")
-    if "angle0" in model.names:
-        first = int(np.argmax(np.abs(theta) > 0.9 * np.max(np.abs(theta))))
-        amplitude = found["angle0"] = float(np.sign(theta[first]) * np.max(np.abs(theta)))
-    if "g" in model.names:
-        reference = np.array([STANDARD_GRAVITY if name == "g" else amplitude for name in model.names])
-        try:
-            at_reference = model.report(reference, {"time": 0.0}).results["period"].value
-        except (InputError, KeyError, ValueError, ZeroDivisionError, OverflowError):
-            return None
-        if not at_reference:
-            return None
-        found["g"] = STANDARD_GRAVITY * (at_reference / period) ** 2
-    return found, Step(
-        "A start from the swing: its amplitude, and its period from the zero crossings",
-        "T = 2 × (mean time between crossings of θ's mean);  g = g₀ (T₀/T)²",
-        f"T = {quantity_text(period, 's')}, T₀ = the scene's period at g₀ = {quantity_text(STANDARD_GRAVITY, 'm/s**2')}"
-        + (f" and θ₀ = {quantity_text(amplitude, 'rad')}" if amplitude is not None else ""),
-        _said(model, found),
-        f"{len(crossings)} crossings; at a given amplitude the period goes as 1/√g, so the scene's own period at one g gives g "
-        "(a start only: the fit below matches θ(t) itself)",
-    )
-
-
 CLOSED: dict[str, Callable[[Model], tuple[dict[str, float], Step] | None]] = {
-    "spin-down": _spin_down, "atwood": _atwood, "rolling": _rolling, "pendulum": _pendulum,
+    "spin-down": _spin_down, "atwood": _atwood, "rolling": _rolling, "pendulum": swing.pendulum,
 }
-
-
-def _said(model: Model, found: dict[str, float]) -> str:
-    return ", ".join(f"{name} = {quantity_text(value, units.KINDS[model.unknowns[model.names.index(name)].kind].si_unit)}"
-                     for name, value in found.items())
+ALTERNATIVES: dict[str, Callable[[Model], list[tuple[dict[str, float], Step]]]] = {"pendulum": swing.alternatives}  # other closed-form starts
 
 
 def _neutral(model: Model, j: int) -> float:
@@ -411,3 +347,32 @@ def _inside(model: Model, j: int, p: np.ndarray) -> float:
     others = np.where(np.isfinite(q), q, 0.0)
     root = _root_start(model, j, others)
     return abs(root) / 100 if root else 1e-6
+
+
+def starts(model: Model, given: dict[str, float]) -> list[tuple[np.ndarray, list[Step], list[str]]]:
+    """Each start the fit searches from, the first the one ``start`` gives: then the closed form
+    without the values given (where some were), and the scene's other closed forms. A start that
+    differs from an earlier one by less than SAME of each input is left out."""
+    first = start(model, given)
+    found = [first]
+    if given:
+        try:
+            found.append(start(model, {}))
+        except InputError:
+            pass
+    other = ALTERNATIVES.get(model.command.name)
+    for values, step in (other(model) if other is not None and set(given) != set(model.names) else []):
+        p = np.array(first[0], dtype=float)
+        how = list(first[2])
+        for j, name in enumerate(model.names):
+            if name in values and name not in given and math.isfinite(values[name]) and model.allowed(j, values[name]):
+                p[j], how[j] = values[name], "closed form"
+        found.append((p, [step if s.title.startswith(swing.TITLE) else s for s in first[1]], how))
+    kept: list[tuple[np.ndarray, list[Step], list[str]]] = []
+    for candidate in found:
+        if all(np.any(np.abs(candidate[0] - other[0]) > SAME * np.maximum(np.abs(other[0]), 1e-300)) for other in kept):
+            kept.append(candidate)
+    return kept
+
+
+SAME = 0.01  # two starts within this of each input are one

@@ -57,6 +57,20 @@ def _made(command: Command) -> Callable[..., Report]:
     return scene
 
 
+def convert(quantity: str, unit: str | None = None):
+    """``quantity`` ("3000 rpm", "2 lb*ft^2", "4.0+/-0.1 kg") written in ``unit`` (else SI), read as
+    every option reads a text: a Conversion with .value, .unit, .kind, .si_value, .si_unit,
+    .uncertainty and .notes. A text taucli cannot read raises InputError, as on the command line
+    (``taucli convert QUANTITY [UNIT]``)."""
+    from taucli.quantities.conversion import convert_quantity  # deferred: pint
+
+    for name, text in (("quantity", quantity), ("unit", unit)):
+        if not (isinstance(text, str) or (name == "unit" and text is None)):
+            raise InputError(name, "expected a text: a number and its unit" if name == "quantity" else "expected a unit's text, or None for SI",
+                             example='"3000 rpm"' if name == "quantity" else '"rad/s"', got=f"{text!r} ({type(text).__name__})")
+    return convert_quantity(quantity, unit)
+
+
 def _no_sweeps(command: Command, given: dict) -> None:
     """A range "1..3 kg" is the command line's sweep; a function call solves one scene (#42)."""
     for name, value in given.items():

@@ -28,8 +28,7 @@ from taucli.core.names import FORMATS
 from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
-from taucli.options.table import FLAG, Command, Option
-from taucli.quantities.kinds import KINDS
+from taucli.options.table import FLAG, TEXT, Command, Option
 
 
 @dataclass
@@ -177,7 +176,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     )
     named = {*output.get, *(asked["y"] or ()), *(to.partition("=")[0].strip() for to in output.to)}
     _point_at_the_rim(command, scene_given, named)
-    _turn_on_what_makes(command, scene_given, named)
+    answer.turn_on_what_makes(command, scene_given, named)
     if output.plot and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
     if asked["y"] and swept_range is None:
@@ -215,27 +214,14 @@ def _point_at_the_rim(command: Command, given: dict, asked: set) -> None:
         given["at"] = "rim"
 
 
-def _turn_on_what_makes(command: Command, given: dict, asked: set) -> None:
-    """A result named in --get, --y or --to is made: the flag that makes it (--energy for KE0) is
-    turned on, as if given."""
-    for option in command.options:
-        if option.makes and not given.get(option.name) and asked & set(option.makes):
-            given[option.name] = True
-
-
 def _made_what_is_named(command: Command, report, output: render.Output, y, given: dict) -> None:
     """A result named in --get, --y or --to that this run did not make because an option it
     needs was not given: name that option (#42: "v needs --distance or --time")."""
     for option, names in (("get", output.get), ("y", y), ("to", [to.partition("=")[0].strip() for to in output.to])):
         for name in names:
             result = command.result(name)
-            if name not in report.results and result is not None and result.needs and not any(given.get(need) is not None for need in result.needs):
-                first = command.option(result.needs[0])
-                value = KINDS[first.kind].example if first.kind in KINDS else None
-                if value and " " in value and not value.startswith("'"):
-                    value = f"'{value}'"  # one word, as the shell splits it
-                example = f"{{{first.name}}} {value}" if value else None
-                raise InputError(option, f"{name} needs {result.needed()}", example=example)
+            if name not in report.results and result is not None and result.needs and not result.made_by(given.get):
+                raise InputError(option, f"{name} needs {result.needed()}", example=command.needs_example(result, given.get))
 
 
 def _format(asked: dict) -> Optional[str]:
@@ -276,6 +262,8 @@ def _no_such_option(command: Command, unknown: str) -> str:
     message = f"{unknown} is not an option of {command.name}"
     names = {option.flag[2:]: option.flag for option in (*command.options, *command.output) if not option.positional}
     names["help"] = "--help"  # --hlep (#42)
+    if (unknown[1:2].isdigit() or unknown[1:2] == ".") and any(option.positional and option.kind == TEXT for option in command.options):
+        return f"{message}: an argument that starts with a minus goes after -- (e.g. taucli {command.name} -- '-40 N*m' 'lbf*ft')"
     close = difflib.get_close_matches(unknown.lstrip("-").lower(), list(names), n=1, cutoff=0.6)  # --M1: flags are lower case
     return f"{message}; did you mean {names[close[0]]!r}?" if close else message
 

@@ -163,7 +163,7 @@ def text(command: Command) -> str:
         lines += ["", "Commands:"]
         lines += _definitions([(c.name, c.summary) for c in COMMANDS.values()], columns)
         return "\n".join(lines) + "\n"
-    arguments = " ".join(option.flag for option in command.options if option.positional)
+    arguments = " ".join(f"[{option.flag}]" if option.default else option.flag for option in command.options if option.positional)
     lines = [*_wrap(f"Usage: taucli {command.name} [OPTIONS]{' ' + arguments if arguments else ''}", columns, "", "  "), ""]
     lines += _paragraph(command.summary, columns)
     if command.description:
@@ -232,7 +232,8 @@ def markdown(command: Command) -> str:
         lines.append(f"| `{option.flag}` | {takes} | {option.help_text().replace('|', '/')} |")
     lines += ["", "| result | unit | what it is |", "|---|---|---|"]
     for result in command.results:
-        lines.append(f"| `{result.key}` | {pretty_unit(result.unit) or '–'} | {result.label} |")
+        needs = f" — needs {result.needed(lambda name: f'`{command.flag(name)}`')}" if result.needs else ""
+        lines.append(f"| `{result.key}` | {pretty_unit(result.unit) or '–'} | {result.label}{needs} |")
     return "\n".join(lines)
 
 

@@ -13,7 +13,7 @@ from taucli.options.table import Command
 SCENES: dict[str, Command] = {
     module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive, flywheel)
 }
-COMMANDS: dict[str, Command] = {**SCENES, "fit": fit.COMMAND, "bench": tools.BENCH, "completions": tools.COMPLETIONS}
+COMMANDS: dict[str, Command] = {**SCENES, "fit": fit.COMMAND, "bench": tools.BENCH, "completions": tools.COMPLETIONS, "convert": tools.CONVERT}
 
 
 def scene(name: str) -> Command:

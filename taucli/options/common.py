@@ -51,6 +51,7 @@ PARTS = Option(
     panel=BODY,
     repeatable=True,
     metavar='"SHAPE key=value ..."',
+    example="point mass=100g offset=0.2m",
 )
 SHAPE_WORDS = ", ".join(SHAPE_NAMES)
 # pendulum: a part may sit on the other side of the pivot, its offset= negative (d = Σmᵢdᵢ/M, signed)
@@ -161,14 +162,14 @@ BRAKE_OPTION = Option(
     "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius. On a lever (a block brake): "
     '"force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3": force= at lever= from the lever\'s pivot, the shoe at pivot= from it, '
     "the friction's line at offset= from it (positive: self-energizing), N = F·lever/(pivot − μ·offset) (repeatable).",
-    repeatable=True, metavar='"force=… mu=… radius=…"',
+    repeatable=True, metavar='"force=… mu=… radius=…"', example="force=100N mu=0.4 radius=0.5m",
 )
 FACE_OPTION = Option(
     "face", FACE,
     'A flat face pressed on a surface, e.g. "mu=0.2" (the body lying on its face: its weight, its radii) or '
     '"mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm model=uniform|wear surfaces=2" (a clutch plate); '
     "pmax= (the largest lining pressure) in place of force= (repeatable).",
-    repeatable=True, metavar='"mu=… [force=…]"',
+    repeatable=True, metavar='"mu=… [force=…]"', example="mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm",
 )
 BAND_OPTION = Option(
     "band", BAND,
@@ -176,22 +177,24 @@ BAND_OPTION = Option(
     "(tension= pulls the slack end) or \"mu=0.25 wrap=270deg force=400N lever=750mm slack-arm=125mm\" "
     "(a lever: force= at lever= from its pivot, the slack end at slack-arm=, the tight end at tight-arm=; both: differential); "
     "width= for the lining pressure; the tight end is the one the drum drags the band towards (repeatable).",
-    repeatable=True, metavar='"mu=… wrap=… tension=…|force=… lever=…"',
+    repeatable=True, metavar='"mu=… wrap=… tension=…|force=… lever=…"', example="mu=0.25 wrap=270deg radius=0.3m tension=500N",
 )
+BRAKE_ON_A_LEVER = "{brake} 'force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.5m'"  # the shoe's force then comes from the lever
 CONTACT_RESULTS = (
-    Result("torque_brake", "N*m", "friction torque of the brakes"),
-    Result("work_brake", "J", "energy the brakes take…"),
-    Result("power_brake", "W", "power the brakes take…"),
-    Result("torque_face", "N*m", "friction torque of the faces"),
-    Result("work_face", "J", "energy the faces take…"),
-    Result("power_face", "W", "power the faces take…"),
-    Result("force_brake", "N", "normal force on the brake shoe, from its lever"),
-    Result("force_face", "N", "clamp force on the face"),
-    Result("pressure_face", "Pa", "largest lining pressure of the face"),
-    Result("torque_band", "N*m", "friction torque of the band brakes"),
-    Result("work_band", "J", "energy the band brakes take…"),
-    Result("power_band", "W", "power the band brakes take…"),
-    Result("tension_tight", "N", "band tension at its tight end, T₁"),
-    Result("tension_slack", "N", "band tension at its slack end, T₂"),
-    Result("pressure_band", "Pa", "largest lining pressure under the band, T₁/(r·w)"),
+    Result("torque_brake", "N*m", "friction torque of the brakes", needs=("brake",)),
+    Result("work_brake", "J", "energy the brakes take…", needs=("brake",)),
+    Result("power_brake", "W", "power the brakes take…", needs=("brake",)),
+    Result("torque_face", "N*m", "friction torque of the faces", needs=("face",)),
+    Result("work_face", "J", "energy the faces take…", needs=("face",)),
+    Result("power_face", "W", "power the faces take…", needs=("face",)),
+    Result("force_brake", "N", "normal force on the brake shoe, from its lever", needs=("brake",), example=BRAKE_ON_A_LEVER),
+    Result("force_face", "N", "clamp force on the face", needs=("face",)),
+    Result("pressure_face", "Pa", "largest lining pressure of the face", needs=("face",)),
+    Result("torque_band", "N*m", "friction torque of the band brakes", needs=("band",)),
+    Result("work_band", "J", "energy the band brakes take…", needs=("band",)),
+    Result("power_band", "W", "power the band brakes take…", needs=("band",)),
+    Result("tension_tight", "N", "band tension at its tight end, T₁", needs=("band",)),
+    Result("tension_slack", "N", "band tension at its slack end, T₂", needs=("band",)),
+    Result("pressure_band", "Pa", "largest lining pressure under the band, T₁/(r·w)", needs=("band",),
+           example="{band} 'mu=0.25 wrap=270deg radius=0.3m tension=500N width=5cm'"),
 )

@@ -60,9 +60,10 @@ COMMAND = Command(
             panel=MACHINE,
         ),
         Option("spin_sense", CHOICE, "The rotor's sense as a book states it: clockwise (cw) or counter-clockwise (ccw) seen from the rear "
-               "(stern, tail), front (bow, nose), left, right, above or below, e.g. cw-from-rear.", choices=SPIN_SENSES, panel=MACHINE, metavar="SENSE"),
+               "(stern, tail), front (bow, nose), left, right, above or below, e.g. cw-from-rear.", choices=SPIN_SENSES, panel=MACHINE, metavar="SENSE",
+               example="cw-from-rear"),
         Option("turn", CHOICE, "How the vehicle turns the rotor's axis: left, right (seen from above), pitch-up, pitch-down (the front rising, "
-               "falling), roll-left, roll-right (that side going down).", choices=TURNS, panel=MACHINE, metavar="TURN"),
+               "falling), roll-left, roll-right (that side going down).", choices=TURNS, panel=MACHINE, metavar="TURN", example="left"),
         Option("lean", "angle", "The vehicle's lean (bank) about its fore-and-aft axis, positive with its right side down, e.g. 20deg "
                "(a two-wheeler leaning into a right-hand curve).", sign="any", panel=MACHINE),
         Option("craft", CHOICE, "The words for the effect: vehicle (front, rear, left, right), ship (bow, stern, port, starboard), "
@@ -83,9 +84,9 @@ COMMAND = Command(
         Result("L_orbital", "kg*m**2/s", "angular momentum of the centre of mass's orbit…"),
         Result("pivot_force_vertical", "N", "pivot's force on the body, vertical (up)"),
         Result("pivot_force_horizontal", "N", "pivot's force on the body, horizontal (towards the axis)…"),
-        Result("couple", "N*m", "gyroscopic couple…"),
-        Result("effect", None, "effect of the couple on the vehicle"),
-        Result("bearing_force", "N", "force on each bearing C/l…"),
+        Result("couple", "N*m", "gyroscopic couple…", needs=("precession",)),
+        Result("effect", None, "effect of the couple on the vehicle", needs=("precession+spin_sense+turn",)),
+        Result("bearing_force", "N", "force on each bearing C/l…", needs=("precession+bearing_span",)),
     ),
     output=ANSWER,
     headline="omega_p",

@@ -6,6 +6,14 @@ from taucli.options.table import CHOICE, COUPLE, FILE, PART, PARTICLE, Command, 
 
 MEETS = "Particles and bodies that meet it (L conserved)"
 
+# What makes the results the docs example (a torque for a time) does not (#42 item 18): a contact that takes
+# energy, a particle or body that meets it, a clutch, a particle striking a body whose mass and centre are known.
+CONTACTS = ("brake", "face", "band")
+MEETINGS = ("particle", "couple")
+CLUTCH = "{couple} 'inertia=3kg*m^2 torque=50N*m'"
+STRUCK_SHAPE = ("particle+shape",)
+STRUCK_SHAPE_EXAMPLE = "{particle} 'mass=0.4kg speed=20m/s radius=0.6m' {shape} disc {mass} 2kg {radius} 0.5m"
+
 COMMAND = Command(
     name="impulse",
     summary="Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.",
@@ -24,16 +32,17 @@ COMMAND = Command(
         Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
         Option("part_after", PART, 'The body after a change with no torque, by parts, in place of --part (the body\'s --shape or --inertia stays), '
                'e.g. --part-after "point mass=25kg offset=0.5m" (repeatable).', repeatable=True, metavar='"SHAPE key=value ..."'),
-        Option("torque_profile", FILE, "CSV: a header ('t [ms], torque [N*m]'; tab, ; or , as fit reads), then rows; - for stdin.", metavar="FILE"),
+        Option("torque_profile", FILE, "CSV: a header ('t [ms], torque [N*m]'; tab, ; or , as fit reads), then rows; - for stdin.", metavar="FILE",
+               example="torque.csv"),
         Option("particle", PARTICLE,
                'A particle that meets the body, e.g. "mass=30kg speed=4m/s radius=2m": speed signed (positive in the body\'s sense), '
                "radius the distance of its line from the axis (or with angle=, to where it meets the body, angle= between velocity and radius); "
                "it sticks, or leaves with speed-after= (negative: it rebounds), or rebounds with e= (restitution); "
                "no speed=: it rides on the body, radius-after= where it moves to (repeatable).",
-               repeatable=True, metavar='"mass=… speed=… radius=…"', panel=MEETS),
+               repeatable=True, metavar='"mass=… speed=… radius=…"', panel=MEETS, example="mass=0.4kg speed=20m/s radius=0.6m"),
         Option("couple", COUPLE, 'Another body on the same axis that locks to it, e.g. "inertia=3kg*m^2 omega0=0" or "disc mass=2kg radius=0.1m omega0=100rpm" '
                '(repeatable); with torque=, through a clutch that slips passing that torque until the speeds meet, e.g. "inertia=3kg*m^2 torque=50N*m".',
-               repeatable=True, metavar='"inertia=… omega0=…"', panel=MEETS),
+               repeatable=True, metavar='"inertia=… omega0=…"', panel=MEETS, example="inertia=3kg*m^2 omega0=0"),
         Option("method", CHOICE, "Quadrature for a profile: " + " | ".join(QUADRATURE_NAMES) + ".", choices=QUADRATURE_NAMES, default="auto", metavar="METHOD"),
         point_option("(at the start, and at the end of the impulse)"),
     ),
@@ -49,19 +58,19 @@ COMMAND = Command(
         Result("L1", "kg*m**2/s", "angular momentum after…"),
         Result("KE0", "J", "rotational kinetic energy before…"),
         Result("KE1", "J", "rotational kinetic energy after…"),
-        Result("work", "J", "work the body does on itself (KE1 − KE0)"),
-        Result("peak_torque", "N*m", "largest torque…"),
-        Result("KE_lost", "J", "kinetic energy lost (KE0 − KE1)…"),
-        Result("KE_lost_fraction", "", "fraction of the kinetic energy lost"),
-        Result("J_net", "N*m*s", "net angular impulse, drive and friction (IΔω)"),
-        Result("t_slip", "s", "time the clutch slips"),
-        Result("heat", "J", "energy the clutch turns to heat"),
+        Result("work", "J", "work the body does on itself (KE1 − KE0)", needs=("inertia_final", "part_after", *CONTACTS), example="{inertia_final} '0.05 kg*m^2'"),
+        Result("peak_torque", "N*m", "largest torque…", needs=("torque_profile",)),
+        Result("KE_lost", "J", "kinetic energy lost (KE0 − KE1)…", needs=MEETINGS),
+        Result("KE_lost_fraction", "", "fraction of the kinetic energy lost", needs=MEETINGS),
+        Result("J_net", "N*m*s", "net angular impulse, drive and friction (IΔω)", needs=CONTACTS),
+        Result("t_slip", "s", "time the clutch slips", needs=("couple",), example=CLUTCH),
+        Result("heat", "J", "energy the clutch turns to heat", needs=("couple",), example=CLUTCH),
         Result("period", "s", "period of a turn after, 2π/|ω₁|"),
-        Result("omega_impact", "rad/s", "angular velocity just after the collision…"),
-        Result("p0", "kg*m/s", "linear momentum of the system before, across the radius to the particle"),
-        Result("p1", "kg*m/s", "linear momentum of the system after, across the radius to the particle"),
-        Result("pivot_impulse", "N*s", "impulse of the pivot (axle) on the system, p1 − p0"),
-        Result("speed_after", "m/s", "speed of the particle after…"),
+        Result("omega_impact", "rad/s", "angular velocity just after the collision…", needs=("particle+torque+duration", "couple+torque+duration")),
+        Result("p0", "kg*m/s", "linear momentum of the system before, across the radius to the particle", needs=STRUCK_SHAPE, example=STRUCK_SHAPE_EXAMPLE),
+        Result("p1", "kg*m/s", "linear momentum of the system after, across the radius to the particle", needs=STRUCK_SHAPE, example=STRUCK_SHAPE_EXAMPLE),
+        Result("pivot_impulse", "N*s", "impulse of the pivot (axle) on the system, p1 − p0", needs=STRUCK_SHAPE, example=STRUCK_SHAPE_EXAMPLE),
+        Result("speed_after", "m/s", "speed of the particle after…", needs=("particle",), example="{particle} 'mass=0.4kg speed=20m/s radius=0.6m e=0.5'"),
         *CONTACT_RESULTS,
         *POINT_RESULTS,
     ),

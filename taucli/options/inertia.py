@@ -25,7 +25,7 @@ COMMAND = Command(
         Result("I", "kg*m**2", "moment of inertia about the rotation axis"),
         Result("k", "m", "radius of gyration, √(I/M)"),
         Result("I_cm", "kg*m**2", "moment of inertia about the parallel axis through the centre of mass", needs=("offset", "body_offset")),
-        Result("mass", "kg", "total mass"),
+        Result("mass", "kg", "total mass", needs=("part", "density")),
     ),
     output=ANSWER,
     headline="I",

@@ -5,6 +5,13 @@ from taucli.options.table import FLAG, Command, Option, Result
 
 ENERGY = "Energy added, taken or put to use"
 
+# What makes the results a run without them lacks (#42 item 18): a turn back by --time (a constant α, or a
+# drive, against ω₀); a constant α to a target; the stored energy put to a load.
+TURNS_BACK = ("time+alpha", "time+torque")
+TURNS_BACK_EXAMPLE = "{time} 10s {alpha} '-6 rad/s^2'"
+TO_A_TARGET = ("in_time+until_omega", "in_angle+until_omega")
+TO_A_LOAD = ("lift_mass", "vehicle_mass")
+
 COMMAND = Command(
     name="spin-down",
     summary="A wheel on a fixed axle, slowing or spun up: I dω/dt = τ_drive − τ_f − bω − kω².",
@@ -76,15 +83,15 @@ COMMAND = Command(
         Result("omega", "rad/s", "angular velocity…", needs=("time", "until_omega", "until_angle")),
         Result("theta", "rad", "net angle turned…", needs=("time", "until_omega", "until_angle")),
         Result("revs", "rev", "net revolutions…", needs=("time", "until_omega", "until_angle")),
-        Result("theta_total", "rad", "total angle turned, both ways,…"),
-        Result("revs_total", "rev", "total revolutions, both ways,…"),
-        Result("t_until", "s", "time to reach…", needs=("until_omega", "until_angle")),
-        Result("theta_until", "rad", "angle turned until…", needs=("until_omega",)),
-        Result("revs_until", "rev", "revolutions until…", needs=("until_omega",)),
-        Result("alpha", "rad/s**2", "angular acceleration (constant)"),
-        Result("omega0", "rad/s", "initial angular velocity…"),
-        Result("torque_net", "N*m", "net torque…"),
-        Result("torque", "N*m", "drive torque…"),
+        Result("theta_total", "rad", "total angle turned, both ways,…", needs=TURNS_BACK, example=TURNS_BACK_EXAMPLE),
+        Result("revs_total", "rev", "total revolutions, both ways,…", needs=TURNS_BACK, example=TURNS_BACK_EXAMPLE),
+        Result("t_until", "s", "time to reach…", needs=("until_omega", "until_angle"), example="{until_omega} 100rpm"),
+        Result("theta_until", "rad", "angle turned until…", needs=("until_omega",), example="{until_omega} 100rpm"),
+        Result("revs_until", "rev", "revolutions until…", needs=("until_omega",), example="{until_omega} 100rpm"),
+        Result("alpha", "rad/s**2", "angular acceleration (constant)", needs=("alpha", "rim_accel", *TO_A_TARGET)),
+        Result("omega0", "rad/s", "initial angular velocity…", needs=("rim_speed", "ke0")),
+        Result("torque_net", "N*m", "net torque…", needs=("alpha", *TO_A_TARGET)),
+        Result("torque", "N*m", "drive torque…", needs=("alpha", "power", *TO_A_TARGET)),
         Result("KE0", "J", "kinetic energy at the start"),
         Result("KE", "J", "kinetic energy…"),
         Result("work_drive", "J", "work done by the drive…"),
@@ -96,11 +103,11 @@ COMMAND = Command(
         Result("power_friction", "W", "power friction takes…"),
         Result("power_viscous", "W", "power the viscous torque takes…"),
         Result("power_drag", "W", "power drag takes…"),
-        Result("KE_after", "J", "kinetic energy after…"),
-        Result("omega_after", "rad/s", "angular velocity after…"),
-        Result("energy_delivered", "J", "energy that reaches the load (η × the energy the wheel gives up)"),
-        Result("lift_height", "m", "height the mass is lifted"),
-        Result("vehicle_speed", "m/s", "speed the vehicle reaches from rest"),
+        Result("KE_after", "J", "kinetic energy after…", needs=("work", *TO_A_LOAD)),
+        Result("omega_after", "rad/s", "angular velocity after…", needs=("work", *TO_A_LOAD)),
+        Result("energy_delivered", "J", "energy that reaches the load (η × the energy the wheel gives up)", needs=TO_A_LOAD),
+        Result("lift_height", "m", "height the mass is lifted", needs=("lift_mass",)),
+        Result("vehicle_speed", "m/s", "speed the vehicle reaches from rest", needs=("vehicle_mass",)),
         *POINT_RESULTS,
         *CONTACT_RESULTS,
     ),

@@ -11,8 +11,10 @@ An option's ``name`` is the solver's keyword and the batch key; the flag is deri
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
+from taucli.quantities.kinds import KINDS
 from taucli.writing.report import Value
 
 # Kinds that are not quantities.
@@ -88,6 +90,7 @@ class Option:
         return () if self.also is None else (self.also,) if isinstance(self.also, str) else self.also
     first_reached: tuple[str, str] | None = None  # --find: of several roots, the first the motion reaches: least (this result, a time; then the angle from this option, the start)
     makes: tuple[str, ...] = ()  # FLAG: the results it turns on; naming one in --get, --y or --to turns it on
+    example: str | None = None  # a value a message may suggest, where its kind has none (a spec: "force=100N mu=0.4 radius=0.5m")
 
     @property
     def flag(self) -> str:
@@ -133,12 +136,48 @@ class Result:
     key: str
     unit: str | None
     label: str
-    needs: tuple[str, ...] = ()  # the options, any one of which a run needs to make it (v: distance or time)
+    # What makes it where the docs example does not: alternatives, any one of which a run needs, each
+    # one option or several given together ("time+alpha"): v needs ("distance", "time").
+    needs: tuple[str, ...] = ()
+    example: str | None = None  # the first alternative as typed, where its options' own example values do not make it
 
-    def needed(self) -> str:
-        """What makes it, as a message says it: "{distance} or {time}" (each name spelled per surface)."""
-        names = [f"{{{name}}}" for name in self.needs]
-        return ", ".join(names[:-1]) + " or " + names[-1] if len(names) > 1 else "".join(names)
+    @property
+    def alternatives(self) -> tuple[tuple[str, ...], ...]:
+        """The ways to make it, each the options given together: (("time", "alpha"), ("time", "torque"))."""
+        return tuple(tuple(alternative.split("+")) for alternative in self.needs)
+
+    def needed(self, spell=lambda name: f"{{{name}}}") -> str:
+        """What makes it, as a message says it: "{distance} or {time}"; "{time} with {alpha}, or
+        {in_time} with {until_omega}"; "{v0} with {mass}, {length} and {radius}"; "{ratio} twice"
+        (each name as ``spell`` writes it: a placeholder, spelled per surface, by default)."""
+        ways = []
+        for alternative in self.alternatives:
+            counted = [spell(name) + ("" if n == 1 else " twice" if n == 2 else f" {n} times") for name, n in _counted(alternative)]
+            first, rest = counted[0], counted[1:]
+            together = ", ".join(rest[:-1]) + " and " + rest[-1] if len(rest) > 1 else "".join(rest)
+            ways.append(f"{first} with {together}" if rest else first)
+        if any(len(alternative) > 1 for alternative in self.alternatives):
+            return ", or ".join(ways)  # "or" between the ways, where a way may hold a comma
+        return ", ".join(ways[:-1]) + " or " + ways[-1] if len(ways) > 1 else "".join(ways)
+
+    def made_by(self, given) -> bool:
+        """Whether ``given`` (a name -> value lookup) holds every option of one of its alternatives
+        (a repeatable option named n times in one, n values of it)."""
+        return any(all(holds(given, name, n) for name, n in _counted(alternative)) for alternative in self.alternatives)
+
+
+def _counted(alternative: tuple[str, ...]) -> list[tuple[str, int]]:
+    """Each option of a way to make a result once, with the times it is named ("ratio+ratio": two stages)."""
+    return [(name, alternative.count(name)) for name in dict.fromkeys(alternative)]
+
+
+def holds(given, name: str, times: int = 1) -> bool:
+    """Whether ``given`` (a name -> value lookup) holds the option ``name`` (``times`` values of it):
+    a text, a list, True for a flag, a number at a sweep's point (0.0 is given: no ==, as 0.0 == False)."""
+    value = given(name)
+    if value is None or value is False or isinstance(value, (list, tuple)) and len(value) < times:
+        return False
+    return times == 1 or isinstance(value, (list, tuple))
 
 
 @dataclass(frozen=True)
@@ -196,6 +235,29 @@ class Command:
     def results_line(self) -> str:
         return ", ".join(result.key for result in self.results)
 
+    def needs_example(self, result: Result, given=lambda name: None) -> str | None:
+        """The first way to make ``result`` as typed, each option a {name} placeholder with a value:
+        the result's own example, else each option's (or its kind's) example value, quoted for the
+        shell, leaving out the options ``given`` holds already; None where an option of it has no
+        example value."""
+        if result.example is not None or not result.needs:
+            return result.example
+        typed = []
+        for name in result.alternatives[0]:
+            option = self.option(name)
+            if option is None:
+                return None
+            value = option.example or (KINDS[option.kind].example if option.kind in KINDS else None)
+            if holds(given, name):
+                continue
+            if option.kind == FLAG:
+                typed.append(f"{{{name}}}")
+            elif value is None:
+                return None
+            else:
+                typed.append(f"{{{name}}} {shell_word(value)}")
+        return " ".join(typed)
+
 
 class Results(dict):
     """The results a solver fills in (a dict of key -> Value), each from its scene's table: the
@@ -225,6 +287,15 @@ class Results(dict):
 
 
 FILLED = "…"  # where a result's label takes the part its solver fills in
+_PLAIN = re.compile(r"[A-Za-z0-9_.,:/+@%-][A-Za-z0-9_.,:/+=@%-]*")  # a word every shell (bash, zsh, fish) takes as it is (zsh expands a leading =)
+
+
+def shell_word(value: str) -> str:
+    """``value`` as one word of a command line in bash, zsh and fish: as it is, else in single
+    quotes (a kind's example may come quoted already: "'6 rad/s^2'")."""
+    if value[:1] in "'\"" and value[-1:] == value[:1] or _PLAIN.fullmatch(value):
+        return value
+    return "'" + value.replace("'", "'\\''") + "'"
 
 
 class MissingResult(KeyError):
@@ -240,11 +311,12 @@ class MissingResult(KeyError):
         result = command.result(key)
         self.in_table = result is not None
         self.needs = result.needs if result is not None else ()
+        self._result = result
 
     def __str__(self) -> str:
         if self.needs:
-            keywords = " or ".join(f"{name}=" for name in self.needs)
-            flags = " or ".join("--" + name.replace("_", "-") for name in self.needs)
+            keywords = self._result.needed(lambda name: f"{name}=")
+            flags = self._result.needed(lambda name: "--" + name.replace("_", "-"))
             return f"{self.key} is not among this run's results: it needs {keywords} ({flags} on the command line)"
         if self.makers:
             turn_on = " or ".join(f"{name}=True" for name in self.makers)

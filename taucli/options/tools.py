@@ -1,7 +1,7 @@
-"""The commands that are not scenes: taucli bench and taucli completions."""
+"""The commands that are not scenes: taucli bench, taucli completions and taucli convert."""
 
 from taucli.core.names import BENCH_SCENES, SHELLS
-from taucli.options.table import CHOICE, FILE, FLAG, Command, Option
+from taucli.options.table import CHOICE, FILE, FLAG, TEXT, Command, Option
 
 BENCH = Command(
     name="bench",
@@ -29,6 +29,31 @@ COMPLETIONS = Command(
     example="taucli completions bash > ~/.taucli.bash",
     options=(Option("shell", CHOICE, "bash, zsh or fish.", choices=SHELLS, positional=True, metavar="SHELL"),),
     handler="taucli.front.tools:completions",
+)
+
+CONVERT_RESULTS = ("value", "uncertainty", "unit", "kind", "si_value", "si_uncertainty", "si_unit")
+
+CONVERT = Command(
+    name="convert",
+    summary="A quantity in another unit: QUANTITY read as every option reads it, written in UNIT (else SI).",
+    description=(
+        "QUANTITY is a number and its unit, as any option takes it ('3000 rpm', '2 lb*ft^2', '0.01 N*m/Hz'), "
+        "with the same notes where the reading is not plain (Hz is revolutions per second, lb in an inertia "
+        "a pound of mass). Its kind comes from its unit: mass, length, angle, time, angular velocity and "
+        "acceleration, torque, moment of inertia, force, acceleration, velocity, momentum, viscous and drag "
+        "coefficients, power, energy, density (and per area, per length), pressure, stress, torsion constant, "
+        "lead. A unit that fits two kinds is read as the plainer (N*m: a torque; mm: a length)."
+    ),
+    example="taucli convert '3000 rpm' rad/s",
+    options=(
+        Option("quantity", TEXT, "A number and its unit: '3000 rpm', '2 lb*ft^2' (quoted where it holds * ^ or a space; a negative one after --: "
+               "taucli convert -- '-40 N*m' 'lbf*ft').", positional=True, metavar="QUANTITY"),
+        Option("unit", TEXT, "The unit to write it in.", default="the SI unit of its kind", positional=True, metavar="UNIT"),
+        Option("json", FLAG, "Print one strict JSON document on stdout."),
+        Option("get", CHOICE, "Print only this, bare (repeatable): " + ", ".join(CONVERT_RESULTS) + "; notes go to stderr.", choices=CONVERT_RESULTS,
+               repeatable=True, metavar="NAME"),
+    ),
+    handler="taucli.front.tools:convert",
 )
 
 EXIT_STATUSES = (

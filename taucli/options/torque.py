@@ -5,6 +5,7 @@ from taucli.options.table import VECTOR, Command, Option, Result
 
 FORCES = "Forces (τ = r × F)"
 PARTICLES = "Particles (L = r × p)"
+A_PARTICLE = ("mass+velocity", "momentum")  # what makes L = r × p (#42 item 18)
 
 COMMAND = Command(
     name="torque",
@@ -28,9 +29,9 @@ COMMAND = Command(
                sign="any", repeatable=True, default="90deg", panel=FORCES),
         Option("mass", "mass", "A particle's mass (repeatable, one for each --velocity).", repeatable=True, panel=PARTICLES),
         Option("velocity", VECTOR, 'A particle\'s velocity, e.g. "0,2,0 m/s" (repeatable).',
-               repeatable=True, of="velocity", metavar='"X,Y,Z UNIT"', sign="any", panel=PARTICLES),
+               repeatable=True, of="velocity", metavar='"X,Y,Z UNIT"', sign="any", panel=PARTICLES, example="0,2,0 m/s"),
         Option("momentum", VECTOR, 'A particle\'s momentum p, instead of --mass and --velocity, e.g. "2,0,0 kg*m/s" (repeatable).',
-               repeatable=True, of="momentum", metavar='"X,Y,Z UNIT"', sign="any", panel=PARTICLES),
+               repeatable=True, of="momentum", metavar='"X,Y,Z UNIT"', sign="any", panel=PARTICLES, example="2,0,0 kg*m/s"),
         Option("about", VECTOR, 'The point the torques and angular momenta are about, from the origin --r is measured from, e.g. "1,0,0 m" (default the origin).',
                of="length", metavar='"X,Y,Z UNIT"', sign="any"),
         GRAVITY_FOR_WEIGHTS,
@@ -42,11 +43,11 @@ COMMAND = Command(
         Result("tau", "N*m", "size of the torque…"),
         Result("sense", None, "sense of the torque, seen from the tip of its axis"),
         Result("lever_arm", "m", "lever arm r⊥…"),
-        Result("L_x", "kg*m**2/s", "angular momentum, x component…"),
-        Result("L_y", "kg*m**2/s", "angular momentum, y component…"),
-        Result("L_z", "kg*m**2/s", "angular momentum, z component…"),
-        Result("L", "kg*m**2/s", "size of the angular momentum…"),
-        Result("L_sense", None, "sense of the angular momentum, seen from the tip of its axis"),
+        Result("L_x", "kg*m**2/s", "angular momentum, x component…", needs=A_PARTICLE),
+        Result("L_y", "kg*m**2/s", "angular momentum, y component…", needs=A_PARTICLE),
+        Result("L_z", "kg*m**2/s", "angular momentum, z component…", needs=A_PARTICLE),
+        Result("L", "kg*m**2/s", "size of the angular momentum…", needs=A_PARTICLE),
+        Result("L_sense", None, "sense of the angular momentum, seen from the tip of its axis", needs=A_PARTICLE),
     ),
     output=ANSWER,
     headline="tau",

@@ -8,7 +8,9 @@ Nothing here may cost an answer: a missing, unreadable, corrupt, stale or read-o
 ignored (and rewritten when it can be). Nor may it change one: the cache is a trust boundary
 (the folder may be shared, or edited), so each file carries a checksum of its entries and of
 what they were made from (taucli's rules, pint's version, a checksum of pint's definitions), and
-a file that does not verify is not read. The folder is ``$TAUCLI_CACHE_DIR`` if set (empty: keep
+a file that does not verify is not read. Every file is read with a size cap (MAX_FILE, MAX_CHECKED):
+one past it, or one that is not a regular file (a link to /dev/zero, a FIFO), is not read but
+rebuilt, so a cache costs time at most, never memory without end or a run that waits. The folder is ``$TAUCLI_CACHE_DIR`` if set (empty: keep
 nothing), else ``$XDG_CACHE_HOME/taucli``, else the platform's user cache folder with ``taucli``
 appended, in a home that exists.
 """
@@ -18,6 +20,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import os
+import stat
 import sys
 import zlib  # not hashlib: its OpenSSL import costs 4 ms, and the file holds the full stamp
 from functools import lru_cache
@@ -25,6 +28,31 @@ from functools import lru_cache
 from taucli.core.version import __version__
 
 MAX_ENTRIES = 512  # per store; beyond it, answers are worked out each time and not kept
+MAX_FILE = 1024 * 1024  # bytes of a JSON file of the cache (512 entries are some 30 KB); a larger one is not read
+MAX_CHECKED = 16 * 1024 * 1024  # bytes of a file whose checksum is taken (pint's pickles, some 150 KB); larger: no checksum
+
+
+def _regular(path: str, limit: int) -> bool:
+    """Whether ``path`` is a regular file of at most ``limit`` bytes (following a link): never a
+    device (/dev/zero), a FIFO (which would wait for a writer) or a folder."""
+    try:
+        info = os.stat(path)
+    except (OSError, ValueError, TypeError):
+        return False
+    return stat.S_ISREG(info.st_mode) and info.st_size <= limit
+
+
+def small_text(path: str) -> str:
+    """The UTF-8 text of the cache file ``path``, at most MAX_FILE bytes of it read; OSError where
+    it is missing, not a regular file or larger (the caller ignores it and writes it afresh),
+    ValueError where it is not UTF-8."""
+    if not _regular(path, MAX_FILE):
+        raise OSError(f"{path}: not a regular file of at most {MAX_FILE} bytes")
+    with open(path, "rb") as handle:
+        raw = handle.read(MAX_FILE + 1)  # (a file that grew since: still at most this)
+    if len(raw) > MAX_FILE:
+        raise OSError(f"{path}: larger than {MAX_FILE} bytes")
+    return raw.decode("utf-8")
 
 
 @lru_cache(maxsize=1)
@@ -79,12 +107,21 @@ def checksum(*texts: str) -> str:
 
 
 def file_checksum(path: str | None) -> str:
-    """The checksum of a file's content ("?" where it cannot be read): pint's definitions."""
+    """The checksum of a file's content ("?" where it cannot be read, is not a regular file or is
+    larger than MAX_CHECKED): pint's definitions, its pickles. Read a chunk at a time."""
+    if not _regular(path, MAX_CHECKED):
+        return "?"
+    value = total = 0
     try:
         with open(path, "rb") as handle:
-            return f"{zlib.crc32(handle.read()):08x}"
+            while chunk := handle.read(1 << 20):
+                total += len(chunk)
+                if total > MAX_CHECKED:
+                    return "?"
+                value = zlib.crc32(chunk, value)
     except (OSError, TypeError):
         return "?"
+    return f"{value:08x}"
 
 
 def stamp(*origins: str | None) -> str:
@@ -141,8 +178,7 @@ class Store:
         """The entries of the file, where its stamp is this one and its checksum verifies: an
         edited entry ("kg" as 2 kg) does not, and the store starts empty (rewritten as it fills)."""
         try:
-            with open(self.file, encoding="utf-8") as handle:
-                stored = json.load(handle, parse_constant=_no_constants)
+            stored = json.loads(small_text(self.file), parse_constant=_no_constants)
             if isinstance(stored, dict) and stored.get("stamp") == self.stamp and isinstance(stored.get("entries"), dict):
                 if stored.get("checksum") == _entries_checksum(self.stamp, stored["entries"]):
                     self.entries = dict(list(stored["entries"].items())[:MAX_ENTRIES])
@@ -176,7 +212,8 @@ def checked_folder(path: str) -> bool:
         return False
     sums = _sums(path)
     try:
-        names = sorted(name for name in os.listdir(path) if os.path.isfile(os.path.join(path, name)))
+        # Every entry but a folder: a link to /dev/zero or a FIFO pint might open has no checksum ("?") and is removed.
+        names = sorted(name for name in os.listdir(path) if not stat.S_ISDIR(os.lstat(os.path.join(path, name)).st_mode))
         if all(sums.get(name) == file_checksum(os.path.join(path, name)) for name in names):
             return True
         for name in names:
@@ -205,8 +242,7 @@ def seal(path: str) -> None:
 
 def _sums(path: str) -> dict:
     try:
-        with open(path + ".sums", encoding="utf-8") as handle:
-            sums = json.load(handle)
+        sums = json.loads(small_text(path + ".sums"))
         return sums if isinstance(sums, dict) else {}
     except (OSError, ValueError, RecursionError):
         return {}

@@ -34,6 +34,11 @@ class Part:
         flag = name.replace("_", "-")
         return f"{self.source} {flag}=" if self.source else name
 
+    def mention(self, name: str) -> str:
+        """The input as a message's text names it: {name} (spelled by the surface showing it) for
+        the main options, "flag=" inside a part's spec."""
+        return f"{name.replace('_', '-')}=" if self.source else f"{{{name}}}"
+
     def example(self, name: str, value: str) -> str:
         flag = name.replace("_", "-")
         lead = self.shape or ("gyration=0.3m" if self.gyration is not None else "inertia=0.05kg*m^2")

@@ -46,7 +46,7 @@ class BodyInertia:
     """The moment of inertia of a whole body about the rotation axis, with its worked steps."""
 
     inertia: float
-    mass: float
+    mass: float | None  # None where a part's mass is not known (a part of given inertia alone)
     parts: tuple[PartInertia, ...]
     steps: tuple[Step, ...]
     description: str
@@ -128,11 +128,11 @@ def part_inertia(part: Part) -> PartInertia:
     dims = dict(part.dims)
     for dim in shape.dims:
         if dim not in dims and not unused(shape, axis, dim, dims):
-            needs = ", ".join(Part("", 0, source=part.source).option(d) for d in ("mass", *shape.dims))
+            needs = ", ".join(part.mention(d) for d in ("mass", *shape.dims))
             raise InputError(part.option(dim), f"is needed for a {shape.title} (it takes {needs})", example=part.example(dim, "0.2m"))
     for dim in dims:
         if dim not in shape.dims and dim not in shape.optional:
-            takes = ", ".join(part.option(d) for d in (*shape.dims, *shape.optional))
+            takes = ", ".join(part.mention(d) for d in (*shape.dims, *shape.optional))
             raise InputError(part.option(dim), f"does not apply to a {shape.title} (it takes {takes or 'only the mass'})")
     if "inner_radius" in dims and dims["inner_radius"] > dims["outer_radius"]:
         raise InputError(
@@ -218,7 +218,7 @@ def describe_part(result: PartInertia) -> str:
 def body_inertia(parts: Sequence[Part]) -> BodyInertia:
     """I of a body of one or more parts about one axis: I = Σ I_i (moments about one axis add)."""
     results = tuple(part_inertia(part) for part in parts)
-    mass = math.fsum(r.part.mass or 0.0 for r in results)
+    mass = None if any(r.part.mass is None for r in results) else math.fsum(r.part.mass for r in results)
     inertia = math.fsum(r.inertia for r in results)
     # The bounds of a typed --inertia hold for one computed from a shape too.
     check_bounds(inertia, "moment of inertia", _given(parts), got=f"I = {inertia:g} kg*m**2")
@@ -266,6 +266,11 @@ def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bo
     if body_offset is not None:
         body = _moved(built, body_offset)
     gyration = math.sqrt(body.inertia / body.mass) if body.mass else None
+    notes = list(body.notes)
+    if body.mass is None:  # (#48 item 2: a part of I alone was counted as massless)
+        unknown = ", ".join("the shape" if number == 1 and not r.part.source else r.part.source or "the body"
+                            for number, r in enumerate(body.parts, start=1) if r.part.mass is None)
+        notes.append(f"mass, k: the mass of {unknown} is not known (given by its inertia alone): give mass= for the total mass and k = √(I/M)")
     results = Results(TABLE)
     results.put("I", body.inertia)
     results.put("k", gyration)
@@ -278,7 +283,7 @@ def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bo
         results.put("mass", body.mass)
     steps = list(body.steps)
     steps.append(
-        Step(
+        None if gyration is None else Step(
             "Radius of gyration",
             "k = √(I/M)",
             f"√({quantity_text(body.inertia, 'kg*m**2')} / {quantity_text(body.mass, 'kg')})",
@@ -287,7 +292,7 @@ def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bo
         )
     )
     tables = {} if single is not None else {"parts": parts_table(built)}  # each part's share of I about the axis it was built on
-    return Report("inertia", body.description, "closed form", results, steps, list(body.notes), {}, tables)
+    return Report("inertia", body.description, "closed form", results, [step for step in steps if step is not None], notes, {}, tables)
 
 
 def _moved(body: BodyInertia, distance: float) -> BodyInertia:

@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 from taucli.quantities.measurement import with_uncertainty
 from taucli.core.names import FORMATS as FORMATS  # --format's choices
-from taucli.core.written import pretty_unit, shown
+from taucli.core.written import pretty_unit, printable, shown
 from taucli.writing.display import equation_text, minus_signs
 
 class Row(NamedTuple):
@@ -83,16 +83,20 @@ def heading(name: str, unit: str | None) -> str:
     return f"{name} ({pretty_unit(unit)})" if unit else name
 
 def step_lines(step) -> list[str]:
-    """A step's equation, then "= numbers" and "= result" under its "=", as the human view sets them."""
-    lines = [equation_text(step.equation)] if step.equation else []  # one minus, −, as the human view writes (#42)
-    align = max(step.equation.find("="), 0)
+    """A step's equation, then "= numbers" and "= result" under its "=", as the human view sets
+    them: each one line, its control characters escaped (a newline in a file's name cannot end a
+    code block, #43 item 14)."""
+    equation = printable(step.equation)
+    lines = [equation_text(equation)] if equation else []  # one minus, −, as the human view writes (#42)
+    align = max(equation.find("="), 0)
     for line in (step.numbers, step.result if step.result != step.numbers else ""):
         if line:
-            lines.append(" " * align + "= " + equation_text(line))
+            lines.append(" " * align + "= " + equation_text(printable(line)))
     return lines
 
 def one_line(text: str) -> str:
-    return " ".join(str(text).split())
+    """A text on one line, each control character escaped (printable), runs of spaces one."""
+    return " ".join(printable(str(text)).split())
 
 # Markdown (GitHub's): every text a cell or a paragraph holds is escaped, so that no name or note
 # can open a link, a table cell, an emphasis, an HTML tag, an entity or a math span.
@@ -148,7 +152,7 @@ def markdown_grid(grid: Grid) -> str:
 
 # HTML: a fragment to put in a page or a notebook; every text through html.escape.
 def _h(text) -> str:
-    return html.escape(str(text), quote=True)
+    return html.escape(printable(str(text)), quote=True)
 
 def _html_table(headings: Sequence[str], rows: Sequence[Sequence[str]], right: Sequence[bool], caption: str = "") -> list[str]:
     out = ["<table>"] + ([f"<caption>{_h(caption)}</caption>"] if caption else [])
@@ -188,6 +192,20 @@ def html_grid(grid: Grid) -> str:
 
 # CSV: for a spreadsheet. A header of "name (unit)", the unit as the unit parser reads it (as
 # --json gives it), then one row per point at full precision (repr: the double read back exactly).
+# A cell that is not a number and starts with =, +, - or @ (--find's roots, "-2.0 2.0"; a word)
+# would be read by a spreadsheet as a formula (OWASP's CSV injection): it is written after a single
+# quote, '-2.0 2.0, which a spreadsheet shows as text and does not keep (docs/output.md). A number,
+# -2.5 or 1e-05, is written as it is.
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+_CSV_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def spreadsheet_text(text: str) -> str:
+    """A cell's text as a spreadsheet takes it for what it is: a number as it is, any other text
+    that starts as a formula would after a single quote."""
+    return "'" + text if text.startswith(_FORMULA_START) and not _CSV_NUMBER.fullmatch(text) else text
+
+
 def _csv_cell(value) -> str:
     if value is None:
         return ""
@@ -197,7 +215,7 @@ def _csv_cell(value) -> str:
         return repr(value)
     if isinstance(value, list):
         return " ".join(_csv_cell(item) for item in value)
-    return str(value)
+    return printable(str(value))
 
 def csv_grid(grid: Grid) -> str:
     """A header, then a row per point; a column with an uncertainty anywhere is followed by its
@@ -210,17 +228,18 @@ def csv_grid(grid: Grid) -> str:
     writer = csv.writer(buffer, lineterminator="\n")
     header = []
     for (name, unit), has in zip(grid.columns, uncertain):
+        name, unit = printable(name), unit and printable(unit)
         header.append(f"{name} ({unit})" if unit else name)
         if has:
             header.append(f"{name} uncertainty ({unit})" if unit else f"{name} uncertainty")
-    writer.writerow(header)
+    writer.writerow(map(spreadsheet_text, header))
     for row, spread in zip(grid.rows, spreads):
         cells = []
         for cell, sigma, has in zip(row, spread, uncertain):
             cells.append(_csv_cell(cell))
             if has:
                 cells.append(_csv_cell(sigma))
-        writer.writerow(cells)
+        writer.writerow(map(spreadsheet_text, cells))
     return buffer.getvalue()
 
 def single_grid(report) -> Grid:

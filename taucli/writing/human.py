@@ -12,10 +12,12 @@ from collections.abc import Sequence
 from contextlib import contextmanager
 from typing import TextIO
 
-from taucli.core.written import DIGITS, shown as written_shown
+from dataclasses import replace
+
+from taucli.core.written import DIGITS, printable, shown as written_shown
 from taucli.quantities.measurement import with_uncertainty
 from taucli.writing.display import equation_text, minus_signs, wrap_expression
-from taucli.writing.report import Report, pretty_unit
+from taucli.writing.report import Report, Step, Table, Value, pretty_unit
 
 # The widths charts and tables are drawn at, whatever COLUMNS or the terminal says: COLUMNS=100000
 # took 5 s and 434 MB for one chart, and 10**7 was killed for memory.
@@ -38,20 +40,35 @@ NARROW = 60  # columns below which results are listed rather than tabled
 LABEL_MIN = 12  # the least width a folding text column ("what it is") is given before a table gives way to a list
 
 
+def plain() -> bool:
+    """No colour whatever the stream: NO_COLOR set (no-color.org), or TERM=dumb."""
+    return bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
+
+
+def coloured(stream: TextIO) -> bool:
+    """Whether the human view (its tables, steps and --plot's chart) is drawn in colour on
+    ``stream``: on a terminal, or where FORCE_COLOR is set and not empty (force-color.org: a CI
+    log or ``less -R`` that shows colour from a pipe); never under NO_COLOR or TERM=dumb
+    (docs/running.md). Only the human view: --json, --get, --format and --batch never hold an
+    escape code, whatever the environment says."""
+    return not plain() and (stream.isatty() or bool(os.environ.get("FORCE_COLOR")))
+
+
 @contextmanager
 def drawing(stream: TextIO):
-    """A rich Console that draws for ``stream``: in colour on a terminal (or with FORCE_COLOR);
-    elsewhere (a file, a pipe) plain, into a buffer whose lines are written without the trailing
-    spaces rich pads them with."""
+    """A rich Console that draws for ``stream``: in colour where ``coloured`` says so; elsewhere
+    (a file, a pipe) plain, into a buffer whose lines are written without the trailing spaces
+    rich pads them with. rich's own reading of the environment (TTY_COMPATIBLE, FORCE_COLOR) is
+    not asked: ``coloured`` is the one rule."""
     from rich.console import Console  # deferred: rich (about 30 ms), only for the human view
 
-    plain = bool(os.environ.get("NO_COLOR")) or os.environ.get("TERM") == "dumb"
     # rich takes a dumb terminal to be 80 columns; it has a width as any other (help uses it too)
     width = shutil.get_terminal_size((80, 24)).columns if os.environ.get("TERM") == "dumb" and stream.isatty() else None
-    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain else "auto", width=width)
+    console = Console(file=stream, highlight=False, emoji=False, color_system=None if plain() else "auto", width=width,
+                      force_terminal=coloured(stream) or stream.isatty())  # fmt: skip
     if console.width != clamped(console.width):
         console.width = clamped(console.width)
-    if console.is_terminal:  # a terminal, or FORCE_COLOR
+    if console.is_terminal:  # a terminal, or FORCE_COLOR (where not plain)
         yield console
         return
     buffer = io.StringIO()
@@ -106,7 +123,24 @@ def draw_table(console, headings: Sequence[str], rows: Sequence[Sequence[str]], 
 def render_human(report: Report, stream: TextIO, *, show_steps: bool = True) -> None:
     """The rich table of results, then the steps (equation, numbers, result, why) and notes."""
     with drawing(stream) as console:
-        _draw_report(report, console, show_steps)
+        _draw_report(printable_report(report, show_steps), console, show_steps)
+
+
+def printable_report(report: Report, steps: bool = True) -> Report:
+    """The report with every text in it printable (taucli.core.written.printable): a file's name
+    in a fit's steps, a part's name, a note that quotes what was typed, shown with its control
+    characters escaped (\\x1b, \\n), never sent to the terminal raw (#43 item 14)."""
+
+    def p(text):
+        return printable(text) if isinstance(text, str) else text
+
+    return replace(
+        report, scene=p(report.scene), model=p(report.model), method=p(report.method), notes=[p(note) for note in report.notes],
+        results={p(name): Value(p(v.value), p(v.unit), p(v.label)) for name, v in report.results.items()},
+        steps=[Step(*map(p, (s.title, s.equation, s.numbers, s.result, s.why))) for s in report.steps] if steps else report.steps,
+        tables={p(name): Table(tuple((key, p(unit), p(heading)) for key, unit, heading in table.columns), tuple(tuple(map(p, row)) for row in table.rows))
+                for name, table in report.tables.items()},
+    )  # fmt: skip
 
 
 def _draw_report(report: Report, console, show_steps: bool) -> None:

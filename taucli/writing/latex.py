@@ -14,6 +14,7 @@ import unicodedata
 
 from taucli.writing.formats import Grid, Sheet, grid_cells, heading, shown, step_lines
 from taucli.core.version import __version__
+from taucli.core.written import printable
 
 PREAMBLE = "% needs \\usepackage{amsmath} and \\usepackage{siunitx} (version 3)"
 
@@ -59,18 +60,63 @@ def _math_char(char: str) -> str | None:
     return SYMBOLS.get(char)
 
 
+# Words a step writes between its symbols ("the root of f(m2) − 0.2 in [100, 177] kg"): set as
+# text, never as a product of letters, and "in" never as inches.
+WORDS = frozenset({"in", "of", "the", "and", "or", "for", "if"})
+# A name written with two underscores or more (rim_mu_min, rms_to_rated): a name, set as text
+# (r_{mu}_{min} would be a subscript of a subscript, which TeX refuses).
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+){2,}(?![A-Za-z0-9])")
+
+
+def _script(atoms: list[str], mark: str, body: str) -> None:
+    """A subscript or superscript ``mark{body}`` after the atoms, never a second one of the same
+    kind on one base (TeX's "Double subscript"): ω_s then ᵢ is ω_{s,i}; a superscript after a
+    superscript, or a subscript after x_0^2, starts on an empty base ({})."""
+    scripts = []
+    for atom in reversed(atoms):
+        if not atom.startswith(("_{", "^{")):
+            break
+        scripts.append(atom[0])
+    if atoms and mark == "_" and atoms[-1].startswith("_{"):
+        atoms[-1] = atoms[-1][:-1] + "," + body + "}"
+    else:
+        atoms.append(("{}" if mark in scripts else "") + mark + "{" + body + "}")
+
+
+def _words(atoms: list[str], word: str) -> None:
+    """A word set as text; words one space apart in one \\text, "\\text{the root of}", whose space
+    math mode would drop between two."""
+    if len(atoms) >= 2 and atoms[-1] == "\\ " and atoms[-2].startswith("\\text{") and atoms[-2].endswith("}"):
+        atoms.pop()
+        atoms[-1] = atoms[-1][:-1] + " " + word + "}"
+    else:
+        if atoms and atoms[-1] == " ":
+            atoms[-1] = "\\ "  # "0.2 in": the space kept before a word
+        atoms.append(f"\\text{{{word}}}")
+
+
 def math(text: str) -> str:
     """Unicode math as a step writes it, as LaTeX math: ω₀²/(2|α|) -> {\\omega}_{0}^{2}/(2|{\\alpha}|)."""
+    text = printable(text)  # no control character (a file's name in a step) reaches the document
     atoms: list[str] = []
     i, n = 0, len(text)
     while i < n:
         char = text[i]
         if char.isascii() and char.isalpha():
+            if (name := _NAME.match(text, i)) is not None and (i == 0 or not text[i - 1].isalnum()):
+                _words(atoms, _text_only(name[0]))
+                i = name.end()
+                continue
             j = i
             while j < n and text[j].isascii() and text[j].isalpha():
                 j += 1
             word = text[i:j]
-            atoms.append(f"\\{word} " if word in FUNCTIONS else f"\\text{{{word}}}" if len(word) >= 4 else word)
+            if word in FUNCTIONS:
+                atoms.append(f"\\{word} ")
+            elif len(word) >= 4 or word in WORDS:
+                _words(atoms, word)
+            else:
+                atoms.append(word)
             i = j
             continue
         if char in SUBSCRIPTS or char in SUPERSCRIPTS:
@@ -78,7 +124,7 @@ def math(text: str) -> str:
             j = i
             while j < n and text[j] in table:
                 j += 1
-            atoms.append(mark + "{" + "".join(table[c] for c in text[i:j]) + "}")
+            _script(atoms, mark, "".join(table[c] for c in text[i:j]))
             i = j
             continue
         if char in "_^" and i + 1 < n and (text[i + 1].isascii() and text[i + 1].isalnum() or text[i + 1] == "-"):
@@ -86,11 +132,11 @@ def math(text: str) -> str:
             while j < n and text[j].isascii() and text[j].isalnum():
                 j += 1
             body = text[i + 1 : j]
-            atoms.append(char + "{" + (f"\\mathrm{{{body}}}" if sum(c.isalpha() for c in body) >= 2 else body) + "}")
+            _script(atoms, char, f"\\mathrm{{{body}}}" if sum(c.isalpha() for c in body) >= 2 else body)
             i = j
             continue
         if char == "^" and i + 1 < n and text[i + 1] == "(" and (close := _closing(text, i + 1)) is not None:
-            atoms.append("^{" + math(text[i + 1 : close + 1]) + "}")  # e^(−t/τ): the bracket raised whole
+            _script(atoms, "^", math(text[i + 1 : close + 1]))  # e^(−t/τ): the bracket raised whole
             i = close + 1
             continue
         if char == "√" and i + 1 < n and text[i + 1] == "(" and (close := _closing(text, i + 1)) is not None:
@@ -104,7 +150,7 @@ def math(text: str) -> str:
             j = i
             while j < n and text[j] == " ":
                 j += 1
-            atoms.append("\\quad " if j - i >= 2 else " ")
+            atoms.append("\\quad " if j - i >= 2 else "\\ " if atoms and atoms[-1].startswith("\\text{") else " ")  # after a word, kept
             i = j
             continue
         elif char in MATH_ESCAPES:
@@ -155,6 +201,7 @@ _MATH_RUN = re.compile(rf"√\([^()]*(?:\([^()]*\)[^()]*)*\)|[A-Za-z0-9]*(?:[{re
 
 def text(words: str) -> str:
     """Text escaped for text mode, its Greek letters and math in $…$: "ω₀ = 30 rad/s" -> "${\\omega}_{0}$ = 30 rad/s"."""
+    words = printable(words)  # a control character (a newline in a file's name) as its escape, \n
     out, at = [], 0
     for found in _MATH_RUN.finditer(words):
         out += [_text_only(words[at : found.start()]), "$" + math(found[0]) + "$"]
@@ -193,6 +240,8 @@ def quantities(line: str) -> str:
     """A numbers line as math, each "number unit" as \\qty{…}{…} and each 1.2e-5 as \\num{…}."""
     out, at = [], 0
     for found in QUANTITY.finditer(line):
+        if found[2] == "in":  # "0.2 in [100, 178] kg": the word, set with the math around it (#43 item 15)
+            continue
         out.append(math(line[at : found.start()]))
         if found[1] is not None and (literal := unit(found[2])) is not None:
             out.append(f"\\qty{{{_number(found[1])}}}{{{literal}}}")

@@ -19,6 +19,7 @@ from dataclasses import dataclass, replace
 
 from taucli.quantities.cache import made
 from taucli.core.errors import InputError
+from taucli.core.written import printable
 from taucli.writing.report import Report, Trajectory, fmt, pretty_unit
 
 MARKERS = ("•", "+", "x", "o", "*", "#", "@", "%")  # one per series, so the series differ without colour
@@ -274,7 +275,7 @@ def write_file(chart: Chart, path: str, said_to=None) -> None:
     finally:
         pyplot.close(figure)
     if said_to is not None:
-        said_to.write(f"taucli: wrote the chart to {path}\n")
+        said_to.write(f"taucli: wrote the chart to {printable(path)}\n")  # a path's control characters escaped (#43 item 14)
 
 
 def _replace_atomically(path: str, write) -> None:

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import re
 import math
-import os
 import shutil
 from contextlib import contextmanager
 from collections.abc import Mapping, Sequence
@@ -18,8 +17,9 @@ from typing import NamedTuple, TextIO
 
 from taucli.quantities import units
 from taucli.core.errors import InputError, did_you_mean
+from taucli.core.written import printable
 from taucli.writing.document import document_text
-from taucli.writing.human import clamped, render_human
+from taucli.writing.human import clamped, coloured, render_human
 from taucli.writing.report import Report, Value
 
 
@@ -50,10 +50,10 @@ class Output(NamedTuple):
 
 
 def terminal_style(stream: TextIO) -> tuple[int, bool]:
-    """(columns, colour) for text drawn on ``stream``: no colour under NO_COLOR, TERM=dumb or a pipe."""
+    """(columns, colour) for a chart drawn on ``stream``: colour as the tables have it
+    (human.coloured: a terminal or FORCE_COLOR, never NO_COLOR or TERM=dumb)."""
     columns = shutil.get_terminal_size((80, 24)).columns  # in a pipe, 80: the width tables are drawn at
-    colour = stream.isatty() and not os.environ.get("NO_COLOR") and os.environ.get("TERM") != "dumb"
-    return clamped(columns), colour
+    return clamped(columns), coloured(stream)
 
 
 def chart_units(report: Report, to: Sequence[str]) -> dict[str, tuple[str, float]]:
@@ -168,7 +168,7 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
         stream.write(written(report, output.format, steps=output.steps))
         if output.format == "csv" and notes_to is not None:  # a spreadsheet's rows hold no notes: said beside them
             stream.flush()
-            notes_to.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in report.notes))
+            notes_to.write(said_notes(report.notes))
     else:
         render_human(report, stream, show_steps=output.steps)
         if output.plot:
@@ -204,7 +204,13 @@ def _why_null(report: Report, names, stream: TextIO) -> None:
         if not naming and not report.notes:
             said.append(f"{name}: no value with these inputs")
     if said:
-        stream.write("".join(f"taucli: note: {' '.join(note.split())}\n" for note in said))
+        stream.write(said_notes(said))
+
+
+def said_notes(notes: Sequence[str]) -> str:
+    """Notes as stderr says them beside a machine's answer: "taucli: note: ..." a line each, every
+    control character escaped (taucli.core.written.printable), as an error's line is."""
+    return "".join(f"taucli: note: {' '.join(printable(note).split())}\n" for note in notes)
 
 
 def get_spread(report: Report, name: str, spreads: Mapping[str, float]) -> str:

@@ -12,6 +12,7 @@ from typing import NamedTuple
 
 # How numbers and units are written (the solvers' steps import them from here)
 from taucli.core.written import DIGITS as DIGITS, fmt as fmt, pretty_unit as pretty_unit, quantity_text as quantity_text, term as term
+from taucli.core.written import printable
 
 Number = float | bool | str | None
 
@@ -119,7 +120,7 @@ class Report:
         rows = [row for row in sheet(self, steps=False).results if row.value != "—"]
         named = ", ".join(f"{row.name} = {row.value} {pretty_unit(row.unit)}".rstrip() for row in rows[: self.HEADLINES])
         more = f", … ({len(rows) - self.HEADLINES} more)" if len(rows) > self.HEADLINES else ""
-        return f"<{type(self).__name__} {self.scene}: {self.model}; {named}{more}>"
+        return printable(f"<{type(self).__name__} {self.scene}: {self.model}; {named}{more}>")  # one line, no control character (#43)
 
     def _repr_markdown_(self) -> str:
         from taucli.writing.formats import markdown, sheet  # deferred: as in __repr__

@@ -22,7 +22,7 @@ pytest.importorskip("scipy")
 
 from taucli.front.cli import Environment, main  # noqa: E402
 from taucli.fit import start  # noqa: E402
-from pages import fit_machine_output, fit_numbers_agree, lines_of, sessions, with_docs  # noqa: E402
+from pages import fit_machine_output, fit_numbers_agree, fit_output_agrees, lines_of, sessions, with_docs  # noqa: E402
 
 FIT_EXAMPLES = [(command, printed, files) for command, printed, files in sessions() if command.startswith("taucli fit ") and not re.search(r"[|<>]", command)]
 MOVED = 1e-6  # of each start
@@ -55,10 +55,7 @@ def test_a_fit_started_elsewhere_prints_the_same_page(command, printed, files, d
     main(shlex.split(command)[1:], Environment(stdin=io.StringIO(""), stdout=out, stderr=err))
     if moved and not any(moved):
         pytest.skip("every start is 0 here: nothing to move")
-    if fit_machine_output(command) and not err.getvalue():
-        assert fit_numbers_agree(lines_of(out.getvalue()), lines_of(printed)), (lines_of(out.getvalue()), lines_of(printed))
-    else:
-        assert lines_of(out.getvalue() + err.getvalue()) == lines_of(printed)
+    assert fit_output_agrees(command, out.getvalue(), err.getvalue(), printed), (lines_of(out.getvalue() + err.getvalue()), lines_of(printed))
 
 
 def test_the_tolerances_take_rounding_and_refuse_a_changed_answer():

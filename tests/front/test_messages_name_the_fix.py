@@ -4,6 +4,7 @@ each surface spells names as it takes them, and every example in a message works
 from __future__ import annotations
 
 import ast
+import io
 import re
 import shlex
 import subprocess
@@ -12,52 +13,97 @@ from pathlib import Path
 import pytest
 
 import taucli
-from conftest import assert_usage_error, run_taucli
+from conftest import Run, assert_usage_error, run_taucli
+from taucli.core.errors import spelled
+from taucli.front.cli import Environment, main
 from taucli.options import SCENES
+from taucli.options.table import shell_word
 from taucli.quantities.kinds import KINDS
 
-NEEDING = [(command, result) for command in SCENES.values() for result in command.results if getattr(result, "needs", ())]
+NEEDING = [(command, result) for command in SCENES.values() for result in command.results if result.needs]
 
 
 def test_results_that_need_an_option_say_so_in_the_table():
+    """Each way to make a result names options of its scene, and the first comes with an example
+    that names its options, each with a value (a flag with none)."""
     keys = {(command.name, result.key) for command, result in NEEDING}
-    assert {("atwood", "v"), ("atwood", "t"), ("spin-down", "omega")} <= keys
+    assert {("atwood", "v"), ("atwood", "t"), ("spin-down", "omega"), ("spin-down", "theta_total")} <= keys
     for command, result in NEEDING:
-        assert all(command.option(name) is not None for name in result.needs), (command.name, result.key)
+        assert all(command.option(name) is not None for alternative in result.alternatives for name in alternative), (command.name, result.key)
+        example = command.needs_example(result)
+        assert example is not None, (command.name, result.key)
+        named = re.findall(r"\{([a-z][a-z0-9_]*)\}", example)  # the first way's options, and any setting it is made in (on the flat: {angle} 0deg)
+        assert set(result.alternatives[0]) <= set(named) and all(command.option(name) is not None for name in named), (command.name, result.key, example)
+
+
+def test_what_makes_a_result_reads_as_a_sentence():
+    from taucli.options.table import Result
+
+    def said(*needs: str) -> str:
+        return Result("x", None, "x", needs=needs).needed(lambda name: "--" + name)
+
+    assert said("distance") == "--distance"
+    assert said("distance", "time") == "--distance or --time"
+    assert said("time", "until_omega", "until_angle") == "--time, --until_omega or --until_angle"
+    assert said("time+alpha", "in_time") == "--time with --alpha, or --in_time"
+    assert said("a+b", "c+d+e+f", "g") == "--a with --b, or --c with --d, --e and --f, or --g"
+    assert said("ratio+ratio") == "--ratio twice"
+    made = Result("x", None, "x", needs=("ratio+ratio", "a+b"))
+    assert made.made_by({"ratio": [5, 3]}.get) and not made.made_by({"ratio": [5]}.get) and not made.made_by({"a": 1}.get)
+    assert made.made_by({"a": 1, "b": "2 m"}.get) and not made.made_by({"a": 1, "b": False}.get)
+    assert made.made_by({"a": 0.0, "b": 0}.get) and not made.made_by({"a": 1, "b": ()}.get)  # a sweep's point 0 is given
+
+
+def _run(*args: str) -> Run:
+    """taucli ARGS in this process (a subprocess each would take minutes over every result)."""
+    out, err = io.StringIO(), io.StringIO()
+    code = main(list(args), Environment(stdin=io.StringIO(), stdout=out, stderr=err))
+    return Run(code, out.getvalue(), err.getvalue())
+
+
+def _words(command, args: list[str]) -> list[list[str]]:
+    """A command line's words in groups: an option and its value, a flag alone, a positional word."""
+    groups, words = [], iter(args)
+    for word in words:
+        option = command.option(word[2:].replace("-", "_")) if word.startswith("--") else None
+        groups.append([word, next(words)] if option is not None and option.takes_value else [word])
+    return groups
+
+
+def _made_with(command, args: list[str], added: list[str], get: str) -> Run:
+    """ARGS and ADDED, --get GET; where that is refused naming an option of ARGS (one ADDED conflicts
+    with: --friction beside --work, --angle beside --yoyo, or gives again: --angle 0deg), that
+    option of ARGS left out, as the user would, and again."""
+    groups = _words(command, args)
+    for _ in range(4):
+        run = _run(*(word for group in groups for word in group), *added, "--get", get)
+        named = set(re.findall(r"--[a-z0-9-]+", run.err))
+        kept = [group for group in groups if group[0] not in named]
+        if run.code != 2 or kept == groups:
+            return run
+        groups = kept
+    return run
+
+
+# The files the examples of FILE options name, as the user would have them.
+_FILES = {"torque.csv": "t [s], torque [N*m]\n0, 0\n0.1, 2\n0.2, 0\n"}
 
 
 @pytest.mark.parametrize("command, result", NEEDING, ids=[f"{c.name}-{r.key}" for c, r in NEEDING])
-def test_a_result_that_needs_an_option_names_it(command, result):
-    """--get RESULT where no option that makes it was given: "RESULT needs --a or --b", and the
-    first of them, given as the example says, makes it."""
+def test_a_result_that_needs_an_option_names_it(command, result, tmp_path, monkeypatch):
+    """--get RESULT where no way to make it was given: "RESULT needs --a, or --b with --c (e.g. ...)",
+    and the first way, typed as the example says, makes it: exit 0 and a number."""
+    for name, text in _FILES.items():
+        (tmp_path / name).write_text(text, encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
     args = shlex.split(command.example)[1:]
-    assert not set(result.needs) & {arg[2:].replace("-", "_") for arg in args}
-    refused = run_taucli(*args, "--get", result.key)
-    flags = [command.option(name).flag for name in result.needs]
-    assert_usage_error(refused, f"--get: {result.key} needs ", *flags)
-    first = command.option(result.needs[0])
-    made = run_taucli(*args, first.flag, KINDS[first.kind].example.strip("'"), "--get", result.key)
-    assert made.code == 0 and made.out.strip(), (made, first.flag)
-
-
-# Results no declaration covers yet (#42 item 18, unfinished): each needs a combination of options, a
-# mode (a --couple, a contact, a motion profile) or an option of a kind without one example value.
-# This list may only shrink: a result in it that the example makes, or that declares what makes it, fails.
-_NOT_YET_DECLARED = {
-    "inertia": "mass",
-    "spin-down": "theta_total revs_total alpha omega0 torque_net torque KE_after omega_after energy_delivered lift_height vehicle_speed "
-                 "torque_brake torque_face force_brake force_face pressure_face torque_band tension_tight tension_slack pressure_band",
-    "atwood": "holds",
-    "rolling": "critical_angle T T2 a_hanging alpha_pulley a_hand v_hanging omega KE t_roll d_roll v_roll omega_roll energy_lost "
-               "v_ground v_ground_angle a_ground a_ground_angle",
-    "impulse": "work peak_torque KE_lost KE_lost_fraction J_net t_slip heat omega_impact p0 p1 pivot_impulse speed_after "
-               "torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face "
-               "torque_band work_band power_band tension_tight tension_slack pressure_band",
-    "torque": "L_x L_y L_z L L_sense",
-    "gyro": "couple effect bearing_force",
-    "drive": "ratio_total linear_inertia torque_hold omega_steady time_constant alpha0 omega_top speed_top t_run t_decel t_cycle "
-             "theta_move travel alpha_decel torque_decel torque_peak torque_rms power_regen power_mean rms_to_rated within_rating",
-}
+    given = {arg[2:].replace("-", "_") for arg in args if arg.startswith("--")}
+    assert not result.made_by(lambda name: name in given or None)
+    refused = _run(*args, "--get", result.key)
+    example = spelled(command.needs_example(result, lambda name: name in given or None), lambda name: command.option(name).flag, command.option)
+    assert_usage_error(refused, f"--get: {result.key} needs {result.needed(lambda name: command.option(name).flag)} (e.g. {example})")
+    made = _made_with(command, args, shlex.split(example), result.key)
+    assert made.code == 0 and made.out.strip() not in ("", "null"), (made, example)
 
 
 @pytest.mark.parametrize("command", list(SCENES.values()), ids=list(SCENES))
@@ -72,7 +118,7 @@ def test_every_result_is_made_by_the_example_or_says_what_makes_it(command):
     at_the_rim = {result.key for result in POINT_RESULTS} if command.option("at") is not None else set()
     silent = [result.key for result in command.results
               if result.key not in made | turned_on | at_the_rim and not result.needs]
-    assert silent == _NOT_YET_DECLARED.get(command.name, "").split(), (command.name, silent)
+    assert silent == [], (command.name, silent)
 
 
 def test_the_two_messages_of_the_issue():
@@ -89,6 +135,8 @@ def test_python_names_the_keyword_that_makes_a_result():
     with pytest.raises(taucli.MissingResult) as raised:
         report.results["v"]
     assert "distance= or time=" in str(raised.value)
+    with pytest.raises(taucli.MissingResult, match=r"it needs time= with alpha=, or time= with torque= \(--time with --alpha, or --time with --torque on the command line\)"):
+        taucli.spin_down(inertia=2, omega0="30 rad/s", friction=1).results["theta_total"]
 
 
 # item 19: each surface spells names as it takes them
@@ -173,6 +221,8 @@ def _examples():
     """Every example= a message is given in taucli's source, and each kind's example after a flag."""
     found = [(f"kinds.{kind.name}", "--x " + (kind.example if kind.example.startswith("'") or " " not in kind.example else f"'{kind.example}'"))
              for kind in KINDS.values()]
+    found += [(f"{command.name} {option.flag}", f"{option.flag} {shell_word(option.example)}")  # what a message suggests for it (#42 item 18)
+              for command in SCENES.values() for option in command.options if option.example]
     for path in sorted(_SOURCE.rglob("*.py")):
         tree = ast.parse(path.read_text(encoding="utf-8"))
         names: dict[str, list[str]] = {}
@@ -230,3 +280,34 @@ def test_python_says_it_takes_no_sweeps():
     with pytest.raises(taucli.InputError, match=r"m2: takes one value: the Python API takes no sweeps") as raised:
         taucli.atwood(m1="4kg", m2="1..3 kg")
     assert "m2=x) for x in (1.0, 2.0, 3.0)" in str(raised.value)
+
+
+def _parameters_named_bare(err: taucli.InputError, command) -> list[str]:
+    """Parameters a message's texts name as words rather than as {name} (which each surface spells:
+    --inner-radius on the command line): "it takes mass, inner_radius, outer_radius" reached the
+    command line as Python keywords."""
+    text = err.spelled(lambda name: "@")
+    keywords = {option.name for option in command.options if "_" in option.name}
+    return sorted(name for name in keywords if re.search(rf"(?<![\w-]){name}(?![\w=])", text))
+
+
+@pytest.mark.parametrize("command", list(SCENES.values()), ids=list(SCENES))
+def test_errors_name_parameters_as_the_surface_spells_them(command):
+    """Class check: every error of the example with a keyword left out, and for inertia every shape
+    with each dimension left out, names each parameter through {name}, never as a bare keyword."""
+    from taucli.scenes.shapes import SHAPES
+
+    function = getattr(taucli, command.function_name)
+    runs = list(_variants(command))
+    if command.name == "inertia":
+        for shape in SHAPES.values():
+            dims = {dim: "0.3m" for dim in shape.dims}
+            runs += [([shape.name], {"mass": "1kg", **{d: v for d, v in dims.items() if d != left}}) for left in shape.dims]
+            runs.append(([shape.name], {"mass": "1kg", **dims, "inner_radius" if "inner_radius" not in dims else "width": "0.1m"}))
+    bare = []
+    for words, given in runs:
+        try:
+            function(*words, **given)
+        except taucli.InputError as err:
+            bare += [(str(err), name) for name in _parameters_named_bare(err, command)]
+    assert not bare, bare

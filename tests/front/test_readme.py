@@ -16,7 +16,7 @@ import subprocess
 import pytest
 
 from conftest import run_taucli
-from pages import fit_machine_output, fit_numbers_agree, lines_of, needs, piped, sessions, shell_env, with_docs
+from pages import fit_output_agrees, lines_of, needs, piped, sessions, shell_env, with_docs
 
 
 def test_the_pages_have_examples_to_check():
@@ -38,10 +38,7 @@ def test_an_example_prints_what_its_page_shows(command, printed, files, tmp_path
     else:
         result = run_taucli(*shlex.split(command)[1:], env={"COLUMNS": "80"})
         out, err = result.out, result.err
-    if fit_machine_output(command) and not err:
-        assert fit_numbers_agree(lines_of(out), lines_of(printed)), (lines_of(out), lines_of(printed))
-    else:
-        assert lines_of(out + err) == lines_of(printed)
+    assert fit_output_agrees(command, out, err, printed), (lines_of(out + err), lines_of(printed))
 
 
 @pytest.mark.parametrize("shell", ["zsh", "fish"])

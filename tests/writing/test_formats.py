@@ -364,7 +364,12 @@ def test_user_text_in_a_unit_of_to_is_escaped_in_every_format(tmp_path):
         ("τ_rms = √(τ_a² t_a)", "{\\tau}_{\\mathrm{rms}} = \\sqrt{{\\tau}_{a}^{2} t_{a}}"),
         ("ω(t) = ω_ss(1 − e^(−t/τ_m))", "{\\omega}(t) = {\\omega}_{\\mathrm{ss}}(1 - e^{(-t/{\\tau}_{m})})"),
         ("a = g sin θ", "a = g \\sin  {\\theta}"),
-        ("lost 799.6 J (100%)", "\\text{lost} 799.6 J (100\\%)"),
+        ("lost 799.6 J (100%)", "\\text{lost}\\ 799.6 J (100\\%)"),  # the space after a word kept: "lost 799.6", not "lost799.6"
+        # #43 item 15: a name of two underscores is a name, not a subscript of a subscript ("Double subscript")
+        ("rim_mu_min(m2) = 0.2", "\\text{rim\\_mu\\_min}(m2) = 0.2"),
+        ("L = Σ Iᵢω_sᵢ sᵢ", "L = {\\Sigma} I_{i}{\\omega}_{s,i} s_{i}"),  # gyro's --rotor: ω_s of rotor i
+        ("x₀²^2", "x_{0}^{2}{}^{2}"),
+        ("the root of f(m) − 0.2 in [1, 2] kg", "\\text{the root of}\\ f(m) - 0.2\\ \\text{in}\\ [1, 2] kg"),
     ],
 )
 def test_unicode_math_becomes_latex_math(equation, expected):
@@ -375,7 +380,9 @@ def test_a_numbers_line_sets_each_quantity_with_siunitx():
     assert latex.quantities("½ × 5 kg × (0.2 m)²") == "\\tfrac{1}{2} \\times  \\qty{5}{kg} \\times  (\\qty{0.2}{m})^{2}"
     assert latex.quantities("(−1.5 rad/s²) × 20 s") == "(\\qty{-1.5}{rad/s^{2}}) \\times  \\qty{20}{s}"
     assert latex.quantities("8e37 kg·m² × 7.29e-5 rad/s") == "\\qty{8e37}{kg.m^{2}} \\times  \\qty{7.29e-5}{rad/s}"
-    assert latex.quantities("2 mass") == "2 \\text{mass}"  # a word is no unit
+    assert latex.quantities("2 mass") == "2\\ \\text{mass}"  # a word is no unit
+    assert latex.quantities("0.2 in [100, 177.828] kg") == "0.2\\ \\text{in}\\ [100, 177.828] kg"  # "in" after a number is the word (#43 item 15)
+    assert latex.quantities("5 lbf·in") == "\\qty{5}{lbf.in}"  # an inch with another unit stays one
 
 
 # --- sweeps -------------------------------------------------------------------------------

@@ -31,8 +31,11 @@ def inertia_after(inertia: float, particles: Sequence[Particle], couples: Sequen
     return math.fsum([inertia, *couple_inertias, *(p.mass * (p.radius if p.radius_after is None else p.radius_after) ** 2 for p in staying)])
 
 
-def then_torque(collision: Report, inertia1: float, omega1: float | None, torque: float | None, duration: float | None) -> Report:
-    """The collision's report followed by a constant torque on I₁ from ω_c: τΔt = I₁(ω₁ − ω_c)."""
+def then_torque(collision: Report, inertia1: float, omega1: float | None, torque: float | None, duration: float | None,
+                left: bool = False) -> Report:
+    """The collision's report followed by a constant torque on I₁ from ω_c: τΔt = I₁(ω₁ − ω_c).
+    A particle that ``left`` the body (it rebounds, or leaves at speed-after=) is no part of what the
+    torque turns: its speed after is the collision's."""
     given = [name for name, value in (("omega1", omega1), ("torque", torque), ("duration", duration)) if value is not None]
     example = '{particle} "mass=0.4kg speed=20m/s radius=0.6m" {omega1} 0 {duration} 0.3s'
     if len(given) < 2:
@@ -45,7 +48,7 @@ def then_torque(collision: Report, inertia1: float, omega1: float | None, torque
     stage = solve_balance(inertia1, impact, omega1, torque, duration)
     results = Results(TABLE)
     results.put("omega_impact", impact, " (the body and what stays on it)")
-    for key in FROM_COLLISION:
+    for key in (*FROM_COLLISION, "speed_after") if left else FROM_COLLISION:
         if key in collision.results:
             results[key] = collision.results[key]
     for key in FROM_TORQUE:

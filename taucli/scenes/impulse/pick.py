@@ -107,13 +107,15 @@ def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia
                 raise InputError("couple", "with torque= (a clutch that slips) is solved for one {couple} and the body alone: "
                                  "give the other bodies and the particles a run each", example='{couple} "inertia=3kg*m^2 omega0=0 torque=50N*m"')
             if afterwards:
-                raise InputError("couple", "with torque= (a clutch that slips) takes no torque after: give the torque a run of its own")
+                given = " or ".join(f"{{{name}}}" for name, value in (("torque", torque), ("duration", duration), ("omega1", omega1)) if value is not None)
+                raise InputError("couple", f"with torque= (a clutch that slips) takes no {given} after: give the torque a run of its own")
             return assumed.applied(solve_clutch(inertia, omega0, couple[0], inertia_steps=inertia_steps))
         centre = body_centre(body_options) if particle and not couple else None
         collision = solve_meeting(inertia, omega0, tuple(particle), tuple(couple), inertia_steps=inertia_steps, centre=centre)
         if afterwards:
             couple_inertias = [part_inertia(c.part).inertia if c.part is not None else c.inertia for c in couple]
-            collision = then_torque(collision, inertia_after(inertia, tuple(particle), tuple(couple), couple_inertias), omega1, torque, duration)
+            left = len(particle) == 1 and not couple and particle[0].speed is not None and (particle[0].speed_after is not None or particle[0].e is not None)
+            collision = then_torque(collision, inertia_after(inertia, tuple(particle), tuple(couple), couple_inertias), omega1, torque, duration, left)
         return assumed.applied(collision)
     if inertia_final is None and torque_profile is None:
         if method != "auto":

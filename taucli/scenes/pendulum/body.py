@@ -63,6 +63,11 @@ def read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsi
     assumed.notes.extend(found.notes)  # a thin disc about a diameter, said (#42 item 3)
     steps = list(found.steps)
     total = found.mass
+    unknown = next((p.part for p in found.parts if p.part.mass is None), None)
+    if unknown is not None:  # gravity's torque Σmᵢdᵢg and the pivot's force need every part's mass (a part of I alone crashed: #48 item 2)
+        raise InputError(unknown.option("mass") if unknown.source else "mass", "is needed for each part of a pendulum: gravity's torque and the "
+                         "pivot's force take every part's mass, and a part given by its inertia alone has none",
+                         example=unknown.example("mass", "1kg") if unknown.source else "{mass} 1kg")
     if cm_distance is None:
         moment = math.fsum(p.part.mass * p.offset for p in found.parts)  # offsets signed: the other side of the pivot negative
         cm_distance = abs(moment) / total

@@ -129,6 +129,8 @@ def solve_incline(
                              "v and t are at the bottom")
             spin_up = friction_per_mass / k2 * duration if friction_per_mass else 0.0  # R α t while it slides
             rim_speed = speed if rolls else spin_up - v0  # R ω at the bottom, set rolling at R ω₀ = v₀ up the slope
+            if radius is not None:
+                results.put("omega", rim_speed / radius, " at the bottom")  # ω = Rω/R, in the rolling sense (#48 item 1)
             if mass is not None:
                 results.put("KE_trans", 0.5 * mass * speed**2, " at the bottom")
                 results.put("KE_rot", 0.5 * k2 * mass * rim_speed**2, " at the bottom")

@@ -135,3 +135,20 @@ def test_after_the_catch_two_of_torque_duration_omega1():
     base = ("impulse", "--shape", "rod", "--mass", "4kg", "--length", "0.5m", "--axis", "end", "--particle", "mass=0.145kg speed=40m/s radius=0.5m")
     assert_usage_error(run_taucli(*base, "--duration", "0.3s"), "--duration needs --torque or --omega1 after the collision")
     assert_usage_error(run_taucli(*base, "--duration", "0.3s", "--torque", "1N*m", "--omega1", "0"), "--omega1 conflicts with --torque and --duration")
+
+
+def test_a_particle_that_rebounds_keeps_its_speed_after_when_a_torque_follows():
+    """A particle that leaves the body (e=, speed-after=) is no part of what the torque after turns:
+    speed_after is the collision's (#42 item 18: the run with a torque after had none). Physics:
+    Iω₀ + mvr = Iω_c + mv′r and v′ − ω_c r = −e(v − ω₀r)."""
+    inertia, m, v, r, e = mpmath.mpf("0.1"), mpmath.mpf("0.4"), 20, mpmath.mpf("0.6"), mpmath.mpf("0.5")
+    w_c = (m * v * r + m * r * e * v) / (inertia + m * r * r)  # ω₀ = 0: v′ = ω_c r − ev
+    v_after = w_c * r - e * v
+    particle = "mass=0.4kg speed=20m/s radius=0.6m e=0.5"
+    alone = taucli.impulse(inertia="0.1 kg*m^2", omega0=0, particle=particle)
+    then = taucli.impulse(inertia="0.1 kg*m^2", omega0=0, particle=particle, torque="2 N*m", duration="0.5 s")
+    assert alone.results["speed_after"].value == pytest.approx(float(v_after), rel=1e-15)
+    assert then.results["speed_after"].value == alone.results["speed_after"].value
+    assert then.results["omega_impact"].value == pytest.approx(float(w_c), rel=1e-15)
+    sticks = taucli.impulse(inertia="0.1 kg*m^2", omega0=0, particle="mass=0.4kg speed=20m/s radius=0.6m", torque="2 N*m", duration="0.5 s")
+    assert "speed_after" not in sticks.results  # it rides on: its speed after the torque is the body's at r, not the collision's
