@@ -1,5 +1,5 @@
 """The fuzz suite's grammar for the commands that are not scenes (#43): fit with the CSV files it
-reads, bench, completions, and taucli with no command.
+reads, bench, completions, convert, and taucli with no command.
 
 fit's vectors start from docs/fit.md's own runs (their tables as the page shows them with
 `$ cat FILE`), with their tables and options changed, or from tables of any shape made here:
@@ -20,13 +20,13 @@ from pathlib import Path
 
 from hypothesis import strategies as st
 
-from fuzzing import SCENES, Vector, command_options, numbers, option_value, quantity_texts, sane_value
+from fuzzing import SCENES, UNITS, WRONG_UNITS, Vector, command_options, numbers, option_value, quantity_texts, sane_value
 
 ROOT = Path(__file__).resolve().parent.parent
 FIT_LIMIT = 1.5  # seconds: fit's budget in the fuzz (60 s on the command line)
 FIT_SECONDS = 6.0  # the longest a fit vector may take: the budget, its one solve past it, numpy and scipy's imports
 BENCH_SECONDS = 3.0
-COMMANDS = ("fit", "bench", "completions", "")  # "": taucli with no command
+COMMANDS = ("fit", "bench", "completions", "convert", "")  # "": taucli with no command
 
 
 def docs_runs() -> tuple[dict[str, str], list[list[str]]]:
@@ -215,6 +215,21 @@ def completions_vectors(draw) -> Vector:
 
 
 @st.composite
+def convert_vectors(draw) -> Vector:
+    """QUANTITY [UNIT]: a quantity of any kind (the grammar of the scenes' values), a unit right,
+    wrong or odd, and --json or --get."""
+    metavar = draw(st.sampled_from(sorted(UNITS)))
+    args = [draw(quantity_texts(metavar))] if draw(st.integers(0, 9)) else []
+    if draw(st.integers(0, 3)):
+        args.append(draw(st.one_of(st.sampled_from(sum(UNITS.values(), []) + WRONG_UNITS), st.text(max_size=8))))
+    if draw(st.integers(0, 5)) == 0:
+        args.insert(0, "--")
+    for flag in draw(st.lists(st.sampled_from(["--json", "--get", "--to", "--nope"]), max_size=2)):
+        args += [flag, draw(st.sampled_from(["value", "uncertainty", "unit", "kind", "si_value", "si_uncertainty", "si_unit", "nope", ""]))] if flag == "--get" else [flag]
+    return Vector("convert", args)
+
+
+@st.composite
 def top_vectors(draw) -> Vector:
     words = st.one_of(st.sampled_from(["--version", "--debug", "-h", "--help", "nope", "Atwood", "spin_down", "fit", "--json", "-", "--", ""]),
                       st.text(max_size=10))
@@ -228,4 +243,6 @@ def vectors_of(command: str, folder: Path, runs: list[list[str]], files: dict[st
         return bench_vectors(files)
     if command == "completions":
         return completions_vectors()
+    if command == "convert":
+        return convert_vectors()
     return top_vectors()
