@@ -21,6 +21,7 @@ import io
 import json
 import math
 import os
+import re
 import signal
 import sys
 import tempfile
@@ -152,7 +153,7 @@ class Vector:
     def __repr__(self) -> str:  # as a shell line, to paste into a terminal
         import shlex
 
-        return f"taucli {shlex.join([self.scene, *self.args])}" + (f"  <<< {self.stdin[:200]!r}" if self.stdin else "")
+        return f"taucli {shlex.join([self.scene, *self.args] if self.scene else self.args)}" + (f"  <<< {self.stdin[:200]!r}" if self.stdin else "")
 
 
 @functools.lru_cache(maxsize=None)
@@ -320,40 +321,48 @@ def _numbers(node):
         yield node
 
 
-def run(vector: Vector, workdir: str) -> Outcome:
+def run(vector: Vector, workdir: str, seconds: float = SECONDS) -> Outcome:
     """Run the vector through taucli's entry point in this process; list what breaks the contract.
 
     A run over the time limit is run once more and judged by the faster of the two: taucli's work
     for a vector is the same each time, so a hang repeats, while a stall of the machine (another
     process, the disk) seldom does.
     """
-    outcome = _run_once(vector, workdir)
-    if outcome.seconds > SECONDS and outcome.status != -1:
-        again = _run_once(vector, workdir)
+    outcome = _run_once(vector, workdir, seconds)
+    if outcome.seconds > seconds and outcome.status != -1:
+        again = _run_once(vector, workdir, seconds)
         if again.seconds < outcome.seconds:
             outcome = again
-    _judge(vector, outcome)
+    _judge(vector, outcome, seconds)
     return outcome
 
 
-def _run_once(vector: Vector, workdir: str) -> Outcome:
+# Warnings a user's stderr would show (Python's default filters hide these categories alone).
+_HIDDEN = (DeprecationWarning, PendingDeprecationWarning, ImportWarning, ResourceWarning)
+
+
+def _run_once(vector: Vector, workdir: str, seconds: float = SECONDS) -> Outcome:
+    import warnings
+
     from taucli.__main__ import main
 
     stdin, stdout, stderr = io.StringIO(vector.stdin), io.StringIO(), io.StringIO()
     saved = sys.argv, sys.stdin, os.getcwd()
     signal.signal(signal.SIGALRM, _alarm)
-    signal.setitimer(signal.ITIMER_REAL, 20 * SECONDS)
+    hang = max(20 * SECONDS, 4 * seconds)
+    signal.setitimer(signal.ITIMER_REAL, hang)
     start = time.perf_counter()
     try:
-        sys.argv, sys.stdin = ["taucli", vector.scene, *vector.args], stdin
+        sys.argv, sys.stdin = ["taucli", *([vector.scene] if vector.scene else []), *vector.args], stdin
         os.chdir(workdir)
-        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr), warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")  # (pytest records warnings itself: a warning that would reach a user's stderr is caught here)
             try:
                 status = main()
             except SystemExit as err:  # main returns its status; an exit from inside is a finding
                 status = f"SystemExit({err.code!r})"
             except TookTooLong:
-                status = f"hung: stopped after {20 * SECONDS:.0f} s"
+                status = f"hung: stopped after {hang:.0f} s"
             except BaseException as err:  # noqa: BLE001 - anything escaping main is a finding
                 import traceback
 
@@ -363,18 +372,35 @@ def _run_once(vector: Vector, workdir: str) -> Outcome:
         signal.setitimer(signal.ITIMER_REAL, 0)
         sys.argv, sys.stdin = saved[0], saved[1]
         os.chdir(saved[2])
-    seconds = time.perf_counter() - start
-    outcome = Outcome(status if isinstance(status, int) else -1, stdout.getvalue(), stderr.getvalue(), seconds)
+    outcome = Outcome(status if isinstance(status, int) else -1, stdout.getvalue(), stderr.getvalue(), time.perf_counter() - start)
     if not isinstance(status, int):
         outcome.problems.append(f"status {status}")
+    shown = sorted({f"{w.category.__name__}: {w.message} ({Path(w.filename).name}:{w.lineno})" for w in caught if not issubclass(w.category, _HIDDEN)})
+    if shown:
+        outcome.problems.append(f"warnings on stderr: {shown[:3]}")
     return outcome
 
 
-def _judge(vector: Vector, outcome: Outcome) -> None:
+def _asks_for_help(vector: Vector, outcome: Outcome) -> bool:
+    """-h or --help, or no command at all (taucli alone prints its help on stderr, exit 2: taucli.front.help),
+    or --version before any command: the help or the version is the answer, whatever else the line holds."""
+    words = [vector.scene, *vector.args] if vector.scene else vector.args
+    no_command = all(word.startswith("-") for word in words)
+    if no_command and "--version" in words and re.fullmatch(r"taucli \S+\n", outcome.out):  # --version is answered before anything else
+        return True
+    shown = (outcome.out or outcome.err).startswith("Usage: taucli")
+    return shown and (any(word in ("-h", "--help") for word in words) or no_command)
+
+
+def _judge(vector: Vector, outcome: Outcome, seconds: float = SECONDS) -> None:
     problems = outcome.problems
+    if _asks_for_help(vector, outcome):
+        if outcome.status not in (0, 2) or "Traceback" in outcome.out + outcome.err:
+            problems.append(f"help with exit {outcome.status}")
+        return
     if outcome.status not in (-1, 0, 2):  # -1: main did not return, already listed
         problems.append(f"exit {outcome.status}: {outcome.err.strip()[:300]}")
-    if outcome.seconds > SECONDS:
+    if outcome.seconds > seconds:
         problems.append(f"took {outcome.seconds:.2f} s")
     if "Traceback" in outcome.err or "Traceback" in outcome.out:
         problems.append("a traceback")

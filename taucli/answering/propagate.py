@@ -124,7 +124,7 @@ class Scene:
 
 def _over_budget(setting: str, planned: int, each: float, estimate: float, limit: float) -> OverBudget:
     """The refusal of work estimated past ``limit``, with the setting that would fit."""
-    took = f"is estimated to take about {estimate:,.0f} s ({planned:,} solves of about {_seconds(each)} each), over the {limit:.0f} s limit"
+    took = f"is estimated to take about {estimate:,.0f} s ({planned:,} solves of about {solve_time(each)} each), over the {limit:.0f} s limit"
     if setting == "mc":
         fits = int(limit / each)
         hint = (f"{{mc}} {fits} fits" if fits >= 2 else "no number of draws fits") + "; {no_limit} runs it as asked"
@@ -133,7 +133,7 @@ def _over_budget(setting: str, planned: int, each: float, estimate: float, limit
     return OverBudget(setting, took, hint=hint)
 
 
-def _seconds(each: float) -> str:
+def solve_time(each: float) -> str:
     milliseconds = each * 1000
     return f"{milliseconds:.2g} ms" if milliseconds < 10 else f"{milliseconds:,.0f} ms" if milliseconds < 1000 else f"{each:.3g} s"
 

@@ -153,5 +153,8 @@ def did_you_mean(name: str, choices, cutoff: float = 0.6) -> str | None:
     """'did you mean ...?' for the closest of ``choices`` to a mistyped ``name``, or None."""
     import difflib  # deferred: only a mistyped name asks for a did-you-mean
 
-    close = difflib.get_close_matches(name, list(choices), n=1, cutoff=cutoff)
+    choices = list(choices)
+    if len(name) > 2 * max((len(str(choice)) for choice in choices), default=0) + 8:
+        return None  # far longer than any choice (a list of 2,000 values given for a shape): no near match, and difflib's time grows with its length
+    close = difflib.get_close_matches(name, choices, n=1, cutoff=cutoff)
     return f"did you mean {close[0]!r}?" if close else None

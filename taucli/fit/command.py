@@ -8,12 +8,15 @@ the writer, and the chart where asked for.
 
 from __future__ import annotations
 
+import numpy as np
+
 from taucli.writing import render
 from taucli.writing.document import document_text
 from taucli.core.errors import InputError, did_you_mean
-from taucli.fit import chart, data, results, samples, solve
+from taucli.fit import budget, chart, data, results, samples, solve
+from taucli.answering.answer import LIMIT_SECONDS
 from taucli.answering.inputs import read
-from taucli.options import SCENES
+from taucli.options import COMMANDS, SCENES
 from taucli.options.fit import COMMAND as FIT
 from taucli.writing.report import Report
 from taucli.options.table import FLAG, Command
@@ -38,9 +41,7 @@ def split_words(command: Command, words: list[str]) -> tuple[list[str], dict[str
             flag, equals, value = word.partition("=")
             option = flags.get(flag)
             if option is None:
-                own = {o.flag for o in (*FIT.options, *FIT.output)}
-                known = sorted(flags) + sorted(own)
-                raise InputError("", f"{flag} is not an option of fit, nor an input of {command.name}", hint=did_you_mean(flag, known))
+                raise _not_taken(command, flag, sorted(flags) + sorted({o.flag for o in (*FIT.options, *FIT.output)}))
             if option.kind == FLAG:
                 given[option.name] = True
                 continue
@@ -63,13 +64,29 @@ def split_words(command: Command, words: list[str]) -> tuple[list[str], dict[str
     return files, given
 
 
+def _not_taken(command: Command, flag: str, known: list[str]) -> InputError:
+    """A flag that is neither fit's nor an input of the scene: where another command takes it, say
+    so (fit … --format suggested --force), else the nearest name."""
+    if any(option.flag == flag for option in command.output):
+        writes = flag in ("--format", "--jsonl", "--batch", "--points", "--y")
+        return InputError("", f"{flag} is an option of taucli {command.name}'s own runs, not of fit",
+                          hint="fit answers as text, as one JSON document (--json), or as numbers (--get NAME, with --uncertainty)" if writes else None)
+    takers = [other.name for other in COMMANDS.values() if other.name not in ("fit", command.name)
+              and any(option.flag == flag for option in (*other.options, *other.output))]
+    if takers:
+        return InputError("", f"{flag} is not an input of {command.name} nor an option of fit ({', '.join(takers)} take{'s' if len(takers) == 1 else ''} it)")
+    return InputError("", f"{flag} is not an option of fit, nor an input of {command.name}", hint=did_you_mean(flag, known))
+
+
 def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> Report:
-    """The fit's report (what the Python API returns)."""
+    """The fit's report (what the Python API returns: no time limit, as --find's has none there)."""
     return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, stdin=stdin, spell=spell)[0]
 
 
-def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> tuple[Report, solve.Fit]:
-    """The fit's report, and the fit itself (for the chart)."""
+def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None,
+           limit: float | None = None, progress=None) -> tuple[Report, solve.Fit]:
+    """The fit's report, and the fit itself (for the chart). ``limit`` (seconds) refuses a fit
+    estimated to take longer (taucli.fit.budget); ``progress`` is told the solves done and planned."""
     command = _scene(scene)
     spell = spell or command.flag
     tables = [data.read(source, stdin) for source in files]
@@ -77,8 +94,18 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     gravity = read(command, {"g": given["g"]})[0].get("g") if given.get("g") is not None else None
     found_samples = samples.build(command, tables, x=x, y=y, sigma=sigma, ranges=ranges, every=every, fitted=names, given=set(given), gravity=gravity)
     model, starts, notes = solve.model_of(command, given, names, found_samples, stdin=stdin, spell=spell)
-    found = solve.fit(model, starts)
-    report = results.written(found)
+    if limit is not None or progress is not None:
+        faster = [name for name in ("dt", "method") if command.option(name) is not None]
+        model.budget = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
+    try:
+        with np.errstate(all="ignore"):  # numbers past a double's range are looked for where they matter (NaN, inf: refused or said)
+            found = solve.fit(model, starts)
+            report = results.written(found)
+    except budget.Spent as spent:
+        raise spent.refusal from None
+    except np.linalg.LinAlgError as err:  # a least squares on numbers that leave it without a solution
+        raise InputError("fit", f"the least squares has no solution with these samples and inputs ({err})",
+                         hint="give magnitudes nearer everyday sizes, or fit fewer inputs") from None
     report.notes[:0] = notes
     return report, found
 
@@ -98,10 +125,17 @@ def run(env, given: dict) -> int:
 
         plot.check_file(given["out"])
     try:
-        report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
-                               sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin)
+        with render.progress_bar(env.stderr, True) as progress:
+            report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
+                                   sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin,
+                                   limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress)
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
+    drawn = chart.chart(found) if given.get("out") is not None or (given.get("plot") and not output.json) else None
+    if given.get("out") is not None:  # the file first, as the scenes do: one that cannot be written (a full disk) is refused before any answer
+        from taucli.writing import plot  # deferred: matplotlib, only for --out
+
+        plot.write_file(drawn, given["out"], said_to=env.stderr)
     if output.json:
         shown = render.prepared(report, output)
         document = chart.document(found) if given.get("plot") else None
@@ -112,11 +146,7 @@ def run(env, given: dict) -> int:
             from taucli.writing import plot  # deferred: charts, only for --plot
 
             columns, colour = render.terminal_style(env.stdout)
-            env.stdout.write("\n" + plot.terminal(chart.chart(found), columns, colour=colour))
-    if given.get("out") is not None:
-        from taucli.writing import plot  # deferred: matplotlib, only for --out
-
-        plot.write_file(chart.chart(found), given["out"])
+            env.stdout.write("\n" + plot.terminal(drawn, columns, colour=colour))
     env.stdout.flush()
     if output.json or output.get:  # a script reads the numbers alone: the fit's warnings beside them, one line each
         env.stderr.write("".join(f"taucli: warning: {text}\n" for text in warnings(report)))

@@ -65,6 +65,7 @@ class Model:
         self.spreads = dict(spreads or {})
         self.stdin, self.spell = stdin, spell or command.flag
         self.solves = 0
+        self.budget = None  # a taucli.fit.budget.Budget: the time the solves may take
         self.refusal: Exception | None = None
         self._cache: dict[tuple, np.ndarray] = {}
         self._rows = [samples.row(i) for i in range(samples.count)]
@@ -82,7 +83,10 @@ class Model:
 
     def report(self, p, row: Mapping[str, float] | None = None, moved: Mapping[str, float] | None = None) -> Report:
         self.solves += 1
-        return pipeline.solve(self.command, self.given(p, row, moved), stdin=self.stdin, spell=self.spell)
+        given = self.given(p, row, moved)
+        if self.budget is None:
+            return pipeline.solve(self.command, given, stdin=self.stdin, spell=self.spell)
+        return self.budget.timed(lambda: pipeline.solve(self.command, given, stdin=self.stdin, spell=self.spell))
 
     def value(self, p, i: int, moved: Mapping[str, float] | None = None) -> float:
         """f(xᵢ; p), or NaN where the scene refuses or has no value (the reason kept)."""

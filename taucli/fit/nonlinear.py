@@ -3,8 +3,8 @@
 min over p of Σᵢ wᵢ²(yᵢ − f(xᵢ; p))², wᵢ = 1/σᵢ (or 1), each pⱼ within the range its option
 takes (a friction torque ≥ 0, a moment of inertia > 0): scipy.optimize.least_squares, trust region
 reflective ("trf"), on p scaled by its start so that inputs of any size weigh alike. A sample the
-scene gives no value for at a trial p counts as a large residual, so the search turns away from
-it. The fit is refused where the search stops without converging, and where an input ends on its
+scene gives no value for at a trial p counts as a large residual (as does one larger still), so the
+search turns away from it. The fit is refused where the search stops without converging, and where an input ends on its
 bound (the samples ask for a value the input cannot take).
 """
 
@@ -43,7 +43,7 @@ def minimize(model: Model, y: np.ndarray, sigma: np.ndarray | None, p0: np.ndarr
 
     def residuals(u: np.ndarray) -> np.ndarray:
         r = (model.predict(u * scale) - y) * weights
-        return np.where(np.isfinite(r), r, large)
+        return np.where(np.isfinite(r) & (np.abs(r) < large), r, large)  # (no value, or past the penalty: the penalty, so that the search's differences stay finite)
 
     found = least_squares(residuals, p0 / scale, bounds=(lower, np.full(len(p0), np.inf)), method="trf", jac="2-point", diff_step=1e-7,
                           x_scale=1.0, ftol=TOLERANCE, xtol=TOLERANCE, gtol=TOLERANCE, max_nfev=MOST_EVALUATIONS)

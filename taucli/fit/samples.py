@@ -374,7 +374,15 @@ def _sigma(table: DataTable, sigma: str | None, sigma_header: str | None, y_colu
         column = table.column(sigma_header)
         factor = y_column.factor if not column.unit else _factor(column, column.unit, _kind_of_result(y_column.si_unit), y_column.si_unit, "an uncertainty", [])
         return None, factor, f"column {sigma_header!r}" + ("" if column.unit else f" (in {y_column.column.unit or unit}, as {y_column.column.header!r})")
-    value = _quantity(sigma, "sigma", y_column.si_unit, gravity)
+    try:
+        value = _quantity(sigma, "sigma", y_column.si_unit, gravity)
+    except InputError:
+        if re.search(r"\d", sigma):
+            raise
+        # a word that is no value: a column that is not there ("u" read as a unit was "a mass")
+        columns = ", ".join(repr(column.header) for column in table.columns[:8]) + (f", … {len(table.columns)} in all" if len(table.columns) > 8 else "")
+        raise InputError("sigma", f"expected a column of {table.source} ({columns}) or one value for all", example=f"{{sigma}} 0.05{unit.replace('²', '^2')}",
+                         got=f"{sigma!r}, which is no column of it" if sigma.strip() else repr(sigma)) from None
     if not value > 0:
         raise InputError("sigma", "expected an uncertainty greater than 0, or a column", example=f"{{sigma}} 0.05{unit.replace('²', '^2')}", got=repr(sigma))
     return value, 1.0, f"{fmt(value)} {unit}".rstrip()

@@ -23,7 +23,7 @@ import numpy as np
 from taucli.quantities import units
 from taucli.answering import unknowns
 from taucli.core.errors import InputError
-from taucli.fit import linear, nonlinear, quality, start
+from taucli.fit import budget, linear, nonlinear, quality, start
 from taucli.fit.model import Model, held
 from taucli.fit.samples import Samples
 from taucli.answering.inputs import read
@@ -93,6 +93,8 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
                          hint="give more samples, or fit fewer inputs")
     y = np.asarray(samples.y, dtype=float)
     sigma = np.asarray(samples.sigma, dtype=float) if samples.sigma is not None else None
+    if model.budget is not None:  # the least the fit takes, estimated (and refused past the limit) before the work
+        budget.before(model, np.array([starts.get(name, 0.0 if model.sign(j) != "positive" else 1.0) for j, name in enumerate(model.names)]))
     candidates = start.starts(model, starts)
     p0, steps, how = candidates[0]
     if not np.any(np.isfinite(model.predict(p0))):
@@ -114,6 +116,8 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         method = f"linear least squares (the model is linear in {', '.join(model.names)}: solved exactly, no iteration)"
         steps.append(_linear_step(model, shape, n))
     else:
+        if model.budget is not None:
+            model.budget.plan(n, budget.nonlinear_evaluations(m), m)
         searches, refusals = [], []
         for number, (q0, q_steps, q_how) in enumerate(candidates):
             if number and not _worth(model, q0, [c[0] for c in candidates[:number]], y, sigma):
@@ -131,6 +135,7 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         p, bounded, J, outcome = search.p, search.bounded, search.J, search.outcome
         started = "a closed-form start" if "closed form" in how else "the starts given" if set(how) == {"given"} else "a start from single samples"
         method = f"bounded nonlinear least squares (trust region reflective, scipy.optimize.least_squares) from {started}"
+    _refuse_not_finite(model, J / sigma[:, None] if sigma is not None else J, p)
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
     found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p, natural)
     for j in range(m):  # nearer its bound than a millionth of its σ (the reflective search nears a bound without reaching it): on it
@@ -239,6 +244,8 @@ def _polished(model: Model, p: np.ndarray, J: np.ndarray, y: np.ndarray, sigma, 
     J[:, list(held)] = 0.0  # the least-norm step leaves them where they are
     for _ in range(2):
         before = (y - model.predict(p)) * weights
+        if not (np.all(np.isfinite(J * weights[:, None])) and np.all(np.isfinite(before))):
+            return p  # (numbers past a double's range: the fit is refused after, where its Jacobian is looked at)
         moved = p + np.linalg.lstsq(J * weights[:, None], before, rcond=None)[0]
         if not all(model.allowed(j, moved[j]) for j in range(len(p))):
             return p
@@ -270,6 +277,18 @@ def _with_held(model: Model, p: np.ndarray, J: np.ndarray, sigma, covariance: np
         slopes[name] = dp
         total += np.outer(dp, dp) * spread**2
     return total, slopes
+
+
+def _refuse_not_finite(model: Model, J: np.ndarray, p: np.ndarray) -> None:
+    """The (weighted) Jacobian at the fitted inputs must be finite for the covariance: where the
+    scene has no value just beside them (an input at its bound) or its result changes past what a
+    double holds, the fit is refused (a linear algebra routine given a NaN fails, and LAPACK says
+    so on stdout)."""
+    if not np.all(np.isfinite(J)):
+        at = ", ".join(f"{name} = {value:.6g}" for name, value in zip(model.names, p))
+        why = model.why_refused() if model.refusal is not None else f"{model.samples.y_key} changes past what a double holds"
+        raise InputError("fit", f"ends where the scene has no {model.samples.y_key}, or none a double holds, just beside the inputs fitted "
+                         f"({at}: {why}), so the fit's uncertainties cannot be worked out there", hint="give magnitudes nearer everyday sizes, or fit fewer inputs")
 
 
 def _refuse_degenerate(model: Model, J: np.ndarray, sigma, p: np.ndarray, natural: np.ndarray, *, start: bool = False) -> list[str]:

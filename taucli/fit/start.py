@@ -313,6 +313,9 @@ def start(model: Model, given: dict[str, float]) -> tuple[np.ndarray, list[Step]
         if later == waiting:
             break
         waiting = later
+    refused = model.refusal
+    if waiting and isinstance(refused, InputError) and refused.option in model.held and refused.option not in names and refused.option not in model.samples.inputs:
+        raise refused  # an option given that the scene refuses whatever the fit tries (--shape 19.8kg): said as the scene says it
     for j in waiting:
         name = names[j]
         first = model.value(p, 0)

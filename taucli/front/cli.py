@@ -13,7 +13,6 @@ import inspect
 import os
 import sys
 import traceback
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Annotated, Optional, TextIO
 
@@ -189,7 +188,7 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
     finding = {**_finding(asked), "mc": _whole_number(command, asked["mc"], "mc")}
     limit = None if asked["no_limit"] else answer.LIMIT_SECONDS
 
-    with _progress_bar(env, bool(finding.get("find") or finding["mc"])) as progress:
+    with render.progress_bar(env.stderr, bool(finding.get("find") or finding["mc"])) as progress:
         def solve(options: dict):
             report = answer.solve(command, options, stdin=env.stdin, spell=command.flag, limit=limit, progress=progress, **finding)
             _made_what_is_named(command, report, output, asked["y"] or (), options)
@@ -206,21 +205,6 @@ def run_scene(command: Command, given: dict, env: Environment) -> int:
         return int(ExitStatus.OK)
     sweep.render(solved, swept_range, swept_list, output, list(asked["y"] or ()), env.stdout, env.stderr)
     return int(ExitStatus.OK)
-
-
-@contextmanager
-def _progress_bar(env: Environment, wanted: bool):
-    """A progress bar on stderr for --find and --mc, where stderr is a terminal (else None): told
-    (done, planned) solves as they go, and gone when the work is."""
-    if not wanted or not getattr(env.stderr, "isatty", lambda: False)():
-        yield None
-        return
-    from rich.console import Console  # deferred: rich, only for a bar on a terminal
-    from rich.progress import Progress
-
-    with Progress(console=Console(file=env.stderr), transient=True) as bar:
-        task = bar.add_task("solving", total=None)
-        yield lambda done, planned: bar.update(task, completed=done, total=planned)
 
 
 def _point_at_the_rim(command: Command, given: dict, asked: set) -> None:

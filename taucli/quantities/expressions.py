@@ -30,6 +30,20 @@ _EXACT_SIN = {0: 0.0, 30: 0.5, 90: 1.0, 150: 0.5, 180: 0.0, 210: -0.5, 270: -1.0
 MAX_CALLS = 6
 
 
+# Functions a student may type that are not among the four: refused by name (pint would read
+# exp(1) m as a unit "exp" times 1 m, and the message then spoke of numbers side by side).
+_NOT_TAKEN = re.compile(r"(?<![A-Za-z_])(exp|ln|log|log10|log2|sinh|cosh|tanh|asin|acos|atan|arcsin|arccos|arctan|cot|sec|csc|abs|cbrt|pow|"
+                        r"round|floor|ceil|hypot|degrees|radians)\s*\(", re.IGNORECASE)
+
+
+def refuse_other_calls(cleaned: str, shown: str, option: str, kind: Kind) -> None:
+    """A call of a function that is not sqrt, sin, cos or tan (exp(1) m) is refused by its name."""
+    found = _NOT_TAKEN.search(cleaned)
+    if found is not None:
+        raise InputError(option, f"expected {_article(kind)}", example=kind.example,
+                         got=f"{shown!r}: {found.group(1)}(…) is not a function taucli reads (it reads sqrt, sin, cos and tan)", hint="write its value as a number")
+
+
 def has_calls(text: str) -> bool:
     return _CALL.search(text) is not None
 

@@ -121,7 +121,10 @@ NEEDS_ITS_UNIT = frozenset({"angle", *ANGULAR})
 
 
 def bare_number(option: str, text: str, kind: Kind, value: float) -> InputError:
-    """The refusal of a bare number for an angle, an angular velocity or an angular acceleration."""
+    """The refusal of a bare number for an angle, an angular velocity or an angular acceleration
+    (one that is not finite, nan or 1e999, is refused as such: no unit would make it one)."""
+    if not math.isfinite(value):
+        return not_finite(option, text, kind)
     if kind.name == "angle":
         return bare_angle(option, text)
     number = text.strip() if _is_number(text.strip()) else f"{value:.6g}"
@@ -131,5 +134,11 @@ def bare_number(option: str, text: str, kind: Kind, value: float) -> InputError:
     return InputError(option, "expected an angular velocity with its unit", example=f"{number}rpm or {number}rad/s", got=f"{text!r}: a number alone could be rpm or rad/s")
 
 
-def bare_angle(option: str, text: str) -> InputError:
+def not_finite(option: str, text: str, kind: Kind) -> InputError:
+    return InputError(option, f"expected a finite {kind.name}", example=kind.example, got=f"{text!r}, which is not a finite number")
+
+
+def bare_angle(option: str, text: str, value: float = 0.0) -> InputError:
+    if not math.isfinite(value):
+        return not_finite(option, text, KINDS["angle"])
     return InputError(option, "expected an angle with its unit", example="60deg or 1.05rad", got=f"{text!r}: a number alone could be degrees or radians")

@@ -277,7 +277,7 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     if kind.name in _RATES or kind.name == "dimensionless" and radians != 0:
         value, how = _angled(cleaned, q, text, option, kind, value, how, revolutions)
     elif kind.name == "angle" and radians == 0 and value != 0:
-        raise bare_angle(option, text)
+        raise bare_angle(option, text, value)
     elif kind.name == "angle" and radians not in (0, 1):
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: its unit has {meanings.angle_power_words(radians)}; an angle has it once")
     elif kind.name == "lead" and radians != -1:  # pint reads rev as 2π: m/rev is m/(2π) to it

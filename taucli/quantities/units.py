@@ -165,6 +165,7 @@ def _read(text: str, option: str, kind: Kind) -> tuple[Reading, float | None, fl
     """``read``'s whole way, and the number and the unit's factor where it read number × unit."""
     cleaned = screen(text, option, kind)
     said: list[str] = []
+    expressions.refuse_other_calls(cleaned, text, option, kind)
     if expressions.has_calls(cleaned):
         cleaned, said = expressions.calls(cleaned, text, option, kind)
     cleaned, grouping = expressions.grouped(cleaned)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 import math
 import shutil
+from contextlib import contextmanager
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import NamedTuple, TextIO
@@ -249,3 +250,18 @@ def attach_inputs(report: Report, inputs: Mapping[str, Value], notes: Sequence[s
         tables=report.tables,
         trajectory=report.trajectory,
     )
+
+
+@contextmanager
+def progress_bar(stderr: TextIO, wanted: bool):
+    """A progress bar on ``stderr`` for --find, --mc and a fit, where stderr is a terminal (else
+    None): told (done, planned) solves as they go, and gone when the work is."""
+    if not wanted or not getattr(stderr, "isatty", lambda: False)():
+        yield None
+        return
+    from rich.console import Console  # deferred: rich, only for a bar on a terminal
+    from rich.progress import Progress
+
+    with Progress(console=Console(file=stderr), transient=True) as bar:
+        task = bar.add_task("solving", total=None)
+        yield lambda done, planned: bar.update(task, completed=done, total=planned)

@@ -18,10 +18,13 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from fuzzing import SCENES, Vector, profile_files, run, scratch_folder, vectors
+from fuzzing_commands import BENCH_SECONDS, COMMANDS, FIT_LIMIT, FIT_SECONDS, vectors_of, write_docs_tables
 
 EXAMPLES = int(os.environ.get("TAUCLI_FUZZ_EXAMPLES", "60"))
 _scratch = scratch_folder()
 FILES = profile_files(__import__("pathlib").Path(_scratch.name))
+FIT_RUNS = write_docs_tables(__import__("pathlib").Path(_scratch.name))
+SECONDS_OF = {"fit": FIT_SECONDS, "bench": BENCH_SECONDS}
 TRIED: Counter[str] = Counter()
 
 # Each was found by the fuzz suite, and is fixed; the seed is hypothesis's, printed with the failure.
@@ -74,7 +77,7 @@ def tally(pytestconfig):
 
 
 def _check(vector: Vector) -> None:
-    outcome = run(vector, _scratch.name)
+    outcome = run(vector, _scratch.name, **({"seconds": SECONDS_OF[vector.scene]} if vector.scene in SECONDS_OF else {}))
     assert not outcome.problems, f"{vector!r}\n  -> {outcome.problems}\n  stderr: {outcome.err[-800:]}"
 
 
@@ -95,12 +98,36 @@ def test_hostile_command_lines_keep_the_contract(scene):
     fuzz()
 
 
+@pytest.fixture
+def fit_limit(monkeypatch):
+    """fit's time budget lowered to FIT_LIMIT: a vector that would fit for long is refused by it."""
+    from taucli.fit import command
+
+    monkeypatch.setattr(command, "LIMIT_SECONDS", FIT_LIMIT)
+
+
+@pytest.mark.parametrize("name", COMMANDS)
+def test_hostile_command_lines_of_the_other_commands_keep_the_contract(name, fit_limit):
+    from pathlib import Path
+
+    @settings(max_examples=EXAMPLES, deadline=None, database=None, suppress_health_check=list(HealthCheck))
+    @given(st.data())
+    def fuzz(data):
+        TRIED[name or "(no command)"] += 1
+        _check(data.draw(vectors_of(name, Path(_scratch.name), FIT_RUNS, FILES), label="vector"))
+
+    fuzz()
+
+
 @pytest.mark.parametrize("vector", FOUND, ids=lambda vector: repr(vector)[:100])
 def test_vectors_that_once_failed(vector):
     _check(Vector(vector.scene, [arg.format(**FILES) for arg in vector.args], vector.stdin))
 
 
-def test_every_scene_is_fuzzed():
+def test_every_scene_and_command_is_fuzzed():
+    from taucli.options import COMMANDS as ALL
     from taucli.options import SCENES as TABLES
 
     assert set(SCENES) == set(TABLES)
+    assert set(SCENES) | set(COMMANDS) == set(ALL) | {""}
+    assert len(FIT_RUNS) >= 10  # docs/fit.md's runs, with their tables
