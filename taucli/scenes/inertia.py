@@ -268,8 +268,7 @@ def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bo
     gyration = math.sqrt(body.inertia / body.mass) if body.mass else None
     notes = list(body.notes)
     if body.mass is None:  # (#48 item 2: a part of I alone was counted as massless)
-        unknown = ", ".join("the shape" if number == 1 and not r.part.source else r.part.source or "the body"
-                            for number, r in enumerate(body.parts, start=1) if r.part.mass is None)
+        unknown = ", ".join(r.part.source or "the shape" for r in body.parts if r.part.mass is None)
         notes.append(f"mass, k: the mass of {unknown} is not known (given by its inertia alone): give mass= for the total mass and k = √(I/M)")
     results = Results(TABLE)
     results.put("I", body.inertia)
@@ -282,17 +281,11 @@ def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bo
     if single is None or show_mass:
         results.put("mass", body.mass)
     steps = list(body.steps)
-    steps.append(
-        None if gyration is None else Step(
-            "Radius of gyration",
-            "k = √(I/M)",
-            f"√({quantity_text(body.inertia, 'kg*m**2')} / {quantity_text(body.mass, 'kg')})",
-            quantity_text(gyration, "m"),
-            "the distance from the axis at which the whole mass, gathered in a ring, would have the same I",
-        )
-    )
+    if gyration is not None:
+        steps.append(Step("Radius of gyration", "k = √(I/M)", f"√({quantity_text(body.inertia, 'kg*m**2')} / {quantity_text(body.mass, 'kg')})",
+                          quantity_text(gyration, "m"), "the distance from the axis at which the whole mass, gathered in a ring, would have the same I"))
     tables = {} if single is not None else {"parts": parts_table(built)}  # each part's share of I about the axis it was built on
-    return Report("inertia", body.description, "closed form", results, [step for step in steps if step is not None], notes, {}, tables)
+    return Report("inertia", body.description, "closed form", results, steps, notes, {}, tables)
 
 
 def _moved(body: BodyInertia, distance: float) -> BodyInertia:
