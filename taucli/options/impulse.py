@@ -29,7 +29,8 @@ COMMAND = Command(
                'A particle that meets the body, e.g. "mass=30kg speed=4m/s radius=2m": speed signed (positive in the body\'s sense), '
                "radius the distance of its line from the axis (or with angle=, to where it meets the body, angle= between velocity and radius); "
                "it sticks, or leaves with speed-after= (negative: it rebounds), or rebounds with e= (restitution); "
-               "no speed=: it rides on the body, radius-after= where it moves to (repeatable).",
+               "no speed=: it rides on the body, radius-after= where it moves to; speed-relative= its speed along the rim after, relative to the body "
+               '(a toy train on a free wheel, a person walking on a turntable: "mass=55kg radius=3.25m speed-relative=3.8m/s") (repeatable).',
                repeatable=True, metavar='"mass=… speed=… radius=…"', panel=MEETS),
         Option("couple", COUPLE, 'Another body on the same axis that locks to it, e.g. "inertia=3kg*m^2 omega0=0" or "disc mass=2kg radius=0.1m omega0=100rpm" '
                '(repeatable); with torque=, through a clutch that slips passing that torque until the speeds meet, e.g. "inertia=3kg*m^2 torque=50N*m".',
