@@ -8,12 +8,16 @@ MEETS = "Particles and bodies that meet it (L conserved)"
 
 COMMAND = Command(
     name="impulse",
-    summary="Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.",
+    summary="Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or L₀, L₁, J given as such; or I that changes.",
     example="taucli impulse --inertia '0.1kg*m^2' --omega0 0 --torque '2N*m' --duration 0.5s",
     options=(
         *BODY_OPTIONS,
         Option("omega0", "angular velocity", "Angular velocity before.", sign="any"),
         Option("omega1", "angular velocity", "Angular velocity after.", sign="any"),
+        Option("momentum0", "angular momentum", "Angular momentum before, L₀ = Iω₀, given as such, e.g. '2.4kg*m^2/s' (needs no I or ω).", sign="any"),
+        Option("momentum1", "angular momentum", "Angular momentum after, L₁, given as such, e.g. '3.6kg*m^2/s'.", sign="any"),
+        Option("impulse", "angular momentum", "Angular impulse J = ΔL = ∫τ dt given as such (the area under a torque–time graph), e.g. '1.8N*m*s'.",
+               sign="any", metavar="J"),
         Option("torque", "torque", "Constant torque while it acts.", sign="any"),
         *PUSH,
         Option("duration", "time", "How long the torque acts."),

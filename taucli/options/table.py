@@ -52,6 +52,7 @@ METAVARS = {
     "acceleration": "ACCEL",
     "velocity": "SPEED",
     "viscous coefficient": "B",
+    "angular momentum": "L",
     "drag coefficient": "K",
     "dimensionless": "NUMBER",
     "power": "POWER",
