@@ -187,6 +187,7 @@ PARTICLE_FIELDS = {  # key: (kind, sign)
     "speed_after": ("velocity", "any"),
     "radius_after": ("length", "nonnegative"),
     "e": ("dimensionless", "nonnegative"),
+    "speed_relative": ("velocity", "any"),
 }
 ROTOR_FIELDS = {"inertia": ("moment of inertia", "positive"), "spin": ("angular velocity", "any")}
 COUPLE_FIELDS = {"inertia": ("moment of inertia", "nonnegative"), "omega0": ("angular velocity", "any"), "mass": ("mass", "positive"),

@@ -16,12 +16,16 @@ STRUCK_SHAPE_EXAMPLE = "{particle} 'mass=0.4kg speed=20m/s radius=0.6m' {shape} 
 
 COMMAND = Command(
     name="impulse",
-    summary="Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or I that changes.",
+    summary="Angular impulse: τΔt = IΔω, any four of I, ω₀, ω₁, τ, Δt giving the fifth; or L₀, L₁, J given as such; or I that changes.",
     example="taucli impulse --inertia '0.1kg*m^2' --omega0 0 --torque '2N*m' --duration 0.5s",
     options=(
         *BODY_OPTIONS,
         Option("omega0", "angular velocity", "Angular velocity before.", sign="any"),
         Option("omega1", "angular velocity", "Angular velocity after.", sign="any"),
+        Option("momentum0", "angular momentum", "Angular momentum before, L₀ = Iω₀, given as such, e.g. '2.4kg*m^2/s' (needs no I or ω).", sign="any"),
+        Option("momentum1", "angular momentum", "Angular momentum after, L₁, given as such, e.g. '3.6kg*m^2/s'.", sign="any"),
+        Option("impulse", "angular momentum", "Angular impulse J = ΔL = ∫τ dt given as such (the area under a torque–time graph), e.g. '1.8N*m*s'.",
+               sign="any", metavar="J"),
         Option("torque", "torque", "Constant torque while it acts.", sign="any"),
         *PUSH,
         Option("duration", "time", "How long the torque acts."),
@@ -38,7 +42,8 @@ COMMAND = Command(
                'A particle that meets the body, e.g. "mass=30kg speed=4m/s radius=2m": speed signed (positive in the body\'s sense), '
                "radius the distance of its line from the axis (or with angle=, to where it meets the body, angle= between velocity and radius); "
                "it sticks, or leaves with speed-after= (negative: it rebounds), or rebounds with e= (restitution); "
-               "no speed=: it rides on the body, radius-after= where it moves to (repeatable).",
+               "no speed=: it rides on the body, radius-after= where it moves to; speed-relative= its speed along the rim after, relative to the body "
+               '(a toy train on a free wheel, a person walking on a turntable: "mass=55kg radius=3.25m speed-relative=3.8m/s") (repeatable).',
                repeatable=True, metavar='"mass=… speed=… radius=…"', panel=MEETS, example="mass=0.4kg speed=20m/s radius=0.6m"),
         Option("couple", COUPLE, 'Another body on the same axis that locks to it, e.g. "inertia=3kg*m^2 omega0=0" or "disc mass=2kg radius=0.1m omega0=100rpm" '
                '(repeatable); with torque=, through a clutch that slips passing that torque until the speeds meet, e.g. "inertia=3kg*m^2 torque=50N*m".',

@@ -27,7 +27,7 @@ COUNT = "count"  # a whole number
 VECTOR = "vector"  # "x,y,z UNIT": three components of the quantity kind in ``of`` (or one size, where a scene takes that)
 NOT_QUANTITIES = frozenset({CHOICE, FLAG, FILE, PART, TEXT, COUNT})
 NOT_QUANTITIES = NOT_QUANTITIES | {VECTOR}  # read a component at a time by its own reader, never swept
-PARTICLE = "particle"  # "mass=… speed=… radius=… [angle=…] [speed-after=… | e=… | radius-after=…]", repeatable
+PARTICLE = "particle"  # "mass=… speed=… radius=… [angle=…] [speed-after=… | e=… | radius-after=…] [speed-relative=…]", repeatable
 COUPLE = "couple"  # "[SHAPE] inertia=… | mass=… dims…, omega0=…": another body on the axis, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
 BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…] [lever=… pivot=… offset=…]": a brake shoe on a turning body, repeatable
@@ -54,6 +54,7 @@ METAVARS = {
     "acceleration": "ACCEL",
     "velocity": "SPEED",
     "viscous coefficient": "B",
+    "angular momentum": "L",
     "drag coefficient": "K",
     "dimensionless": "NUMBER",
     "power": "POWER",

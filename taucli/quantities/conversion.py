@@ -26,8 +26,9 @@ _ANOTHER_KIND = frozenset({WEIGHT, MASS_AS_WEIGHT, meanings.ENERGY_FOR_TORQUE, m
 
 # Kinds that share a dimension with a kind before them and are read as such only when nothing
 # else reads the text: N·m is a torque before a torsion constant (N·m/rad), kg·m² an inertia
-# before a drag coefficient (N·m·s²), mm a length before a screw's lead, Pa a pressure.
-_SECOND_READINGS = frozenset({"torsion constant", "lead", "drag coefficient", "stress"})
+# before a drag coefficient (N·m·s²), mm a length before a screw's lead, Pa a pressure, N·m·s a
+# viscous coefficient before an angular momentum (the one number either way).
+_SECOND_READINGS = frozenset({"torsion constant", "lead", "drag coefficient", "stress", "angular momentum"})
 
 EXAMPLE = "'3000 rpm' rad/s"
 

@@ -50,6 +50,7 @@ KINDS: dict[str, Kind] = {
         Kind("velocity", "m/s", "2 m/s", ("m/s", "km/h", "ft/s", "mph")),
         Kind("momentum", "kg*m/s", "'2 kg*m/s'", ("kg*m/s", "N*s", "g*cm/s")),
         Kind("viscous coefficient", "N*m*s", "'0.01 N*m*s'", ("N*m*s", "N*m/(rad/s)")),
+        Kind("angular momentum", "kg*m**2/s", "'2.4 kg*m^2/s'", ("kg*m^2/s", "N*m*s", "g*cm^2/s")),  # L = Iω, and an angular impulse J = ΔL
         Kind("drag coefficient", "N*m*s**2", "'0.001 N*m*s^2'", ("N*m*s^2",)),
         Kind("dimensionless", "", "0.5", ()),
         Kind("power", "W", "1 kW", ("W", "kW", "MW", "hp")),
@@ -74,7 +75,7 @@ ANGULAR = frozenset({"angular velocity", "angular acceleration"})
 # The power of the radian in each kind's unit where it has one (rad/s: 1, N*m/(rad/s): -1): the angle
 # a unit of that kind must name, or leave out as SI does (N*m*s for a viscous coefficient).
 ANGLE_POWERS = {"angle": 1, "angular velocity": 1, "angular acceleration": 1, "viscous coefficient": -1, "drag coefficient": -2,
-                "torsion constant": -1, "lead": -1}
+                "torsion constant": -1, "lead": -1, "angular momentum": 1}
 
 
 FORCES = frozenset({"force", "torque", "viscous coefficient", "drag coefficient", "moment of inertia"})  # a mass here is its weight (lb*in*s^2: lbf)

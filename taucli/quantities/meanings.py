@@ -139,7 +139,10 @@ def revolutions_note(unit: str | None) -> str:
 def ambiguous_time(symbol: str, time: str, count: str, text: str, option: str, kind: Kind) -> InputError:
     """The refusal of ``N*m*min`` for a viscous coefficient: per radian or per revolution per minute?"""
     square = "^2" if kind.name == "drag coefficient" else ""
-    return InputError(option, f"expected {article(kind.name)} that names its angle", example=f"'{count} N*m/(rad/{symbol}){square}' or '{count} N*m/(rev/{symbol}){square}'",
+    example = f"'{count} N*m/(rad/{symbol}){square}' or '{count} N*m/(rev/{symbol}){square}'"
+    if kind.name == "angular momentum":  # L = Iω: the angle in the numerator, as in ω
+        example = f"'{count} kg*m^2*rad/{symbol}' or '{count} kg*m^2*rev/{symbol}'"
+    return InputError(option, f"expected {article(kind.name)} that names its angle", example=example,
                       got=f"{text!r}: {'an' if time == 'hour' else 'a'} {time} with no angle could be per radian or per revolution")
 
 

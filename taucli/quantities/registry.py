@@ -289,7 +289,7 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     return value, how
 
 
-_RATES = ANGULAR | {"viscous coefficient", "drag coefficient", "torsion constant"}
+_RATES = ANGULAR | {"viscous coefficient", "drag coefficient", "torsion constant", "angular momentum"}  # L = Iω: kg*m^2*rpm
 
 
 def _angled(cleaned: str, q, text: str, option: str, kind: Kind, value: float, how: int, revolutions: bool) -> tuple[float, int]:
@@ -314,6 +314,8 @@ def _angled(cleaned: str, q, text: str, option: str, kind: Kind, value: float, h
         times = meanings.other_times(q)
         if times == ["minute"] and dict(q.unit_items())["minute"] * wanted < 0:  # N*m/min^-1: min^-1 is rev/min, as for ω
             return value * TWO_PI**wanted, REVOLUTIONS
+        if kind.name == "angular momentum" and all(dict(q.unit_items()).get(t, 0) > 0 for t in times):  # N*m*min: a torque for a time, J = τt
+            return value, how
         if times:
             raise _ambiguous_in(times[0], text, option, kind)
         return value, how

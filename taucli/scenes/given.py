@@ -52,7 +52,9 @@ class Particle:
     """A particle that meets the body (--particle): its mass, its signed speed along its line
     (positive when its angular momentum is in the body's positive sense; None: it rides on the
     body), the radius where it meets the body and the angle there between its velocity and the
-    radius (90°: its line passes at ``radius`` from the axis), and what it does after."""
+    radius (90°: its line passes at ``radius`` from the axis), and what it does after; with
+    ``speed_relative``, it moves after along the rim at that speed relative to the body (a toy
+    train on a free wheel, a person walking on a turntable): v′ = ω₁ρ + v_rel."""
 
     source: str
     mass: float
@@ -62,6 +64,7 @@ class Particle:
     speed_after: float | None = None
     radius_after: float | None = None
     e: float | None = None
+    speed_relative: float | None = None
 
     @property
     def sine(self) -> float:

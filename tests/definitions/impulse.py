@@ -88,6 +88,12 @@ def draw_impulse(rng: random.Random, folder) -> tuple[dict, list[str]]:
             else:
                 couples.append("disc " + spec(mass=(mag(rng, -1, 1), "kg"), radius=(mag(rng, -1.5, 0), "m"), omega0=omega))
             tags.append("couple")
+        walk = random.Random("walk" + str(rng.getstate()))  # #46's draws, beside the stream as it was
+        staying = [n for n, tag in enumerate(t for t in tags if t.startswith("particle ")) if tag in ("particle stick", "particle angle", "particle ride")]
+        if staying and not any(t in ("particle leave", "particle rebound") for t in tags) and walk.random() < 0.4:
+            n = walk.choice(staying)  # it moves along the rim after, at a speed relative to the body (a toy train, a walker)
+            particles[n] += " " + spec(speed_relative=(signed(walk, W * reach * mag(walk, -0.5, 0.5)), "m/s"))
+            tags.append("particle walks")
         side = random.Random(str(rng.getstate()))  # #35's draws, leaving the stream the older draws see as it was
         if len(couples) == 1 and not particles and side.random() < 0.4:  # through a clutch that slips
             couples[0] += " " + spec(torque=(inertia * W / T * mag(side, -1, 0.5), "N*m"))
@@ -302,10 +308,13 @@ def check_meeting(kw, report, res, inp, inertia, w0, w1, c: Checker) -> None:
         m, r = inp[key + "mass"], inp[key + "radius"]
         arm = r * (math.sin(inp[key + "angle"]) if key + "angle" in inp else 1.0)
         rho = inp.get(key + "radius_after", r)
+        if key + "speed_relative" in inp:  # it moves along the rim after at v_rel relative to the body: v′ = ω₁ρ + v_rel
+            after[n] = (m, w1 * rho + inp[key + "speed_relative"], rho)
         if key + "speed" not in inp:  # it rides on the body
             momentum0.append(m * r * r * w0)
             energy0.append(m * r * r * w0 * w0 / 2)
-            inertia1.append(m * rho * rho)
+            if n not in after:
+                inertia1.append(m * rho * rho)
             continue
         v = inp[key + "speed"]
         momentum0.append(m * v * arm)
@@ -314,7 +323,7 @@ def check_meeting(kw, report, res, inp, inertia, w0, w1, c: Checker) -> None:
             after[n] = (m, inp[key + "speed_after"], arm)
         elif key + "e" in inp:
             after[n] = (m, w1 * arm - inp[key + "e"] * (v - w0 * arm), arm)  # v′ − ω₁r⊥ = −e(v − ω₀r⊥)
-        else:
+        elif n not in after:
             inertia1.append(m * rho * rho)
     i1 = math.fsum(inertia1)
     momentum1 = [i1 * w1, *(m * v1 * arm for m, v1, arm in after.values())]

@@ -99,6 +99,12 @@ SPELLINGS = {
         "0.003 N*m*s^2", "0.003 N*m*s2", "0.003 Nms^2", "0.003 Nms2", "0.003 N-m-s^2", "0.003 N m s2", "0.003 N*m/(rad/s)^2", "3 mN*m*s^2",
         "0.003 kg*m^2", f"{0.003 / LBF_FT!r} lbf*ft*s^2", "0.003",
     ], ("spin-down", "--inertia", "1", "--omega0", "1rad/s"), "--drag"),
+    # angular momentum (#46 item 2): L = Iω, kg·m²/s = N·m·s = J·s, the radian left out as SI does; an angle named in it is a rate's
+    "angular momentum": (2.4, [
+        "2.4 kg*m^2/s", "2.4 kg*m2/s", "2.4 kg·m²/s", "2.4 N*m*s", "2.4 Nms", "24000 kg*cm^2/s", "2.4 J*s", "2.4 kg*m^2*rad/s",
+        f"{2.4 / (2 * PI)!r} kg*m^2*rev/s", f"{2.4 / RPM!r} kg*m^2*rpm", f"{2.4 / 60!r} N*m*min", "2.4",
+        (f"{2.4 / (2 * PI)!r} kg*m^2*Hz", "Hz as revolutions per second"),
+    ], ("impulse", "--momentum1", "3.6", "--duration", "4s"), "--momentum0"),
     "dimensionless": (0.25, ["0.25", ".25", "0.250", "2.5e-1", "1/4", "25/100", "0.25 dimensionless", "0.5 * 0.5"],
                       ("atwood", "--m1", "4kg", "--m2", "1kg", "--incline", "30deg"), "--mu-k"),
     # power (#18): 1 hp (mechanical) = 550 ft·lbf/s = 745.69987158227 W
@@ -553,6 +559,7 @@ COMPOUNDS = {
     "angular acceleration": ("({})/s", lambda w: w),
     "viscous coefficient": ("N*m/({})", lambda w: 1 / w),
     "drag coefficient": ("N*m/({})^2", lambda w: 1 / w**2),
+    "angular momentum": ("kg*m^2*({})", lambda w: w),
 }
 # Where the unit stands: a number and its unit, grouped, in a product, a quotient, a sum.
 PLACES = ["3 {}", "(3 {})", "2*(1.5 {})", "(6 {})/2", "3*(1 {})", "1 {} + 2 {}"]

@@ -20,6 +20,14 @@ along the line separate at e times the speed they met with, v′ − ω₁ r⊥ 
     Δω = m r⊥ (1 + e)(v − ω₀ r⊥) / (I + m r⊥²)
     KE_lost = ½ (1 − e²) [I m / (I + m r⊥²)] (v − ω₀ r⊥)²
 
+A particle given by its speed relative to the body after (speed-relative=, v_rel: a toy train
+on a track on a free wheel, a person walking on a turntable) moves at the body's own speed there
+plus v_rel, along the rim in the body's positive sense: v₁ = ω₁ r′ + v_rel (r′ = radius-after, else
+r), so its L₁ = m r′ (ω₁ r′ + v_rel): it turns with the body (m r′² joins I₁) and takes m r′ v_rel
+from the rest: I₁ Δω gains −m r′ v_rel. Before, it rides (no speed=) or moves at speed=. Where one
+is given, KE₁ = ½ I₁ ω₁² + Σ ½ m v_rel (v_rel + 2 ω₁ r′) + …, and KE_lost = KE₀ − KE₁ directly
+at 90 digits (the walker's legs, the train's motor do work: KE_lost < 0).
+
 Otherwise, with δ_j = ω_j − ω₀ for each part that ends at ω₁ (a particle that sticks turns
 at v sin φ / r about the axis and loses its radial motion ½ m (v cos φ)² to the axle):
 
@@ -50,6 +58,7 @@ class Particle:
     speed_after: float | None = None  # it leaves along its line
     e: float | None = None  # it rebounds with restitution e
     radius_after: float | None = None  # a rider moves here
+    speed_relative: float | None = None  # after, it moves at this speed relative to the body (along the rim)
 
 
 @dataclass
@@ -71,6 +80,7 @@ def meet(inertia, omega0, particles=(), couples=()):
         leaving = mpf(0)  # Σ m v′ r⊥
         KE_leavers = mpf(0)
         bounce = None
+        walkers = []
         for c in couples:
             ic, wc = mpf(c.inertia), mpf(c.omega0)
             L0 += ic * wc
@@ -80,6 +90,21 @@ def meet(inertia, omega0, particles=(), couples=()):
             spread += ic * (wc - w0) ** 2 / 2
         for p in particles:
             m, r = mpf(p.mass), mpf(p.radius)
+            if p.speed_relative is not None:
+                r2 = mpf(p.radius_after) if p.radius_after is not None else r
+                vr = mpf(p.speed_relative)
+                if p.speed is None:  # it rode with the body before
+                    before = m * r * r * w0
+                    KE0 += m * r * r * w0**2 / 2
+                else:
+                    v = mpf(p.speed)
+                    before = m * v * r * (mpmath.sin(mpf(p.angle)) if p.angle is not None else 1)
+                    KE0 += m * v * v / 2
+                L0 += before
+                I1 += m * r2 * r2
+                push += before - m * r2 * r2 * w0 - m * r2 * vr
+                walkers.append((m, r2, vr))
+                continue
             if p.speed is None:  # a rider
                 r2 = mpf(p.radius_after) if p.radius_after is not None else r
                 L0 += m * r * r * w0
@@ -118,6 +143,10 @@ def meet(inertia, omega0, particles=(), couples=()):
             dw = push / I1
             lost = spread - I1 * dw**2 / 2 + extra
             KE1 = I1 * (w0 + dw) ** 2 / 2 + KE_leavers
+            if walkers:
+                w1 = w0 + dw
+                KE1 += sum(m * vr * (vr + 2 * w1 * r2) / 2 for m, r2, vr in walkers)
+                lost = KE0 - KE1
         out = dict(J=I * dw, delta_omega=dw, omega1=w0 + dw, L0=L0, L1=L0, KE0=KE0, KE1=KE1, KE_lost=lost,
                    KE_lost_fraction=lost / KE0 if KE0 else None)
     with mp.workdps(DPS):

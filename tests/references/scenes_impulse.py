@@ -12,7 +12,7 @@ from references.compare import Row, log_uniform, rad_s, value
 from references.impulse import Couple, Particle, meet
 
 CLOSED = 1e-13
-KINDS = ("stick", "stick_angle", "leave", "bounce", "bounce_elastic", "ride", "couple", "heavy_couple", "small", "mixed")
+KINDS = ("stick", "stick_angle", "leave", "bounce", "bounce_elastic", "ride", "couple", "heavy_couple", "small", "mixed", "walk", "walk_moving", "walkers")
 
 
 def particle_text(p: Particle) -> str:
@@ -27,6 +27,8 @@ def particle_text(p: Particle) -> str:
         words.append(f"e={p.e!r}")
     if p.radius_after is not None:
         words.append(f"radius-after={p.radius_after!r}m")
+    if p.speed_relative is not None:
+        words.append(f"speed-relative={p.speed_relative!r}m/s")
     return " ".join(words)
 
 
@@ -63,6 +65,18 @@ def draw_impulse(rng, kind=None):
         if omega0 == 0:
             omega0 = 1.0
         particles.append(Particle(m, r, speed=omega0 * r * (1 + rng.choice((-1, 1)) * log_uniform(rng, -12, -3))))
+    elif kind == "walk":  # a train on a track on a free wheel, a person walking on a turntable: it rode before
+        particles.append(Particle(m, r, speed_relative=v, radius_after=rng.choice((None, r * log_uniform(rng, -1, 0.5)))))
+    elif kind == "walk_moving":  # it meets the body at speed=, then moves along it at speed-relative=
+        particles.append(Particle(m, r, speed=v * rng.uniform(-1, 1), speed_relative=v * rng.uniform(-1, 1),
+                                  angle=rng.choice((None, rng.uniform(0.05, 3.09)))))
+    elif kind == "walkers":  # several, with a couple or a rider beside them
+        for _ in range(rng.randint(2, 3)):
+            particles.append(Particle(m * log_uniform(rng, -1, 1), r * rng.uniform(0.1, 1), speed_relative=v * rng.uniform(-1, 1)))
+        if rng.random() < 0.5:
+            couples.append(Couple(inertia * log_uniform(rng, -3, 3), omega0 + rng.uniform(-1, 1)))
+        else:
+            particles.append(Particle(m, r, radius_after=r * rng.uniform(0.1, 2)))
     else:
         for _ in range(rng.randint(2, 3)):
             choice = rng.choice(("stick", "leave", "ride", "couple"))
@@ -115,6 +129,12 @@ def _condition(omega0, particles, couples) -> float:
         ratio((mpf(c.omega0), w0), mpf(c.omega0) - w0)
     for p in particles:
         m, r = mpf(p.mass), mpf(p.radius)
+        if p.speed_relative is not None:  # I₁Δω gains m (L/m before − ρ²ω₀ − ρ v_rel)
+            r2 = mpf(p.radius_after) if p.radius_after is not None else r
+            vr = mpf(p.speed_relative)
+            before = mpf(p.speed) * r * (mpmath.sin(mpf(p.angle)) if p.angle is not None else 1) if p.speed is not None else r * r * w0
+            ratio((before, r2 * r2 * w0, r2 * vr), before - r2 * r2 * w0 - r2 * vr)
+            continue
         if p.speed is None:
             r2 = mpf(p.radius_after) if p.radius_after is not None else r
             ratio((r, r2), r - r2)

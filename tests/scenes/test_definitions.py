@@ -112,7 +112,7 @@ def test_spin_down_energy_balances_agree_with_their_definitions():
 def test_impulse_results_agree_with_their_definitions(tmp_path):
     branches = {"balance": 150, "all five": 15, "solve inertia": 15, "solve omega0": 15, "solve omega1": 15, "solve torque": 15,
                 "solve duration": 15, "partial": 15, "skater": 30, "meeting": 60, "particle stick": 20, "particle angle": 10, "particle ride": 10,
-                "particle leave": 10, "particle rebound": 5, "couple": 20, "clutch": 5, "braked": 30, "brake": 20, "face": 10, "face weight": 4, "band": 8, "profile": 30,
+                "particle leave": 10, "particle rebound": 5, "particle walks": 10, "couple": 20, "clutch": 5, "braked": 30, "brake": 20, "face": 10, "face weight": 4, "band": 8, "profile": 30,
                 "quadratic": 10, "samples": 10, "at": 60, "units": 100}
     run_scene("impulse", lambda rng: impulse.draw_impulse(rng, tmp_path), impulse.check_impulse, 1600, 20, 0.5, branches)
 

@@ -4,6 +4,7 @@
 - changing_inertia: inertia that changes with no external torque (the skater, the diver): I₀ω₀ = I₁ω₁;
 - sampled: a torque that varies in time, sampled: J by quadrature, then ω₁ = ω₀ + J/I;
 - meeting: particles and bodies that meet the body, L about the axis conserved;
+- momentum: angular momentum and impulse given as such, L₀ = Iω₀, L₁ = Iω₁, J = L₁ − L₀ = τΔt;
 - braked: a constant torque against brakes and rubbing faces, I dω/dt = τ − τ_f·sgn ω;
 - point: --at r, a point of the body before and after;
 

@@ -1,9 +1,11 @@
 """Particles and bodies that meet the body with no external torque about the axis: L conserved.
 
 A particle sticks, rides on the body (and may move along it), leaves with a speed after, or
-rebounds with restitution e; another body on the axis (a couple) locks to it. Linear in ω₁:
+rebounds with restitution e; another body on the axis (a couple) locks to it. A particle that
+stays may move along the rim at v_rel relative to the body after (speed-relative=: a toy train
+on a free wheel, a person walking on a turntable): its speed is v′ = ω₁ρ + v_rel. Linear in ω₁:
 
-    I ω₀ + Σ I_c ω_c + Σ m v r⊥ = (I + Σ I_c + Σ m ρ²) ω₁ + Σ m v′ r⊥
+    I ω₀ + Σ I_c ω_c + Σ m v r⊥ = (I + Σ I_c + Σ m ρ²) ω₁ + Σ m v′ r⊥ + Σ m ρ v_rel
 """
 
 from __future__ import annotations
@@ -30,6 +32,9 @@ def _check_particle(p: Particle) -> None:
     leaving = [name for name, value in (("speed-after=", p.speed_after), ("e=", p.e), ("radius-after=", p.radius_after)) if value is not None]
     if len(leaving) > 1:
         raise InputError(p.source, f"takes one of speed-after= (it leaves), e= (it rebounds), radius-after= (it stays); got {' and '.join(leaving)}", example=example)
+    if p.speed_relative is not None and (p.speed_after is not None or p.e is not None):
+        raise InputError(p.source, "speed-relative= is the speed along the body of a particle that stays on it: it takes no speed-after= or e=",
+                         example='{particle} "mass=0.2kg radius=0.5m speed-relative=0.3m/s"')
     if p.speed is None:
         if p.speed_after is not None or p.e is not None or p.angle is not None:
             raise InputError(p.source, "needs speed= to meet the body (with no speed= it rides on the body at radius=)", example=example)
@@ -120,17 +125,23 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
                          *(p.mass * (p.radius if p.radius_after is None else p.radius_after) ** 2 for p in staying)])
     if i_after <= 0 and (bounce or not leave):
         raise InputError("inertia", "must be more than zero here: nothing would be left to turn", example="{inertia} '2kg*m^2'")
+    def rho_of(p: Particle) -> float:
+        return p.radius if p.radius_after is None else p.radius_after
+
     momentum0 = momentum_joined + math.fsum(p.mass * p.speed * p.arm for _, p in (*leave, *bounce))
     # ω₁ (I₁ + Σ_e m r⊥²) = L₀ − Σ_leave m v′ r⊥ + Σ_e m r⊥ e (v − ω₀ r⊥)
     i_effective = i_after + math.fsum(p.mass * p.arm**2 for _, p in bounce)
-    numerator = momentum0 - math.fsum(p.mass * p.speed_after * p.arm for _, p in leave) + math.fsum(p.mass * p.arm * p.e * (p.speed - omega0 * p.arm) for _, p in bounce)
+    walk = [(name, p) for name, p in (*stick, *ride) if p.speed_relative is not None]  # they move along the rim after, at v_rel
+    if walk and leave:
+        raise InputError(walk[0][1].source, "speed-relative= is solved with particles that stay and bodies that lock: give a particle that leaves "
+                         "(speed-after=) a run of its own", example='{particle} "mass=0.2kg radius=0.5m speed-relative=0.3m/s"')
+    walking = math.fsum(p.mass * rho_of(p) * p.speed_relative for _, p in walk)  # W = Σ m ρ v_rel, the walkers' own L after
+    numerator = momentum0 - walking - math.fsum(p.mass * p.speed_after * p.arm for _, p in leave) + math.fsum(p.mass * p.arm * p.e * (p.speed - omega0 * p.arm) for _, p in bounce)
     if i_effective <= 0:
         raise InputError("inertia", "must be more than zero here", example="{inertia} '2kg*m^2'")
     omega1 = numerator / i_effective
     # Δω from what each exchanges with the body, not ω₁ − ω₀, which loses the digits of a small change
     # beside a large ω: (numerator − i_effective ω₀) written term by term; likewise ω₁ − ω for any ω.
-    def rho_of(p: Particle) -> float:
-        return p.radius if p.radius_after is None else p.radius_after
 
     def exchange(ref: float) -> float:
         """(numerator − i_effective·ref) as a sum of what each thing gives up relative to ``ref``: ω₁ − ref times I_eff."""
@@ -141,6 +152,7 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
             *(p.mass * (p.radius**2 * omega0 - rho_of(p) ** 2 * ref) for _, p in ride),
             *(p.mass * p.arm * (p.speed - p.speed_after) for _, p in leave),
             *(p.mass * p.arm * ((p.speed - ref * p.arm) + p.e * (p.speed - omega0 * p.arm)) for _, p in bounce),
+            *(-p.mass * rho_of(p) * p.speed_relative for _, p in walk),
         ])
 
     exchange_body = math.fsum([
@@ -149,15 +161,19 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         *(-p.mass * (rho_of(p) - p.radius) * (rho_of(p) + p.radius) * omega0 for _, p in ride),
         *(p.mass * p.arm * (p.speed - p.speed_after) for _, p in leave),
         *(p.mass * p.arm * (1 + p.e) * (p.speed - omega0 * p.arm) for _, p in bounce),
+        *(-p.mass * rho_of(p) * p.speed_relative for _, p in walk),
     ])
     delta_omega = exchange_body / i_effective
     after = {name: p.speed_after for name, p in leave}
     after.update({name: omega1 * p.arm - p.e * (p.speed - omega0 * p.arm) for name, p in bounce})
+    # I_rest: what turns rigidly after (the body, the couples, the particles that stay and do not walk)
+    rest = math.fsum([inertia, *(i_c for _, i_c, _ in couple_rows), *(p.mass * rho_of(p) ** 2 for p in staying if p.speed_relative is None)])
+    after.update(_walkers_speeds(walk, rest, i_after, momentum0, rho_of))  # along the rim, over the ground
     # Energies.
     energy0_terms = [0.5 * i * w * w for _, i, w in joined] + radial_energy
     energy0_terms += [0.5 * p.mass * p.speed**2 for _, p in (*leave, *bounce)]
     energy0 = math.fsum(energy0_terms)
-    energy1 = math.fsum([0.5 * i_after * omega1 * omega1] + [0.5 * p.mass * after[name] ** 2 for name, p in (*leave, *bounce)])
+    energy1 = math.fsum([0.5 * rest * omega1 * omega1] + [0.5 * p.mass * after[name] ** 2 for name, p in (*leave, *bounce, *walk)])
     if bounce:
         name, p = bounce[0]  # alone with the body: a collision along its line with the body's point, of mass I/r⊥² there
         approach = p.speed - omega0 * p.arm
@@ -166,6 +182,7 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         spread = math.fsum(i_j * i_k * (w_j - w_k) ** 2 for n, (_, i_j, w_j) in enumerate(joined) for (_, i_k, w_k) in joined[n + 1:])
         lost = (0.5 * spread / i_before if i_before else 0.0) + (0.5 * momentum_joined**2 / i_before * math.fsum(extra_inertia) / i_after if i_before else 0.0)
         lost += math.fsum(radial_energy)
+        lost -= _walkers_work(walk, rest, i_after, rho_of)
     else:
         # as above, with what each leaving particle takes: ½m(v − v′)[(v − r⊥ω_a) + (v′ − r⊥ω₁)], ω_a = L_joined/I₁, a sum
         # of exchanges rather than the difference of two totals (which a heavy couple makes large)
@@ -199,11 +216,13 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     for name, p in stick:  # m(ρ²ω₁ − v r⊥) = mρ²(ω₁ − v r⊥/ρ²)
         r1 = rho_of(p)
         change = p.mass * r1**2 * exchange(p.speed * p.arm / r1**2) / i_effective if r1 else -p.mass * p.speed * p.arm
-        rows.append((name, p.mass * p.speed * p.arm, p.mass * r1**2 * omega1, change, omega1 * r1))
+        if p.speed_relative is not None:  # m ρ (ω₁ρ + v_rel) − m v r⊥
+            change += p.mass * r1 * p.speed_relative
+        rows.append((name, p.mass * p.speed * p.arm, p.mass * r1 * after.get(name, omega1 * r1), change, after.get(name, omega1 * r1)))
     for name, p in ride:  # m(ρ²ω₁ − r²ω₀) = m(ρ²Δω + (ρ − r)(ρ + r)ω₀)
         r1 = rho_of(p)
-        change = p.mass * math.fsum([r1**2 * delta_omega, (r1 - p.radius) * (r1 + p.radius) * omega0])
-        rows.append((name, p.mass * p.radius**2 * omega0, p.mass * r1**2 * omega1, change, omega1 * r1))
+        change = p.mass * math.fsum([r1**2 * delta_omega, (r1 - p.radius) * (r1 + p.radius) * omega0, r1 * (p.speed_relative or 0.0)])
+        rows.append((name, p.mass * p.radius**2 * omega0, p.mass * r1 * after.get(name, omega1 * r1), change, after.get(name, omega1 * r1)))
     for name, p in leave:
         rows.append((name, p.mass * p.speed * p.arm, p.mass * after[name] * p.arm, p.mass * p.arm * (p.speed_after - p.speed), after[name]))
     for name, p in bounce:  # v′ − v = r⊥Δω − (1 + e)(v − ω₀r⊥)
@@ -221,7 +240,7 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     # Steps.
     steps.insert(len(inertia_steps), Step(
         "No external torque about the axis: angular momentum is conserved",
-        "L₀ = L₁:  Iω₀ + Σ I_c ω_c + Σ m v r⊥ = I₁ω₁ + Σ m v′ r⊥",
+        "L₀ = L₁:  Iω₀ + Σ I_c ω_c + Σ m v r⊥ = I₁ω₁ + Σ m v′ r⊥" + (" + Σ m ρ v_rel" if walk else ""),
         "", "",
         "the forces the bodies exert on each other (the grip, the clutch's friction, the particle's push) come in equal and "
         "opposite pairs along one line, so their torques about the axis cancel; the axle's force passes through the axis, "
@@ -235,11 +254,14 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
                           " + ".join([term(inertia, "kg*m**2"), *(term(i_c, "kg*m**2") for _, i_c, _ in couple_rows),
                                       *(f"{term(p.mass, 'kg')} × ({term(p.radius if p.radius_after is None else p.radius_after, 'm')})²" for _, p in stays)]),
                           quantity_text(i_after, "kg*m**2"), "what stays on the axis turns together at ω₁; a particle that stays is a point mass at ρ"))
+    for name, p in walk:
+        steps.append(Step(f"Speed of the {name} after", "v′ = ω₁ρ + v_rel", f"{term(omega1, 'rad/s')} × {term(rho_of(p), 'm')} + {term(p.speed_relative, 'm/s')}",
+                          quantity_text(after[name], "m/s"), "it moves along the rim at v_rel relative to the body, whose point there moves at ω₁ρ"))
     if bounce:
         name, p = bounce[0]
         steps.append(Step("Restitution along the particle's line", "v′ − ω₁r⊥ = −e (v − ω₀r⊥)", f"e = {fmt(p.e)}, r⊥ = {fmt(p.arm)} m", "",
                           "the speed at which the particle and the body's point separate is e times the speed at which they approached"))
-    top = "L₀" + (" − Σ m v′ r⊥" if leave else "") + (" + Σ m r⊥ e (v − ω₀r⊥)" if bounce else "")
+    top = "L₀" + (" − Σ m ρ v_rel" if walk else "") + (" − Σ m v′ r⊥" if leave else "") + (" + Σ m r⊥ e (v − ω₀r⊥)" if bounce else "")
     bottom = "I₁" + (" + Σ m r⊥²" if bounce else "")
     equation = f"ω₁ = {f'({top})' if top != 'L₀' else top} / {f'({bottom})' if bottom != 'I₁' else bottom}"
     steps.append(Step("Angular velocity after", equation, f"{term(numerator, 'kg*m**2/s')} / {term(i_effective, 'kg*m**2')}", quantity_text(omega1, "rad/s"),
@@ -248,7 +270,9 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         steps.append(Step(f"Speed of the {name} after", "v′ = ω₁r⊥ − e (v − ω₀r⊥)", f"{term(omega1, 'rad/s')} × {term(p.arm, 'm')} − {fmt(p.e)} × ({term(p.speed, 'm/s')} − {term(omega0, 'rad/s')} × {term(p.arm, 'm')})",
                           quantity_text(after[name], "m/s"),
                           "the restitution law solved for v′: " + ("negative, it bounces back" if after[name] < 0 else "it follows the body's point, which now moves away at least as fast")))
-    why_energy = ("kinetic energy is not conserved: while the two come to move together they slide on each other (or the particle deforms, "
+    why_walk = ("kinetic energy is not conserved: the walker's legs (a train's motor) push on the body and do work inside the system; "
+                "the body gains the energy of its turn, the walker that of its speed over the ground")
+    why_energy = why_walk if walk else ("kinetic energy is not conserved: while the two come to move together they slide on each other (or the particle deforms, "
                   "the bullet tears the wood), and that friction turns kinetic energy into heat; only a perfectly elastic rebound (e = 1) keeps it all")
     steps.append(Step("Kinetic energy before and after", "KE = ½Iω² + ½mv²", f"{quantity_text(energy0, 'J')} → {quantity_text(energy1, 'J')}",
                       f"lost {quantity_text(lost, 'J')}" + (f" ({fmt(100 * lost / energy0, 3)}%)" if energy0 > 0 else ""), why_energy))
@@ -260,7 +284,8 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
                           "along the particle's line the body's point acts as a mass I/r⊥²: a collision of two masses, which keeps "
                           "the fraction e² of the energy of their approach"))
     if not leave and not bounce:
-        steps.append(Step("The energy lost, as the bodies' spread of speeds", "KE_lost = ½ Σ_{j<k} I_j I_k (ω_j − ω_k)² / ΣI + ½ I ω̄² ΔI/I₁ + ½m(v cos φ)²",
+        steps.append(Step("The energy lost, as the bodies' spread of speeds", "KE_lost = ½ Σ_{j<k} I_j I_k (ω_j − ω_k)² / ΣI + ½ I ω̄² ΔI/I₁ + ½m(v cos φ)²"
+                          + (" − ½ I_rest Σ m v_rel² / I₁ (the walkers' work)" if walk else ""),
                           "", quantity_text(lost, "J"),
                           "zero only when all already turned at one speed: the loss is the energy of their motion relative to each other "
                           "(with what moving a particle outward takes, and any motion straight at the axis, which the axle stops)"))
@@ -276,10 +301,14 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
     what = []
     if couple_rows:
         what.append("bodies that lock together")
-    if stick:
-        what.append("a particle that sticks" if len(stick) == 1 else "particles that stick")
-    if ride:
-        what.append("a particle riding on the body" if len(ride) == 1 else "particles riding on the body")
+    stick_only = [p for _, p in stick if p.speed_relative is None]
+    ride_only = [p for _, p in ride if p.speed_relative is None]
+    if stick_only:
+        what.append("a particle that sticks" if len(stick_only) == 1 else "particles that stick")
+    if walk:
+        what.append("a particle moving along the body" if len(walk) == 1 else "particles moving along the body")
+    if ride_only:
+        what.append("a particle riding on the body" if len(ride_only) == 1 else "particles riding on the body")
     if leave:
         what.append("a particle that leaves" if len(leave) == 1 else "particles that leave")
     if bounce:
@@ -288,3 +317,26 @@ def solve_meeting(inertia: float, omega0: float, particles: Sequence[Particle], 
         put_momentum(results, steps, notes, centre, particles, omega0, omega1, after, {row[0]: row[3] for row in rows})
     model = "no external torque about the axis: L conserved; " + ", ".join(what)
     return Report("impulse", model, "closed form", results, steps, notes, {}, tables)
+
+
+def _walkers_work(walk, rest: float, i_after: float, rho_of) -> float:
+    """The energy the walkers' own legs (the trains' motors) add: Σ ½ m v_rel² − (Σ m ρ v_rel)²/(2I₁),
+    as ½ [I_rest Σ m v_rel² + Σ_{i<j} m_i m_j (v_i ρ_j − v_j ρ_i)²] / I₁ (Lagrange's identity; I_rest = I₁ − Σ m ρ²
+    of the walkers), every term ≥ 0, no difference of near-equal energies."""
+    if not walk:
+        return 0.0
+    pairs = [(p.mass, rho_of(p), p.speed_relative) for _, p in walk]
+    cross = math.fsum(m_i * m_j * (v_i * r_j - v_j * r_i) ** 2 for n, (m_i, r_i, v_i) in enumerate(pairs) for (m_j, r_j, v_j) in pairs[n + 1:])
+    return 0.5 * math.fsum([rest * math.fsum(m * v * v for m, _, v in pairs), cross]) / i_after
+
+
+def _walkers_speeds(walk, rest: float, i_after: float, momentum0: float, rho_of) -> dict[str, float]:
+    """Each walker's speed over the ground after, v′_k = ω₁ρ_k + v_k, with ω₁ = (L₀ − Σ m ρ v)/I₁ put in:
+    [ρ_k L₀ + v_k I_rest + Σ_{j≠k} m_j ρ_j (v_k ρ_j − ρ_k v_j)] / I₁, which keeps its digits where the
+    walker barely moves over the ground (a heavy train on a light wheel)."""
+    speeds = {}
+    for name, p in walk:
+        r, v = rho_of(p), p.speed_relative
+        others = (q for other, q in walk if other != name)
+        speeds[name] = math.fsum([r * momentum0, v * rest, *(q.mass * rho_of(q) * (v * rho_of(q) - r * q.speed_relative) for q in others)]) / i_after
+    return speeds

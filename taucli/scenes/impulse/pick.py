@@ -15,6 +15,7 @@ from taucli.scenes.impulse.braked import braked_kinematics, solve_braked
 from taucli.scenes.impulse.changing_inertia import solve_changing_inertia
 from taucli.scenes.impulse.clutch import solve_clutch
 from taucli.scenes.impulse.meeting import solve_meeting
+from taucli.scenes.impulse.momentum import solve_momentum
 from taucli.scenes.impulse.point import point_after
 from taucli.scenes.impulse.sampled import solve_profile
 from taucli.scenes.inertia import body, body_notes, part_inertia
@@ -25,6 +26,9 @@ def impulse(
     *,
     omega0: float | None = None,
     omega1: float | None = None,
+    momentum0: float | None = None,
+    momentum1: float | None = None,
+    impulse: float | None = None,
     torque: float | None = None,
     force: float | None = None,
     lever: float | None = None,
@@ -59,8 +63,9 @@ def impulse(
     if part_after:
         inertia_final, after_steps = body_after(part_after, inertia_final, body_options)
         change = inertia_change(part_after, body_options)
+    momenta = {"momentum0": momentum0, "momentum1": momentum1, "impulse": impulse}
     report = _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
-                      at, brake, face, band, g, body_options, change)
+                      at, brake, face, band, g, body_options, change, momenta)
     said = body_notes(body_options) + (body_notes({**body_options, "part": tuple(part_after)}) if part_after else [])
     said += [note for c in couple if c.part is not None for note in part_inertia(c.part).notes]  # a body met, by its shape
     report.notes[:0] = [note for note in dict.fromkeys(said) if note not in report.notes]  # what was assumed of a body, first (#42 item 3)
@@ -68,12 +73,13 @@ def impulse(
 
 
 def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
-             at, brake, face, band, g, body_options: dict, change: float | None = None) -> Report:
+             at, brake, face, band, g, body_options: dict, change: float | None = None, momenta: dict | None = None) -> Report:
     """The model by what is given (see ``impulse``)."""
+    momenta = {name: value for name, value in (momenta or {}).items() if value is not None}
     if at is not None:
         # the run without --at (its ΔI from the parts that changed, where --part-after gave them), then the point
         report = with_period(_impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method,
-                                      particle, couple, None, brake, face, band, g, body_options, change))
+                                      particle, couple, None, brake, face, band, g, body_options, change, momenta))
         given = {"omega0": omega0, "omega1": omega1, "torque": _with_push(torque, force, lever, push_angle)[0], "duration": duration, "inertia": _body(body_options)[0]}
         if brake or face or band:  # friction acts too: α and the angle from the braked motion (it may stop, or turn back)
             w0 = report.inputs["omega0"].value if "omega0" in report.inputs else omega0
@@ -84,6 +90,17 @@ def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia
     inertia, inertia_steps = _body(body_options)
     torque, formed = _with_push(torque, force, lever, push_angle)
     inertia_steps = (*inertia_steps, *formed)
+    if momenta:  # L₀, L₁ or J given as such: ΔL = J = τΔt, L = Iω
+        others = {"brake": brake or None, "face": face or None, "band": band or None, "particle": particle or None, "couple": couple or None,
+                  "inertia_final": inertia_final, "torque_profile": torque_profile, "g": g}
+        for name, value in others.items():
+            if value is not None:
+                raise InputError(name, f"does not combine with {{{next(iter(momenta))}}}: an angular momentum or impulse given as such is for "
+                                 "one body and a torque (ΔL = J = τΔt)", example="{momentum0} '2.4kg*m^2/s' {momentum1} '3.6kg*m^2/s' {duration} 4s")
+        if method != "auto":
+            raise InputError("method", "applies to {torque_profile} (trapezoid or simpson)")
+        return solve_momentum(inertia, omega0, omega1, torque, duration, momenta.get("momentum0"), momenta.get("momentum1"), momenta.get("impulse"),
+                              inertia_steps=inertia_steps)
     if brake or face or band:
         _check_braked(method, g, face, inertia, omega1, torque, duration,
                       {"inertia_final": inertia_final, "torque_profile": torque_profile, "particle": particle or None, "couple": couple or None})
