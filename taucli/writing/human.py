@@ -17,7 +17,7 @@ from dataclasses import replace
 from taucli.core.written import DIGITS, printable, shown as written_shown
 from taucli.quantities.measurement import with_uncertainty
 from taucli.writing.display import equation_text, minus_signs, wrap_expression
-from taucli.writing.report import Report, Step, Table, Value, pretty_unit
+from taucli.writing.report import Report, Step, Table, pretty_unit
 
 # The widths charts and tables are drawn at, whatever COLUMNS or the terminal says: COLUMNS=100000
 # took 5 s and 434 MB for one chart, and 10**7 was killed for memory.
@@ -136,7 +136,7 @@ def printable_report(report: Report, steps: bool = True) -> Report:
 
     return replace(
         report, scene=p(report.scene), model=p(report.model), method=p(report.method), notes=[p(note) for note in report.notes],
-        results={p(name): Value(p(v.value), p(v.unit), p(v.label)) for name, v in report.results.items()},
+        results={p(name): v._replace(value=p(v.value), unit=p(v.unit), label=p(v.label)) for name, v in report.results.items()},  # its class kept (NotApplicable)
         steps=[Step(*map(p, (s.title, s.equation, s.numbers, s.result, s.why))) for s in report.steps] if steps else report.steps,
         tables={p(name): Table(tuple((key, p(unit), p(heading)) for key, unit, heading in table.columns), tuple(tuple(map(p, row)) for row in table.rows))
                 for name, table in report.tables.items()},
