@@ -83,6 +83,7 @@ COMMAND = Command(
         Result("omega", "rad/s", "angular velocity…", needs=("time", "until_omega", "until_angle")),
         Result("theta", "rad", "net angle turned…", needs=("time", "until_omega", "until_angle")),
         Result("revs", "rev", "net revolutions…", needs=("time", "until_omega", "until_angle")),
+        Result("L", "kg*m**2/s", "angular momentum Iω…", needs=("time", "until_omega", "until_angle")),
         Result("theta_total", "rad", "total angle turned, both ways,…", needs=TURNS_BACK, example=TURNS_BACK_EXAMPLE),
         Result("revs_total", "rev", "total revolutions, both ways,…", needs=TURNS_BACK, example=TURNS_BACK_EXAMPLE),
         Result("t_until", "s", "time to reach…", needs=("until_omega", "until_angle"), example="{until_omega} 100rpm"),

@@ -43,3 +43,17 @@ def with_revs_until(results) -> None:
         results[key] = value
         if key == "theta_until":
             results.put("revs_until", None if value.value is None else value.value / (2 * math.pi), value.label.removeprefix("angle turned until"))
+
+
+def with_momentum(results, inertia: float | None) -> None:
+    """L = Iω beside ω at the target (#48 item 6: at t, at an angle, at a speed), where the body's I
+    is known (no L for kinematics alone)."""
+    found = results.get("omega") if hasattr(results, "put") else None
+    if found is None or inertia is None or "L" in results:
+        return
+    after = list(results.items())
+    results.clear()
+    for key, value in after:
+        results[key] = value
+        if key == "omega":
+            results.put("L", None if value.value is None else inertia * value.value, value.label.removeprefix("angular velocity"))
