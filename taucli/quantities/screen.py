@@ -90,6 +90,8 @@ def screen(text: str, option: str, kind: Kind) -> str:
         raise refuse(f"longer than {MAX_TEXT_LENGTH} characters")
     if "," in cleaned:
         raise refuse("a comma (write decimals with a point: 4.5 kg)")
+    if ".." in cleaned:  # 0.5..4kg read on would be 0.5 × .4 kg: a range is an option's sweep, split before any value is read
+        raise refuse("a range FROM..TO, which only an option on the command line takes (a sweep); give one value here")
     if not _ALLOWED.fullmatch(cleaned):
         bad = next(ch for ch in cleaned if not _ALLOWED.fullmatch(ch))
         raise refuse(f"the character {bad!r} is not part of a quantity")
