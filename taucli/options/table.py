@@ -241,8 +241,12 @@ class Command:
         the result's own example, else each option's (or its kind's) example value, quoted for the
         shell, leaving out the options ``given`` holds already; None where an option of it has no
         example value."""
-        if result.example is not None or not result.needs:
-            return result.example
+        if result.example is not None:  # the way's options already given left out ("--length 2m --radius 0.1m" beside --length: "--radius 0.1m"); a setting it makes kept
+            way = set(result.alternatives[0]) if result.needs else set()
+            kept = [m[0] for m in _PLACED.finditer(result.example) if not (m[1] in way and holds(given, m[1]))]
+            return " ".join(kept) if kept else result.example
+        if not result.needs:
+            return None
         typed = []
         for name in result.alternatives[0]:
             option = self.option(name)
@@ -293,6 +297,8 @@ class Results(dict):
             self.put(key, None)
             self[key] = NotApplicable(*self[key])
 
+
+_PLACED = re.compile(r"""\{([a-z][a-z0-9_]*)\}(?: (?!\{)(?:'[^']*'|"[^"]*"|\S+))?""")  # "{name} value" (a flag: "{name}") in an example
 
 FILLED = "…"  # where a result's label takes the part its solver fills in
 _PLAIN = re.compile(r"[A-Za-z0-9_.,:/+@%-][A-Za-z0-9_.,:/+=@%-]*")  # a word every shell (bash, zsh, fish) takes as it is (zsh expands a leading =)

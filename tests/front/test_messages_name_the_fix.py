@@ -311,3 +311,12 @@ def test_errors_name_parameters_as_the_surface_spells_them(command):
         except taucli.InputError as err:
             bare += [(str(err), name) for name in _parameters_named_bare(err, command)]
     assert not bare, bare
+
+
+def test_a_result_s_own_example_leaves_out_what_is_given():
+    """rolling's omega: its example "--length 2m --radius 0.1m" beside a --length typed already was
+    "--length is given twice" when pasted (a new user's trial); it is "--radius 0.1m" there."""
+    refused = run_taucli("rolling", "sphere", "--angle", "30deg", "--length", "2m", "--get", "omega")
+    assert_usage_error(refused, "(e.g. --radius 0.1m)")
+    made = run_taucli("rolling", "sphere", "--angle", "30deg", "--length", "2m", "--radius", "0.1m", "--get", "omega")
+    assert made.code == 0 and float(made.out) > 0, made
