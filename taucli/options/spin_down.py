@@ -81,6 +81,7 @@ COMMAND = Command(
         Result("t_until", "s", "time to reach…", needs=("until_omega", "until_angle")),
         Result("theta_until", "rad", "angle turned until…", needs=("until_omega",)),
         Result("revs_until", "rev", "revolutions until…", needs=("until_omega",)),
+        Result("omega_mean", "rad/s", "mean angular velocity θ/t…"),
         Result("alpha", "rad/s**2", "angular acceleration (constant)"),
         Result("omega0", "rad/s", "initial angular velocity…"),
         Result("torque_net", "N*m", "net torque…"),
