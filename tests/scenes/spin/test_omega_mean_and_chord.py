@@ -114,5 +114,18 @@ def test_mean_speed_at_constant_alpha_is_the_net_angle_over_the_time(omega0, alp
 def test_the_mean_speed_of_a_run_without_an_end_is_null_and_says_why():
     report = taucli.spin_down(inertia=1, omega0="10 rad/s", viscous=0.5)
     assert report.results["omega_mean"].value is None
-    assert any(note.startswith("omega_mean:") and "give time for one" in note for note in report.notes)  # as Python spells it
+    assert any(note.startswith("omega_mean:") and "time gives one" in note for note in report.notes)  # as Python spells it
     assert math.isclose(taucli.spin_down(inertia=1, omega0="10 rad/s", viscous=0.5, time=0).results["omega_mean"].value, 10)
+
+
+def test_at_constant_alpha_the_mean_is_half_the_first_and_last_speeds_and_keeps_no_rounding():
+    """A wheel slowing at constant α to its stop turns at ω₀/2 on average, whatever the friction:
+    an uncertain friction leaves omega_mean exact (θ_stop/t_stop's rounding, moved by the
+    propagation's differences, had read as a dependence: 15.000000000000 ± 0.000000000005).
+    Held at rest by static friction after its stop, it is θ_stop/t instead."""
+    line = run_taucli("spin-down", "--shape", "disc", "--mass", "5kg", "--radius", "0.2m", "--omega0", "30rad/s", "--friction", "0.3+/-0.006 N*m", "--json")
+    assert line.code == 0, line.err
+    mean = line.json()["results"]["omega_mean"]
+    assert mean["value"] == 15.0 and mean["uncertainty"] == 0
+    held = taucli.spin_down(shape="disc", mass="5 kg", radius="0.2 m", omega0="30 rad/s", friction="0.3 N*m", time="20 s").results
+    assert relative_error(held["omega_mean"].value, mpmath.mpf(150) / 20) < 1e-15  # θ_stop = 150 rad, then at rest
