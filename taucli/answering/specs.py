@@ -45,6 +45,7 @@ PART_FIELDS = {  # key: (kind, sign), as parse_part_spec reads each
     "inertia": ("moment of inertia", "positive"),
     "gyration": ("length", "positive"),
     "density": ("density", "positive"),
+    "angle": ("angle", "any"),
 }
 
 
@@ -59,7 +60,7 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
     example = '{part} "point mass=100g offset=20cm"'
     if not spec.strip():
         raise InputError(source, "expected a shape then key=value pairs", example=example, got=repr(spec))
-    known = {"mass", "axis", "offset", "inertia", "gyration", "density", *PART_DIMENSIONS}
+    known = {"mass", "axis", "offset", "inertia", "gyration", "density", "angle", *PART_DIMENSIONS}
     shape, fields = _spec_fields(spec, source, known, example, shape_word=True)  # the one reader of every spec: a key twice is refused
     shape = shape or ""
     given_inertia = "inertia" in fields or "gyration" in fields
@@ -83,10 +84,11 @@ def parse_part_spec(spec: str, number: int, inputs: Inputs, *, signed_offset: bo
     mass = read_field("mass") if "mass" in fields else None
     inertia = read_field("inertia") if "inertia" in fields else None
     gyration = read_field("gyration") if "gyration" in fields else None
+    angle = read_field("angle") if "angle" in fields else None
     density, per = _read_density(source, fields["density"], inputs, f"{name}{number}_density") if "density" in fields else (None, "kg/m**3")
     if density is not None:  # its unit (per volume, area or length) known only now
         inputs.origins[f"{name}{number}_density"] = Origin(name, index, "density", f"{source} density=", per, "positive")
-    return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density, per)
+    return Part(shape, mass, dims, fields.get("axis"), offset, source, inertia, gyration, density, per, angle)
 
 
 _PER = (("density", "kg/m**3"), ("areal density", "kg/m**2"), ("linear density", "kg/m"))

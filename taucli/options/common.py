@@ -137,7 +137,7 @@ ANSWER = (
 
 def point_option(what: str) -> Option:
     """--at r (#24): a point at this radius of the turning body (``what`` says which body and when)."""
-    return Option("at", "length", f"A point at this radius {what}: its speed v_t, accelerations a_t, a_c, a_total, a_angle and arc s, "
+    return Option("at", "length", f"A point at this radius {what}: its speed v_t, accelerations a_t, a_c, a_total, a_angle, arc s and chord (straight from its start), "
                   "e.g. 0.5m, or rim (the body's radius; taken when a point's result is asked for with no --at).", panel=MOTION, words=("rim",))
 
 
@@ -148,6 +148,7 @@ POINT_RESULTS = (  # taucli.scenes.point
     Result("a_total", "m/s**2", "total acceleration…"),
     Result("a_angle", "rad", "angle of a from the radius…"),
     Result("s", "m", "arc travelled…"),
+    Result("chord", "m", "distance in a straight line from its start (net angle)…"),
     Result("v_t0", "m/s", "speed of the point at the start"),
     Result("a_c0", "m/s**2", "centripetal acceleration at the start"),
     Result("a_total0", "m/s**2", "total acceleration at the start"),

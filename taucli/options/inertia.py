@@ -1,5 +1,7 @@
 """taucli inertia: the moment of inertia of a shape, shifted, or of a body of several parts."""
 
+from dataclasses import replace
+
 from taucli.options.common import ANSWER, AXIS, BODY, DENSITY, DIMENSIONS, GRAVITY_FOR_WEIGHTS, GYRATION, MASS, OFFSET, PARTS, SHAPE_WORDS
 from taucli.options.table import CHOICE, Command, Option, Result
 from taucli.core.names import SHAPE_NAMES
@@ -16,9 +18,10 @@ COMMAND = Command(
         *DIMENSIONS,
         AXIS,
         OFFSET,
-        PARTS,
-        Option("body_offset", "length", "Distance to move the whole body, its parts centred on the axis, to a parallel axis: "
-               "I = I_cm + Md² on the total mass (--offset moves the shape alone).", sign="nonnegative", panel=BODY),
+        replace(PARTS, help=PARTS.help.replace(" (repeatable)", "; angle= where its centre lies round the axis, for --body-offset (repeatable)")),
+        Option("body_offset", "length", "Distance from the body's centre of mass to the parallel axis it turns about: I = I_cm + Md² on the "
+               "total mass, I_cm from the parts where they lie (two or more off the axis: each with angle=; --offset moves the shape alone).",
+               sign="nonnegative", panel=BODY),
         GRAVITY_FOR_WEIGHTS,
     ),
     results=(

@@ -89,6 +89,7 @@ COMMAND = Command(
         Result("t_until", "s", "time to reach…", needs=("until_omega", "until_angle"), example="{until_omega} 100rpm"),
         Result("theta_until", "rad", "angle turned until…", needs=("until_omega",), example="{until_omega} 100rpm"),
         Result("revs_until", "rev", "revolutions until…", needs=("until_omega",), example="{until_omega} 100rpm"),
+        Result("omega_mean", "rad/s", "mean angular velocity θ/t…"),
         Result("alpha", "rad/s**2", "angular acceleration (constant)", needs=("alpha", "rim_accel", *TO_A_TARGET)),
         Result("omega0", "rad/s", "initial angular velocity…", needs=("rim_speed", "ke0")),
         Result("torque_net", "N*m", "net torque…", needs=("alpha", *TO_A_TARGET)),

@@ -29,6 +29,7 @@ class Part:
     gyration: float | None = None  # its radius of gyration k (I = Mk²)
     density: float | None = None  # its mass from its shape's volume (or area, or length: density_unit)
     density_unit: str = "kg/m**3"  # kg/m**2 for a plate's or disc's mass per area, kg/m for a rod's or ring's per length
+    angle: float | None = None  # where its centre lies round the axis (inertia --body-offset: the body's centre of mass)
 
     def option(self, name: str) -> str:
         flag = name.replace("_", "-")

@@ -17,6 +17,7 @@ from taucli.core.errors import InputError, Unused
 from taucli.options.inertia import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text
 from taucli.scenes.given import Part
+from taucli.scenes.moved import moved
 from taucli.scenes.shapes import AREAS, LENGTHS, SHAPES, VOLUMES, Axis, Shape, fill, lookup_shape, thin_notes, unused
 from taucli.options.table import Results
 
@@ -112,14 +113,18 @@ def _mass_from_density(part: Part, shape: Shape) -> tuple[Part, Step]:
     return replace(part, mass=mass, density=None), step
 
 
-def part_inertia(part: Part) -> PartInertia:
-    """I of one part about the rotation axis: its shape's closed form, then any parallel shift."""
+def part_inertia(part: Part, placed: bool = False) -> PartInertia:
+    """I of one part about the rotation axis: its shape's closed form, then any parallel shift.
+    ``placed``: the scene places parts round the axis (angle=: inertia's --body-offset)."""
+    if part.angle is not None and not placed:
+        raise InputError(part.option("angle"), "places a part round the axis for taucli inertia --body-offset (it finds the body's centre of mass); "
+                         "about the axis only a part's distance counts: leave it out", example=part.example("offset", "0.2m"))
     if part.inertia is not None or part.gyration is not None:
         return _given_inertia(part)
     density_step = None
     if part.density is not None:
         part, density_step = _mass_from_density(part, lookup_shape(part.shape, f"{part.source} shape".strip() if part.source else "SHAPE"))
-        found = part_inertia(part)
+        found = part_inertia(part, placed)
         return PartInertia(found.part, found.shape, found.axis, found.inertia_centre, found.inertia, (density_step, *found.steps), found.offset)
     if part.mass is None:
         raise InputError(part.option("mass"), "is needed (or density=, inertia=, gyration=)", example=part.example("mass", "1kg"))
@@ -215,9 +220,10 @@ def describe_part(result: PartInertia) -> str:
     return text
 
 
-def body_inertia(parts: Sequence[Part]) -> BodyInertia:
-    """I of a body of one or more parts about one axis: I = Σ I_i (moments about one axis add)."""
-    results = tuple(part_inertia(part) for part in parts)
+def body_inertia(parts: Sequence[Part], placed: bool = False) -> BodyInertia:
+    """I of a body of one or more parts about one axis: I = Σ I_i (moments about one axis add).
+    ``placed``: its parts may say where they lie round the axis (angle=)."""
+    results = tuple(part_inertia(part, placed) for part in parts)
     mass = None if any(r.part.mass is None for r in results) else math.fsum(r.part.mass for r in results)
     inertia = math.fsum(r.inertia for r in results)
     # The bounds of a typed --inertia hold for one computed from a shape too.
@@ -260,11 +266,11 @@ def _subscript(n: int) -> str:
 
 def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bool = False) -> Report:
     """The inertia scene: I about the axis, the radius of gyration k = √(I/M), I_cm when shifted;
-    with ``body_offset`` d the whole body, built about an axis through its centre of mass, moved
-    to a parallel axis d away: I = I_cm + Md²."""
-    body = built = body_inertia(parts)
+    with ``body_offset`` d the whole body moved to a parallel axis d from its centre of mass:
+    I = I_cm + Md², I_cm about the body's centre of mass (taucli.scenes.moved)."""
+    body = built = body_inertia(parts, placed=True)
     if body_offset is not None:
-        body = _moved(built, body_offset)
+        body, about_cm = moved(built, body_offset)
     gyration = math.sqrt(body.inertia / body.mass) if body.mass else None
     notes = list(body.notes)
     if body.mass is None:  # (#48 item 2: a part of I alone was counted as massless)
@@ -275,7 +281,7 @@ def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bo
     results.put("k", gyration)
     single = body.parts[0] if len(body.parts) == 1 else None
     if body_offset is not None:
-        results.put("I_cm", math.fsum(r.inertia for r in body.parts))
+        results.put("I_cm", about_cm)
     elif single is not None and single.shape.name != "point" and single.part.offset is not None:
         results.put("I_cm", single.inertia_centre)
     if single is None or show_mass:
@@ -286,29 +292,6 @@ def solve(parts: Sequence[Part], body_offset: float | None = None, show_mass: bo
                           quantity_text(gyration, "m"), "the distance from the axis at which the whole mass, gathered in a ring, would have the same I"))
     tables = {} if single is not None else {"parts": parts_table(built)}  # each part's share of I about the axis it was built on
     return Report("inertia", body.description, "closed form", results, steps, notes, {}, tables)
-
-
-def _moved(body: BodyInertia, distance: float) -> BodyInertia:
-    """The whole body moved to a parallel axis ``distance`` away: I = I_cm + Md², M the total mass.
-    Its axis must pass through its centre of mass, which distances alone show only for parts centred
-    on it (offset 0: not a point off the axis, a part moved by offset=, a rod about its end)."""
-    for number, found in enumerate(body.parts, start=1):
-        if found.offset:
-            where = "the shape" if number == 1 else f"{{part}} {number - 1}"
-            raise InputError("body_offset", f"needs every part centred on the axis, and {where} is {fmt(found.offset)} m off it: the parallel-axis "
-                             "theorem moves a body from an axis through its centre of mass, which distances alone do not give",
-                             example='disc {mass} 20kg {radius} 0.3m {part} "ring mass=5kg radius=0.3m" {body_offset} 0.5m')
-        if found.part.mass is None:
-            raise InputError("body_offset", "needs the mass of every part (the parallel-axis theorem takes the total mass)", example='{part} "inertia=0.2kg*m^2 mass=3kg"')
-    moved = body.inertia + body.mass * distance**2
-    check_bounds(moved, "moment of inertia", "{body_offset}", got=f"I = {moved:g} kg*m**2")
-    step = Step("Move the whole body (parallel-axis theorem)", "I = I_cm + Md²",
-                f"{quantity_text(body.inertia, 'kg*m**2')} + {quantity_text(body.mass, 'kg')} × ({quantity_text(distance, 'm')})²",
-                quantity_text(moved, "kg*m**2"),
-                "the parts are centred on the axis they were built about, so it passes through the body's centre of mass; "
-                "a parallel axis d away adds the whole mass at d")
-    return BodyInertia(moved, body.mass, body.parts, (*body.steps, step), f"{body.description}, the whole shifted {fmt(distance)} m (parallel-axis theorem)",
-                       body.notes)
 
 
 def parts_table(body: BodyInertia) -> Table:

@@ -1,10 +1,14 @@
 """A point at radius r on a body turning about a fixed axis (#24): how fast it moves, how it
 accelerates (along its path and toward the axis) and how far it has travelled.
 
-    v = ωr,   a_t = αr,   a_c = ω²r,   a = √(a_t² + a_c²),   φ = atan2(a_t, a_c),   s = rθ
+    v = ωr,   a_t = αr,   a_c = ω²r,   a = √(a_t² + a_c²),   φ = atan2(a_t, a_c),   s = rθ,
+    chord = 2r·|sin(Δθ/2)|
 
 a_t is taken along the motion (negative while the body slows); φ is the angle of the total
-acceleration from the radius pointing to the axis, positive toward the motion. Every scene with
+acceleration from the radius pointing to the axis, positive toward the motion. The chord is the
+straight line from where the point started to where it is: the start, the end and the axis make
+an isosceles triangle of apex Δθ, the net angle (whole turns bring the point back; a body that
+turned back has undone part of its arc). Every scene with
 ω and α (spin-down, atwood's pulley, rolling, impulse) puts these results the same way.
 """
 
@@ -16,7 +20,7 @@ from taucli.core.errors import InputError
 from taucli.writing.report import Step, quantity_text, term
 from taucli.options.table import Results
 
-KEYS = ("v_t", "a_t", "a_c", "a_total", "a_angle", "s")
+KEYS = ("v_t", "a_t", "a_c", "a_total", "a_angle", "s", "chord")
 RIM = "rim"
 
 
@@ -75,12 +79,20 @@ def put_point(results: Results, r: float, omega: float | None, alpha: float | No
     results.put("a_c", a_c, when)
     results.put("a_total", total, when)
     results.put("a_angle", angle, when)
-    results.put("s", arc, " by then" if when != " at the start" else " at the start")
+    since = " by then" if when != " at the start" else " at the start"
+    results.put("s", arc, since)
+    results.put("chord", None if theta is None else chord(r, theta), since)
     if alpha is None:
         notes.append("a_t, a_total, a_angle: α is not defined at this instant")
     elif angle is None:
         notes.append("a_angle: the point has no acceleration at this instant, so no direction")
     return point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when, arc)
+
+
+def chord(r: float, theta: float) -> float:
+    """The straight line from the point's start to its place after the net angle θ: 2r·|sin(θ/2)|
+    (θ/2 is exact in binary, and sin keeps its digits for θ of many turns)."""
+    return 2 * r * abs(math.sin(theta / 2))
 
 
 def put_start(results: Results, r: float, omega0: float, alpha0: float | None, string: tuple[float, float] | None = None) -> None:
@@ -114,4 +126,8 @@ def point_steps(r, omega, alpha, theta, v, a_t, a_c, total, angle, when, arc=Non
     if theta:
         steps.append(Step("Arc the point has travelled", "s = rθ", f"{radius} × {term(theta, 'rad')}", quantity_text(r * theta if arc is None else arc, "m"),
                           "an arc is its radius times the angle it spans (the string a drum winds, the tread a tyre moves)"))
+        steps.append(Step("Straight-line distance from the start (chord)", "chord = 2r·|sin(Δθ/2)|",
+                          f"2 × {radius} × |sin({term(theta, 'rad')} / 2)|", quantity_text(chord(r, theta), "m"),
+                          "the start, the end and the axis make an isosceles triangle of apex Δθ, the net angle: "
+                          "whole turns bring the point back to where it started"))
     return steps

@@ -49,9 +49,12 @@ def test_a_result_that_needs_the_mass_is_refused_when_asked_for_naming_mass():
 
 
 def test_the_mass_is_still_required_where_every_result_depends_on_it():
-    # a torque on a disc of unknown mass: no α, no time to stop
-    run = run_taucli("spin-down", "--shape", "disc", "--radius", "0.2m", "--omega0", "30rad/s", "--torque", "-2N*m")
+    # a torque on a disc of unknown mass: no α, no ω or θ at a time (#46: to the stop its mean
+    # speed ω₀/2 does not depend on the mass, so without --time that one result is answered)
+    run = run_taucli("spin-down", "--shape", "disc", "--radius", "0.2m", "--omega0", "30rad/s", "--torque", "-2N*m", "--time", "2s")
     assert_usage_error(run, "--mass")
+    stop = run_taucli("spin-down", "--shape", "disc", "--radius", "0.2m", "--omega0", "30rad/s", "--torque", "-2N*m", "--json").json()
+    assert stop["results"]["omega_mean"]["value"] == 15 and stop["results"]["t_stop"]["value"] is None
 
 
 def test_a_plates_width_is_not_needed_about_the_axis_along_its_width():

@@ -9,6 +9,8 @@ With the body's angular velocity ω, acceleration α and angle turned θ:
     a_total = √(a_t² + a_c²)
     a_angle = atan2(a_t, a_c)        (from the radius towards the motion)
     s = r θ                          (signed arc)
+    chord = |r(cos θ, sin θ) − r(1, 0)| (straight from where the point started to where it is: the
+                                      net angle θ decides it, whole turns drop out)
 
 and the motions these are taken on:
 
@@ -40,6 +42,20 @@ def point(omega, alpha, r, theta=None):
             out["s"] = r * mpf(theta)
     with mp.workdps(DPS):
         return {k: +v for k, v in out.items()}
+
+
+def chord(r, theta):
+    """The straight-line distance from the point's start, r(1, 0), to its place after turning θ
+    about the axis, r(cos θ, sin θ): Pythagoras on the two positions, at 60 digits (θ of many
+    turns loses none of them: θ is read exactly and mpmath reduces it; a small θ, where cos θ − 1
+    cancels, gets twice its digits back)."""
+    size = abs(mpf(theta))
+    extra = 0 if size == 0 else int(abs(mpmath.log10(size))) * (2 if size < 1 else 1)
+    with mp.workdps(DPS + 10 + extra):
+        r, theta = mpf(r), mpf(theta)
+        out = r * mpmath.hypot(mpmath.cos(theta) - 1, mpmath.sin(theta))
+    with mp.workdps(DPS):
+        return +out
 
 
 def constant_alpha(omega0, alpha, t):

@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import math
 
+import mpmath
+
 import taucli
 from references import DPS, mp, mpf
 from references.compare import Row, log_uniform, rad_s, value
-from references.point import atwood, constant_alpha, point, viscous_drive
+from references.point import atwood, chord, constant_alpha, point, viscous_drive
 
 CLOSED = 1e-13
 KINDS = ("torque", "torque_from_rest", "alpha", "steady", "impulse", "atwood_time", "atwood_distance")
@@ -96,8 +98,12 @@ def check_point(kw, extra):
                  Row("a_angle", value(report, "a_angle"), end["a_angle"], 2 * CLOSED * cw)]
         if "s" in end:
             rows.append(Row("s", value(report, "s"), end["s"], CLOSED * cth))
+            # the chord 2r|sin(θ/2)| carries θ's error times its condition |(θ/2)cot(θ/2)| (large near whole turns)
+            half = mpf(th) / 2
+            bend = abs(half / mpmath.tan(half)) if half else 1
+            rows.append(Row("chord", value(report, "chord"), chord(r, th), CLOSED * cth * max(1.0, float(bend))))
         rows += [Row("v_t0", value(report, "v_t0"), first["v_t"], CLOSED), Row("a_c0", value(report, "a_c0"), first["a_c"], CLOSED),
                  Row("a_total0", value(report, "a_total0"), first["a_total"], CLOSED),
                  Row("a_angle0", value(report, "a_angle0"), first["a_angle"], CLOSED)]
-    return [row for row in rows if not (row.got is None and row.exact is not None and row.name in ("s",) and kind == "impulse")]
+    return [row for row in rows if not (row.got is None and row.exact is not None and row.name in ("s", "chord") and kind == "impulse")]
 

@@ -2,9 +2,10 @@
 (tests/references/point.py; the pendulum's point is in test_references_pendulum.py).
 
 v_t = |ω| r, a_t = r α along the motion (from rest: the sense α starts it in), a_c = ω² r,
-a_total, a_angle = atan2(a_t, a_c), s = r θ, on closed-form motions (constant α; a drive against
-viscous drag, α = (τ − bω₀)/I · e^{−bt/I}; the Atwood machine). Budget 1e-13, times the condition
-of ω = ω₀ + αt where that sum cancels.
+a_total, a_angle = atan2(a_t, a_c), s = r θ, and the chord |r(cos θ, sin θ) − r(1, 0)| of the net
+θ (#46 item 5), on closed-form motions (constant α; a drive against viscous drag,
+α = (τ − bω₀)/I · e^{−bt/I}; the Atwood machine). Budget 1e-13, times the condition of
+ω = ω₀ + αt where that sum cancels (and of the chord, |(θ/2)cot(θ/2)|, near whole turns).
 """
 
 from __future__ import annotations

@@ -44,10 +44,10 @@ def _point_after(report: Report, r: float, given: dict) -> Report:
         theta, when = None, " after"
     if omega0 is None or omega1 is None:
         steps += put_point(results, r, None, None, None, when, notes)
-        notes[-1] = "v_t, a_t, a_c, a_total, a_angle, s: ω before or after is not determined by what is given"
+        notes[-1] = "v_t, a_t, a_c, a_total, a_angle, s, chord: ω before or after is not determined by what is given"
     else:
         steps += put_point(results, r, omega1, alpha, theta, when, notes)
         put_start(results, r, omega0, alpha0)
         if theta is None:
-            notes.append("s: the angle turned while it changes is not followed here")
+            notes.append("s, chord: the angle turned while it changes is not followed here")
     return Report(report.scene, report.model, report.method, results, steps, notes, report.inputs, report.tables, report.trajectory)

@@ -24,6 +24,7 @@ from taucli.scenes.push import Push, drive_steps
 from taucli.scenes.spin.constant_alpha import constant_alpha_report
 from taucli.scenes.spin.targets import as_given, with_momentum, with_revs_until
 from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_contacts
+from taucli.scenes.spin.mean import with_omega_mean
 from taucli.scenes.spin.point import with_point
 from taucli.scenes.spin.power import power_report
 from taucli.scenes.spin.steps import Torques
@@ -152,6 +153,7 @@ def spin_down(
     report = assumed.applied(with_contacts(split_contacts(_with_parts(report, wheel.parts), axle, contact), contact))
     with_revs_until(report.results)
     with_momentum(report.results, wheel.inertia)
+    report = with_omega_mean(report, omega0, **targets)
     if at is None:
         return report
     r, note = rim_radius(at, wheel.rim if wheel.rim is not None else body_options.get("radius", body_options.get("outer_radius")), "a body with {radius}")
