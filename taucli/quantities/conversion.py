@@ -26,9 +26,10 @@ _ANOTHER_KIND = frozenset({WEIGHT, MASS_AS_WEIGHT, meanings.ENERGY_FOR_TORQUE, m
 
 # Kinds that share a dimension with a kind before them and are read as such only when nothing
 # else reads the text: N·m is a torque before a torsion constant (N·m/rad), kg·m² an inertia
-# before a drag coefficient (N·m·s²), mm a length before a screw's lead, Pa a pressure, N·m·s a
-# viscous coefficient before an angular momentum (the one number either way).
-_SECOND_READINGS = frozenset({"torsion constant", "lead", "drag coefficient", "stress", "angular momentum"})
+# before a drag coefficient (N·m·s²), mm a length before a screw's lead, Pa a pressure, kg·m²/s
+# and N·m·s an angular momentum before a viscous coefficient (N·m per rad/s; the one number either
+# way, but a viscous coefficient names its angle: N*m/rpm, N*m/Hz are read only as one).
+_SECOND_READINGS = frozenset({"torsion constant", "lead", "drag coefficient", "stress", "viscous coefficient"})
 
 EXAMPLE = "'3000 rpm' rad/s"
 

@@ -61,6 +61,8 @@ def test_without_a_unit_it_is_si_of_its_kind():
     assert convert_quantity("2 lbf").unit == "N"  # a force, not the mass it weighs
     assert convert_quantity("1 N*m").kind == "torque" and convert_quantity("1 J").kind == "energy"
     assert convert_quantity("5 mm").kind == "length" and convert_quantity("2 lb*ft^2").kind == "moment of inertia"
+    assert convert_quantity("2 kg*m^2/s").kind == "angular momentum"  # a new user's trial: it was called a viscous coefficient
+    assert convert_quantity("0.01 N*m/Hz").kind == "viscous coefficient"
 
 
 # The unit pairs of each kind a property draws from: every common unit of every kind.
