@@ -34,12 +34,11 @@ def with_omega_mean(report: Report, omega0: float | None, *, time: float | None,
     else:
         return report
     if theta is None or elapsed is None:
+        results.put("omega_mean", None, when)
         if when == " until it stops" and getattr(results["t_stop"], "moot", False):
-            results.put("omega_mean", None, when)
-            results.not_applicable("omega_mean")  # a spin-up: its row leaves the human views beside t_stop's (#42 item 23)
+            results.not_applicable("omega_mean")  # a spin-up: beside t_stop's rows, which its own note explains (#42 item 23)
         else:
-            results.put("omega_mean", None, when)
-        report.notes.append("omega_mean: the wheel does not stop (or reach the target), so the run has no end to average over; {time} gives one")
+            report.notes.append("omega_mean: the wheel does not stop (or reach the target), so the run has no end to average over; {time} gives one")
         return report
     start = values.get("omega0", omega0)
     mean = theta / elapsed if elapsed else start
