@@ -32,28 +32,27 @@ def as_given(report: Report, inertia: float | None, until_omega: float | None, u
     return report
 
 
+def _put_after(results, after_key: str, key: str, of, prefix: str) -> None:
+    """``key`` put just after ``after_key``, its value of(that value) (None stays None), its label's
+    part the other's label without ``prefix``: where a Results has ``after_key`` and not ``key``."""
+    found = results.get(after_key) if hasattr(results, "put") else None
+    if found is None or key in results:
+        return
+    held = list(results.items())
+    results.clear()
+    for name, value in held:
+        results[name] = value
+        if name == after_key:
+            results.put(key, None if value.value is None else of(value.value), value.label.removeprefix(prefix))
+
+
 def with_revs_until(results) -> None:
     """revs_until beside theta_until, as revs_stop is beside theta_stop (#42): in revolutions."""
-    found = results.get("theta_until") if hasattr(results, "put") else None
-    if found is None or "revs_until" in results:
-        return
-    after = list(results.items())
-    results.clear()
-    for key, value in after:
-        results[key] = value
-        if key == "theta_until":
-            results.put("revs_until", None if value.value is None else value.value / (2 * math.pi), value.label.removeprefix("angle turned until"))
+    _put_after(results, "theta_until", "revs_until", lambda theta: theta / (2 * math.pi), "angle turned until")
 
 
 def with_momentum(results, inertia: float | None) -> None:
     """L = Iω beside ω at the target (#48 item 6: at t, at an angle, at a speed), where the body's I
     is known (no L for kinematics alone)."""
-    found = results.get("omega") if hasattr(results, "put") else None
-    if found is None or inertia is None or "L" in results:
-        return
-    after = list(results.items())
-    results.clear()
-    for key, value in after:
-        results[key] = value
-        if key == "omega":
-            results.put("L", None if value.value is None else inertia * value.value, value.label.removeprefix("angular velocity"))
+    if inertia is not None:
+        _put_after(results, "omega", "L", lambda omega: inertia * omega, "angular velocity")
