@@ -4,7 +4,6 @@ work of each force over the path, and the energy balance of the scene's own moti
 
 from __future__ import annotations
 
-import math
 
 import mpmath
 import pytest
