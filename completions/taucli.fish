@@ -68,7 +68,7 @@ function __taucli_fit_names --description 'the inputs of the scene typed, after 
         case torque
             printf "$prefix%s\n" lever angle mass g force
         case gyro
-            printf "$prefix%s\n" inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle rotor.inertia rotor.spin
+            printf "$prefix%s\n" inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span cg_height track speed turn_radius wheel_inertia wheel_radius engine_inertia gear_ratio g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle rotor.inertia rotor.spin
         case drive
             printf "$prefix%s\n" motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle
         case flywheel
@@ -896,6 +896,15 @@ complete -c taucli -n '__fish_seen_subcommand_from gyro' -l lean -x -a '(__taucl
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l craft -x -a 'vehicle ship aircraft' -d 'The words for the effect: vehicle (front, rear, left, right), ship (bow, stern, port, starboard), aircraft (nose, tail, left, right) (default vehicle).'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l rotor -x -d 'Another rotor the vehicle turns with the first, e.g. "inertia=0.3kg*m^2 spin=5000rpm sense=cw-from-right" (an engine beside the road wheels; repeatable): the angular momenta add as vectors.'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l bearing-span -x -a '(__taucli_units m cm mm km in ft)' -d 'The distance between the rotor shaft\'s two bearings: each carries the couple as a force C/l.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l vehicle -x -a 'four-wheeler two-wheeler' -d 'A vehicle on a turn: four-wheeler (its wheels\' loads, the speed it overturns at) or two-wheeler (its lean), from --mass, --cg-height, --speed, --turn-radius and its spinning wheels and engine.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l cg-height -x -a '(__taucli_units m cm mm km in ft)' -d 'Height of the vehicle\'s centre of gravity above the road, e.g. 0.6m.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l track -x -a '(__taucli_units m cm mm km in ft)' -d 'A four-wheeler\'s track: the distance between its inner and outer wheels, e.g. 1.5m.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l speed -x -a '(__taucli_units m/s km/h ft/s mph)' -d 'The vehicle\'s speed round the turn, e.g. 90km/h.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l turn-radius -x -a '(__taucli_units m cm mm km in ft)' -d 'Radius of the turn, e.g. 50m.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l wheel-inertia -x -a '(__taucli_units "kg*m^2" "g*cm^2" "lb*ft^2")' -d 'Each road wheel\'s moment of inertia about its axle (with its share of the axle), e.g. \'0.8kg*m^2\'.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l wheel-radius -x -a '(__taucli_units m cm mm km in ft)' -d 'The road wheels\' radius: they spin at v/r, e.g. 0.3m.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l engine-inertia -x -a '(__taucli_units "kg*m^2" "g*cm^2" "lb*ft^2")' -d 'The engine\'s (or motors\') rotating parts, all together, about their axis across the vehicle, e.g. \'1kg*m^2\'.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l gear-ratio -x -d 'The engine\'s speed over the wheels\' (negative: the engine turns against the wheels), e.g. 4.'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l g -x -a '(__taucli_units m/s^2 ft/s^2 g0)' -d 'Gravity (default 9.80665 m/s^2).'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l json -d 'Print one strict JSON document on stdout.'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'L' -d 'spin angular momentum Iω_s'
@@ -910,7 +919,13 @@ complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'pivot_for
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'couple' -d 'gyroscopic couple'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'effect' -d 'effect of the couple on the vehicle'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'bearing_force' -d 'force on each bearing C/l'
-complete -c taucli -n '__fish_seen_subcommand_from gyro' -l to -x -a 'L= omega_p= period_p= omega_p_slow= omega_p_fast= spin_min= L_orbital= pivot_force_vertical= pivot_force_horizontal= couple= effect= bearing_force=' -d 'Show a result in this unit, e.g. --to \'I=g*cm^2\' (repeatable).'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'couple_gyro' -d 'gyroscopic couple of the wheels and engine, (nI_w + GI_e)ω_wΩ'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'couple_centrifugal' -d 'centrifugal couple mv²h/R'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'reaction_outer' -d 'load on each outer wheel'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'reaction_inner' -d 'load on each inner wheel'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'speed_overturn' -d 'speed at which the inner wheels lift (it overturns)'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l get -x -a 'lean_balance' -d 'lean from the vertical at which a two-wheeler balances on the turn'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l to -x -a 'L= omega_p= period_p= omega_p_slow= omega_p_fast= spin_min= L_orbital= pivot_force_vertical= pivot_force_horizontal= couple= effect= bearing_force= couple_gyro= couple_centrifugal= reaction_outer= reaction_inner= speed_overturn= lean_balance=' -d 'Show a result in this unit, e.g. --to \'I=g*cm^2\' (repeatable).'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l no-steps -d 'Leave out the worked steps (the human view, and --json\'s steps list).'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l batch -d 'Many scenes: read JSON lines on stdin, keys the option names (m1, pulley_mass), and write one --json document per line.'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l jsonl -d 'Like --json, but a sweep\'s documents one per line rather than one array.'
@@ -930,8 +945,14 @@ complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'pivot_force
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'couple' -d 'gyroscopic couple'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'effect' -d 'effect of the couple on the vehicle'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'bearing_force' -d 'force on each bearing C/l'
-complete -c taucli -n '__fish_seen_subcommand_from gyro' -l find -x -a 'inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle rotor.inertia rotor.spin' -d 'Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.'
-complete -c taucli -n '__fish_seen_subcommand_from gyro' -l want -x -a 'L= omega_p= period_p= omega_p_slow= omega_p_fast= spin_min= L_orbital= pivot_force_vertical= pivot_force_horizontal= couple= effect= bearing_force=' -d 'The target of --find, e.g. --want \'a=4.0m/s^2\' (may carry an uncertainty).'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'couple_gyro' -d 'gyroscopic couple of the wheels and engine, (nI_w + GI_e)ω_wΩ'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'couple_centrifugal' -d 'centrifugal couple mv²h/R'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'reaction_outer' -d 'load on each outer wheel'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'reaction_inner' -d 'load on each inner wheel'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'speed_overturn' -d 'speed at which the inner wheels lift (it overturns)'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l y -x -a 'lean_balance' -d 'lean from the vertical at which a two-wheeler balances on the turn'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l find -x -a 'inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span cg_height track speed turn_radius wheel_inertia wheel_radius engine_inertia gear_ratio g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle rotor.inertia rotor.spin' -d 'Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.'
+complete -c taucli -n '__fish_seen_subcommand_from gyro' -l want -x -a 'L= omega_p= period_p= omega_p_slow= omega_p_fast= spin_min= L_orbital= pivot_force_vertical= pivot_force_horizontal= couple= effect= bearing_force= couple_gyro= couple_centrifugal= reaction_outer= reaction_inner= speed_overturn= lean_balance=' -d 'The target of --find, e.g. --want \'a=4.0m/s^2\' (may carry an uncertainty).'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l uncertainty -d 'With --get: each result\'s standard uncertainty in a second column.'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l mc -x -d 'Check the uncertainties by Monte Carlo with N draws.'
 complete -c taucli -n '__fish_seen_subcommand_from gyro' -l no-limit -d 'Run --find or --mc however long it is estimated to take (else refused past 60 s).'
