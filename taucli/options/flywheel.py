@@ -1,11 +1,12 @@
 """taucli flywheel: the fluctuation of a flywheel's speed and energy over a cycle, and its rim."""
 
 from taucli.options.common import ANSWER, BODY_OPTIONS
-from taucli.options.table import Command, Option, Result
+from taucli.options.table import TEXT, Command, Option, Result
 
 SPEED = "Speed and its fluctuation"
 ENERGY = "Energy"
 RIM = "Rim (a flywheel whose mass is in its rim)"
+DIAGRAM = "A turning-moment diagram"
 
 COMMAND = Command(
     name="flywheel",
@@ -30,8 +31,15 @@ COMMAND = Command(
         Option("energy_per_cycle", "energy", "Energy a punch or shear takes each cycle, which the motor supplies evenly over the cycle.", panel=ENERGY),
         Option("punch_fraction", "dimensionless", "Share of the cycle during which the punch takes that energy (0 to 1): ΔE = E(1 − f).",
                sign="nonnegative", default="0", panel=ENERGY),
+        Option("loops", TEXT, "A turning-moment diagram's loops, in order: their areas in mm², + above the mean torque line and − below, "
+               'e.g. "295,-685,40,-340,960,-270" (with --scale-torque and --scale-angle): ΔE.', panel=DIAGRAM, metavar='"a1,a2,…"'),
+        Option("scale_torque", "torque", "The diagram's torque scale: the torque one mm stands for, e.g. 5N*m.", panel=DIAGRAM),
+        Option("scale_angle", "angle", "The diagram's crank-angle scale: the angle one mm stands for, e.g. 1deg.", panel=DIAGRAM),
+        Option("cycle_time", "time", "The time of one cycle, with --energy-per-cycle: the motor's power, which supplies that energy evenly.", panel=ENERGY),
         Option("rim_radius", "length", "Mean radius of the rim, taken as the radius of gyration (the arms and hub neglected): the rim's mass I/R².", panel=RIM),
         Option("rim_speed", "velocity", "Mean speed of the rim, v = ω_mean R (instead of --omega-mean; alone, the rim's mass from ΔE = mv²Cs).", panel=RIM),
+        Option("rim_speed_max", "velocity", "The rim's greatest speed in the cycle (with --rim-speed-min: the band as the rim's speeds).", panel=RIM),
+        Option("rim_speed_min", "velocity", "The rim's least speed in the cycle.", sign="nonnegative", panel=RIM),
         Option("density", "density", "Density of the rim, for its hoop stress ρv² and cross-section, e.g. '7200kg/m^3'.", panel=RIM),
         Option("allowable_stress", "stress", "The stress the rim's material may carry, against the hoop stress at the top speed, e.g. 6MPa.", panel=RIM),
     ),
@@ -49,6 +57,8 @@ COMMAND = Command(
         Result("hoop_stress", "Pa", "hoop stress in the rim at the mean speed, ρv²"),
         Result("hoop_stress_max", "Pa", "hoop stress at the top speed, ρv_max²"),
         Result("rim_area", "m**2", "cross-section of the rim, m/(2πRρ)"),
+        Result("power_motor", "W", "motor power that supplies the energy per cycle evenly, E/t", needs=("energy_per_cycle+cycle_time",),
+               example="{energy_per_cycle} 26.7kJ {punch_fraction} 0.16 {cycle_time} 3s {omega_mean} 300rpm {fluctuation} 0.1"),
         Result("stress_margin", "", "allowable stress over the hoop stress at the top speed", needs=("allowable_stress",)),
     ),
     output=ANSWER,

@@ -25,6 +25,7 @@ from taucli.core.errors import InputError
 from taucli.options.flywheel import COMMAND as TABLE
 from taucli.writing.report import Report, Step, fmt, quantity_text
 from taucli.scenes.inertia import body
+from taucli.scenes.turning_moment import LOOPS_EXAMPLE, read_loops, swing_from_loops
 from taucli.options.table import Results
 
 _EXAMPLE = "{omega_mean} 300rpm {fluctuation} 0.02 {energy_swing} 5kJ"
@@ -51,12 +52,33 @@ def flywheel(
     rim_speed: float | None = None,
     density: float | None = None,
     allowable_stress: float | None = None,
+    loops: str | None = None,
+    scale_torque: float | None = None,
+    scale_angle: float | None = None,
+    cycle_time: float | None = None,
+    rim_speed_max: float | None = None,
+    rim_speed_min: float | None = None,
     **dims: float | None,
 ) -> Report:
-    """``taucli flywheel``: the mean speed (or the band, or a rim's speed) and two of I, ΔE, Cs."""
+    """``taucli flywheel``: the mean speed (or the band, or a rim's speed) and two of I, ΔE, Cs;
+    ΔE also from a turning-moment diagram's loops (turning_moment.py)."""
     steps: list[Step] = []
     notes: list[str] = []
     results = Results(TABLE)
+    if loops is not None:
+        if energy_swing is not None or energy_per_cycle is not None:
+            raise InputError("loops", "conflicts with {energy_swing} and {energy_per_cycle}: the diagram's loops give ΔE")
+        energy_swing = swing_from_loops(read_loops(loops), scale_torque, scale_angle, steps, notes)
+    elif scale_torque is not None or scale_angle is not None:
+        raise InputError("scale_torque" if scale_torque is not None else "scale_angle", "goes with {loops}: the scales of the diagram whose loops are given",
+                         example=LOOPS_EXAMPLE)
+    if cycle_time is not None and energy_per_cycle is None:
+        raise InputError("cycle_time", "goes with {energy_per_cycle}: the motor supplies that energy over the cycle", example="{energy_per_cycle} 26.7kJ {cycle_time} 3s")
+    if (rim_speed_max is None) != (rim_speed_min is None):
+        raise InputError("rim_speed_min" if rim_speed_min is None else "rim_speed_max", "goes with {rim_speed_max}/{rim_speed_min}: the band needs both ends",
+                         example="{rim_speed_max} 30m/s {rim_speed_min} 29m/s")
+    if rim_speed_max is not None:
+        rim_speed, fluctuation = _rim_band(rim_speed_max, rim_speed_min, rim_speed, fluctuation, speed_variation, steps)
     given_body = inertia is not None or shape is not None or gyration is not None or bool(part)
     if not given_body and mass is not None and rim_radius is not None and density is not None and all(
             value is None for value in (omega_mean, omega_max, omega_min, rim_speed, offset, *dims.values())):
@@ -106,6 +128,10 @@ def flywheel(
                           "ΔE = Iω_mean²Cs read the other way"))
         if cs >= 2:
             raise InputError("energy_swing", f"is more than the flywheel holds over that speed: Cs = {fmt(cs)} would take ω_min below 0", example=_EXAMPLE)
+    if cycle_time is not None:
+        results.put("power_motor", energy_per_cycle / cycle_time)
+        steps.append(Step("The motor's power", "P = E/t", f"{quantity_text(energy_per_cycle, 'J')} / {quantity_text(cycle_time, 's')}",
+                          quantity_text(energy_per_cycle / cycle_time, "W"), "the motor supplies the energy of each cycle evenly over it; the flywheel evens out the rest"))
     results.put("cs", cs, " (ω_max − ω_min)/ω_mean")
     results.put("energy_swing", swing, ", Iω²Cs" if not rim_only else ", mv²Cs")
     if not rim_only:
@@ -185,6 +211,21 @@ def _speeds(omega_mean, omega_max, omega_min, rim_speed, rim_radius, fluctuation
                           quantity_text(mean, "rad/s"), "the rim moves at ω R"))
         return mean, cs
     return omega_mean, cs
+
+
+def _rim_band(top: float, bottom: float, rim_speed, fluctuation, speed_variation, steps) -> tuple[float, float]:
+    """The mean rim speed and Cs from the rim's band: v_mean = (v_max + v_min)/2, Cs = (v_max − v_min)/v_mean."""
+    for name, value in (("rim_speed", rim_speed), ("fluctuation", fluctuation), ("speed_variation", speed_variation)):
+        if value is not None:
+            raise InputError(name, "conflicts with the band {rim_speed_max} and {rim_speed_min}, which gives the mean rim speed and Cs")
+    if top <= bottom:
+        raise InputError("rim_speed_max", "must be above {rim_speed_min}", example="{rim_speed_max} 30m/s {rim_speed_min} 29m/s")
+    mean = (top + bottom) / 2
+    cs = (top - bottom) / mean
+    steps.append(Step("Mean rim speed and coefficient of fluctuation", "v_mean = (v_max + v_min)/2,  Cs = (v_max − v_min)/v_mean",
+                      f"({quantity_text(top, 'm/s')} + {quantity_text(bottom, 'm/s')})/2", f"{quantity_text(mean, 'm/s')}, Cs = {fmt(cs)}",
+                      "the rim's speed is ωR, so its band has the same Cs as the shaft's"))
+    return mean, cs
 
 
 def _swing(energy_swing, energy_per_cycle, punch_fraction, steps) -> float | None:
