@@ -27,6 +27,9 @@ COMMAND = Command(
         BAND_OPTION,
         GRAVITY,
         Option("viscous", "viscous coefficient", "Viscous coefficient b (torque bω), e.g. '0.01N*m*s'.", sign="nonnegative"),
+        Option("corner", "dimensionless", "The body set down spinning in a corner, its rim on the floor and the wall, with this friction "
+               "coefficient at both (the floor's friction pushing it into the wall): their friction torque, from its mass and radius, e.g. 0.3.",
+               sign="nonnegative"),
         Option("drive_slope", "viscous coefficient", "How the drive torque rises with speed, dτ/dω (a motor's line T = T₀ + sω; negative: it falls "
                "with speed), e.g. '0.05N*m*s'; with no body: the speeds where the torques balance, and whether they are stable.", sign="any"),
         Option("drag", "drag coefficient", "Drag coefficient k (torque kωⁿ), e.g. '0.001N*m*s^2'.", sign="nonnegative"),
@@ -82,6 +85,8 @@ COMMAND = Command(
         Result("theta_stop", "rad", "angle turned until it stops"),
         Result("revs_stop", "rev", "revolutions until it stops"),
         Result("omega_inf", "rad/s", "steady speed as t -> ∞"),
+        Result("normal_floor", "N", "the floor's push on the body in the corner", needs=("corner",), example="{corner} 0.3"),
+        Result("normal_wall", "N", "the wall's push on the body in the corner", needs=("corner",), example="{corner} 0.3"),
         Result("stable", None, "whether the steady speed is a stable balance (a little faster, the net torque slows it back)", needs=("viscous", "drag", "drive_slope"),
                example="{torque} '20N*m' {friction} '5N*m' {viscous} '0.1N*m*s' {drive_slope} '0.05N*m*s'"),
         Result("omega_unstable", "rad/s", "speed of an unstable balance: below it the wheel runs down, above it runs up", needs=("drive_slope",),

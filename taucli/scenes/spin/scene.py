@@ -23,6 +23,7 @@ from taucli.scenes.point import RIM, rim_radius
 from taucli.scenes.push import Push, drive_steps
 from taucli.scenes.spin.constant_alpha import constant_alpha_report
 from taucli.scenes.spin.targets import as_given, with_momentum, with_revs_until
+from taucli.scenes.spin.corner import corner_torque
 from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_contacts
 from taucli.scenes.spin.mean import with_omega_mean
 from taucli.scenes.spin.point import with_point
@@ -69,6 +70,7 @@ def spin_down(
     g: float | None = None,
     at: float | None = None,
     viscous: float | None = None,
+    corner: float | None = None,
     drive_slope: float | None = None,
     drag: float | None = None,
     drag_exponent: float | None = None,
@@ -102,8 +104,8 @@ def spin_down(
     """
     if power == 0:
         power = None  # a motor of no power is no motor
-    if g is not None and lift_mass is None and not any(plate.by_weight for plate in face or ()):
-        raise Unused("g", "is used only for the weight on a {face} with no force=, a {lift_mass}, or to read a weight given for a mass")
+    if g is not None and lift_mass is None and corner is None and not any(plate.by_weight for plate in face or ()):
+        raise Unused("g", "is used only for the weight on a {face} with no force=, a {lift_mass}, a body in a {corner}, or to read a weight given for a mass")
     front = Front()
     wheel = _wheel(body_options, rim_speed, until_arc, at, rim_accel, front.notes)
     omega0 = _initial_speed(wheel, omega0, rim_speed, ke0, front)
@@ -124,6 +126,9 @@ def spin_down(
     contact = (put_contacts(brake or (), face or (), body_options, wheel.rim, assumed, g, front.results, front.steps, front.notes, axle, band or ())
                if brake or face or band else None)
     friction = axle + contact.kinetic if contact is not None else friction
+    if corner is not None:
+        radius = body_options.get("radius", body_options.get("outer_radius")) if body_options.get("shape") is not None else wheel.rim
+        friction = (friction or 0.0) + corner_torque(body_options.get("mass"), radius, corner, assumed.gravity(g), front.results, front.steps)
     static = None if contact is None or contact.static == contact.kinetic else axle + contact.static
     torques = Torques(drive, friction or 0.0, viscous or 0.0, drag or 0.0, 2.0 if drag_exponent is None else drag_exponent, static)
     targets = {"time": time, "until_omega": until_omega, "until_angle": until_angle}
