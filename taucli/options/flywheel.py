@@ -32,8 +32,8 @@ COMMAND = Command(
         Option("punch_fraction", "dimensionless", "Share of the cycle during which the punch takes that energy (0 to 1): ΔE = E(1 − f).",
                sign="nonnegative", default="0", panel=ENERGY),
         Option("loops", TEXT, "A turning-moment diagram's loops, in order: their areas in mm², + above the mean torque line and − below, "
-               'e.g. "295,-685,40,-340,960,-270" (with --scale-torque and --scale-angle): ΔE.', panel=DIAGRAM, metavar='"a1,a2,…"'),
-        Option("scale_torque", "torque", "The diagram's torque scale: the torque one mm stands for, e.g. 5N*m.", panel=DIAGRAM),
+               'e.g. "295,-685,390" (with --scale-torque and --scale-angle): ΔE.', panel=DIAGRAM, metavar='"a1,a2,…"'),
+        Option("scale_torque", "torque", "The diagram's torque scale: the torque one mm stands for, e.g. '5N*m'.", panel=DIAGRAM),
         Option("scale_angle", "angle", "The diagram's crank-angle scale: the angle one mm stands for, e.g. 1deg.", panel=DIAGRAM),
         Option("cycle_time", "time", "The time of one cycle, with --energy-per-cycle: the motor's power, which supplies that energy evenly.", panel=ENERGY),
         Option("rim_radius", "length", "Mean radius of the rim, taken as the radius of gyration (the arms and hub neglected): the rim's mass I/R².", panel=RIM),

@@ -18,7 +18,7 @@ COMMAND = Command(
         Option("omega_bottom", "angular velocity", "Angular velocity at the bottom, where it starts (instead of --angle0 and --omega0): how far it swings.", sign="any", panel=MOTION),
         Option("from_top", FLAG, "Every angle in and out from the upward vertical, in the same sense (a toppling chimney, a falling stick; gravity alone).", panel=MOTION),
         Option("torsion", "torsion constant", "Torsion constant κ of a spring or wire (torque κθ), e.g. '0.5N*m/rad'.", sign="nonnegative"),
-        Option("pivot_friction", "torque", "A friction couple at the pivot: a constant torque against the motion (a rough axle), e.g. 4.8N*m.", sign="nonnegative"),
+        Option("pivot_friction", "torque", "A friction couple at the pivot: a constant torque against the motion (a rough axle), e.g. '4.8N*m'.", sign="nonnegative"),
         GRAVITY,
         Option("angle", "angle", "Report ω and the time to reach this angle, e.g. 0deg.", sign="any", panel=MOTION, first_reached=("t_angle", "angle0")),
         Option("time", "time", "Report θ and ω at this time, e.g. 2s.", sign="nonnegative", panel=MOTION),

@@ -20,7 +20,7 @@ import math
 from taucli.core.errors import InputError
 from taucli.writing.report import Step, fmt, quantity_text
 
-LOOPS_EXAMPLE = '{loops} "295,-685,40,-340,960,-270" {scale_torque} 5N*m {scale_angle} 1deg'
+LOOPS_EXAMPLE = "{loops} '295,-685,40,-340,960,-270' {scale_torque} '5N*m' {scale_angle} 1deg"
 
 
 def read_loops(text: str) -> list[float]:

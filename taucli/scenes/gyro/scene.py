@@ -65,21 +65,23 @@ def gyro(
     vehicle on a turn (vehicle.py)."""
     on_a_turn = {"cg_height": cg_height, "track": track, "speed": speed, "turn_radius": turn_radius, "wheel_inertia": wheel_inertia,
                  "wheel_radius": wheel_radius, "engine_inertia": engine_inertia, "gear_ratio": gear_ratio}
+    dims = {"radius": radius, "inner_radius": inner_radius, "outer_radius": outer_radius, "length": length, "width": width, "height": height, "depth": depth}
     if vehicle is not None:
         others = {"inertia": inertia, "shape": shape, "spin": spin, "precession": precession, "cm_distance": cm_distance, "torque": torque,
                   "tilt": tilt, "spin_sense": spin_sense, "turn": turn, "lean": lean, "rotor": rotor or None, "bearing_span": bearing_span,
-                  "part": part or None, "gyration": gyration}
-        for name, value in others.items():
-            if value is not None:
-                raise InputError(name, "does not apply with {vehicle}: the vehicle's wheels and engine are the rotors "
-                                 "({wheel_inertia}, {engine_inertia}), its speed and turn their rates")
+                  "part": part or None, "gyration": gyration, "axis": axis, "offset": offset, "density": density, "inertia_perp": inertia_perp,
+                  "craft": craft}
+        given_here = [name for name, value in {**others, **dims}.items() if value is not None]
+        if given_here:
+            also = ", ".join("{" + name + "}" for name in given_here[1:])
+            raise InputError(given_here[0], "does not apply with {vehicle}: the vehicle's wheels and engine are its rotors ({wheel_inertia}, "
+                             "{engine_inertia}), its speed and turn their rates" + (f"; leave out {also} too" if also else ""))
         assumed = Assumed()
         return assumed.applied(vehicle_on_a_turn(vehicle, mass, cg_height, track, wheel_inertia, wheel_radius, engine_inertia, gear_ratio,
                                                  speed, turn_radius, assumed.gravity(g)))
     for name, value in on_a_turn.items():
         if value is not None:
             raise InputError(name, "goes with {vehicle}: a vehicle on a turn", example="{vehicle} four-wheeler")
-    dims = {"radius": radius, "inner_radius": inner_radius, "outer_radius": outer_radius, "length": length, "width": width, "height": height, "depth": depth}
     given = {"spin_sense": spin_sense, "turn": turn, "lean": lean, "craft": craft, "bearing_span": bearing_span, "rotor": rotor or None,
              "cm_distance": cm_distance, "torque": torque, "inertia_perp": inertia_perp}
     if precession is None:
