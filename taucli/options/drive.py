@@ -49,6 +49,10 @@ COMMAND = Command(
                "reducer; repeat for stages in series, e.g. --ratio 5 --ratio 3 (default 1, a direct drive).", panel=TRAIN, repeatable=True),
         Option("efficiency", "dimensionless", "Efficiency η of the whole train from the motor to the load (stages, belt, screw), "
                "above 0 and at most 1.", default="1", panel=TRAIN),
+        Option("efficiency_back", "dimensionless", "Efficiency η′ of the train where the load drives the motor (lowering, braking), "
+               "above 0 and at most 1 (default --efficiency): a worm or a screw drives back with less.", panel=TRAIN),
+        Option("motor_friction", "torque", "A friction torque at the motor shaft, against the motion, that no efficiency divides "
+               "(a ball nut's, the motor's bearings), e.g. '0.05N*m'.", sign="nonnegative", panel=TRAIN),
         Option("gear_inertia", "moment of inertia", "Moment of inertia of gearing and couplings referred to the motor shaft (as a "
                "gearhead's catalogue gives it), counted with the load.", sign="nonnegative", panel=TRAIN),
         Option("load_inertia", "moment of inertia", "Moment of inertia of the rotating load about the output shaft (or give --shape "
@@ -94,7 +98,7 @@ COMMAND = Command(
         Result("total_inertia", "kg*m**2", "inertia at the motor, rotor and load"),
         Result("inertia_ratio", "", "inertia ratio, load over rotor"),
         Result("ratio_optimal", "", "ratio matching load to rotor, √(J/J_m)"),
-        Result("load_torque_motor", "N*m", "load torque at the motor, running", needs=("load_torque", "load_force")),
+        Result("load_torque_motor", "N*m", "load torque at the motor, running", needs=("load_torque", "load_force", "motor_friction")),
         Result("torque_hold", "N*m", "motor torque holding the load at rest", needs=tuple(f"{way}+incline" for way in A_MASS)),
         Result("alpha", "rad/s**2", "motor's angular acceleration…"),
         Result("torque_accel", "N*m", "motor torque while accelerating"),
@@ -107,7 +111,7 @@ COMMAND = Command(
         Result("KE", "J", "kinetic energy reached, motor and load"),
         Result("work_motor", "J", "work of the motor in the run-up"),
         Result("work_load", "J", "work against the load in the run-up"),
-        Result("work_loss", "J", "energy lost in the train in the run-up"),
+        Result("work_loss", "J", "energy lost in the run-up: the train's, and the motor shaft's friction"),
         Result("omega_top", "rad/s", "motor's top speed", needs=A_MOVE),
         Result("speed_top", "m/s", "moving mass's top speed", needs=tuple(f"accel_time+{way}" for way in A_MASS)),
         Result("t_run", "s", "time at the top speed", needs=A_MOVE),

@@ -58,11 +58,11 @@ class Piece(NamedTuple):
 
 
 def effective(train: Train, driving: bool) -> tuple[float, float]:
-    """(J_e, T_e): J_m + J_g + J/(N²η), T/(Nη) while driving; J_m + J_g + ηJ/N², ηT/N while regenerating."""
+    """(J_e, T_e): J_m + J_g + J/(N²η), T/(Nη) + τ_mf while driving; J_m + J_g + η′J/N², η′T/N + τ_mf while regenerating."""
     n2 = train.ratio * train.ratio
     if driving:
-        return train.input_inertia + train.load / (n2 * train.efficiency), train.torque / (train.ratio * train.efficiency)
-    return train.input_inertia + train.efficiency * train.load / n2, train.efficiency * train.torque / train.ratio
+        return train.input_inertia + train.load / (n2 * train.efficiency), train.torque / (train.ratio * train.efficiency) + train.motor_friction
+    return train.input_inertia + train.back * train.load / n2, train.back * train.torque / train.ratio + train.motor_friction
 
 
 def switch_torque(train: Train) -> float | None:
@@ -114,7 +114,7 @@ def reach(train: Train, parts: list[Piece], target: float) -> RunUp:
         dtheta = piece.phase.theta(dt)
         time, theta = piece.t0 + dt, piece.theta0 + dtheta
         output = train.load * (end * end - omega_a * omega_a) / (2 * train.ratio * train.ratio) + train.torque * dtheta / train.ratio
-        loss += (1 / train.efficiency - 1) * output if piece.driving else (1 - train.efficiency) * -output
+        loss += train.train_loss(output, piece.driving) + train.motor_friction * dtheta
         work += piece.load * dtheta + piece.inertia * (end * end - omega_a * omega_a) / 2
         omega_a = end
         if last:
@@ -128,10 +128,10 @@ def _overhauled(train: Train, torque: float) -> float | None:
     through the gears); None where the load stays put. Running back, the load drives the motor:
     the train passes η of the output's torque, its friction T_f now against the descent."""
     pull = train.gravity - (train.torque - train.gravity)  # T_g − T_f at the output, down the slope
-    back = train.efficiency * pull / train.ratio
-    if pull <= 0 or back <= torque:
+    back = train.back * pull / train.ratio
+    if pull <= 0 or back <= torque + train.motor_friction:
         return None
-    return (torque - back) / (train.input_inertia + train.efficiency * train.load / (train.ratio * train.ratio))
+    return (torque + train.motor_friction - back) / (train.input_inertia + train.back * train.load / (train.ratio * train.ratio))
 
 
 def run_up(train: Train, motor: Motor, target: float | None, energy: bool, results: Results, notes: list[str], steps: list[Step]) -> Trajectory | None:
@@ -188,11 +188,11 @@ def _runs_back(train: Train, motor: Motor, results: Results, notes: list[str], s
     False where gravity's pull, less what friction can hold, does not beat the motor at rest."""
     friction = train.torque - train.gravity
     down = train.gravity - friction
-    back = train.efficiency * down / train.ratio
-    if down <= 0 or back <= motor.stall:
+    back = train.back * down / train.ratio
+    if down <= 0 or back <= motor.stall + train.motor_friction:
         return False
-    inertia = train.input_inertia + train.efficiency * train.load / (train.ratio * train.ratio)
-    alpha0 = (motor.stall - back) / inertia
+    inertia = train.input_inertia + train.back * train.load / (train.ratio * train.ratio)
+    alpha0 = (motor.stall + train.motor_friction - back) / inertia
     results.put("alpha0", alpha0, ": negative, the load runs the motor backwards")
     notes.append(f"the motor cannot hold the load: it gives {quantity_text(motor.stall, 'N*m')} at rest, gravity's pull less friction asks "
                  f"{quantity_text(back, 'N*m')} at the motor, so the load runs down and turns the motor backwards")
@@ -232,7 +232,7 @@ def _law_steps(train: Train, motor: Motor, first: Piece) -> list[Step]:
     steps = [Step("Inertia and load the motor drives, through the losses" if driving else "Inertia and load, the load driving the motor",
                   f"{inertia_equation},  {load_equation}",
                   f"{quantity_text(train.input_inertia, 'kg*m**2')} + {quantity_text(train.load, 'kg*m**2')} × "
-                  + (f"1/({fmt(train.ratio)}² × {fmt(train.efficiency)})" if driving else f"{fmt(train.efficiency)}/{fmt(train.ratio)}²")
+                  + (f"1/({fmt(train.ratio)}² × {fmt(train.efficiency)})" if driving else f"{fmt(train.back)}/{fmt(train.ratio)}²")
                   + f";  T_e = {quantity_text(first.load, 'N*m')}",
                   quantity_text(first.inertia, "kg*m**2"),
                   "τ = (J_m + J_g)ω̇ + (Jω̇/N + T)/(Nη): the output's torque, inertial and load alike, passes the teeth and pays their loss"
@@ -322,7 +322,7 @@ def uniform(train: Train, alpha: float, target: float | None, energy: bool, resu
     results.put("revs_accel", theta / TWO_PI)
     if energy:
         output = train.load * target * target / (2 * train.ratio * train.ratio) + train.torque * theta / train.ratio
-        loss = (1 / train.efficiency - 1) * output if train.demand(alpha) >= 0 else (1 - train.efficiency) * -output
+        loss = train.train_loss(output, train.demand(alpha) >= 0) + train.motor_friction * theta
         put_energy(results, train, target, theta, torque * theta, loss)
     results.put("power_peak", max(torque * target, 0.0))
     steps.append(Step("Peak power, at the end of the run-up", "P = τω₁", f"{quantity_text(torque, 'N*m')} × {quantity_text(target, 'rad/s')}",

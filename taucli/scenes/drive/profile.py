@@ -80,7 +80,7 @@ def phases(train: Train, move: Move) -> list[Phase]:
     alpha_up = w / move.accel if move.accel else 0.0
     alpha_down = w / move.decel if move.decel else 0.0
     up = train.motor_torque(alpha_up)
-    run = train.passed(train.torque)
+    run = train.running
     down = train.motor_torque(-alpha_down)
     return [Phase("accelerate", up, move.accel, 0.0, up * w), Phase("run", run, move.run, run * w, run * w),
             Phase("decelerate", down, move.decel, down * w, 0.0), Phase("dwell", train.hold, move.dwell, 0.0, 0.0)]

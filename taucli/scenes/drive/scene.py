@@ -37,6 +37,8 @@ def drive(
     peak_torque: float | None = None,
     ratio: Sequence[float] = (),
     efficiency: float | None = None,
+    efficiency_back: float | None = None,
+    motor_friction: float | None = None,
     gear_inertia: float | None = None,
     load_inertia: float | None = None,
     load_mass: float | None = None,
@@ -70,6 +72,9 @@ def drive(
     if eta > 1:
         raise InputError("efficiency", "expected a number above 0 and at most 1 (the whole train's, motor to load)", example="{efficiency} 0.9",
                          got=fmt(eta))
+    if efficiency_back is not None and efficiency_back > 1:
+        raise InputError("efficiency_back", "expected a number above 0 and at most 1 (the train's where the load drives the motor)",
+                         example="{efficiency_back} 0.6", got=fmt(efficiency_back))
     moment, body_steps, parts = _load_body(load_inertia, body_options, notes)
     lever, screw = _lever(drum_radius, lead)
     linear = _linear(load_mass, lever, screw, steps)
@@ -83,12 +88,12 @@ def drive(
                          "({load_mass} with {drum_radius} or {lead}), {load_torque} or {load_force}",
                          example="{load_inertia} '0.05kg*m^2'")
     train = Train(n, eta, motor_inertia, gear_inertia or 0.0, (moment or 0.0) + linear, torque,
-                  gravity_force * lever if gravity_force else 0.0, lever)
+                  gravity_force * lever if gravity_force else 0.0, lever, efficiency_back, motor_friction or 0.0)
     steps[:0] = list(body_steps)
     _reflect(train, stages, moment or 0.0, linear, screw, results, notes, steps)
     steps.extend(force_steps)
     profile = any(value is not None for value in (accel_time, run_time, decel_time, dwell_time, distance, move_angle))
-    loaded = profile or any(value is not None for value in (load_torque, load_force, mu)) or bool(incline)
+    loaded = profile or any(value is not None for value in (load_torque, load_force, mu, motor_friction)) or bool(incline)
     _load_torque(train, load_torque, force, screw, loaded, results, steps)
 
     top, top_words = _top(until_omega, speed, train)
@@ -245,8 +250,8 @@ def _load_torque(train: Train, load_torque: float | None, force: float, screw: b
     if force:
         steps.append(drive_train.load_torque_step(load_torque or 0.0, force, train.lever, screw, train.torque))
     if loaded:
-        results.put("load_torque_motor", train.passed(train.torque))
-    if train.torque:
+        results.put("load_torque_motor", train.running)
+    if train.torque or train.motor_friction:
         steps.append(drive_train.motor_load_step(train))
     if train.gravity:
         results.put("torque_hold", train.hold)

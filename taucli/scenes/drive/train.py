@@ -14,9 +14,11 @@ and the efficiency takes its share of the power that flows through the teeth, wh
     τ_motor = (J_m + J_g)·α + T_out/(Nη)   where T_out ≥ 0: the motor drives the load
     τ_motor = (J_m + J_g)·α + η·T_out/N    where T_out < 0: the load drives the motor (regenerating)
 
-So the motor gives P_out/η while driving, and gets ηP_out back while the load drives it: the
-losses always take power, never give it. The same η serves both ways, which a worm or a screw
-does not bear out (they drive back with less, and not at all below η = 0.5).
+So the motor gives P_out/η while driving, and gets η′P_out back while the load drives it: the
+losses always take power, never give it. η′ is η unless --efficiency-back says otherwise (a worm
+or a screw drives back with less, and not at all below η = 0.5). A friction torque τ_mf at the
+motor shaft (--motor-friction: a ball-nut's, the motor's bearings) is against the motion and
+passes through no teeth, so η does not divide it: τ_motor gains +τ_mf while the load moves.
 """
 
 from __future__ import annotations
@@ -41,6 +43,17 @@ class Train:
     torque: float  # T: the load's torque at the output shaft against the motion while it moves
     gravity: float  # the part of T that gravity makes, which acts at rest too
     lever: float | None  # r (drum) or p/2π (screw): the mass's travel per radian of the output; None without one
+    efficiency_back: float | None = None  # η′ where the load drives the motor (None: η)
+    motor_friction: float = 0.0  # τ_mf at the motor shaft, against the motion
+
+    @property
+    def back(self) -> float:
+        """η′: the train's efficiency where the load drives the motor."""
+        return self.efficiency if self.efficiency_back is None else self.efficiency_back
+
+    def train_loss(self, output: float, driving: bool) -> float:
+        """The energy the teeth take of ``output`` (the work at the output shaft): (1/η − 1)W driving, (1 − η′)(−W) driven."""
+        return (1 / self.efficiency - 1) * output if driving else (1 - self.back) * -output
 
     @property
     def input_inertia(self) -> float:
@@ -58,18 +71,23 @@ class Train:
 
     def passed(self, demand: float) -> float:
         """The torque at the motor for an output torque ``demand``: T/(Nη) while the motor drives
-        the load, ηT/N while the load drives the motor."""
+        the load, η′T/N while the load drives the motor."""
         if demand >= 0:
             return demand / (self.ratio * self.efficiency)
-        return self.efficiency * demand / self.ratio
+        return self.back * demand / self.ratio
 
     def demand(self, alpha: float) -> float:
         """T_out = J·α/N + T: the torque the output shaft asks for at motor acceleration α."""
         return self.load * alpha / self.ratio + self.torque
 
     def motor_torque(self, alpha: float) -> float:
-        """τ = (J_m + J_g)α + T_out/(Nη) or ηT_out/N, with the load moving (α signed: negative slows it)."""
-        return self.input_inertia * alpha + self.passed(self.demand(alpha))
+        """τ = (J_m + J_g)α + T_out/(Nη) or η′T_out/N, + τ_mf, with the load moving (α signed: negative slows it)."""
+        return self.input_inertia * alpha + self.passed(self.demand(alpha)) + self.motor_friction
+
+    @property
+    def running(self) -> float:
+        """The motor's torque at a constant speed: the load's T passed through the teeth, and τ_mf."""
+        return self.motor_torque(0.0)
 
     @property
     def hold(self) -> float:
@@ -147,14 +165,15 @@ def load_torque_step(load_torque: float, force: float, lever: float | None, scre
 
 
 def motor_load_step(train: Train) -> Step:
-    torque = train.passed(train.torque)
+    torque = train.running
+    friction = (" + τ_mf", f" + {quantity_text(train.motor_friction, 'N*m')}") if train.motor_friction else ("", "")
     if train.torque >= 0:
-        return Step("Load torque at the motor, running at constant speed", "T_m = T/(Nη)",
-                    f"{term(train.torque, 'N*m')} / ({fmt(train.ratio)} × {fmt(train.efficiency)})", quantity_text(torque, "N*m"),
+        return Step("Load torque at the motor, running at constant speed", "T_m = T/(Nη)" + friction[0],
+                    f"{term(train.torque, 'N*m')} / ({fmt(train.ratio)} × {fmt(train.efficiency)})" + friction[1], quantity_text(torque, "N*m"),
                     "the ratio divides the torque as it multiplies the speed; the losses in the teeth come on top of it, so the motor gives T/η")
-    return Step("Load torque at the motor, running at constant speed: the load drives the motor", "T_m = ηT/N",
-                f"{fmt(train.efficiency)} × {term(train.torque, 'N*m')} / {fmt(train.ratio)}", quantity_text(torque, "N*m"),
-                "the load pushes power back through the teeth (it regenerates): the losses take their share on the way, so the motor holds back only ηT/N")
+    return Step("Load torque at the motor, running at constant speed: the load drives the motor", f"T_m = {_eta_back(train)}T/N" + friction[0],
+                f"{fmt(train.back)} × {term(train.torque, 'N*m')} / {fmt(train.ratio)}" + friction[1], quantity_text(torque, "N*m"),
+                f"the load pushes power back through the teeth (it regenerates): the losses take their share on the way, so the motor holds back only {_eta_back(train)}T/N")
 
 
 def hold_step(train: Train) -> Step:
@@ -183,14 +202,23 @@ def torque_step(title: str, train: Train, alpha: float, torque: float) -> Step:
         symbols, shown = (f"({symbols})", f"({shown})") if len(inner) > 1 else (symbols, shown)
         n = f"{fmt(train.ratio)}²" if power == "N²" else fmt(train.ratio)
         if not driving:
-            equation += f" + η{symbols}/{power}"
-            numbers += f" + {fmt(train.efficiency)} × {shown} / {n}"
+            equation += f" + {_eta_back(train)}{symbols}/{power}"
+            numbers += f" + {fmt(train.back)} × {shown} / {n}"
         elif train.efficiency != 1:
             equation += f" + {symbols}/({power}η)"
             numbers += f" + {shown} / ({n} × {fmt(train.efficiency)})"
         else:
             equation += f" + {symbols}/{power}"
             numbers += f" + {shown} / {n}"
+    if train.motor_friction:
+        equation += " + τ_mf"
+        numbers += f" + {quantity_text(train.motor_friction, 'N*m')}"
     why = ("the output asks Jα/N + T of its shaft; the ratio divides it by N, and the motor pays the losses in the teeth on top (1/η)"
-           if driving else "the load gives power back through the teeth (it regenerates): the motor holds it back, and the losses keep (1 − η) of it")
+           if driving else f"the load gives power back through the teeth (it regenerates): the motor holds it back, and the losses keep (1 − {_eta_back(train)}) of it")
+    if train.motor_friction:
+        why += "; the friction at the motor shaft, against the motion, passes no teeth"
     return Step(title, equation, numbers, quantity_text(torque, "N*m"), why)
+
+
+def _eta_back(train: Train) -> str:
+    return "η′" if train.efficiency_back is not None else "η"
