@@ -11,8 +11,6 @@ from __future__ import annotations
 import importlib.util
 import math
 import os
-import stat
-import tempfile
 import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
@@ -20,6 +18,7 @@ from dataclasses import dataclass, replace
 from taucli.quantities.cache import made
 from taucli.core.errors import InputError
 from taucli.core.written import printable
+from taucli.writing import files
 from taucli.writing.report import Report, Trajectory, fmt, pretty_unit
 
 MARKERS = ("•", "+", "x", "o", "*", "#", "@", "%")  # one per series, so the series differ without colour
@@ -193,31 +192,10 @@ def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> s
 
 def check_file(path: str) -> None:
     """--out names an .svg or .png file with a name before its suffix, not a link or a folder, in
-    a folder that can be written; and matplotlib is there to draw it. Nothing is made or removed
-    at ``path`` here: the folder is tried with a temporary file of its own."""
-    folder, name = os.path.split(path)
-    stem, suffix = name[:-4], name[-4:]  # (os.path.splitext reads ".svg" as a stem with no suffix)
-    if suffix.lower() not in (".svg", ".png"):
-        raise InputError("--out", "expected a file name ending in .svg or .png", example="--out chart.svg", got=repr(path))
-    if not stem:  # ".svg" alone: a suffix with no name (it was written as .svg.png)
-        raise InputError("--out", f"expected a name before {suffix}", example=f"--out chart{suffix}", got=repr(path))
-    if os.path.islink(path):
-        raise InputError("--out", "expected a file, not a symbolic link: taucli does not write through links", example="--out chart.svg",
-                         got=f"{path!r} -> {os.readlink(path)!r}")
-    if os.path.isdir(path):
-        raise InputError("--out", "expected a file, not a folder", example="--out chart.svg", got=repr(path))
+    a folder that can be written (taucli.writing.files); and matplotlib is there to draw it."""
+    files.check(path, "--out", (".svg", ".png"), "--out chart.svg")
     if importlib.util.find_spec("matplotlib") is None:
         raise InputError("--out", "needs matplotlib to draw files", hint="pip install 'taucli[plot]' (from a checkout: pip install '.[plot]')")
-    try:
-        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
-    except OSError as err:
-        raise _unwritable(path, err) from None
-    os.close(handle)
-    os.unlink(temporary)
-
-
-def _unwritable(path: str, err: OSError) -> InputError:
-    return InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}")
 
 
 def _matplotlib_folder() -> None:
@@ -271,51 +249,8 @@ def write_file(chart: Chart, path: str, said_to=None) -> None:
     figure.suptitle(chart.title, fontsize="medium")
     figure.tight_layout()
     try:
-        _replace_atomically(path, lambda temporary: figure.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()))
+        files.replace_atomically(path, lambda temporary: figure.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()), "--out", "--out chart.svg")
     finally:
         pyplot.close(figure)
     if said_to is not None:
         said_to.write(f"taucli: wrote the chart to {printable(path)}\n")  # a path's control characters escaped (#43 item 14)
-
-
-def _replace_atomically(path: str, write) -> None:
-    """``write`` a temporary file beside ``path``, then rename it onto ``path`` in one step: a
-    reader sees the old file or the whole new one, a failed write (a full disk) leaves ``path`` as
-    it was, and a symbolic link made at ``path`` meanwhile is replaced, never followed."""
-    folder, name = os.path.split(path)
-    try:
-        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
-    except OSError as err:
-        raise _unwritable(path, err) from None
-    os.close(handle)
-    try:
-        write(temporary)
-        os.chmod(temporary, _new_file_mode(path))
-        os.replace(temporary, path)
-    except OSError as err:
-        _remove(temporary)
-        raise _unwritable(path, err) from None
-    except BaseException:
-        _remove(temporary)
-        raise
-
-
-def _new_file_mode(path: str) -> int:
-    """The mode a file written at ``path`` would have: an existing file's, else 0666 less the umask
-    (mkstemp makes its files 0600)."""
-    try:
-        info = os.lstat(path)
-        if stat.S_ISREG(info.st_mode):
-            return stat.S_IMODE(info.st_mode)
-    except OSError:
-        pass
-    umask = os.umask(0)
-    os.umask(umask)
-    return 0o666 & ~umask
-
-
-def _remove(path: str) -> None:
-    try:
-        os.unlink(path)
-    except OSError:
-        pass

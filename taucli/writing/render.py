@@ -17,6 +17,7 @@ from typing import NamedTuple, TextIO
 
 from taucli.quantities import units
 from taucli.core.errors import InputError, did_you_mean
+from taucli.core.names import FORMATS
 from taucli.core.written import printable
 from taucli.writing.document import document_text
 from taucli.writing.human import clamped, coloured, render_human
@@ -47,6 +48,19 @@ class Output(NamedTuple):
     def drawn(self) -> bool:
         """A chart is drawn: in the terminal, or to a file. (--json --plot gives the samples only.)"""
         return self.out is not None or (self.plot and not self.json)
+
+
+def chosen_format(chosen: str | None, others: Mapping[str, bool]) -> str | None:
+    """--format (#36), as every command takes it (a scene, a sweep, a fit): one of md, latex,
+    html, csv, alone among the ways to answer (``others``: which of json, get, plot… were given)."""
+    if chosen is None:
+        return None
+    if chosen not in FORMATS:
+        raise InputError("format", f"expected one of {', '.join(FORMATS)}", example="{format} md", got=repr(chosen), hint=did_you_mean(chosen, FORMATS))
+    for name, given in others.items():
+        if given:
+            raise InputError(name, "does not combine with {format}: each writes the whole answer", example="{format} " + chosen)
+    return chosen
 
 
 def terminal_style(stream: TextIO) -> tuple[int, bool]:
