@@ -111,6 +111,9 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     return report, found
 
 
+BAR_AFTER = 1.0  # seconds a fit runs before its progress bar shows (on a terminal): a quick fit shows none
+
+
 def run(env, given: dict) -> int:
     """taucli fit: read, fit, write."""
     command = _scene(given.get("scene"))
@@ -129,12 +132,13 @@ def run(env, given: dict) -> int:
     if given.get("residuals") is not None:
         residuals.check(given["residuals"])
     try:
-        with render.progress_bar(env.stderr, True) as progress:
+        with render.progress_bar(env.stderr, True, after=BAR_AFTER) as progress:
             report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
                                    sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin,
                                    limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress)
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
+    found.model.budget = None  # the fit is done: the chart's curve and band, and the residuals, are not its time
     if given.get("residuals") is not None:  # the files first, as the scenes write --out's: one that cannot be written is refused before any answer
         residuals.write(found, given["residuals"], said_to=env.stderr)
     drawn = chart.chart(found) if given.get("out") is not None or (given.get("plot") and not output.json) else None

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 import math
 import shutil
+import time
 from contextlib import contextmanager
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
@@ -267,15 +268,30 @@ def attach_inputs(report: Report, inputs: Mapping[str, Value], notes: Sequence[s
 
 
 @contextmanager
-def progress_bar(stderr: TextIO, wanted: bool):
+def progress_bar(stderr: TextIO, wanted: bool, *, after: float = 0.0):
     """A progress bar on ``stderr`` for --find, --mc and a fit, where stderr is a terminal (else
-    None): told (done, planned) solves as they go, and gone when the work is."""
+    None): told (done, planned) solves as they go, shown once the work has taken ``after`` seconds
+    (a fit's bar: over a second; one that ends sooner does not flash one), and gone when the work is."""
     if not wanted or not getattr(stderr, "isatty", lambda: False)():
         yield None
         return
-    from rich.console import Console  # deferred: rich, only for a bar on a terminal
-    from rich.progress import Progress
+    started = time.monotonic()
+    shown: list = []  # the bar and its task, once shown
 
-    with Progress(console=Console(file=stderr), transient=True) as bar:
-        task = bar.add_task("solving", total=None)
-        yield lambda done, planned: bar.update(task, completed=done, total=planned)
+    def told(done: int, planned: int) -> None:
+        if not shown:
+            if time.monotonic() - started < after:
+                return
+            from rich.console import Console  # deferred: rich, only for a bar on a terminal
+            from rich.progress import Progress
+
+            bar = Progress(console=Console(file=stderr), transient=True)
+            bar.start()
+            shown.extend((bar, bar.add_task("solving", total=None)))
+        shown[0].update(shown[1], completed=done, total=planned)
+
+    try:
+        yield told
+    finally:
+        if shown:
+            shown[0].stop()
