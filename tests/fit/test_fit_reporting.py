@@ -285,3 +285,23 @@ def test_the_residuals_docs_fit_md_shows_are_what_its_command_writes(tmp_path, m
     assert rows[0] == written[0] and len(rows) == 5
     for row, got in zip(rows[1:], written[1:]):
         assert row[:2] == got[:2] and [float(x) for x in row[2:]] == pytest.approx([float(x) for x in got[2:]], rel=1e-9, abs=1e-12)
+
+
+def _small_files():
+    import resource
+
+    resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))  # the residuals (about 25 KB) cannot be written: EFBIG, as on a full disk
+
+
+def test_residuals_that_cannot_be_written_are_refused_before_any_answer(tmp_path):
+    """As --out's chart: the file first, so a full disk is a refusal, not an answer then exit 2."""
+    import subprocess
+    import sys
+
+    path = tmp_path / "dense.csv"
+    path.write_text(table_text("t (s),omega (rad/s)", coast_down([0.05 * i for i in range(300)], 0.01, 4), ("g", ".4f")))
+    done = subprocess.run([sys.executable, "-m", "taucli", "fit", "spin-down", str(path), *FIT, "--get", "friction", "--residuals", str(tmp_path / "r.csv")],
+                          capture_output=True, text=True, preexec_fn=_small_files, timeout=120)
+    assert done.returncode == 2 and done.stdout == "", (done.stdout, done.stderr)
+    assert done.stderr.startswith("taucli: error: --residuals: expected a file that can be written") and "File too large" in done.stderr
+    assert not (tmp_path / "r.csv").exists() and [p.name for p in tmp_path.iterdir()] == ["dense.csv"]  # (no temporary left)
