@@ -88,7 +88,8 @@ def chart(found: Fit) -> Chart:
     shown = tuple(xs / per)
     bars = tuple(float(s) for s in samples.sigma) if samples.sigma is not None else ()
     model_series = (Series("fitted", tuple(curve[0] / per), tuple(_none(curve[1])), spread=tuple(_none(curve[2])))
-                    if curve is not None else Series("fitted", shown, tuple(_none(fitted)), points=True))
+                    if curve is not None  # else the model at each sample, its σ_f as a bar
+                    else Series("fitted", shown, tuple(_none(fitted)), points=True, spread=tuple(_none(band(found, found.model.predict, fitted)))))
     panels = (
         Panel(samples.y_key, "measured and fitted", samples.y_unit, (Series("measured", shown, tuple(y), points=True, spread=bars), model_series)),
         Panel("residual", f"{samples.y_key} measured − fitted", samples.y_unit,

@@ -305,3 +305,20 @@ def test_residuals_that_cannot_be_written_are_refused_before_any_answer(tmp_path
     assert done.returncode == 2 and done.stdout == "", (done.stdout, done.stderr)
     assert done.stderr.startswith("taucli: error: --residuals: expected a file that can be written") and "File too large" in done.stderr
     assert not (tmp_path / "r.csv").exists() and [p.name for p in tmp_path.iterdir()] == ["dense.csv"]  # (no temporary left)
+
+
+def test_where_the_model_is_drawn_at_the_samples_each_fitted_point_carries_its_sigma(tmp_path):
+    """Atwood runs at several m1 and m2 (docs/fit.md): no one input varies alone, so no curve; each
+    fitted point carries σ_f,i = √(gᵢᵀCgᵢ). With C = s²(JᵀJ)⁻¹ (no σ given) the σ_f,i² add up to
+    s²·tr(J(JᵀJ)⁻¹Jᵀ) = s²·m, m the inputs fitted (the hat matrix's trace)."""
+    from taucli.fit import chart, command
+
+    page = (Path(__file__).parents[2] / "docs" / "fit.md").read_text(encoding="utf-8")
+    path = tmp_path / "atwood.csv"
+    path.write_text(re.search(r"^\$ cat atwood\.csv\n(.*?)(?=^\$ )", page, re.S | re.M).group(1))
+    report, found = command.fit_of("atwood", [str(path)], {"distance": "98cm", "pulley_radius": "2.5cm"}, fit="pulley_inertia,axle_friction")
+    fitted = chart.chart(found).panels[0].series[1]
+    assert fitted.points and len(fitted.spread) == found.model.samples.count and all(s > 0 for s in fitted.spread)
+    n, m = found.model.samples.count, 2
+    s2 = sum(r * r for r in found.quality.residuals) / (n - m)
+    assert sum(s * s for s in fitted.spread) == pytest.approx(s2 * m, rel=1e-3)
