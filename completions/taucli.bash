@@ -531,13 +531,15 @@ _taucli() {
             --every) :; return 0 ;;
             --get) COMPREPLY=($(compgen -W "correlation residual_rms r2 chi2_dof samples dropped" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --residuals) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --every --no-limit --json --get --to --no-steps --uncertainty --plot --out --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --every --no-limit --json --get --to --no-steps --format --uncertainty --plot --out --residuals --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -120,16 +120,17 @@ def needs(program: str) -> None:
 
 # What an example prints for a machine, or to a file, left off when it is asked for as a document.
 MACHINE_FLAGS = {"--json", "--jsonl", "--plot", "--uncertainty"}
-MACHINE_OPTIONS = {"--get", "--format", "--out", "--y"}
+MACHINE_OPTIONS = {"--get", "--format", "--out", "--y", "--residuals"}
 
 
 def as_format(command: str, fmt: str) -> list[str]:
     """An example's words with what it prints for a machine left off and --format FMT added."""
     words, kept, skip = shlex.split(command)[1:], [], False
+    machine = MACHINE_OPTIONS - ({"--y"} if words[0] == "fit" else set())  # (fit's --y names the column measured, not a chart's result)
     for word in words:
         if skip:
             skip = False
-        elif word in MACHINE_OPTIONS:
+        elif word in machine:
             skip = True
         elif word not in MACHINE_FLAGS:
             kept.append(word)

@@ -13,7 +13,7 @@ import numpy as np
 from taucli.writing import render
 from taucli.writing.document import document_text
 from taucli.core.errors import InputError, did_you_mean
-from taucli.fit import budget, chart, data, results, samples, solve
+from taucli.fit import budget, chart, data, residuals, results, samples, solve
 from taucli.answering.answer import LIMIT_SECONDS
 from taucli.answering.inputs import read
 from taucli.options import COMMANDS, SCENES
@@ -68,9 +68,10 @@ def _not_taken(command: Command, flag: str, known: list[str]) -> InputError:
     """A flag that is neither fit's nor an input of the scene: where another command takes it, say
     so (fit … --format suggested --force), else the nearest name."""
     if any(option.flag == flag for option in command.output):
-        writes = flag in ("--format", "--jsonl", "--batch", "--points", "--y")
+        writes = flag in ("--jsonl", "--batch", "--points", "--y")
         return InputError("", f"{flag} is an option of taucli {command.name}'s own runs, not of fit",
-                          hint="fit answers as text, as one JSON document (--json), or as numbers (--get NAME, with --uncertainty)" if writes else None)
+                          hint="fit answers as text, as one JSON document (--json), as numbers (--get NAME, with --uncertainty), "
+                          "or as a document (--format md|latex|html|csv)" if writes else None)
     takers = [other.name for other in COMMANDS.values() if other.name not in ("fit", command.name)
               and any(option.flag == flag for option in (*other.options, *other.output))]
     if takers:
@@ -110,6 +111,9 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     return report, found
 
 
+BAR_AFTER = 1.0  # seconds a fit runs before its progress bar shows (on a terminal): a quick fit shows none
+
+
 def run(env, given: dict) -> int:
     """taucli fit: read, fit, write."""
     command = _scene(given.get("scene"))
@@ -117,6 +121,7 @@ def run(env, given: dict) -> int:
     output = render.Output(
         json=bool(given.get("json")), get=tuple(given.get("get") or ()), to=tuple(given.get("to") or ()), steps=not given.get("no_steps"),
         uncertainty=bool(given.get("uncertainty")),
+        format=render.chosen_format(given.get("format"), {name: bool(given.get(name)) for name in ("json", "get", "plot")}),
     )
     if given.get("plot") and output.get:
         raise InputError("plot", "draws a chart, and {get} prints numbers only", hint="{out} FILE.svg writes the chart to a file")
@@ -124,13 +129,18 @@ def run(env, given: dict) -> int:
         from taucli.writing import plot  # deferred: charts, only for --out
 
         plot.check_file(given["out"])
+    if given.get("residuals") is not None:
+        residuals.check(given["residuals"])
     try:
-        with render.progress_bar(env.stderr, True) as progress:
+        with render.progress_bar(env.stderr, True, after=BAR_AFTER) as progress:
             report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
                                    sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin,
                                    limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress)
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
+    found.model.budget = None  # the fit is done: the chart's curve and band, and the residuals, are not its time
+    if given.get("residuals") is not None:  # the files first, as the scenes write --out's: one that cannot be written is refused before any answer
+        residuals.write(found, given["residuals"], said_to=env.stderr)
     drawn = chart.chart(found) if given.get("out") is not None or (given.get("plot") and not output.json) else None
     if given.get("out") is not None:  # the file first, as the scenes do: one that cannot be written (a full disk) is refused before any answer
         from taucli.writing import plot  # deferred: matplotlib, only for --out

@@ -246,6 +246,34 @@ def _tested(fitted: quality.Quality) -> str:
     return said
 
 
+SHELL_SPECIAL = set(" *^()[]{}?;&|<>$\\\"'`!#~")  # a text that bash, zsh or fish would read otherwise: quoted in an example
+
+
+def _range_hint(found: Fit) -> str:
+    """Where a model holds over part of the samples only (a coast before the bearing warms, a swing
+    while its amplitude is small): --range fits that part alone. The example is the first half of
+    the samples' span of their varying input, in its column's unit, as it can be typed."""
+    samples = found.model.samples
+    if not samples.varying:
+        return "where the model holds over part of the samples only, --range COLUMN=FROM..TO fits that part alone"
+    key = samples.varying[0]
+    values = np.asarray(samples.inputs[key], dtype=float)
+    column = next((m for m in samples.columns if m.target == key), None)
+    unit, per = ((column.column.unit, column.factor) if column is not None and column.column.unit and column.factor > 0
+                 else (units.KINDS[found.model.command.option(key).kind].si_unit, 1.0))
+    low, high = float(np.min(values)) / per, float(np.max(values)) / per
+    window = f"{'t' if key == 'time' else key}={_typed(low)}{unit}..{_typed((low + high) / 2)}{unit}"
+    shown = f"'{window}'" if SHELL_SPECIAL & set(window) else window
+    return (f"where the model holds over part of the samples only, --range fits that part alone, e.g. --range {shown} "
+            f"(the first half of their {_typed(low)} to {_typed(high)} {pretty_unit(unit)})")
+
+
+def _typed(x: float) -> str:
+    """x to 3 significant digits as a person types it: 7380, 0.25, 1.5e-05 (no exponent between 1e-4 and 1e7)."""
+    rounded = float(f"{x:.3g}")
+    return f"{rounded:f}".rstrip("0").rstrip(".") if rounded == 0 or 1e-4 <= abs(rounded) < 1e7 else f"{rounded:.3g}"
+
+
 def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
     model, fitted = found.model, found.quality
     notes = []
@@ -260,7 +288,7 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
         how = (" (they alternate in sign more often than chance: samples of two runs or more, interleaved and fitted as one?)"
                if fitted.alternating else "")
         notes.append(f"warning: the residuals have a shape ({_tested(fitted)}){how}: the model does not describe these samples, "
-                     "and the uncertainties assume that it does (--plot shows the residuals)")
+                     f"and the uncertainties assume that it does (--plot shows the residuals; {_range_hint(found)})")
     elif not fitted.shape_tested:
         notes.append(f"the residuals are not tested for a shape: {fitted.n} samples are too few for the runs test or the autocorrelation "
                      f"to reach a chance of {_percent(quality.SHAPE_P)}, so a model that does not describe them would not be seen here")

@@ -23,8 +23,7 @@ from taucli.front import help
 from taucli.answering import pipeline
 from taucli.writing import render
 from taucli.front import streams, usage
-from taucli.core.errors import ExitStatus, InputError, TaucliError, bounded, did_you_mean, out_of_range
-from taucli.core.names import FORMATS
+from taucli.core.errors import ExitStatus, InputError, TaucliError, bounded, out_of_range
 from taucli.options import COMMANDS
 from taucli.options.common import POINT_RESULTS
 from taucli.options.tools import ROOT
@@ -226,15 +225,7 @@ def _made_what_is_named(command: Command, report, output: render.Output, y, give
 
 def _format(asked: dict) -> Optional[str]:
     """--format (#36): one of md, latex, html, csv, alone among the ways to answer."""
-    chosen = asked["format"]
-    if chosen is None:
-        return None
-    if chosen not in FORMATS:
-        raise InputError("format", f"expected one of {', '.join(FORMATS)}", example="{format} md", got=repr(chosen), hint=did_you_mean(chosen, FORMATS))
-    for name in ("json", "jsonl", "get", "plot"):
-        if _present(asked[name]):
-            raise InputError(name, "does not combine with {format}: each writes the whole answer", example="{format} " + chosen)
-    return chosen
+    return render.chosen_format(asked["format"], {name: _present(asked[name]) for name in ("json", "jsonl", "get", "plot")})
 
 
 def _whole_number(command: Command, text: Optional[str], name: str = "points") -> Optional[int]:

@@ -10,7 +10,7 @@ from taucli.options.table import CHOICE, FILE, FLAG, TEXT, Command, Option, Resu
 
 SCENE_NAMES = tuple(module.COMMAND.name for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive, flywheel))
 DATA = "Data"
-SHOWN = ("json", "get", "to", "no_steps")  # of the scenes' answer options: no sweep, batch, --find or --mc
+SHOWN = ("json", "get", "to", "no_steps", "format")  # of the scenes' answer options: no sweep, batch, --find or --mc
 
 COMMAND = Command(
     name="fit",
@@ -52,8 +52,11 @@ COMMAND = Command(
     output=(
         *(option for option in ANSWER if option.name in SHOWN),
         Option("uncertainty", FLAG, "With --get: each result's standard uncertainty in a second column.", panel=OUTPUT),
-        Option("plot", FLAG, "Draw the data, the fit and the residuals in the terminal. With --json: the samples.", panel=OUTPUT),
+        Option("plot", FLAG, "Draw the data, the fit with its ±1σ band and the residuals in the terminal (with --sigma, each sample's error bar). "
+               "With --json: the samples.", panel=OUTPUT),
         Option("out", FILE, "Also draw them to FILE.svg or FILE.png (needs matplotlib: pip install 'taucli[plot]').", panel=OUTPUT, metavar="FILE"),
+        Option("residuals", FILE, "Also write each sample to FILE.csv: its inputs, measured, fitted, residual (measured − fitted) and σ, in SI "
+               "with the units in the header.", panel=OUTPUT, metavar="FILE"),
     ),
     handler="taucli.fit:run",
 )

@@ -71,8 +71,8 @@ def sheet(report, *, steps: bool = True) -> Sheet:
     results = tuple(
         Row(name, with_uncertainty(v.value, spreads[name]) if name in spreads else shown(v.value), v.unit, v.label)
         for name, v in report.results.items()
-        if v.value is not None or not v.moot  # (a result the scene cannot have, NotApplicable: its note says why)
-    )
+        if name not in report.tables and (v.value is not None or not v.moot)  # (a result the scene cannot have, NotApplicable: its note
+    )  # says why; a result shown as a table of its own, a fit's correlation, is that table alone, as the human view has it)
     tables = tuple(
         Part(title, tuple((heading, unit) for _, unit, heading in table.columns), tuple(tuple(shown(cell) for cell in row) for row in table.rows))
         for title, table in report.tables.items()

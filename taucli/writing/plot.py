@@ -11,8 +11,6 @@ from __future__ import annotations
 import importlib.util
 import math
 import os
-import stat
-import tempfile
 import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
@@ -20,6 +18,7 @@ from dataclasses import dataclass, replace
 from taucli.quantities.cache import made
 from taucli.core.errors import InputError
 from taucli.core.written import printable
+from taucli.writing import files
 from taucli.writing.report import Report, Trajectory, fmt, pretty_unit
 
 MARKERS = ("•", "+", "x", "o", "*", "#", "@", "%")  # one per series, so the series differ without colour
@@ -33,6 +32,7 @@ class Series:
     xs: tuple[float, ...]
     ys: tuple[float | None, ...]  # None: no value at that x (the result does not exist there)
     points: bool = False  # drawn as markers alone (measured samples), not joined by a line
+    spread: tuple[float | None, ...] = ()  # ±σ at each point: error bars on points, a band about a line (a fit's chart)
 
 
 @dataclass(frozen=True)
@@ -145,8 +145,42 @@ def _plotted(series: Series) -> tuple[list[float], list[float]]:
     return [x for x, _ in pairs], [y for _, y in pairs]
 
 
+def _spread(series: Series) -> list[tuple[float, float, float]]:
+    """(x, y, σ) of each point that has a finite value and σ."""
+    return [(x, y, s) for x, y, s in zip(series.xs, series.ys, series.spread)
+            if y is not None and s is not None and math.isfinite(y) and math.isfinite(s)]
+
+
+BAND = "·"  # the marker of a band's edges in the terminal
+
+
+def _cell(x: float, y: float, limits: tuple[float, float, float, float], width: int, height: int) -> tuple[int, int]:
+    """The character cell (row from the bottom, column) plotille draws (x, y) in: each cell is 2 × 4
+    braille dots, a value's dot the nearest (plotille.Canvas, rounding half to even as it does)."""
+    x_low, x_high, y_low, y_high = limits
+    return round((y - y_low) / ((y_high - y_low) / (4 * height))) // 4, round((x - x_low) / ((x_high - x_low) / (2 * width))) // 2
+
+
+def _line_cells(lines: Sequence[tuple[list[float], list[float]]], limits, width: int, height: int) -> set[tuple[int, int]]:
+    """The cells the lines pass through, as plotille draws them (on a canvas of the figure's size)."""
+    import plotille  # deferred: as in terminal
+
+    x_low, x_high, y_low, y_high = limits
+    canvas = plotille.Canvas(width, height, x_low, y_low, x_high, y_high)
+    for xs, ys in lines:
+        canvas.point(xs[0], ys[0])
+        for x0, y0, x1, y1 in zip(xs, ys, xs[1:], ys[1:]):
+            canvas.line(x0, y0, x1, y1)
+    rows = canvas.plot(linesep="\n").split("\n")
+    return {(height - 1 - r, c) for r, row in enumerate(rows) for c, char in enumerate(row) if char != "\u2800"}
+
+
 def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> str:
-    """The chart as text for a terminal ``columns`` wide: panels one above the other."""
+    """The chart as text for a terminal ``columns`` wide: panels one above the other.
+
+    In a chart of samples (a fit's), each panel is drawn in layers, lowest first: a line's ±σ band
+    (its edges dotted, ·), the samples' error bars, the samples (markers), and the lines last, over
+    them all: a marker in a cell a line passes through is left out, so the line is seen whole."""
     import plotille  # deferred: plotille (about 25 ms), only when a chart is drawn
 
     width = max(columns - Y_AXIS_WIDTH, 10)
@@ -157,6 +191,7 @@ def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> s
         if not drawn:
             out += ["", f"{axis_title(panel.label, panel.unit)}: no values to draw"]
             continue
+        spreads = {n: _spread(panel.series[n]) for n, _ in drawn}
         figure = plotille.Figure()
         figure.width, figure.height = width, height
         figure.with_colors, figure.origin = colour, False
@@ -165,25 +200,52 @@ def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> s
         figure.x_label, figure.y_label = "", axis_title(panel.key, panel.unit)
         x_low, x_high = _limits([x for _, (xs, _) in drawn for x in xs], with_zero=False, cells=None)
         figure.set_x_limits(min_=x_low, max_=x_high)
-        y_low, y_high = _limits([y for _, (_, ys) in drawn for y in ys], with_zero=True, cells=height)
+        edges = [y + sign * s for triples in spreads.values() for _, y, s in triples for sign in (-1, 1)]
+        y_low, y_high = _limits([y for _, (_, ys) in drawn for y in ys] + edges, with_zero=True, cells=height)
         figure.set_y_limits(min_=y_low, max_=y_high)
+        limits = (x_low, x_high, y_low, y_high)
         for x, _ in chart.marks:
             if x_low <= x <= x_high:
                 figure.axvline((x - x_low) / (x_high - x_low), lc="white" if colour else None)
-        for n, (xs, ys) in drawn:
+        lines = [(n, xy) for n, xy in drawn if not panel.series[n].points]
+        samples = len(lines) < len(drawn)
+        covered = _line_cells([xy for _, xy in lines], limits, width, height) if samples and lines else set()
+
+        def uncovered(xs, ys):
+            kept = [(x, y) for x, y in zip(xs, ys) if _cell(x, y, limits, width, height) not in covered]
+            return [x for x, _ in kept], [y for _, y in kept]
+
+        def tint(n):
+            return COLOURS[n % len(COLOURS)] if colour else None
+
+        for n, _ in lines:  # the bands, lowest
+            edge_xs, edge_ys = uncovered([x for x, _, _ in spreads[n] for _ in (0, 1)], [y + sign * s for _, y, s in spreads[n] for sign in (-1, 1)])
+            if edge_xs:
+                figure.scatter(edge_xs, edge_ys, lc=tint(n), marker=BAND)
+        for n, _ in drawn:  # the samples' error bars
             if panel.series[n].points:
-                figure.scatter(xs, ys, lc=COLOURS[n % len(COLOURS)] if colour else None, marker=MARKERS[n % len(MARKERS)])
-            else:
-                figure.plot(xs, ys, lc=COLOURS[n % len(COLOURS)] if colour else None)
-        for n, (xs, ys) in drawn if len(panel.series) > 1 and not any(s.points for s in panel.series) else ():  # markers tell series apart without colour,
+                for x, y, s in spreads[n]:
+                    figure.plot([x, x], [y - s, y + s], lc=tint(n))
+        under = []  # (n, samples under a line, samples)
+        for n, (xs, ys) in drawn:  # the samples
+            if panel.series[n].points:
+                kept_xs, kept_ys = uncovered(xs, ys)
+                if kept_xs:
+                    figure.scatter(kept_xs, kept_ys, lc=tint(n), marker=MARKERS[n % len(MARKERS)])
+                if len(kept_xs) < len(xs):
+                    under.append((n, len(xs) - len(kept_xs), len(xs)))
+        for n, (xs, ys) in lines:  # the lines, last: over the samples
+            figure.plot(xs, ys, lc=tint(n))
+        for n, (xs, ys) in drawn if len(panel.series) > 1 and not samples else ():  # markers tell series apart without colour,
             every = max(1, 3 * len(xs) // width)  # drawn after every line, one in three columns at most
-            figure.scatter(xs[::every], ys[::every], lc=COLOURS[n % len(COLOURS)] if colour else None, marker=MARKERS[n % len(MARKERS)])
+            figure.scatter(xs[::every], ys[::every], lc=tint(n), marker=MARKERS[n % len(MARKERS)])
         axis = "\n".join(line.rstrip() for line in figure.show(legend=False).replace("> ()", ">").replace("| ()", "|").splitlines())
         out += ["", *textwrap.wrap(f"{panel.key}: {panel.label}", columns), axis, f"{' ' * 12}{axis_title(chart.x_key, chart.x_unit)}"]
+        for n, hidden, total in under:  # said, so that a sample on the line is not taken for a missing one
+            said = f"{MARKERS[n % len(MARKERS)]} {hidden} of {total} {panel.series[n].label} lie under the {' and '.join(panel.series[m].label for m, _ in lines)} line, drawn over them"
+            out += textwrap.wrap(said, columns)
     if len(chart.panels[0].series) > 1:
-        marked = any(series.points for series in chart.panels[0].series)  # samples as markers beside lines: a line is a line
-        legend = "  ".join(f"{MARKERS[n % len(MARKERS)] if series.points or not marked else '⠤'} {series.label}" for n, series in enumerate(chart.panels[0].series))
-        out += textwrap.wrap(legend, columns)
+        out += textwrap.wrap(_legend(chart.panels[0].series), columns)
     for x, what in chart.marks:
         out += textwrap.wrap(f"│ at {chart.x_key} = {fmt(x, 4)} {pretty_unit(chart.x_unit)}: {what}", columns, subsequent_indent="  ")
     for note in chart.notes:
@@ -191,33 +253,24 @@ def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> s
     return "\n".join(out) + "\n"
 
 
+def _legend(series: Sequence[Series]) -> str:
+    """What each series' marker is: samples by their marker (± their error bars), a line as ⠤ beside
+    samples (and its band as ·), else by the markers drawn along it."""
+    marked = any(one.points for one in series)  # samples as markers beside lines: a line is a line
+    items = []
+    for n, one in enumerate(series):
+        items.append(f"{MARKERS[n % len(MARKERS)] if one.points or not marked else '⠤'} {one.label}" + (" ± σ" if one.points and _spread(one) else ""))
+        if not one.points and _spread(one):
+            items.append(f"{BAND} {one.label} ± 1σ (band)")
+    return "  ".join(items)
+
+
 def check_file(path: str) -> None:
     """--out names an .svg or .png file with a name before its suffix, not a link or a folder, in
-    a folder that can be written; and matplotlib is there to draw it. Nothing is made or removed
-    at ``path`` here: the folder is tried with a temporary file of its own."""
-    folder, name = os.path.split(path)
-    stem, suffix = name[:-4], name[-4:]  # (os.path.splitext reads ".svg" as a stem with no suffix)
-    if suffix.lower() not in (".svg", ".png"):
-        raise InputError("--out", "expected a file name ending in .svg or .png", example="--out chart.svg", got=repr(path))
-    if not stem:  # ".svg" alone: a suffix with no name (it was written as .svg.png)
-        raise InputError("--out", f"expected a name before {suffix}", example=f"--out chart{suffix}", got=repr(path))
-    if os.path.islink(path):
-        raise InputError("--out", "expected a file, not a symbolic link: taucli does not write through links", example="--out chart.svg",
-                         got=f"{path!r} -> {os.readlink(path)!r}")
-    if os.path.isdir(path):
-        raise InputError("--out", "expected a file, not a folder", example="--out chart.svg", got=repr(path))
+    a folder that can be written (taucli.writing.files); and matplotlib is there to draw it."""
+    files.check(path, "--out", (".svg", ".png"), "--out chart.svg")
     if importlib.util.find_spec("matplotlib") is None:
         raise InputError("--out", "needs matplotlib to draw files", hint="pip install 'taucli[plot]' (from a checkout: pip install '.[plot]')")
-    try:
-        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
-    except OSError as err:
-        raise _unwritable(path, err) from None
-    os.close(handle)
-    os.unlink(temporary)
-
-
-def _unwritable(path: str, err: OSError) -> InputError:
-    return InputError("--out", "expected a file that can be written", example="--out chart.svg", got=f"{path!r}: {err.strerror or err}")
 
 
 def _matplotlib_folder() -> None:
@@ -255,10 +308,17 @@ def write_file(chart: Chart, path: str, said_to=None) -> None:
         ax = row[0]
         for n, series in enumerate(panel.series):
             xs, ys = _plotted(series)
-            if series.points:
-                ax.plot(xs, ys, label=series.label or None, linestyle="none", marker="o" if len(xs) < 200 else ".", markersize=4)
-            else:
-                ax.plot(xs, ys, label=series.label or None, marker="o" if len(xs) < 12 else None)
+            spread = _spread(series)
+            if series.points and spread:  # each sample's error bar ±σ
+                ax.errorbar([x for x, _, _ in spread], [y for _, y, _ in spread], yerr=[s for _, _, s in spread], label=series.label or None,
+                            linestyle="none", marker="o" if len(xs) < 200 else ".", markersize=4, elinewidth=0.8, capsize=0, zorder=2)
+            elif series.points:
+                ax.plot(xs, ys, label=series.label or None, linestyle="none", marker="o" if len(xs) < 200 else ".", markersize=4, zorder=2)
+            else:  # a line over the samples, and its band ±1σ under them
+                line, = ax.plot(xs, ys, label=series.label or None, marker="o" if len(xs) < 12 else None, zorder=3)
+                if spread:
+                    ax.fill_between([x for x, _, _ in spread], [y - s for _, y, s in spread], [y + s for _, y, s in spread], color=line.get_color(),
+                                    alpha=0.25, linewidth=0, label=f"{series.label} ± 1σ" if series.label else None, zorder=1)
         for x, what in chart.marks:
             ax.axvline(x, linestyle="--", linewidth=0.8, color="grey")
         ax.set_ylabel(axis_title(panel.label, panel.unit))
@@ -271,51 +331,8 @@ def write_file(chart: Chart, path: str, said_to=None) -> None:
     figure.suptitle(chart.title, fontsize="medium")
     figure.tight_layout()
     try:
-        _replace_atomically(path, lambda temporary: figure.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()))
+        files.replace_atomically(path, lambda temporary: figure.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()), "--out", "--out chart.svg")
     finally:
         pyplot.close(figure)
     if said_to is not None:
         said_to.write(f"taucli: wrote the chart to {printable(path)}\n")  # a path's control characters escaped (#43 item 14)
-
-
-def _replace_atomically(path: str, write) -> None:
-    """``write`` a temporary file beside ``path``, then rename it onto ``path`` in one step: a
-    reader sees the old file or the whole new one, a failed write (a full disk) leaves ``path`` as
-    it was, and a symbolic link made at ``path`` meanwhile is replaced, never followed."""
-    folder, name = os.path.split(path)
-    try:
-        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
-    except OSError as err:
-        raise _unwritable(path, err) from None
-    os.close(handle)
-    try:
-        write(temporary)
-        os.chmod(temporary, _new_file_mode(path))
-        os.replace(temporary, path)
-    except OSError as err:
-        _remove(temporary)
-        raise _unwritable(path, err) from None
-    except BaseException:
-        _remove(temporary)
-        raise
-
-
-def _new_file_mode(path: str) -> int:
-    """The mode a file written at ``path`` would have: an existing file's, else 0666 less the umask
-    (mkstemp makes its files 0600)."""
-    try:
-        info = os.lstat(path)
-        if stat.S_ISREG(info.st_mode):
-            return stat.S_IMODE(info.st_mode)
-    except OSError:
-        pass
-    umask = os.umask(0)
-    os.umask(umask)
-    return 0o666 & ~umask
-
-
-def _remove(path: str) -> None:
-    try:
-        os.unlink(path)
-    except OSError:
-        pass

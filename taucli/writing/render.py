@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 import math
 import shutil
+import time
 from contextlib import contextmanager
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
@@ -17,6 +18,7 @@ from typing import NamedTuple, TextIO
 
 from taucli.quantities import units
 from taucli.core.errors import InputError, did_you_mean
+from taucli.core.names import FORMATS
 from taucli.core.written import printable
 from taucli.writing.document import document_text
 from taucli.writing.human import clamped, coloured, render_human
@@ -47,6 +49,19 @@ class Output(NamedTuple):
     def drawn(self) -> bool:
         """A chart is drawn: in the terminal, or to a file. (--json --plot gives the samples only.)"""
         return self.out is not None or (self.plot and not self.json)
+
+
+def chosen_format(chosen: str | None, others: Mapping[str, bool]) -> str | None:
+    """--format (#36), as every command takes it (a scene, a sweep, a fit): one of md, latex,
+    html, csv, alone among the ways to answer (``others``: which of json, get, plot… were given)."""
+    if chosen is None:
+        return None
+    if chosen not in FORMATS:
+        raise InputError("format", f"expected one of {', '.join(FORMATS)}", example="{format} md", got=repr(chosen), hint=did_you_mean(chosen, FORMATS))
+    for name, given in others.items():
+        if given:
+            raise InputError(name, "does not combine with {format}: each writes the whole answer", example="{format} " + chosen)
+    return chosen
 
 
 def terminal_style(stream: TextIO) -> tuple[int, bool]:
@@ -253,15 +268,30 @@ def attach_inputs(report: Report, inputs: Mapping[str, Value], notes: Sequence[s
 
 
 @contextmanager
-def progress_bar(stderr: TextIO, wanted: bool):
+def progress_bar(stderr: TextIO, wanted: bool, *, after: float = 0.0):
     """A progress bar on ``stderr`` for --find, --mc and a fit, where stderr is a terminal (else
-    None): told (done, planned) solves as they go, and gone when the work is."""
+    None): told (done, planned) solves as they go, shown once the work has taken ``after`` seconds
+    (a fit's bar: over a second; one that ends sooner does not flash one), and gone when the work is."""
     if not wanted or not getattr(stderr, "isatty", lambda: False)():
         yield None
         return
-    from rich.console import Console  # deferred: rich, only for a bar on a terminal
-    from rich.progress import Progress
+    started = time.monotonic()
+    shown: list = []  # the bar and its task, once shown
 
-    with Progress(console=Console(file=stderr), transient=True) as bar:
-        task = bar.add_task("solving", total=None)
-        yield lambda done, planned: bar.update(task, completed=done, total=planned)
+    def told(done: int, planned: int) -> None:
+        if not shown:
+            if time.monotonic() - started < after:
+                return
+            from rich.console import Console  # deferred: rich, only for a bar on a terminal
+            from rich.progress import Progress
+
+            bar = Progress(console=Console(file=stderr), transient=True)
+            bar.start()
+            shown.extend((bar, bar.add_task("solving", total=None)))
+        shown[0].update(shown[1], completed=done, total=planned)
+
+    try:
+        yield told
+    finally:
+        if shown:
+            shown[0].stop()

@@ -68,7 +68,8 @@ class _Terminal(io.StringIO):
         return True
 
 
-def test_a_progress_bar_on_stderr_only_when_it_is_a_terminal(coast):
+def test_a_progress_bar_on_stderr_only_when_it_is_a_terminal(coast, monkeypatch):
+    monkeypatch.setattr(command, "BAR_AFTER", 0.0)  # (a fit's bar shows after a second: tests/fit/test_fit_reporting.py)
     args = ["fit", "spin-down", coast, "--inertia", "0.1kg*m^2", "--fit", "friction,viscous,omega0", "--get", "friction"]
     for stderr, shown in ((io.StringIO(), False), (_Terminal(), True)):
         stdout = io.StringIO()

@@ -92,8 +92,8 @@ def test_an_option_of_the_scenes_own_runs_is_said_to_be_theirs_not_a_misspelling
         assert main(args, Environment(stdin=None, stdout=stdout, stderr=stderr)) == 2 and stdout.getvalue() == ""
         assert stderr.getvalue().startswith(f"taucli: error: {option.flag} is an option of taucli spin-down's own runs, not of fit"), stderr.getvalue()
         assert "did you mean" not in stderr.getvalue()
-    done = taucli("fit", "spin-down", coast, *FIT_ARGS, "--format", "md")
-    assert_usage_error(done, "--format is an option of taucli spin-down's own runs, not of fit", "--json", "--get NAME")
+    done = taucli("fit", "spin-down", coast, *FIT_ARGS, "--jsonl")  # (--format is fit's too since #44 item 14)
+    assert_usage_error(done, "--jsonl is an option of taucli spin-down's own runs, not of fit", "--json", "--get NAME", "--format md|latex|html|csv")
     done = taucli("fit", "spin-down", coast, *FIT_ARGS, "--m1", "4kg")
     assert_usage_error(done, "--m1 is not an input of spin-down nor an option of fit (atwood takes it)")
 
