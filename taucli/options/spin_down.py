@@ -87,7 +87,7 @@ COMMAND = Command(
         Result("omega_inf", "rad/s", "steady speed as t -> ∞"),
         Result("normal_floor", "N", "the floor's push on the body in the corner", needs=("corner",), example="{corner} 0.3"),
         Result("normal_wall", "N", "the wall's push on the body in the corner", needs=("corner",), example="{corner} 0.3"),
-        Result("stable", None, "whether the steady speed is a stable balance (a little faster, the net torque slows it back)", needs=("viscous", "drag", "drive_slope"),
+        Result("stable", None, "whether the steady speed is a stable balance (a little faster, the net torque slows it back)", needs=("drive_slope",),
                example="{torque} '20N*m' {friction} '5N*m' {viscous} '0.1N*m*s' {drive_slope} '0.05N*m*s'"),
         Result("omega_unstable", "rad/s", "speed of an unstable balance: below it the wheel runs down, above it runs up", needs=("drive_slope",),
                example="{torque} '5N*m' {friction} '20N*m' {drive_slope} '0.05N*m*s'"),
