@@ -38,6 +38,12 @@ COMMAND = Command(
         Option("y", TEXT, "The column that was measured, and the result it is, e.g. \"Gyroscope z (rad/s)=omega\".", metavar="COLUMN[=RESULT]", panel=DATA),
         Option("sigma", TEXT, "Each sample's standard uncertainty: a column, or one value for all, e.g. 0.05rad/s.", metavar="COLUMN|VALUE", panel=DATA),
         Option("range", TEXT, "Fit only the samples with a column in this window, e.g. t=2s..30s (repeatable).", repeatable=True, metavar="COLUMN=FROM..TO", panel=DATA),
+        Option("per_run", TEXT, "Inputs of --fit fitted for each run on its own (each file, and each run side by side in one), e.g. omega0; "
+               "the others are shared by all runs (repeatable).", repeatable=True, metavar="NAME,NAME", panel=DATA),
+        Option("counts_per_rev", TEXT, "The measured column is an encoder's counts, this many a revolution (each interval read as a mean speed, omega), e.g. 360; with --counts.",
+               metavar="N", panel=DATA),
+        Option("counts", CHOICE, "An encoder's counts: cumulative (since the start) or interval (in each row's interval, since the row before).",
+               choices=("cumulative", "interval"), panel=DATA),
         Option("every", TEXT, "Use every Nth sample only (a long export), e.g. 10.", metavar="N", panel=DATA),
         Option("no_limit", FLAG, "Run the fit however long it is estimated to take (else refused past 60 s).", panel=DATA),
     ),

@@ -1,0 +1,89 @@
+"""Several runs of one fit (#44 items 9 and 11): runs side by side split into tables of their
+own, inputs fitted for each run (--per-run), an encoder's counts (--counts-per-rev), and each
+misuse refused in one line."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+from taucli.core.errors import InputError
+from taucli.fit import columns, data, encoder
+
+from conftest import assert_usage_error, run_taucli
+
+
+def table(text: str) -> data.DataTable:
+    return data.read("-", io.StringIO(text))
+
+
+@pytest.mark.parametrize("text", [
+    "Run 1: Time (s),Run 1: Angle (rad),Run 2: Time (s),Run 2: Angle (rad)\n0,1,0,2\n1,3,1,4\n2,5,,\n",  # Vernier, run 2 shorter
+    "Time (s) Run #1,Angle (rad) Run #1,Time (s) Run #2,Angle (rad) Run #2\n0,1,0,2\n1,3,1,4\n2,5,,\n",  # PASCO
+])  # fmt: skip
+def test_runs_side_by_side_are_split_into_a_table_each_the_padding_left_out(text):
+    first, second = columns.split_runs(table(text))
+    assert [c.header for c in first.columns] == ["Time (s)", "Angle (rad)"] == [c.header for c in second.columns]
+    assert list(first.column("Angle (rad)").values) == [1, 3, 5] and list(second.column("Angle (rad)").values) == [2, 4]
+    assert list(second.lines) == [2, 3] and "run 2" in second.source
+
+
+def test_a_shared_time_column_goes_to_every_run():
+    first, second = columns.split_runs(table("t (s),Run 1: omega (rad/s),Run 2: omega (rad/s)\n0,1,2\n1,3,4\n"))
+    assert list(second.column("t (s)").values) == [0, 1] and list(second.column("omega (rad/s)").values) == [2, 4]
+
+
+def test_runs_with_other_columns_are_refused():
+    with pytest.raises(InputError, match="every run of one fit has the same columns"):
+        columns.split_runs(table("Run 1: t (s),Run 1: omega (rad/s),Run 2: t (s),Run 2: w (rad/s)\n0,1,0,2\n"))
+
+
+def test_x_naming_a_run_as_written_fits_that_run_alone():
+    (only,) = columns.split_runs(table("Run 1: t (s),Run 1: omega (rad/s),Run 2: t (s),Run 2: omega (rad/s)\n0,1,0,2\n"), {"Run 2: t (s)"})
+    assert [c.header for c in only.columns] == ["Run 2: t (s)", "Run 2: omega (rad/s)"]
+
+
+TWO_RUNS = "Run 1: t (s),Run 1: omega (rad/s),Run 2: t (s),Run 2: omega (rad/s)\n" + "".join(
+    f"{t},{12 - 0.4 * t:.3f},{t},{9 - 0.4 * t:.3f}\n" for t in range(8))
+
+
+@pytest.mark.parametrize("args,said", [
+    (("--fit", "friction", "--per-run", "omega0"), "--per-run: names omega0, which --fit does not fit"),
+    (("--fit", "friction,omega0", "--per-run", "omega0", "--range", "t=..0.5s"), "more samples than inputs"),
+    (("--fit", "friction,omega0", "--counts-per-rev", "360"), "--counts: expected cumulative"),
+    (("--fit", "friction,omega0", "--counts", "interval"), "--counts: says what an encoder's counts are, and goes with --counts-per-rev"),
+    (("--fit", "friction,omega0", "--counts-per-rev", "0", "--counts", "interval"), "--counts-per-rev: expected the encoder's counts in one revolution"),
+    (("--fit", "friction,omega0", "--counts-per-rev", "360", "--counts", "interval", "--y", "omega (rad/s)=theta"), "holds counts, read as omega"),
+])  # fmt: skip
+def test_a_misuse_of_runs_or_counts_is_refused_in_one_line(tmp_path, args, said):
+    path = tmp_path / "runs.csv"
+    path.write_text(TWO_RUNS)
+    assert_usage_error(run_taucli("fit", "spin-down", str(path), "--inertia", "0.1kg*m^2", *args), said)
+
+
+def test_per_run_on_one_run_is_refused(tmp_path):
+    path = tmp_path / "one.csv"
+    path.write_text("t (s),omega (rad/s)\n" + "".join(f"{t},{12 - 0.4 * t:.3f}\n" for t in range(8)))
+    assert_usage_error(run_taucli("fit", "spin-down", str(path), "--inertia", "0.1kg*m^2", "--fit", "friction,omega0", "--per-run", "omega0"),
+                       "--per-run: fits omega0 for each run, and the samples are one run")
+
+
+def test_two_runs_fitted_together_give_each_its_own_omega0_exactly():
+    # friction alone (0.04 N·m on 0.1 kg·m²: α = −0.4 rad/s²), no noise: linear, solved exactly
+    found = run_taucli("fit", "spin-down", "-", "--inertia", "0.1kg*m^2", "--fit", "friction,omega0", "--per-run", "omega0",
+                       "--get", "friction", "--get", "omega0_run1", "--get", "omega0_run2", stdin=TWO_RUNS)
+    assert found.code == 0, found.err
+    assert [round(float(x), 9) for x in found.out.split()] == [0.04, 12.0, 9.0]
+
+
+def test_encoder_counts_that_are_not_whole_are_refused():
+    counted = table("t (s),Counts\n0,0\n1,2.5\n")
+    with pytest.raises(InputError, match="holds 2.5, not a whole number"):
+        encoder.speeds(counted, "Counts", "t (s)", 360, "cumulative")
+
+
+def test_encoder_counts_give_the_mean_speed_over_each_interval_at_its_middle():
+    counted = encoder.speeds(table("t (ms),Counts\n0,0\n100,36\n300,108\n"), "Counts", "t (ms)", 360, "cumulative")
+    assert list(counted.column("t (ms)").values) == [50, 200] and list(counted.column("Counts").values) == [0.001, 0.001]
+    assert counted.column("Counts").unit == "rev/ms" and list(counted.lines) == [3, 4]
