@@ -106,6 +106,8 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     try:
         with np.errstate(all="ignore"):  # numbers past a double's range are looked for where they matter (NaN, inf: refused or said)
             found = solve.fit(model, starts)
+            if runs.names(per_run):  # the starts are the runs' own fits, not values the user gave
+                found.method = found.method.replace("from the starts given", "from each run fitted alone")
             report = results.written(found)
     except budget.Spent as spent:
         raise spent.refusal from None

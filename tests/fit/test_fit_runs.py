@@ -87,3 +87,22 @@ def test_encoder_counts_give_the_mean_speed_over_each_interval_at_its_middle():
     counted = encoder.speeds(table("t (ms),Counts\n0,0\n100,36\n300,108\n"), "Counts", "t (ms)", 360, "cumulative")
     assert list(counted.column("t (ms)").values) == [50, 200] and list(counted.column("Counts").values) == [0.001, 0.001]
     assert counted.column("Counts").unit == "rev/ms" and list(counted.lines) == [3, 4]
+
+
+def test_the_python_api_takes_per_run_and_counts(tmp_path):
+    import taucli.fit
+
+    path = tmp_path / "runs.csv"
+    path.write_text(TWO_RUNS)
+    report = taucli.fit.fit("spin-down", str(path), fit="friction,omega0", per_run="omega0", inertia="0.1 kg*m^2")
+    assert [round(report.results[name].value, 9) for name in ("friction", "omega0_run1", "omega0_run2")] == [0.04, 12.0, 9.0]
+    assert "from each run fitted alone" in report.method or "linear least squares" in report.method
+    counted = tmp_path / "counts.csv"
+    # friction alone: α = −0.4 rad/s², ω₀ = 2π·10 rad/s; counts every 0.5 s of 100 a revolution, cumulative, exact where whole
+    times = [0.5 * k for k in range(9)]
+    import math
+
+    revs = [(2 * math.pi * 10 * t - 0.2 * t * t) / (2 * math.pi) for t in times]
+    counted.write_text("t (s),Counts\n" + "".join(f"{t},{round(r * 100)}\n" for t, r in zip(times, revs)))
+    report = taucli.fit.fit("spin-down", str(counted), fit="friction,omega0", counts_per_rev=100, counts="cumulative", inertia="0.1 kg*m^2")
+    assert abs(report.results["omega0"].value - 2 * math.pi * 10) < 3 * report.uncertainties["omega0"] + 1e-9
