@@ -30,8 +30,8 @@ def _axis(found: Fit) -> tuple[str, str, np.ndarray]:
 
 def _curve(found: Fit, key: str, xs: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
     samples = found.model.samples
-    if samples.varying != [key]:
-        return None
+    if samples.varying != [key] or any(hasattr(unknown, "run") for unknown in found.model.unknowns):
+        return None  # (runs with inputs of their own: one curve would be one run's, so the fit is drawn at each sample)
     row = samples.row(0)
     grid = np.linspace(float(np.min(xs)), float(np.max(xs)), CURVE)
     return grid, np.array([found.model.at(found.p, {**row, key: float(x)}) for x in grid])

@@ -106,3 +106,13 @@ def test_the_python_api_takes_per_run_and_counts(tmp_path):
     counted.write_text("t (s),Counts\n" + "".join(f"{t},{round(r * 100)}\n" for t, r in zip(times, revs)))
     report = taucli.fit.fit("spin-down", str(counted), fit="friction,omega0", counts_per_rev=100, counts="cumulative", inertia="0.1 kg*m^2")
     assert abs(report.results["omega0"].value - 2 * math.pi * 10) < 3 * report.uncertainties["omega0"] + 1e-9
+
+
+def test_the_chart_of_runs_draws_each_run_with_its_own_inputs():
+    # two coasts (ω₀ 12 and 9 rad/s, noise 0.01 rad/s): each sample's fitted value is its own run's, so no residual is a run's offset
+    found = run_taucli("fit", "spin-down", "docs/data/vernier-two-runs.csv", "--y", "Angular Velocity (rad/s)=omega", "--inertia", "0.05 kg*m^2",
+                       "--fit", "friction,viscous,omega0", "--per-run", "omega0", "--json", "--plot")
+    assert found.code == 0, found.err
+    plot = found.json()["plot"]
+    assert len(plot["samples"]) == 72 and plot["curve"] == []
+    assert max(abs(sample["residual"]) for sample in plot["samples"]) < 0.05
