@@ -57,6 +57,9 @@ def lines(path: str, name: str, option: str, what: str) -> Iterator[str]:
             archive.close()
             yield from _sheet(path, name, option, members)
             return
+        if any(info.filename == "content.xml" for info in members):
+            raise InputError(option, f"{name} is an OpenDocument file (.ods, a LibreOffice spreadsheet), not a table fit reads",
+                             hint="save the sheet as .xlsx or CSV (File, Save As)")
         tables = [info for info in members if info.filename.lower().endswith(_TABLES) and not info.filename.lower().startswith(_META)]
         if not tables:
             held = ", ".join(info.filename for info in members[:6]) + (", …" if len(members) > 6 else "")

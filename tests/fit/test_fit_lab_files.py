@@ -145,3 +145,15 @@ def test_the_command_line_fits_a_workbook_and_a_phyphox_zip(tmp_path):
         result = run_taucli("fit", "spin-down", str(path), "--inertia", "0.1kg*m^2", "--fit", "friction,omega0", "--get", "friction")
         assert result.code == 0, result.err
         assert math.isclose(float(result.out), 0.06, rel_tol=1e-9)
+
+
+def test_an_ods_and_a_workbook_without_openpyxl_say_what_to_do(tmp_path, monkeypatch):
+    ods = tmp_path / "sheet.ods"
+    phyphox_zip(ods, {"mimetype": "application/vnd.oasis.opendocument.spreadsheet", "content.xml": "<office:document-content/>"})
+    with pytest.raises(InputError, match=r"is an OpenDocument file .*save the sheet as .xlsx or CSV"):
+        data.read(str(ods))
+    book = tmp_path / "coast.xlsx"
+    workbook(book, [["t (s)", "omega (rad/s)"], [0, 1]])
+    monkeypatch.setitem(__import__("sys").modules, "openpyxl", None)  # not installed
+    with pytest.raises(InputError, match=r"is an Excel workbook \(.xlsx\), and reading one needs openpyxl; pip install 'taucli\[fit\]'"):
+        data.read(str(book))
