@@ -89,7 +89,7 @@ def split_runs(table: DataTable, picked: set[str] = frozenset()) -> list[DataTab
         if first_names is None:
             first_names = names
         elif names != first_names:
-            raise InputError("data", f"{table.source}: run {mark} has the columns {', '.join(names)} and run {marks[0]} {', '.join(first_names)}: "
+            raise InputError("data", f"{table.source}: run {mark} has the columns {', '.join(names)}, and run {marks[0]} has {', '.join(first_names)}: "
                              "every run of one fit has the same columns", hint=f"fit one run: {{x}} {quoted(own[0].header)}")
         keep = [i for i in range(len(table.lines)) if any(not math.isnan(column.values[i]) for column in own)]
         columns = [replace(column, header=run_of(column.header)[0], name=run_of(column.name)[0], values=Numbers("d", (column.values[i] for i in keep)))

@@ -98,6 +98,9 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     found_samples = samples.build(command, tables, x=x, y=y, sigma=sigma, ranges=ranges, every=every, fitted=names, given=set(given), gravity=gravity,
                                   counts_per_rev=counts_per_rev, counts=counts)
     model, starts, notes = solve.model_of(command, given, names, found_samples, stdin=stdin, spell=spell)
+    if per_run and not runs.names(per_run):
+        raise InputError("per_run", "expected the inputs of --fit to fit for each run, by name", example="{fit} friction,omega0 {per_run} omega0",
+                         got=repr(",".join(str(part) for part in per_run)))
     if runs.names(per_run):
         model, starts = _per_run(model, starts, runs.names(per_run), notes)
     if limit is not None or progress is not None:

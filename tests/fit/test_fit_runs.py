@@ -51,6 +51,7 @@ TWO_RUNS = "Run 1: t (s),Run 1: omega (rad/s),Run 2: t (s),Run 2: omega (rad/s)\
 @pytest.mark.parametrize("args,said", [
     (("--fit", "friction", "--per-run", "omega0"), "--per-run: names omega0, which --fit does not fit"),
     (("--fit", "friction,omega0", "--per-run", "omega0", "--range", "t=..0.5s"), "more samples than inputs"),
+    (("--fit", "friction,omega0", "--per-run", ""), "--per-run: expected the inputs of --fit to fit for each run"),
     (("--fit", "friction,omega0", "--counts-per-rev", "360"), "--counts: expected cumulative"),
     (("--fit", "friction,omega0", "--counts", "interval"), "--counts: says what an encoder's counts are, and goes with --counts-per-rev"),
     (("--fit", "friction,omega0", "--counts-per-rev", "0", "--counts", "interval"), "--counts-per-rev: expected the encoder's counts in one revolution"),
