@@ -20,7 +20,7 @@ COMMAND = Command(
         "fitted (a value given for one is its start), the others held, with their uncertainties if they carry any. Each row "
         "of a table is a sample: columns named like the scene's options are its inputs in that row (a time column, t or time, "
         "is --time), a column named like a result is what was measured; a header may carry its unit, as Time (s) or t [ms]. "
-        "Comma, semicolon or tab separated. Needs scipy: pip install 'taucli[fit]'. More, with worked examples: docs/fit.md "
+        "Comma, semicolon or tab separated, or an .xlsx workbook; several runs side by side, or several files, are fitted together (--per-run). Needs scipy: pip install 'taucli[fit]'. More, with worked examples: docs/fit.md "
         "in taucli's source."
     ),
     example="taucli fit spin-down coast.csv --inertia '0.1 kg*m^2' --fit friction,viscous,omega0",
@@ -28,7 +28,7 @@ COMMAND = Command(
         Option("scene", CHOICE, "The scene whose inputs are fitted: " + ", ".join(SCENE_NAMES) + ".", choices=SCENE_NAMES, positional=True, metavar="SCENE"),
         Option(
             "data", FILE,
-            "The measured samples: CSV files (- for stdin), then the scene's own options, as it takes them.",
+            "The measured samples: CSV files, .xlsx workbooks or phyphox's zip (- for stdin), then the scene's own options, as it takes them.",
             positional=True, repeatable=True, metavar="FILE... [SCENE OPTIONS]",
         ),
         Option("fit", TEXT, "The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu); repeatable.",
