@@ -1,7 +1,8 @@
 """How a table's columns map to the scene: what a header tells beyond its unit
 (csv_text.split_header reads the unit), and the rules that follow from it:
 
-- A run mark: PASCO writes ``Time (ms) Run #1``, Vernier ``Run 1: Time (s)``. Where every marked
+- A run mark: PASCO writes ``Time (ms) Run #1``, Vernier ``Run 1: Time (s)`` (Logger Pro's
+  current run ``Latest: Time (s)``). Where every marked
   column of a table is of one run, the mark is left out of the names (``Time``), so the columns
   match the scene by name as an unmarked export does; the header is kept as written. A table of
   several runs side by side is several tables, one a run (split_runs): each run's columns with
@@ -41,7 +42,7 @@ TIME_NAMES = ("t", "time")
 AMBIGUOUS = frozenset({"angle", "angular velocity", "angular acceleration"})  # a bare number is refused (docs/units.md)
 
 _RUN_AFTER = re.compile(r"\s*\bRun\s*#?\s*(\d+)\s*$", re.IGNORECASE)  # PASCO: "Time Run #1"
-_RUN_BEFORE = re.compile(r"^\s*Run\s*#?\s*(\d+)\s*:\s*", re.IGNORECASE)  # Vernier: "Run 1: Time"
+_RUN_BEFORE = re.compile(r"^\s*(?:Run\s*#?\s*(\d+)|(Latest))\s*:\s*", re.IGNORECASE)  # Vernier: "Run 1: Time", Logger Pro's "Latest: Time"
 
 
 def key(name: str) -> str:
@@ -63,7 +64,7 @@ def run_of(name: str) -> tuple[str, str | None]:
     for mark in (_RUN_AFTER, _RUN_BEFORE):
         found = mark.search(name)
         if found is not None and (rest := (name[:found.start()] + name[found.end():]).strip()):
-            return rest, found[1]
+            return rest, found[1] or found[found.lastindex]
     return name, None
 
 

@@ -136,7 +136,7 @@ def read(source, stdin=None) -> DataTable:
         if len(cells) != len(headers):
             past = len(cells) > len(headers) and len(first[1]) > len(headers)
             raise InputError(OPTION, f"{name} line {line}: expected {len(headers)} cells, as the header names, got {len(cells)}"
-                             + (f" (a number under no column's name: {cells[len(headers)].strip()[:20]!r})" if past else ""),
+                             + (f" (a cell under no column's name: {next(cell for cell in cells[len(headers):] if cell.strip()).strip()[:20]!r})" if past else ""),
                              hint="name every column in the header" if past else None)
         for cell, header, column in zip(cells, headers, values):
             # A comma is read as a decimal comma here; the file's commas, all seen, then say whether it is one or the table is refused.

@@ -68,7 +68,7 @@ def test_a_comma_that_could_be_a_thousands_separator_is_refused_not_guessed(text
     ("t,omega\n", "has a header and no rows of numbers"),
     ("0,1\n1,2\n", "expected a header naming the columns before the numbers"),
     ("t,t\n0,1\n", "names a column twice: t"),
-    ("t,\n0,1\n", "a number under no column's name"), ("t,,omega\n0,,1\n", "expected a name for every column"),
+    ("t,\n0,1\n", "a cell under no column's name"), ("t,,omega\n0,,1\n", "expected a name for every column"),
     ("t,omega\n0," + "1" * 200_000 + "\n", "cannot be read as a table"),
 ])  # fmt: skip
 def test_a_bad_table_is_refused_in_one_line_naming_where(text, said):

@@ -48,7 +48,7 @@ def test_a_decimal_comma_is_decided_by_the_whole_file_not_one_cell():
 
 
 def test_a_cell_under_a_trailing_empty_column_is_refused_naming_it():
-    with pytest.raises(InputError, match="a number under no column's name: '7'") as caught:
+    with pytest.raises(InputError, match="a cell under no column's name: '7'") as caught:
         table("t (s),omega (rad/s),,\n0,1,,\n1,2,7,\n")
     assert "line 3" in str(caught.value)
 

@@ -117,3 +117,10 @@ def test_the_chart_of_runs_draws_each_run_with_its_own_inputs():
     plot = found.json()["plot"]
     assert len(plot["samples"]) == 72 and plot["curve"] == []
     assert max(abs(sample["residual"]) for sample in plot["samples"]) < 0.05
+
+
+def test_logger_pros_latest_run_is_one_run_named_as_the_scene_names():
+    (only,) = columns.split_runs(table("Latest: t (s)\tLatest: omega (rad/s)\n0\t1\n1\t2\n"))
+    assert [column.name for column in only.columns] == ["t", "omega"]
+    first, latest = columns.split_runs(table("Run 1: t (s),Run 1: omega (rad/s),Latest: t (s),Latest: omega (rad/s)\n0,1,0,2\n"))
+    assert "run Latest" in latest.source and list(latest.column("omega (rad/s)").values) == [2]
