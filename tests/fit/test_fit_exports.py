@@ -41,7 +41,7 @@ def java(x: float) -> str:
 
 
 def fitted(*args: str) -> dict[str, tuple[float, float]]:
-    result = run_taucli("fit", "spin-down", *args, "--uncertainty")
+    result = run_taucli("fit", "spin-down", *args, "--uncertainty", timeout=180)  # (the machine may be busy: a fit of runs is several fits)
     assert result.code == 0, result.err
     names = [args[i + 1] for i, word in enumerate(args) if word == "--get"]
     values = [tuple(float(x) for x in line.split()) for line in result.out.splitlines()]
@@ -105,9 +105,9 @@ def test_vernier_runs_side_by_side_fitted_together_each_its_own_omega0(tmp_path)
 
 def test_pasco_runs_in_milliseconds_fitted_together(tmp_path):
     rng = random.Random(8)
-    runs = [coast(omega0, 50, 0.25, 0.02, rng) for omega0 in (11.0, 8.0, 10.0)]
+    runs = [coast(omega0, 30, 0.4, 0.02, rng) for omega0 in (11.0, 8.0, 10.0)]
     header = ",".join(f"Time (ms) Run #{k},Angular Velocity (rad/s) Run #{k}" for k in (1, 2, 3))
-    lines = [",".join(f"{run[i][0] * 1000:.0f},{run[i][1]:.4f}" for run in runs) for i in range(50)]
+    lines = [",".join(f"{run[i][0] * 1000:.0f},{run[i][1]:.4f}" for run in runs) for i in range(30)]
     path = tmp_path / "pasco.csv"
     path.write_text(header + "\n" + "\n".join(lines) + "\n")
     found = fitted(str(path), "--y", "Angular Velocity (rad/s)=omega", *COMMON, "--per-run", "omega0",

@@ -112,7 +112,7 @@ def test_the_python_api_takes_per_run_and_counts(tmp_path):
 def test_the_chart_of_runs_draws_each_run_with_its_own_inputs():
     # two coasts (ω₀ 12 and 9 rad/s, noise 0.01 rad/s): each sample's fitted value is its own run's, so no residual is a run's offset
     found = run_taucli("fit", "spin-down", "docs/data/vernier-two-runs.csv", "--y", "Angular Velocity (rad/s)=omega", "--inertia", "0.05 kg*m^2",
-                       "--fit", "friction,viscous,omega0", "--per-run", "omega0", "--json", "--plot")
+                       "--fit", "friction,viscous,omega0", "--per-run", "omega0", "--json", "--plot", timeout=180)
     assert found.code == 0, found.err
     plot = found.json()["plot"]
     assert len(plot["samples"]) == 72 and plot["curve"] == []
