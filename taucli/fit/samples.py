@@ -160,7 +160,9 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         time = next((header for header, (target, is_result, _) in chosen.items() if target == "time" and not is_result), None)
         tables = [encoder.speeds(table, counted, time, per_rev, how) for table in tables]
         notes.append(f"column {counted!r} read as an encoder's {'cumulative count' if how == 'cumulative' else 'counts in each interval'}, "
-                     f"{per_rev:g} a revolution: each interval between two rows gives its mean speed, 2π·Δcount/({per_rev:g}·Δt), at its middle")
+                     f"{per_rev:g} a revolution: each interval between two rows gives its mean speed, 2π·Δcount/({per_rev:g}·Δt), at its middle; "
+                     "neighbouring intervals share a count's rounding, so their residuals alternate in sign (r₁ near −0.5) and the "
+                     "uncertainties, which take them as independent, are larger than the counts' own")
     results = [header for header, (_, is_result, _) in chosen.items() if is_result]
     if not results:
         names = ", ".join(repr(h) for h in headers)
