@@ -99,7 +99,7 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
                                   counts_per_rev=counts_per_rev, counts=counts)
     model, starts, notes = solve.model_of(command, given, names, found_samples, stdin=stdin, spell=spell)
     if per_run and not runs.names(per_run):
-        raise InputError("per_run", "expected the inputs of --fit to fit for each run, by name", example="{fit} friction,omega0 {per_run} omega0",
+        raise InputError("per_run", "expected the inputs of {fit} to fit for each run, by name", example="{fit} friction,omega0 {per_run} omega0",
                          got=repr(",".join(str(part) for part in per_run)))
     if runs.names(per_run):
         model, starts = _per_run(model, starts, runs.names(per_run), notes)

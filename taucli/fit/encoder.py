@@ -50,7 +50,7 @@ def kind(text, counts_per_rev) -> str | None:
     """--counts, which goes with --counts-per-rev: each refused without the other."""
     if counts_per_rev is None:
         if text is not None:
-            raise InputError("counts", "says what an encoder's counts are, and goes with --counts-per-rev", example="{counts_per_rev} 360 {counts} cumulative")
+            raise InputError("counts", "says what an encoder's counts are, and goes with {counts_per_rev}", example="{counts_per_rev} 360 {counts} cumulative")
         return None
     if text not in KINDS:
         raise InputError("counts", "expected cumulative (the count since the start, a position) or interval (the counts since the row before)",
@@ -95,11 +95,11 @@ def counted_column(command: Command, tables: list[DataTable], y: str | None, cho
         column, target, _ = columns.spec(y, "y")
         header = columns.find(tables, column, "y")
         if target not in (None, RESULT):
-            raise InputError("y", f"names column {header!r} as {target}, and with --counts-per-rev it holds counts, read as {RESULT}",
+            raise InputError("y", f"names column {header!r} as {target}, and with {{counts_per_rev}} it holds counts, read as {RESULT}",
                              example=f'{{y}} {columns.quoted(header)}', got=repr(y))
     else:
         named = [column.header for column in tables[0].columns if columns.key(column.name) in NAMES]
         if len(named) != 1:
-            raise InputError("y", "names the column of the encoder's counts (--counts-per-rev reads it)", example='{y} "Counts"')
+            raise InputError("y", "names the column of the encoder's counts ({counts_per_rev} reads it)", example='{y} "Counts"')
         header = named[0]
     chosen[header] = (RESULT, True, "")

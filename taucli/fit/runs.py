@@ -54,8 +54,8 @@ def expand(unknowns: list[Unknown], per_run: list[str], samples: Samples) -> lis
     fitted = [unknown.name for unknown in unknowns]
     for name in per_run:
         if name not in fitted:
-            raise InputError(OPTION, f"names {name}, which --fit does not fit: an input fitted for each run is one --fit names",
-                             example=f"--fit {','.join([*fitted, name])} --per-run {name}", got=repr(name))
+            raise InputError(OPTION, f"names {name}, which {{fit}} does not fit: an input fitted for each run is one {{fit}} names",
+                             example=f"{{fit}} {','.join([*fitted, name])} {{per_run}} {name}", got=repr(name))
     runs = len(samples.run_names)
     if runs < 2:
         raise InputError(OPTION, f"fits {', '.join(per_run)} for each run, and the samples are one run: give several files, "
