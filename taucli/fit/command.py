@@ -101,11 +101,16 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     if per_run and not runs.names(per_run):
         raise InputError("per_run", "expected the inputs of {fit} to fit for each run, by name", example="{fit} friction,omega0 {per_run} omega0",
                          got=repr(",".join(str(part) for part in per_run)))
-    if runs.names(per_run):
-        model, starts = _per_run(model, starts, runs.names(per_run), notes)
+    bound = None
     if limit is not None or progress is not None:
         faster = [name for name in ("dt", "method") if command.option(name) is not None]
-        model.budget = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
+        bound = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
+    if runs.names(per_run):
+        try:
+            model, starts = _per_run(model, starts, runs.names(per_run), notes, bound)
+        except budget.Spent as spent:  # (one budget for the runs' own fits and the joint one)
+            raise spent.refusal from None
+    model.budget = bound
     try:
         with np.errstate(all="ignore"):  # numbers past a double's range are looked for where they matter (NaN, inf: refused or said)
             found = solve.fit(model, starts)
@@ -121,13 +126,15 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     return report, found
 
 
-def _per_run(model: Model, starts: dict[str, float], per_run: list[str], notes: list[str]) -> tuple[Model, dict[str, float]]:
-    """The model with the inputs --per-run names fitted for each run, and its start (taucli.fit.runs)."""
+def _per_run(model: Model, starts: dict[str, float], per_run: list[str], notes: list[str], bound) -> tuple[Model, dict[str, float]]:
+    """The model with the inputs --per-run names fitted for each run, and its start (taucli.fit.runs);
+    the runs' own fits spend of the fit's time budget ``bound`` (a budget.Budget, or None) too."""
     samples = model.samples
     unknowns = runs.expand(model.unknowns, per_run, samples)
 
     def fit_run(run_samples) -> dict[str, float]:
         alone = Model(model.command, model.held, model.unknowns, run_samples, si=model.si, stdin=model.stdin, spell=model.spell)
+        alone.budget = bound
         with np.errstate(all="ignore"):
             return dict(zip(alone.names, (float(x) for x in solve.fit(alone, starts).p)))
 

@@ -124,3 +124,20 @@ def test_logger_pros_latest_run_is_one_run_named_as_the_scene_names():
     assert [column.name for column in only.columns] == ["t", "omega"]
     first, latest = columns.split_runs(table("Run 1: t (s),Run 1: omega (rad/s),Latest: t (s),Latest: omega (rad/s)\n0,1,0,2\n"))
     assert "run Latest" in latest.source and list(latest.column("omega (rad/s)").values) == [2]
+
+
+def test_the_runs_own_fits_are_within_the_fits_time_bound(tmp_path):
+    # two swings of 1,000 samples each, solved by rk4 at 1 ms: each run's own fit alone would take many minutes
+    import math
+    import time
+
+    paths = []
+    for k in (1, 2):
+        path = tmp_path / f"swing{k}.csv"
+        path.write_text("t (s),theta (rad)\n" + "".join(f"{0.02 * i:.2f},{0.5 * math.cos(math.sqrt(9.81) * 0.02 * i):.5f}\n" for i in range(1000)))
+        paths.append(str(path))
+    started = time.monotonic()
+    done = run_taucli("fit", "pendulum", *paths, "--shape", "point", "--mass", "1kg", "--radius", "1m", "--angle0", "0.5rad", "--fit", "g,angle0",
+                      "--per-run", "angle0", "--method", "rk4", "--no-steps", timeout=90)
+    assert time.monotonic() - started < 30
+    assert_usage_error(done, "--fit is estimated to take about", "--no-limit runs it as asked")
