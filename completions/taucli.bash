@@ -528,6 +528,9 @@ _taucli() {
             --y) :; return 0 ;;
             --sigma) :; return 0 ;;
             --range) :; return 0 ;;
+            --per-run) :; return 0 ;;
+            --counts-per-rev) :; return 0 ;;
+            --counts) COMPREPLY=($(compgen -W "cumulative interval" -- "$cur")); return 0 ;;
             --every) :; return 0 ;;
             --get) COMPREPLY=($(compgen -W "correlation residual_rms r2 chi2_dof samples dropped" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
@@ -539,7 +542,7 @@ _taucli() {
             (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --every --no-limit --json --get --to --no-steps --format --uncertainty --plot --out --residuals --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --per-run --counts-per-rev --counts --every --no-limit --json --get --to --no-steps --format --uncertainty --plot --out --residuals --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -12,8 +12,11 @@
   /dev/zero, a FIFO, stdin): it is read a chunk at a time and refused as soon as it passes that,
   so no more than the cap is ever read (#43).
 - Text is UTF-8 (a BOM is skipped), else Windows-1252 where the file is not UTF-8; UTF-16 and
-  UTF-32 with a byte-order mark, and UTF-16 without one where every character is ASCII (every
-  other byte NUL), are read too. Any other NUL byte is a binary file.
+  UTF-32 with a byte-order mark, and UTF-16 without one where the first 256 characters of it
+  (every other byte NUL) decode to text with no control character but tab and line ends (a
+  spreadsheet's "Unicode text": ``Winkel (°)`` too), are read too. Any other NUL byte is a
+  binary file, and its refusal says what it is where its first bytes tell (a zip archive such
+  as an .xlsx workbook, an old .xls, a PDF, an image) and what to do.
 - Lines end at ``\\n``, ``\\r\\n`` or ``\\r`` and nowhere else: a form feed, U+0085 or U+2028 inside
   a cell is a character of the cell (str.splitlines() would split there and number every later
   line wrong).
@@ -100,8 +103,23 @@ def _too_long(option: str, name: str, number: int) -> InputError:
     return InputError(option, f"{name} line {number}: longer than {MAX_LINE:,} characters, so not a table of numbers", hint="export the data as CSV")
 
 
-def _binary(option: str, name: str) -> InputError:
-    return InputError(option, f"{name} is not a text table (it holds NUL bytes: a binary file?)", hint="export the data as CSV")
+# What a binary file is, by its first bytes: (magic, what it is, what to do).
+_MAGIC = (
+    (b"PK\x03\x04", "a zip archive (an .xlsx workbook, phyphox's export, an .ods)", "taucli fit reads an .xlsx or a zip of CSVs given by its file name; else export the data as CSV"),
+    (b"\xd0\xcf\x11\xe0", "an old Excel workbook (.xls)", "save it as .xlsx or CSV in Excel"),
+    (b"%PDF", "a PDF document", "export the data as CSV from the program that made it"),
+    (b"\x89PNG", "a PNG image", "export the data as CSV, not the graph"),
+    (b"\xff\xd8\xff", "a JPEG image", "export the data as CSV, not the graph"),
+    (b"SQLite format 3", "an SQLite database", "export the table as CSV"),
+)
+
+
+def _binary(option: str, name: str, head: bytes = b"") -> InputError:
+    for magic, what, hint in _MAGIC:
+        if head.startswith(magic):
+            return InputError(option, f"{name} is {what}, not a text table", hint=hint)
+    return InputError(option, f"{name} is not a text table: it holds NUL bytes in no text encoding taucli reads (UTF-8, Windows-1252, UTF-16, UTF-32)",
+                      hint="export the data as CSV in UTF-8")
 
 
 def _not_text(option: str, name: str, why: str = "") -> InputError:
@@ -138,7 +156,7 @@ def _decoded(read: Callable[[int], object], name: str, option: str, what: str) -
     if encoding is None and b"\x00" in head:
         encoding = _utf16_without_bom(head)
         if encoding is None:
-            raise _binary(option, name)
+            raise _binary(option, name, head)
     if encoding is not None:
         decoder = codecs.getincrementaldecoder(encoding)()
         try:
@@ -157,16 +175,22 @@ def _decoded(read: Callable[[int], object], name: str, option: str, what: str) -
 
 
 def _utf16_without_bom(head: bytes) -> str | None:
-    """UTF-16 without a byte-order mark where every character is ASCII: every other byte NUL and
-    no other (text a spreadsheet saved as "Unicode text"); None for anything else with a NUL."""
-    whole = head[:len(head) - len(head) % 2]  # a chunk may end inside a character
+    """UTF-16 without a byte-order mark (text a spreadsheet saved as "Unicode text"): every other
+    byte NUL in most characters, and the first 256 characters decode to text with no control
+    character but tab and line ends (``°`` and ``ω`` too); None for anything else with a NUL."""
+    whole = head[:min(len(head) - len(head) % 2, 512)]  # a chunk may end inside a character
     even, odd = whole[0::2], whole[1::2]
     if not even:
         return None
-    if odd.count(0) == len(odd) and 0 not in even and even.isascii():
-        return "utf-16-le"
-    if even.count(0) == len(even) and 0 not in odd and odd.isascii():
-        return "utf-16-be"
+    for encoding, high, low in (("utf-16-le", odd, even), ("utf-16-be", even, odd)):
+        if high.count(0) * 4 < len(high) * 3 or 0 in low:  # (a character whose low byte is NUL: Ā, Ȁ… are no table's)
+            continue
+        try:
+            text = whole.decode(encoding)
+        except UnicodeDecodeError:
+            continue
+        if not any(ord(c) < 32 and c not in "\t\r\n" or 0x7F <= ord(c) < 0xA0 for c in text):
+            return encoding
     return None
 
 

@@ -54,7 +54,8 @@ def run(*, env, **given) -> int:
     return command.run(env, given)
 
 
-def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = None, range=(), every=None, stdin=None, **options):
+def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = None, range=(), every=None, per_run=(), counts_per_rev=None, counts=None, stdin=None,
+        **options):
     """The fit's Report: ``scene``'s inputs named in ``fit`` ("friction,viscous") fitted to the
     tables ``data`` (file names, pathlib.Path, or open file objects), the scene's other options as
     keywords (texts with units, or SI numbers; numpy numbers too). Every bad argument raises
@@ -73,7 +74,18 @@ def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = 
     options = {name.replace("-", "_"): plain(value, name) for name, value in options.items()}
     return command.fitted(scene, sources, options, fit=_texts(fit, "fit", "friction,viscous", alone=True), x=_texts(x, "x", "t (s)=time"),
                           y=_text(y, "y", "omega (rad/s)=omega"), sigma=_text(sigma, "sigma", "0.05 rad/s"),
-                          ranges=_texts(range, "range", "time=0..10s"), every=every, stdin=stdin, spell=lambda name: name)
+                          ranges=_texts(range, "range", "time=0..10s"), every=every, per_run=_texts(per_run, "per_run", "omega0"),
+                          counts_per_rev=_count(counts_per_rev), counts=_text(counts, "counts", "cumulative"), stdin=stdin,
+                          spell=lambda name: name)
+
+
+def _count(value):
+    """counts_per_rev=: a number or its text (taucli.fit.encoder reads it)."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return repr(value)
+    raise InputError("counts_per_rev", "expected the encoder's counts in a revolution, a whole number", example="counts_per_rev=360", got=_shown(value))
 
 
 def _shown(value) -> str:

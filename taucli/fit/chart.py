@@ -35,8 +35,8 @@ def _axis(found: Fit) -> tuple[str, str, np.ndarray]:
 def _curve(found: Fit, key: str, xs: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """(x, f, σ_f) along the curve: the model at CURVE points over the samples' span, and its band."""
     samples = found.model.samples
-    if samples.varying != [key]:
-        return None
+    if samples.varying != [key] or any(hasattr(unknown, "run") for unknown in found.model.unknowns):
+        return None  # (runs with inputs of their own: one curve would be one run's, so the fit is drawn at each sample)
     row = samples.row(0)
     grid = np.linspace(float(np.min(xs)), float(np.max(xs)), CURVE)
     model = found.model

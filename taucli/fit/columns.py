@@ -1,10 +1,15 @@
 """How a table's columns map to the scene: what a header tells beyond its unit
 (csv_text.split_header reads the unit), and the rules that follow from it:
 
-- A run mark: PASCO writes ``Time (ms) Run #1``, Vernier ``Run 1: Time (s)``. Where every marked
+- A run mark: PASCO writes ``Time (ms) Run #1``, Vernier ``Run 1: Time (s)`` (Logger Pro's
+  current run ``Latest: Time (s)``). Where every marked
   column of a table is of one run, the mark is left out of the names (``Time``), so the columns
-  match the scene by name as an unmarked export does; the header is kept as written. Columns of
-  several runs keep their marks (their names then differ).
+  match the scene by name as an unmarked export does; the header is kept as written. A table of
+  several runs side by side is several tables, one a run (split_runs): each run's columns with
+  the mark left out, so they match by name too, and a fit takes them together as it takes
+  several files (each file, and each run in one, a run of its own: --per-run fits an input for
+  each). ``--x`` or ``--y`` naming a marked header as written (``"Run 2: Time (s)"``) fits that
+  run alone.
 - A column with no unit (none in its header, none in the mapping that names it) is read in SI
   only where its name is the input's or the result's own (``t`` or ``time`` for --time, ``m1``,
   ``omega``), with a note; any other name is refused, naming the mapping that gives it a unit:
@@ -23,11 +28,12 @@ Plain Python: no numpy, no pint (the units are read by taucli.quantities.units).
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import replace
 
-from taucli.core.errors import InputError
-from taucli.fit.data import Column, DataTable
+from taucli.core.errors import InputError, did_you_mean
+from taucli.fit.data import Column, DataTable, Numbers, split_header
 from taucli.options.table import Command
 from taucli.quantities import units
 from taucli.writing.report import pretty_unit
@@ -36,7 +42,7 @@ TIME_NAMES = ("t", "time")
 AMBIGUOUS = frozenset({"angle", "angular velocity", "angular acceleration"})  # a bare number is refused (docs/units.md)
 
 _RUN_AFTER = re.compile(r"\s*\bRun\s*#?\s*(\d+)\s*$", re.IGNORECASE)  # PASCO: "Time Run #1"
-_RUN_BEFORE = re.compile(r"^\s*Run\s*#?\s*(\d+)\s*:\s*", re.IGNORECASE)  # Vernier: "Run 1: Time"
+_RUN_BEFORE = re.compile(r"^\s*(?:Run\s*#?\s*(\d+)|(Latest))\s*:\s*", re.IGNORECASE)  # Vernier: "Run 1: Time", Logger Pro's "Latest: Time"
 
 
 def key(name: str) -> str:
@@ -58,8 +64,43 @@ def run_of(name: str) -> tuple[str, str | None]:
     for mark in (_RUN_AFTER, _RUN_BEFORE):
         found = mark.search(name)
         if found is not None and (rest := (name[:found.start()] + name[found.end():]).strip()):
-            return rest, found[1]
+            return rest, found[1] or found[found.lastindex]
     return name, None
+
+
+def split_runs(table: DataTable, picked: set[str] = frozenset()) -> list[DataTable]:
+    """The runs of a table, one table each (the module's rule): where its columns carry several
+    runs' marks, each run's columns with their marks left out of headers and names, the unmarked
+    columns (a time shared by the runs) in each, and the rows where every one of the run's own
+    cells is blank left out (a shorter run's padding). ``picked``: headers --x and --y name as
+    written; where one has a mark, that run alone is fitted, its headers as written."""
+    marks = list(dict.fromkeys(run for run in (run_of(column.name)[1] for column in table.columns) if run is not None))
+    if len(marks) < 2:
+        return [one_run_named(table)]
+    chosen = {run_of(split_name(header))[1] for header in picked} - {None}
+    if chosen:
+        kept = [column for column in table.columns if run_of(column.name)[1] in ({None} | chosen)]
+        return [replace(table, columns=tuple(kept))]
+    shared = [column for column in table.columns if run_of(column.name)[1] is None]
+    runs = []
+    first_names = None
+    for mark in marks:
+        own = [column for column in table.columns if run_of(column.name)[1] == mark]
+        names = sorted(run_of(column.name)[0] for column in own)
+        if first_names is None:
+            first_names = names
+        elif names != first_names:
+            raise InputError("data", f"{table.source}: run {mark} has the columns {', '.join(names)}, and run {marks[0]} has {', '.join(first_names)}: "
+                             "every run of one fit has the same columns", hint=f"fit one run: {{x}} {quoted(own[0].header)}")
+        keep = [i for i in range(len(table.lines)) if any(not math.isnan(column.values[i]) for column in own)]
+        columns = [replace(column, header=run_of(column.header)[0], name=run_of(column.name)[0], values=Numbers("d", (column.values[i] for i in keep)))
+                   for column in (*shared, *own)]
+        runs.append(replace(table, source=f"{table.source} (run {mark})", columns=tuple(columns), lines=Numbers("q", (table.lines[i] for i in keep))))
+    return runs
+
+
+def split_name(header: str) -> str:
+    return split_header(header)[0]
 
 
 def one_run_named(table: DataTable) -> DataTable:
@@ -155,3 +196,28 @@ def _named_target(command: Command, column: Column, y_given: bool) -> tuple[str 
     if result is not None and not y_given:
         return result.key, True
     return None, False
+
+
+def spec(text: str, option: str) -> tuple[str, str | None, str]:
+    """(COLUMN, TARGET or None, the unit TARGET carries) from "COLUMN[=TARGET [(UNIT)]]"."""
+    column, sep, target = str(text).rpartition("=") if "=" in str(text) else (str(text), "", "")
+    column, target = column.strip(), target.strip()
+    if not column or (sep and not target):
+        raise InputError(option, "expected COLUMN or COLUMN=NAME", example=f'{{{option}}} "Time (s)"' if option == "x" else '{y} "w (rad/s)=omega"', got=repr(text))
+    if not sep:
+        return column, None, ""
+    name, unit = split_header(target)
+    return column, name, unit
+
+
+def find(tables: list[DataTable], wanted: str, option: str) -> str:
+    """The header of the column ``wanted`` names: its header, or its name without the unit (a
+    single run's header without its mark too: "Angular Velocity (rad/s)" for "Run 1: Angular Velocity (rad/s)")."""
+    headers = list(dict.fromkeys(column.header for column in tables[0].columns))
+    for match in (lambda c: c.header == wanted, lambda c: c.name == wanted, lambda c: c.header.lower() == wanted.lower() or c.name.lower() == wanted.lower(),
+                  lambda c: run_of(c.header)[0].lower() == wanted.lower()):
+        found = [column.header for column in tables[0].columns if match(column)]
+        if len(found) == 1:
+            return found[0]
+    raise InputError(option, f"expected a column of {tables[0].source}: {', '.join(repr(h) for h in headers)}", got=repr(wanted),
+                     hint=did_you_mean(wanted, headers))

@@ -13,7 +13,8 @@ import numpy as np
 from taucli.writing import render
 from taucli.writing.document import document_text
 from taucli.core.errors import InputError, did_you_mean
-from taucli.fit import budget, chart, data, residuals, results, samples, solve
+from taucli.fit import budget, chart, data, residuals, results, runs, samples, solve
+from taucli.fit.model import Model
 from taucli.answering.answer import LIMIT_SECONDS
 from taucli.answering.inputs import read
 from taucli.options import COMMANDS, SCENES
@@ -79,13 +80,15 @@ def _not_taken(command: Command, flag: str, known: list[str]) -> InputError:
     return InputError("", f"{flag} is not an option of fit, nor an input of {command.name}", hint=did_you_mean(flag, known))
 
 
-def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> Report:
+def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, per_run=(), counts_per_rev=None, counts=None,
+           stdin=None, spell=None) -> Report:
     """The fit's report (what the Python API returns: no time limit, as --find's has none there)."""
-    return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, stdin=stdin, spell=spell)[0]
+    return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, per_run=per_run, counts_per_rev=counts_per_rev,
+                  counts=counts, stdin=stdin, spell=spell)[0]
 
 
-def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None,
-           limit: float | None = None, progress=None) -> tuple[Report, solve.Fit]:
+def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, per_run=(), counts_per_rev=None, counts=None,
+           stdin=None, spell=None, limit: float | None = None, progress=None) -> tuple[Report, solve.Fit]:
     """The fit's report, and the fit itself (for the chart). ``limit`` (seconds) refuses a fit
     estimated to take longer (taucli.fit.budget); ``progress`` is told the solves done and planned."""
     command = _scene(scene)
@@ -93,14 +96,27 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     tables = [data.read(source, stdin) for source in files]
     names = solve.names_of(fit)
     gravity = read(command, {"g": given["g"]})[0].get("g") if given.get("g") is not None else None
-    found_samples = samples.build(command, tables, x=x, y=y, sigma=sigma, ranges=ranges, every=every, fitted=names, given=set(given), gravity=gravity)
+    found_samples = samples.build(command, tables, x=x, y=y, sigma=sigma, ranges=ranges, every=every, fitted=names, given=set(given), gravity=gravity,
+                                  counts_per_rev=counts_per_rev, counts=counts)
     model, starts, notes = solve.model_of(command, given, names, found_samples, stdin=stdin, spell=spell)
+    if per_run and not runs.names(per_run):
+        raise InputError("per_run", "expected the inputs of {fit} to fit for each run, by name", example="{fit} friction,omega0 {per_run} omega0",
+                         got=repr(",".join(str(part) for part in per_run)))
+    bound = None
     if limit is not None or progress is not None:
         faster = [name for name in ("dt", "method") if command.option(name) is not None]
-        model.budget = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
+        bound = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
+    if runs.names(per_run):
+        try:
+            model, starts = _per_run(model, starts, runs.names(per_run), notes, bound)
+        except budget.Spent as spent:  # (one budget for the runs' own fits and the joint one)
+            raise spent.refusal from None
+    model.budget = bound
     try:
         with np.errstate(all="ignore"):  # numbers past a double's range are looked for where they matter (NaN, inf: refused or said)
             found = solve.fit(model, starts)
+            if runs.names(per_run):  # the starts are the runs' own fits, not values the user gave
+                found.method = found.method.replace("from the starts given", "from each run fitted alone")
             report = results.written(found)
     except budget.Spent as spent:
         raise spent.refusal from None
@@ -112,6 +128,25 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
 
 
 BAR_AFTER = 1.0  # seconds a fit runs before its progress bar shows (on a terminal): a quick fit shows none
+
+
+def _per_run(model: Model, starts: dict[str, float], per_run: list[str], notes: list[str], bound) -> tuple[Model, dict[str, float]]:
+    """The model with the inputs --per-run names fitted for each run, and its start (taucli.fit.runs);
+    the runs' own fits spend of the fit's time budget ``bound`` (a budget.Budget, or None) too."""
+    samples = model.samples
+    unknowns = runs.expand(model.unknowns, per_run, samples)
+
+    def fit_run(run_samples) -> dict[str, float]:
+        alone = Model(model.command, model.held, model.unknowns, run_samples, si=model.si, stdin=model.stdin, spell=model.spell)
+        alone.budget = bound
+        with np.errstate(all="ignore"):
+            return dict(zip(alone.names, (float(x) for x in solve.fit(alone, starts).p)))
+
+    joint = runs.starts(samples, unknowns, starts, fit_run)
+    first = samples.run_names[0]
+    notes.append(f"{len(samples.run_names)} runs fitted together ({', '.join(samples.run_names)}): {', '.join(per_run)} fitted for each, "
+                 f"the other inputs shared; the scene's results below are run 1's ({first})")
+    return Model(model.command, model.held, unknowns, samples, si=model.si, spreads=model.spreads, stdin=model.stdin, spell=model.spell), joint
 
 
 def run(env, given: dict) -> int:
@@ -134,7 +169,8 @@ def run(env, given: dict) -> int:
     try:
         with render.progress_bar(env.stderr, True, after=BAR_AFTER) as progress:
             report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
-                                   sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin,
+                                   sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"),
+                                   per_run=tuple(given.get("per_run") or ()), counts_per_rev=given.get("counts_per_rev"), counts=given.get("counts"), stdin=env.stdin,
                                    limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress)
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None

@@ -5,10 +5,19 @@ write it.
   its unit in parentheses or brackets, ``Time (s)`` or ``t [ms]``.
 - Columns are separated by tabs, else semicolons, else commas (the header says which): the
   rules of taucli.answering.csv_text, which a torque profile is read by too.
-- A decimal comma is read where the file shows that it is one (docs/units.md: a comma that could
-  be a thousands separator is refused, never guessed): the columns are separated by semicolons or
-  tabs, no number has a decimal point, and some number has other than three digits after its
-  comma. A file whose every comma is followed by three digits (``1,500``) is refused.
+- A decimal comma is read where the whole file shows that it is one (docs/units.md: a comma that
+  could be a thousands separator is refused, never guessed): the columns are separated by
+  semicolons or tabs, no number has a decimal point, and some number is no thousands-grouped
+  one: other than three digits after its comma, an exponent, or before it 0, nothing, a leading
+  0 or more than three digits (``0,000``, ``1234,500``). A file whose every comma could group
+  thousands (``1,500`` and ``12,250`` alone) is refused.
+- Excel's trailing empty columns (a header ending ``,,`` and cells empty under them) are left
+  out; a cell under them that is not empty is refused.
+- A row of units under the header (``t;omega`` then ``s;rad/s``, as loggers write them): every
+  cell of it that is not empty a unit, none a number; each is the unit of its column, as
+  ``t (s)`` would be (a column whose header has a unit of its own and another below is refused).
+- An .xlsx workbook and a zip of CSV files (phyphox's export) are read directly
+  (taucli.fit.sources): the sheet, or the CSV inside, is the table.
 - Every cell of a row is a finite number or empty: a blank or NaN cell (phyphox pads with NaN,
   Vernier and PASCO pad shorter runs with blanks) is read as NaN, no measurement, and the fit
   leaves out the rows where a column it uses has one (samples.py, with a note); infinity or
@@ -36,12 +45,14 @@ from dataclasses import dataclass
 from taucli.answering.csv_text import MAX_BYTES, delimiter as _delimiter, lines as text_lines, split_header, too_large
 from taucli.core.errors import InputError
 from taucli.core.written import printable
+from taucli.fit import sources
 
 OPTION = "data"  # the argument the messages name (DATA)
 MAX_ROWS = 2_000_000
 
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
-_COMMA_NUMBER = re.compile(r"[+-]?\d*,(\d+)(?:[eE][+-]?\d+)?")
+_COMMA_NUMBER = re.compile(r"[+-]?(\d*),(\d+)([eE][+-]?\d+)?")
+_UNIT_CELL = re.compile(r"[(\[]?\s*(?:[^\W\d_]|[°%])[^,;\t]{0,23}?\s*[)\]]?")  # a unit under a header: s, rad/s, m/s^2, (°), [ms]
 _NOT_FINITE = {"nan", "inf", "-inf", "+inf", "infinity", "-infinity", "+infinity"}
 
 
@@ -96,6 +107,9 @@ def read(source, stdin=None) -> DataTable:
         raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
                          example="t (s),omega (rad/s)")
     start, header_line = found[0] - 1, found[1]
+    if header_line.lstrip().startswith("<"):
+        raise InputError(OPTION, f"{name} is XML or HTML (a phyphox experiment or state file, a web page), not a table",
+                         hint="export the data as CSV (phyphox: the menu's Export Data, then give the zip it writes or the CSV in it)")
     delimiter = _delimiter(header_line)  # the rules a torque profile is read by too
     rows = _rows(itertools.chain([(found[0], header_line)], numbered), start, delimiter, name)
     first = next(rows, None)
@@ -103,6 +117,8 @@ def read(source, stdin=None) -> DataTable:
         raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
                          example="t (s),omega (rad/s)")
     headers = [cell.strip() for cell in first[1]]
+    while len(headers) > 1 and not headers[-1]:  # Excel's trailing empty columns
+        headers.pop()
     if any(not header for header in headers):
         raise InputError(OPTION, f"{name} line {first[0]}: expected a name for every column", got=repr(header_line[:80]))
     if len(set(headers)) != len(headers):
@@ -110,12 +126,18 @@ def read(source, stdin=None) -> DataTable:
         raise InputError(OPTION, f"{name} line {first[0]}: names a column twice: {', '.join(twice)}")
     if all(_NUMBER.fullmatch(header) for header in headers):
         raise InputError(OPTION, f"{name} line {first[0]}: expected a header naming the columns before the numbers", example="t (s),omega (rad/s)")
+    headers, rows = _units_row(headers, rows, name)
     values = [Numbers("d") for _ in headers]
     lines = Numbers("q")
     commas = _Commas()
     for line, cells in rows:
+        if len(cells) > len(headers) and not any(cell.strip() for cell in cells[len(headers):]):
+            cells = cells[:len(headers)]  # cells under Excel's trailing empty columns
         if len(cells) != len(headers):
-            raise InputError(OPTION, f"{name} line {line}: expected {len(headers)} cells, as the header names, got {len(cells)}")
+            past = len(cells) > len(headers) and len(first[1]) > len(headers)
+            raise InputError(OPTION, f"{name} line {line}: expected {len(headers)} cells, as the header names, got {len(cells)}"
+                             + (f" (a cell under no column's name: {next(cell for cell in cells[len(headers):] if cell.strip()).strip()[:20]!r})" if past else ""),
+                             hint="name every column in the header" if past else None)
         for cell, header, column in zip(cells, headers, values):
             # A comma is read as a decimal comma here; the file's commas, all seen, then say whether it is one or the table is refused.
             column.append(_number(cell, line, header, name, commas.seen(line, cell)))
@@ -125,6 +147,28 @@ def read(source, stdin=None) -> DataTable:
     decimal_comma = commas.decided(delimiter, name)
     columns = tuple(Column(header, *split_header(header), column) for header, column in zip(headers, values))
     return DataTable(name, columns, lines, delimiter, decimal_comma)
+
+
+def _units_row(headers: list[str], rows, name: str):
+    """(the headers, the rows) with a row of units under the header (the module's rule) read into
+    the headers: ``t`` over ``s`` is ``t (s)``."""
+    second = next(rows, None)
+    if second is None:
+        return headers, iter(())
+    line, cells = second
+    units = [cell.strip() for cell in cells[:len(headers)]]
+    if (len(cells) < len(headers) or any(cell.strip() for cell in cells[len(headers):]) or not any(units)
+            or any(unit and (_NUMBER.fullmatch(unit) or unit.lower() in _NOT_FINITE or not _UNIT_CELL.fullmatch(unit)) for unit in units)):
+        return headers, itertools.chain([second], rows)
+    named = []
+    for header, unit in zip(headers, units):
+        unit = unit.strip("()[] ")
+        own = split_header(header)[1]
+        if unit and own and own != unit:
+            raise InputError(OPTION, f"{name} line {line}: column {header!r} has the unit {own} in its header and {unit} in the row of units under it",
+                             hint="keep one of them")
+        named.append(f"{header} ({unit})" if unit and not own else header)
+    return named, rows
 
 
 def _name(source) -> str:
@@ -140,6 +184,8 @@ def _lines(source, stdin, name: str):
         if stdin is None:
             raise InputError(OPTION, "cannot be - here: no stdin to read it from")
         return _guarded((stdin.buffer if hasattr(stdin, "buffer") else stdin).read, name, "expected a readable stdin")
+    if sources.is_zip(source):  # an .xlsx workbook, or phyphox's zip of CSVs
+        return sources.lines(source, name, OPTION, _WHAT)
     try:
         if os.path.getsize(source) > MAX_BYTES:  # a regular file says its size (a device or a FIFO says 0: the stream's cap holds there)
             raise too_large(OPTION, name, _WHAT)
@@ -202,7 +248,7 @@ class _Commas:
             cell = cell.strip()
             self.with_comma = self.with_comma or (line, cell)
             found = _COMMA_NUMBER.fullmatch(cell)
-            if found is not None and len(found[1]) != 3:
+            if found is not None and _not_grouped(found):
                 self.decimal = True
             return True
         if self.with_point is None and "." in cell and _NUMBER.fullmatch(cell.strip()):
@@ -220,9 +266,17 @@ class _Commas:
             raise InputError(OPTION, f"{name} line {line}: numbers with a comma beside numbers with a point ({self.with_point[1]!r} on line {self.with_point[0]}): "
                              "the comma could be a thousands separator", got=repr(cell), hint="write every number with a point")
         if not self.decimal:
-            raise InputError(OPTION, f"{name} line {line}: every comma is followed by three digits, so it could be a thousands separator "
-                             "or a decimal comma", got=repr(cell), hint="write 1.5 or 1500")
+            raise InputError(OPTION, f"{name} line {line}: every comma could group thousands (three digits after it, one to three before), "
+                             "so it could be a thousands separator or a decimal comma", got=repr(cell), hint="write 1.5 or 1500")
         return True
+
+
+def _not_grouped(found: re.Match) -> bool:
+    """Whether a number with one comma is no thousands-grouped one, so the comma is a decimal one:
+    other than three digits after it, an exponent, or before it 0, nothing, a leading 0 or more
+    than three digits (0,500; ,5; 1234,500)."""
+    whole, decimals, exponent = found[1], found[2], found[3]
+    return len(decimals) != 3 or exponent is not None or not whole or whole.startswith("0") or len(whole) > 3
 
 
 def _number(cell: str, line: int, header: str, name: str, decimal_comma: bool) -> float:

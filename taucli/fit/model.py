@@ -69,21 +69,24 @@ class Model:
         self.refusal: Exception | None = None
         self._cache: dict[tuple, np.ndarray] = {}
         self._rows = [samples.row(i) for i in range(samples.count)]
+        self._runs = list(samples.runs) or [0] * samples.count
 
     @property
     def names(self) -> list[str]:
         return [unknown.name for unknown in self.unknowns]
 
-    def given(self, p, row: Mapping[str, float] | None = None, moved: Mapping[str, float] | None = None) -> dict:
-        """The scene's options for one sample (``row``: its inputs) with the fitted inputs at p."""
+    def given(self, p, row: Mapping[str, float] | None = None, moved: Mapping[str, float] | None = None, run: int = 0) -> dict:
+        """The scene's options for one sample (``row``: its inputs; ``run``: the run it is of) with
+        the fitted inputs at p: an input fitted for each run (taucli.fit.runs) in its own run's alone."""
         given = {**self.held, **(moved or {}), **(row or {})}
         for unknown, x in zip(self.unknowns, p):
-            given = unknown.given_with(given, float(x))
+            if getattr(unknown, "run", run) == run:
+                given = unknown.given_with(given, float(x))
         return given
 
-    def report(self, p, row: Mapping[str, float] | None = None, moved: Mapping[str, float] | None = None) -> Report:
+    def report(self, p, row: Mapping[str, float] | None = None, moved: Mapping[str, float] | None = None, run: int = 0) -> Report:
         self.solves += 1
-        given = self.given(p, row, moved)
+        given = self.given(p, row, moved, run)
         if self.budget is None:
             return pipeline.solve(self.command, given, stdin=self.stdin, spell=self.spell)
         return self.budget.timed(lambda: pipeline.solve(self.command, given, stdin=self.stdin, spell=self.spell))
@@ -91,7 +94,7 @@ class Model:
     def value(self, p, i: int, moved: Mapping[str, float] | None = None) -> float:
         """f(xᵢ; p), or NaN where the scene refuses or has no value (the reason kept)."""
         try:
-            result = self.report(p, self._rows[i], moved).results.get(self.samples.y_key)
+            result = self.report(p, self._rows[i], moved, self._runs[i]).results.get(self.samples.y_key)
         except REFUSALS as err:
             self.refusal = err
             return math.nan

@@ -24,13 +24,13 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from taucli.quantities import units
 from taucli.quantities.kinds import BOUNDS
 from taucli.core.errors import InputError, did_you_mean
-from taucli.fit import columns
-from taucli.fit.data import Column, DataTable, split_header
+from taucli.fit import columns, encoder
+from taucli.fit.data import Column, DataTable
 from taucli.fit.columns import TIME_NAMES, key as _key, quoted as _quoted
 from taucli.writing.report import fmt, pretty_unit
 from taucli.options.table import Command
@@ -67,6 +67,8 @@ class Samples:
     empty: list[tuple[str, int]] = field(default_factory=list)  # (file, line) of each row left out for a blank or NaN cell the fit uses
     thinned: int = 0  # left out by --every
     notes: list[str] = field(default_factory=list)
+    runs: list[int] = field(default_factory=list)  # the run each sample is of (an index of run_names)
+    run_names: list[str] = field(default_factory=list)  # each run's file (and its mark): "coast.csv", "lab.csv (run 2)"
 
     @property
     def count(self) -> int:
@@ -75,6 +77,13 @@ class Samples:
     @property
     def dropped(self) -> int:
         return self.outside + self.thinned
+
+    def of_runs(self, kept: set[int]) -> Samples:
+        """These samples of the runs ``kept`` alone (a start for each run's own inputs)."""
+        chosen = [i for i, run in enumerate(self.runs) if run in kept]
+        pick = lambda values: [values[i] for i in chosen]  # noqa: E731
+        return replace(self, y=pick(self.y), inputs={name: pick(values) for name, values in self.inputs.items()},
+                       sigma=None if self.sigma is None else pick(self.sigma), places=pick(self.places), runs=pick(self.runs), notes=[])
 
     def row(self, i: int) -> dict[str, float]:
         return {name: values[i] for name, values in self.inputs.items()}
@@ -85,27 +94,7 @@ class Samples:
         return [name for name, values in self.inputs.items() if len(set(values)) > 1]
 
 
-def _spec(text: str, option: str) -> tuple[str, str | None, str]:
-    """(COLUMN, TARGET or None, the unit TARGET carries) from "COLUMN[=TARGET [(UNIT)]]"."""
-    column, sep, target = str(text).rpartition("=") if "=" in str(text) else (str(text), "", "")
-    column, target = column.strip(), target.strip()
-    if not column or (sep and not target):
-        raise InputError(option, "expected COLUMN or COLUMN=NAME", example=f'{{{option}}} "Time (s)"' if option == "x" else '{y} "w (rad/s)=omega"', got=repr(text))
-    if not sep:
-        return column, None, ""
-    name, unit = split_header(target)
-    return column, name, unit
-
-
-def _find(tables: list[DataTable], wanted: str, option: str) -> str:
-    """The header of the column ``wanted`` names: its header, or its name without the unit."""
-    headers = list(dict.fromkeys(column.header for column in tables[0].columns))
-    for match in (lambda c: c.header == wanted, lambda c: c.name == wanted, lambda c: c.header.lower() == wanted.lower() or c.name.lower() == wanted.lower()):
-        found = [column.header for column in tables[0].columns if match(column)]
-        if len(found) == 1:
-            return found[0]
-    raise InputError(option, f"expected a column of {tables[0].source}: {', '.join(repr(h) for h in headers)}", got=repr(wanted),
-                     hint=did_you_mean(wanted, headers))
+_spec, _find = columns.spec, columns.find  # (named in columns.py, where a column's naming is)
 
 
 def _factor(column: Column, unit: str, kind: str | None, si_unit: str, label: str, notes: list[str], target: str = "", is_result: bool = False) -> float:
@@ -129,15 +118,19 @@ def _kind_of_result(si_unit: str) -> str | None:
 
 
 def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = None, sigma: str | None = None,
-          ranges=(), every: str | None = None, fitted=(), given=(), gravity: float | None = None) -> Samples:
-    """The samples of ``tables`` for ``command``, every column matched and converted to SI."""
+          ranges=(), every: str | None = None, fitted=(), given=(), gravity: float | None = None, counts_per_rev=None, counts=None) -> Samples:
+    """The samples of ``tables`` for ``command``, every column matched and converted to SI; an
+    encoder's counts (``counts_per_rev``, ``counts``) as revolutions (taucli.fit.encoder)."""
     notes: list[str] = []
+    how = encoder.kind(counts, counts_per_rev)
+    per_rev = encoder.per_rev(counts_per_rev) if how is not None else None
     headers = [column.header for column in tables[0].columns]
     for table in tables[1:]:
         if [column.header for column in table.columns] != headers:
             raise InputError("data", f"{table.source} names other columns than {tables[0].source}: every file of one fit has the same columns",
                              got=", ".join(repr(column.header) for column in table.columns))
-    tables = [columns.one_run_named(table) for table in tables]
+    picked = {_spec(text, "x")[0] for text in x or ()} | ({_spec(y, "y")[0]} if y is not None else set())
+    tables = [run for table in tables for run in columns.split_runs(table, picked)]  # each file, and each run side by side in one, a run
     chosen: dict[str, tuple[str, bool, str]] = {}  # header -> (target, is_result, unit given by the mapping)
     for text in x or ():
         column, target, unit = _spec(text, "x")
@@ -145,7 +138,9 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         target = _option_target(command, target or "time", text)
         columns.refuse_a_column_mapped_twice(chosen, header, target, "x")
         chosen[header] = (target, False, unit)
-    if y is not None:
+    if per_rev is not None:
+        encoder.counted_column(command, tables, y, chosen)
+    elif y is not None:
         column, target, unit = _spec(y, "y")
         header = _find(tables, column, "y")
         columns.refuse_a_column_mapped_twice(chosen, header, target, "y")
@@ -159,7 +154,15 @@ def build(command: Command, tables: list[DataTable], *, x=(), y: str | None = No
         chosen[header] = (key if command.result(key) is not None else _key(key), True, unit)
     sigma_header = _sigma_column(tables, sigma)
     _refuse_sigma_of_a_used_column(command, tables[0], chosen, sigma_header, y is not None)
-    unused = columns.match_by_name(command, tables[0], chosen, sigma_header, y is not None, notes)
+    unused = columns.match_by_name(command, tables[0], chosen, sigma_header, y is not None or per_rev is not None, notes)
+    if per_rev is not None:
+        counted = next(header for header, (_, is_result, _) in chosen.items() if is_result)
+        time = next((header for header, (target, is_result, _) in chosen.items() if target == "time" and not is_result), None)
+        tables = [encoder.speeds(table, counted, time, per_rev, how) for table in tables]
+        notes.append(f"column {counted!r} read as an encoder's {'cumulative count' if how == 'cumulative' else 'counts in each interval'}, "
+                     f"{per_rev:g} a revolution: each interval between two rows gives its mean speed, 2π·Δcount/({per_rev:g}·Δt), at its middle; "
+                     "neighbouring intervals share a count's rounding, so their residuals alternate in sign (r₁ near −0.5) and the "
+                     "uncertainties, which take them as independent, are larger than the counts' own")
     results = [header for header, (_, is_result, _) in chosen.items() if is_result]
     if not results:
         names = ", ".join(repr(h) for h in headers)
@@ -270,7 +273,8 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
                       sigma_source, inputs_mapped, y_column, notes=notes)
     kept_in_window = beyond = 0  # beyond: samples past MAX_SAMPLES, only counted (the fit is refused; its message says how many)
     used = [m.column.header for m in (y_column, *inputs_mapped)] + ([sigma_header] if sigma_header is not None else [])
-    for table in tables:
+    samples.run_names = [table.source for table in tables]
+    for run, table in enumerate(tables):
         for i, line in enumerate(table.lines):
             if any(math.isnan(table.column(header).values[i]) for header in used):
                 samples.empty.append((table.source, line))  # no measurement: not a sample (data.py reads a blank or NaN cell so)
@@ -304,6 +308,7 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
             elif sigma_value is not None:
                 samples.sigma.append(sigma_value)
             samples.places.append((table.source, line))
+            samples.runs.append(run)
     _note_the_empty_rows(samples, used, len(tables) > 1)
     if beyond:
         count = samples.count + beyond

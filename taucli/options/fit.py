@@ -20,7 +20,7 @@ COMMAND = Command(
         "fitted (a value given for one is its start), the others held, with their uncertainties if they carry any. Each row "
         "of a table is a sample: columns named like the scene's options are its inputs in that row (a time column, t or time, "
         "is --time), a column named like a result is what was measured; a header may carry its unit, as Time (s) or t [ms]. "
-        "Comma, semicolon or tab separated. Needs scipy: pip install 'taucli[fit]'. More, with worked examples: docs/fit.md "
+        "Comma, semicolon or tab separated, or an .xlsx workbook; several runs side by side, or several files, are fitted together (--per-run). Needs scipy: pip install 'taucli[fit]'. More, with worked examples: docs/fit.md "
         "in taucli's source."
     ),
     example="taucli fit spin-down coast.csv --inertia '0.1 kg*m^2' --fit friction,viscous,omega0",
@@ -28,7 +28,7 @@ COMMAND = Command(
         Option("scene", CHOICE, "The scene whose inputs are fitted: " + ", ".join(SCENE_NAMES) + ".", choices=SCENE_NAMES, positional=True, metavar="SCENE"),
         Option(
             "data", FILE,
-            "The measured samples: CSV files (- for stdin), then the scene's own options, as it takes them.",
+            "The measured samples: CSV files, .xlsx workbooks or phyphox's zip (- for stdin), then the scene's own options, as it takes them.",
             positional=True, repeatable=True, metavar="FILE... [SCENE OPTIONS]",
         ),
         Option("fit", TEXT, "The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu); repeatable.",
@@ -38,6 +38,12 @@ COMMAND = Command(
         Option("y", TEXT, "The column that was measured, and the result it is, e.g. \"Gyroscope z (rad/s)=omega\".", metavar="COLUMN[=RESULT]", panel=DATA),
         Option("sigma", TEXT, "Each sample's standard uncertainty: a column, or one value for all, e.g. 0.05rad/s.", metavar="COLUMN|VALUE", panel=DATA),
         Option("range", TEXT, "Fit only the samples with a column in this window, e.g. t=2s..30s (repeatable).", repeatable=True, metavar="COLUMN=FROM..TO", panel=DATA),
+        Option("per_run", TEXT, "Inputs of --fit fitted for each run on its own (each file, and each run side by side in one), e.g. omega0; "
+               "the others are shared by all runs (repeatable).", repeatable=True, metavar="NAME,NAME", panel=DATA),
+        Option("counts_per_rev", TEXT, "The measured column is an encoder's counts, this many a revolution (each interval read as a mean speed, omega), e.g. 360; with --counts.",
+               metavar="N", panel=DATA),
+        Option("counts", CHOICE, "An encoder's counts: cumulative (since the start) or interval (in each row's interval, since the row before).",
+               choices=("cumulative", "interval"), panel=DATA),
         Option("every", TEXT, "Use every Nth sample only (a long export), e.g. 10.", metavar="N", panel=DATA),
         Option("no_limit", FLAG, "Run the fit however long it is estimated to take (else refused past 60 s).", panel=DATA),
     ),

@@ -49,7 +49,7 @@ def test_a_decimal_comma_is_read_where_the_file_shows_it_is_one():
 
 
 @pytest.mark.parametrize("text,said", [
-    ("t;m (kg)\n1;1,500\n2;2,250\n", "every comma is followed by three digits, so it could be a thousands separator or a decimal comma"),
+    ("t;m (kg)\n1;1,500\n2;2,250\n", "every comma could group thousands (three digits after it, one to three before), so it could be a thousands separator or a decimal comma"),
     ('t,m\n1,"1,5"\n', "a comma inside a cell of a comma-separated table could be a decimal comma or a thousands separator"),
     ("t;m\n1;1,5\n2;2.5\n", "numbers with a comma beside numbers with a point"),
 ])  # fmt: skip
@@ -68,7 +68,7 @@ def test_a_comma_that_could_be_a_thousands_separator_is_refused_not_guessed(text
     ("t,omega\n", "has a header and no rows of numbers"),
     ("0,1\n1,2\n", "expected a header naming the columns before the numbers"),
     ("t,t\n0,1\n", "names a column twice: t"),
-    ("t,\n0,1\n", "expected a name for every column"),
+    ("t,\n0,1\n", "a cell under no column's name"), ("t,,omega\n0,,1\n", "expected a name for every column"),
     ("t,omega\n0," + "1" * 200_000 + "\n", "cannot be read as a table"),
 ])  # fmt: skip
 def test_a_bad_table_is_refused_in_one_line_naming_where(text, said):
