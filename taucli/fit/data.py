@@ -149,7 +149,7 @@ def _lines(source, stdin, name: str):
     return _closing(handle, _guarded(handle.read, name, "expected a readable data file (or - for stdin)"))
 
 
-_WHAT = "fit takes at most 5000 samples"
+_WHAT = f"fit reads at most {MAX_ROWS:,} rows"
 
 
 def _guarded(read, name: str, expected: str):
@@ -179,7 +179,7 @@ def _rows(numbered, start: int, delimiter: str, name: str):
                 continue
             count += 1
             if count > MAX_ROWS + 1:  # (the header besides)
-                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows, the most fit reads of a table (it takes at most 5000 samples)",
+                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows, the most fit reads of a table",
                                  hint=too_large(OPTION, name).hint)
             yield line, cells
     except csv.Error as err:

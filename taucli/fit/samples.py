@@ -35,9 +35,6 @@ from taucli.fit.columns import TIME_NAMES, key as _key, quoted as _quoted
 from taucli.writing.report import fmt, pretty_unit
 from taucli.options.table import Command
 
-MAX_SAMPLES = 5000  # each sample is a solve of the scene, many times over: beyond this, --every or --range
-
-
 @dataclass(frozen=True)
 class Mapped:
     """A column matched to the scene: an input option (``is_result`` False) or the result measured."""
@@ -268,7 +265,7 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
     sigma_value, sigma_factor, sigma_source = _sigma(tables[0], sigma, sigma_header, y_column, gravity)
     samples = Samples(y_column.target, y_column.si_unit, [], {m.target: [] for m in inputs_mapped}, [] if sigma is not None else None,
                       sigma_source, inputs_mapped, y_column, notes=notes)
-    kept_in_window = beyond = 0  # beyond: samples past MAX_SAMPLES, only counted (the fit is refused; its message says how many)
+    kept_in_window = 0  # (no cap on the samples but the reader's: a fit past its time limit is refused by taucli.fit.budget, --every its way out)
     used = [m.column.header for m in (y_column, *inputs_mapped)] + ([sigma_header] if sigma_header is not None else [])
     for table in tables:
         for i, line in enumerate(table.lines):
@@ -282,9 +279,6 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
             kept_in_window += 1
             if (kept_in_window - 1) % step:
                 samples.thinned += 1
-                continue
-            if samples.count >= MAX_SAMPLES:
-                beyond += 1
                 continue
             for m in (y_column, *inputs_mapped):  # in SI, a value its unit takes past a double's range, or to 0, is refused as a typed one is
                 _check_unit_made(cells[m.target], table.column(m.column.header).values[i], table.source, line, m.column.header)
@@ -305,10 +299,6 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
                 samples.sigma.append(sigma_value)
             samples.places.append((table.source, line))
     _note_the_empty_rows(samples, used, len(tables) > 1)
-    if beyond:
-        count = samples.count + beyond
-        raise InputError("data", f"gives {count} samples, and fit takes at most {MAX_SAMPLES} (each is a solve of the scene, many times over)",
-                         hint=f"thin them with --every {math.ceil(count / MAX_SAMPLES)}, or fit a window with --range")
     return samples
 
 

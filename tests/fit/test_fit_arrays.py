@@ -1,0 +1,104 @@
+"""#45: the fit's model on arrays (taucli.fit.arrays) is the scene's physics, and it lifts the
+sample cap: held to pipeline.solve on random scenes, the same report as the per-sample path, and a
+fit of 10⁵ samples accepted and right."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import taucli.fit as api
+from taucli.answering import pipeline
+from taucli.options import SCENES
+from taucli.fit import arrays, samples as samples_module, solve
+from taucli.fit.data import Column, DataTable
+
+SPIN = SCENES["spin-down"]
+
+
+def _random_scene(rng) -> dict:
+    """A wheel under every mix of the torque laws: a drive either way or none, friction, viscous,
+    quadratic drag (or kω, a viscous torque), ω₀ either way or 0."""
+    scene = {"inertia": float(10 ** rng.uniform(-2, 1)), "omega0": float(rng.choice([0.0, 1.0, -1.0]) * 10 ** rng.uniform(-1, 2))}
+    for name, low, high in (("torque", -2, 1), ("friction", -2, 1), ("viscous", -3, 0), ("drag", -4, -1)):
+        if rng.random() < 0.5:
+            scene[name] = float(10 ** rng.uniform(low, high) * (rng.choice([1.0, -1.0]) if name == "torque" else 1.0))
+    if "drag" in scene and rng.random() < 0.2:
+        scene["drag_exponent"] = 1.0
+    return scene
+
+
+def test_the_arrays_agree_with_the_scene_on_random_scenes():
+    """ω, θ and revs at every sample time from the arrays, against ``taucli spin-down`` solved at
+    each (pipeline.solve), to 1e-12 relative: stops, holds, turns back, the tangent solution."""
+    rng = np.random.default_rng(45)
+    worst = 0.0
+    for _ in range(120):
+        scene = _random_scene(rng)
+        times = np.concatenate([[0.0], np.sort(rng.uniform(0, 30, 5))])
+        for result in ("omega", "theta", "revs"):
+            found = arrays.SpinDown(result).values(dict(scene), times)
+            for t, value in zip(times, found):
+                expected = pipeline.solve(SPIN, {**scene, "time": float(t)}).results[result].value
+                assert math.isfinite(value)
+                worst = max(worst, abs(value - expected) / abs(expected) if expected else abs(value))
+    assert worst <= 1e-12
+
+
+@pytest.mark.parametrize("exponent", [0.5, 1.5, 3.0])
+def test_a_drag_exponent_is_stepped_once_and_agrees_with_the_scene(exponent):
+    """A power-law drag has no closed form: one run of the scene's stepper over the sample times
+    (each read on from the one before), within the stepper's tolerance of a solve per sample."""
+    scene = {"inertia": 0.2, "omega0": 40.0, "friction": 0.02, "drag": 0.003, "drag_exponent": exponent}
+    times = np.linspace(0, 25, 40)
+    found = arrays.SpinDown("omega").values(dict(scene), times)
+    expected = np.array([pipeline.solve(SPIN, {**scene, "time": float(t)}).results["omega"].value for t in times])
+    assert np.all(np.abs(found - expected) <= 1e-8 * np.max(np.abs(expected)))
+
+
+def _table(t: np.ndarray, omega: np.ndarray) -> DataTable:
+    columns = (Column("t (s)", "t", "s", t.tolist()), Column("omega (rad/s)", "omega", "rad/s", omega.tolist()))
+    return DataTable("coast.csv", columns, list(range(2, len(t) + 2)), ",", False)
+
+
+def _coast(n: int, seed: int, sigma: float = 0.05):
+    """A coast-down under friction and viscous torque (I = 0.1 kg·m², τ_f = 0.05 N·m, b = 0.01
+    N·m·s, ω₀ = 30 rad/s: it stops at 19.46 s), sampled to 18 s with normal noise σ."""
+    t = np.linspace(0, 18, n)
+    b, friction, inertia, omega0 = 0.01, 0.05, 0.1, 30.0
+    omega = (omega0 + friction / b) * np.exp(-b * t / inertia) - friction / b  # ω(t) of I dω/dt = −τ_f − bω, before the stop
+    return t, omega + np.random.default_rng(seed).normal(0, sigma, n)
+
+
+def _model(t, omega, sigma="0.05 rad/s"):
+    command = SPIN
+    found = samples_module.build(command, [_table(t, omega)], sigma=sigma, fitted=["friction", "viscous", "omega0"], given={"inertia"})
+    model, starts, _ = solve.model_of(command, {"inertia": "0.1 kg*m^2"}, ["friction", "viscous", "omega0"], found)
+    return model, starts
+
+
+def test_the_fit_on_arrays_gives_the_report_the_per_sample_path_gives():
+    t, omega = _coast(200, 1)
+    fast, starts = _model(t, omega)
+    assert fast.arrays is not None
+    slow, _ = _model(t, omega)
+    slow.arrays = None  # the per-sample path, as before #45
+    with np.errstate(all="ignore"):
+        a, b = solve.fit(fast, dict(starts)), solve.fit(slow, dict(starts))
+    assert np.allclose(a.p, b.p, rtol=1e-9, atol=0)
+    assert np.allclose(a.covariance, b.covariance, rtol=1e-6, atol=0)
+    assert a.steps[-1].why == b.steps[-1].why  # the steps and the solves per sample, as counted before
+
+
+def test_a_fit_of_a_hundred_thousand_samples_is_taken_and_right(tmp_path):
+    """Refused before #45 (at most 5000 samples); each input within 3σ of the truth."""
+    t, omega = _coast(100_000, 2)
+    path = tmp_path / "coast.csv"
+    path.write_text("t (s),omega (rad/s)\n" + "".join(f"{a!r},{w!r}\n" for a, w in zip(t.tolist(), omega.tolist())))
+    report = api.fit("spin-down", str(path), fit="friction,viscous,omega0", inertia="0.1 kg*m^2", sigma="0.05 rad/s")
+    assert report.results["samples"].value == 100_000
+    for name, truth in (("friction", 0.05), ("viscous", 0.01), ("omega0", 30.0)):
+        value, spread = report.results[name].value, report.uncertainties[name]
+        assert 0 < spread < 1e-2 * truth and abs(value - truth) <= 3 * spread, (name, value, spread)
