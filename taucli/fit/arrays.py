@@ -84,11 +84,12 @@ def log_fraction2(x: np.ndarray) -> np.ndarray:
     return _guarded(x, lambda n: 1 / (n + 2), lambda v: (1 - log_fraction(v)) / v)
 
 
-def phase_state(closed, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(ω(t), θ(t)) of a ClosedFormPhase at every t of the array (each within the phase)."""
+def phase_state(closed, t: np.ndarray, angle: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    """(ω(t), θ(t)) of a ClosedFormPhase at every t of the array (each within the phase); θ
+    zeros where ``angle`` is False (a fit of ω does not need it)."""
     inertia, a, w0 = closed.inertia, closed.constant, closed.omega0
     if closed.uniform:
-        return w0 + a / inertia * t, w0 * t + a / inertia * t * t / 2
+        return w0 + a / inertia * t, (w0 * t + a / inertia * t * t / 2 if angle else np.zeros_like(t))
     root, steady = closed._roots()
     k = closed.drag
     decay = root * t / inertia
@@ -97,29 +98,31 @@ def phase_state(closed, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     e = np.exp(-decay)
     beta = (closed.viscous + root) / 2
     omega = (w0 * e + (a + k * steady * w0) * g) / (e + (k * w0 + beta) * g)
+    if not angle:
+        return np.real(omega), np.zeros_like(t)
     x = k * (w0 - steady) * g
     theta = (w0 * t * g1 * log_fraction(x) + steady * root * t * t * exp_fraction2(decay) / inertia
              + t * g1 * log_fraction2(x) * (k * steady * w0 - k * steady * steady) * g)
     return np.real(omega), np.real(theta)
 
 
-def motion_state(motion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def motion_state(motion, t: np.ndarray, angle: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """Motion.state_at at every t ≥ 0 of the array: (v, x) signed in the user's frame."""
     if motion.held_from_start:
         return np.zeros_like(t), np.zeros_like(t)
     direction, stop, second = motion.direction, motion.stop, motion.second
     if stop is None:
-        speed, distance = phase_state(motion.first.closed, t)
+        speed, distance = phase_state(motion.first.closed, t, angle)
         return direction * speed, direction * distance
     v, x = np.empty_like(t), np.empty_like(t)
     before = t <= stop[0]
-    speed, distance = phase_state(motion.first.closed, t[before])
+    speed, distance = phase_state(motion.first.closed, t[before], angle)
     v[before], x[before] = direction * speed, direction * distance
     after = ~before
     if second is None:
         v[after], x[after] = 0.0, direction * stop[1]
     else:
-        speed, distance = phase_state(second.closed, t[after] - stop[0])
+        speed, distance = phase_state(second.closed, t[after] - stop[0], angle)
         v[after], x[after] = second.direction * speed, direction * stop[1] + second.direction * distance
     return v, x
 
@@ -159,7 +162,7 @@ class SpinDown:
         torques = Torques(arguments.get("torque") or 0.0, arguments.get("friction") or 0.0, viscous, drag, exponent, None)
         closed = drag == 0 or exponent == 2
         motion = evolve(arguments["inertia"], torques, arguments.get("omega0") or 0.0, Evolver(Method("exact" if closed else "rk45")))
-        state = motion_state(motion, t) if closed else stepped_state(motion, t)
+        state = motion_state(motion, t, self.index == 1) if closed else stepped_state(motion, t)
         return state[self.index] * self.scale
 
 

@@ -70,14 +70,7 @@ class Model:
         self.budget = None  # a taucli.fit.budget.Budget: the time the solves may take
         self.refusal: Exception | None = None
         self._cache: dict[tuple, np.ndarray] = {}
-        self._row_list: list[dict[str, float]] | None = None
-        self.arrays = arrays.of(self)
-
-    @property
-    def _rows(self) -> list[dict[str, float]]:
-        if self._row_list is None:  # (made when a sample is first solved alone: a million samples on arrays never are)
-            self._row_list = [self.samples.row(i) for i in range(self.samples.count)]
-        return self._row_list
+        self.arrays = arrays.of(self)  # f at every sample at once, where the scene has a form on arrays (else None)
 
     @property
     def names(self) -> list[str]:
@@ -100,7 +93,7 @@ class Model:
     def value(self, p, i: int, moved: Mapping[str, float] | None = None) -> float:
         """f(xᵢ; p), or NaN where the scene refuses or has no value (the reason kept)."""
         try:
-            result = self.report(p, self._rows[i], moved).results.get(self.samples.y_key)
+            result = self.report(p, self.samples.row(i), moved).results.get(self.samples.y_key)
         except REFUSALS as err:
             self.refusal = err
             return math.nan

@@ -290,14 +290,18 @@ def runs_test(residuals: np.ndarray) -> Runs | None:
 
 def _runs_distribution(plus: int, minus: int) -> tuple[np.ndarray, np.ndarray]:
     """(each possible count of runs, its chance) for ``plus`` and ``minus`` signs in a random order
-    (logarithms of the binomial coefficients: exact to rounding for thousands of samples)."""
-    def log_choose(a: int, b: int) -> float:
-        return math.lgamma(a + 1) - math.lgamma(b + 1) - math.lgamma(a - b + 1) if 0 <= b <= a else -math.inf
+    (logarithms of the binomial coefficients, on arrays: exact to rounding for millions of samples)."""
+    from scipy.special import gammaln  # deferred: scipy.special, only for the runs of a fit's residuals
 
-    whole = log_choose(plus + minus, plus)
-    found: dict[int, float] = {}
-    for k in range(1, min(plus, minus) + 2):
-        found[2 * k] = math.log(2) + log_choose(plus - 1, k - 1) + log_choose(minus - 1, k - 1) - whole
-        found[2 * k + 1] = float(np.logaddexp(log_choose(plus - 1, k - 1) + log_choose(minus - 1, k), log_choose(plus - 1, k) + log_choose(minus - 1, k - 1))) - whole
-    counts = np.array([count for count, chance in sorted(found.items()) if chance > -math.inf])
-    return counts, np.exp(np.array([found[count] for count in counts]))
+    def log_choose(a: int, b: np.ndarray) -> np.ndarray:
+        inside = (b >= 0) & (b <= a)
+        b = np.where(inside, b, 0)
+        return np.where(inside, gammaln(a + 1.0) - gammaln(b + 1.0) - gammaln(a - b + 1.0), -math.inf)
+
+    whole = float(log_choose(plus + minus, np.array([plus]))[0])
+    k = np.arange(1, min(plus, minus) + 2)
+    even = math.log(2) + log_choose(plus - 1, k - 1) + log_choose(minus - 1, k - 1) - whole
+    odd = np.logaddexp(log_choose(plus - 1, k - 1) + log_choose(minus - 1, k), log_choose(plus - 1, k) + log_choose(minus - 1, k - 1)) - whole
+    counts, logs = np.column_stack([2 * k, 2 * k + 1]).ravel(), np.column_stack([even, odd]).ravel()
+    kept = logs > -math.inf
+    return counts[kept], np.exp(logs[kept])

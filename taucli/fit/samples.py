@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 from taucli.quantities import units
 from taucli.quantities.kinds import BOUNDS
 from taucli.core.errors import InputError, did_you_mean
-from taucli.fit import columns
+from taucli.fit import bulk, columns
 from taucli.fit.data import Column, DataTable, split_header
 from taucli.fit.columns import TIME_NAMES, key as _key, quoted as _quoted
 from taucli.writing.report import fmt, pretty_unit
@@ -267,6 +267,10 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
                       sigma_source, inputs_mapped, y_column, notes=notes)
     kept_in_window = 0  # (no cap on the samples but the reader's: a fit past its time limit is refused by taucli.fit.budget, --every its way out)
     used = [m.column.header for m in (y_column, *inputs_mapped)] + ([sigma_header] if sigma_header is not None else [])
+    if bulk.collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor, sigma_header, windows, step, used, samples):
+        _note_the_empty_rows(samples, used, len(tables) > 1)
+        return samples
+    samples.empty, samples.outside, samples.thinned = [], 0, 0  # a row is refused: read row by row, for its line
     for table in tables:
         for i, line in enumerate(table.lines):
             if any(math.isnan(table.column(header).values[i]) for header in used):
