@@ -19,7 +19,7 @@ write it.
 - A binary file, a file that is not UTF-8 or Windows-1252 text, ragged rows, an empty table and
   a line longer than csv's limit are refused, one line each.
 
-Plain Python (csv): no numpy, no pint.
+csv, and numpy for the batches of plain numbers (taucli.fit.fast_rows); no pint.
 """
 
 from __future__ import annotations
@@ -36,6 +36,7 @@ from dataclasses import dataclass
 from taucli.answering.csv_text import MAX_BYTES, delimiter as _delimiter, lines as text_lines, split_header, too_large
 from taucli.core.errors import InputError
 from taucli.core.written import printable
+from taucli.fit import fast_rows
 
 OPTION = "data"  # the argument the messages name (DATA)
 MAX_ROWS = 2_000_000
@@ -113,7 +114,9 @@ def read(source, stdin=None) -> DataTable:
     values = [Numbers("d") for _ in headers]
     lines = Numbers("q")
     commas = _Commas()
-    for line, cells in rows:
+    # plain numbers a batch at a time (fast_rows), the rest row by row as the rows above
+    rest = fast_rows.taken(numbered, delimiter, values, lines, commas, lambda pairs, at, count: _rows(pairs, at, delimiter, name, count + 1), MAX_ROWS)
+    for line, cells in rest:
         if len(cells) != len(headers):
             raise InputError(OPTION, f"{name} line {line}: expected {len(headers)} cells, as the header names, got {len(cells)}")
         for cell, header, column in zip(cells, headers, values):
@@ -167,11 +170,10 @@ def _closing(handle, lines):
         yield from lines
 
 
-def _rows(numbered, start: int, delimiter: str, name: str):
+def _rows(numbered, start: int, delimiter: str, name: str, count: int = 0):
     """(line number, cells) of the header and each row after it, blank lines and comments left
-    out, streamed; a table past MAX_ROWS refused as soon as it passes."""
+    out, streamed; a table past MAX_ROWS refused as soon as it passes (``count``: the rows before)."""
     reader = csv.reader((line + "\n" for _, line in numbered), delimiter=delimiter)
-    count = 0
     try:
         for cells in reader:
             line = start + reader.line_num

@@ -4,6 +4,7 @@ fit of 10⁵ samples accepted and right."""
 
 from __future__ import annotations
 
+import io
 import math
 
 import numpy as np
@@ -12,7 +13,8 @@ import pytest
 import taucli.fit as api
 from taucli.answering import pipeline
 from taucli.options import SCENES
-from taucli.fit import arrays, samples as samples_module, solve
+from taucli.core.errors import InputError
+from taucli.fit import arrays, data, fast_rows, samples as samples_module, solve
 from taucli.fit.data import Column, DataTable
 
 SPIN = SCENES["spin-down"]
@@ -102,3 +104,32 @@ def test_a_fit_of_a_hundred_thousand_samples_is_taken_and_right(tmp_path):
     for name, truth in (("friction", 0.05), ("viscous", 0.01), ("omega0", 30.0)):
         value, spread = report.results[name].value, report.uncertainties[name]
         assert 0 < spread < 1e-2 * truth and abs(value - truth) <= 3 * spread, (name, value, spread)
+
+
+TABLES = [
+    "t (s),omega (rad/s)\n" + "".join(f"{t / 10},{30 - t / 7:.6g}\n" for t in range(20_000)),
+    "t;w (rad/s)\n" + "".join(f"{t};{t / 3:.4f}\n" for t in range(9000)) + "9000;1,5\n",  # a comma late: a point beside it, refused
+    "t\tw (rad/s)\n" + "".join(f" {t}\t{-t}e-3 \n" for t in range(9000)) + "\n# a comment\n9001\t\n9002\tNaN\n",
+    "t,w (rad/s)\n" + "".join(f"{t},{t}\n" for t in range(9000)) + "9000,1e400\n",
+    "t,w (rad/s)\n" + "".join(f"{t},{t}\n" for t in range(9000)) + "9000,1e-400\n",
+    "t,w (rad/s)\n" + "".join(f"{t},{t}\n" for t in range(8190)) + "1,-nan\n1,2,3\n",
+    "t,w (rad/s)\n" + "".join(f"{t},{t}\n" for t in range(8191)) + "1,2\n1\n",
+    "t,w (rad/s)\n" + "".join(f"{t},.{t}e+1\n" for t in range(10)) + '"1",2\n1_0,3\n',
+]
+
+
+def _read(text: str):
+    try:
+        table = data.read(io.StringIO(text))
+    except InputError as err:
+        return str(err)
+    return [(c.header, c.name, c.unit, [repr(v) for v in c.values]) for c in table.columns], list(table.lines), table.decimal_comma  # (repr: NaN is NaN)
+
+
+@pytest.mark.parametrize("text", TABLES)
+def test_rows_read_a_batch_at_a_time_are_the_rows_read_one_by_one(text, monkeypatch):
+    """#45 item 3: plain numbers a batch at a time (fast_rows), the same table, or the same
+    refusal with its line, as row by row (every batch refused to the row-by-row reading)."""
+    fast = _read(text)
+    monkeypatch.setattr(fast_rows, "_batch", lambda *args: (None, None))
+    assert fast == _read(text)
