@@ -12,11 +12,48 @@ a quantity may take are 0 (or not) and bands of magnitudes either side.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from taucli.core.errors import InputError
 from taucli.quantities import units
 from taucli.quantities.kinds import BOUNDS
+
+
+class Places(Sequence):
+    """(file, line) of each sample, as a list of them reads, kept as each file's array of lines:
+    a million samples are 8 MB here, not a million tuples."""
+
+    def __init__(self, parts: list[tuple[str, np.ndarray]]):
+        self.parts = [(source, lines) for source, lines in parts if len(lines)]
+        self.ends = np.cumsum([len(lines) for _, lines in self.parts])
+
+    def __len__(self) -> int:
+        return int(self.ends[-1]) if len(self.ends) else 0
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return [self[j] for j in range(*i.indices(len(self)))]
+        i = i + len(self) if i < 0 else i
+        if not 0 <= i < len(self):
+            raise IndexError(i)
+        part = int(np.searchsorted(self.ends, i, side="right"))
+        source, lines = self.parts[part]
+        return source, int(lines[i - (int(self.ends[part - 1]) if part else 0)])
+
+    def __iter__(self):
+        for source, lines in self.parts:
+            for line in lines.tolist():
+                yield source, line
+
+    def __eq__(self, other):
+        return list(self) == list(other) if isinstance(other, (list, tuple, Places)) else NotImplemented
+
+    __hash__ = None
+
+    def sources(self) -> list[str]:
+        return list(dict.fromkeys(source for source, _ in self.parts))
 
 
 def _extremes(values: np.ndarray) -> list[float]:
@@ -91,7 +128,7 @@ def collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor,
             if not (_unit_holds(spread, given) and _measured_holds(spread) and np.all(spread > 0)):
                 return False
             spreads.append(spread)
-        places.extend((table.source, int(line)) for line in lines[taken])
+        places.append((table.source, lines[taken]))
     joined = {name: np.concatenate(found) if found else np.zeros(0) for name, found in parts.items()}
     samples.y.extend(joined[y_column.target].tolist())
     for m in inputs_mapped:
@@ -100,5 +137,5 @@ def collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor,
         samples.sigma.extend(np.concatenate(spreads).tolist())
     elif sigma_value is not None:
         samples.sigma.extend([sigma_value] * len(samples.y))
-    samples.places.extend(places)
+    samples.places = Places(places)
     return True

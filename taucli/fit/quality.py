@@ -242,9 +242,9 @@ def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray |
     tss = float(np.sum((y - np.mean(y)) ** 2))
     chi2_p = chi2_low = None
     if chi2 is not None:
-        from scipy.stats import chi2 as chi2_distribution  # deferred: scipy.stats (about 150 ms), only with uncertainties given
+        from scipy.special import chdtr, chdtrc  # deferred: χ²'s tails as scipy.stats.chi2 works them (its sf, cdf), without importing scipy.stats (a second or more)
 
-        chi2_p, chi2_low = float(chi2_distribution.sf(chi2, dof)), float(chi2_distribution.cdf(chi2, dof))
+        chi2_p, chi2_low = float(chdtrc(dof, chi2)), float(chdtr(dof, chi2))
     ordered = r[np.argsort(order, kind="stable")]
     return Quality(n, m, r, covariance, sigma is None, s2, math.sqrt(rss / n), 1.0 - rss / tss if tss > 0 else None, chi2,
                    chi2 / dof if chi2 is not None else None, chi2_p, runs_test(ordered), lag_test(ordered), found, chi2_low)

@@ -79,7 +79,12 @@ class Samples:
     @property
     def varying(self) -> list[str]:
         """The inputs that differ between samples, in the order of the columns."""
-        return [name for name, values in self.inputs.items() if len(set(values)) > 1]
+        return [name for name, values in self.inputs.items() if any(value != values[0] for value in values)]
+
+    def sources(self) -> list[str]:
+        """The files the samples come from, in order."""
+        sources = getattr(self.places, "sources", None)
+        return sources() if sources is not None else list(dict.fromkeys(place[0] for place in self.places))
 
 
 def _spec(text: str, option: str) -> tuple[str, str | None, str]:
