@@ -26,15 +26,18 @@ import math
 import numpy as np
 
 from taucli.answering.inputs import read
+from taucli.core.errors import InputError
 from taucli.scenes.motion import Evolver, Method, evolve
 from taucli.scenes.spin.steps import TWO_PI, Torques
 
+REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError, ArithmeticError)
 AGREE = 1e-9  # the anchor's relative difference past which the arrays are not used (they agree to about 1e-14)
 SERIES = 64  # terms of the guarded series (|x| < 0.5: the last is below 1e-19 of the first)
 
 # spin-down's inputs the arrays take (any other: the per-sample path); the results they give
 SPIN_INPUTS = {"inertia", "omega0", "torque", "friction", "viscous", "drag", "drag_exponent", "time", "method"}
 SPIN_RESULTS = {"omega": 0, "theta": 1, "revs": 1}
+TRACED_AS = {("atwood", "distance"): "x"}  # a result the trajectory draws under another name (held to it at the anchor)
 
 
 def _horner(x: np.ndarray, coefficient) -> np.ndarray:
@@ -173,54 +176,82 @@ class SpinDown:
         return state[self.index] * self.scale
 
 
+class Traced:
+    """Any scene's result that its trajectory draws (taucli.writing.report.Trajectory: θ(t), ω(t),
+    d(t), …), read at every sample time from the trajectory of the anchor's solve: the scene's own
+    state(t), set up once per trial (its phases, its elliptic modulus, a stepper run on from one
+    sample to the next), each sample a call of it, not a solve of the whole scene."""
+
+    def __init__(self, y_key: str, scene: str):
+        self.y_key = TRACED_AS.get((scene, y_key), y_key)
+
+    def values(self, report, given: dict, t: np.ndarray) -> np.ndarray:
+        trajectory = report.trajectory() if report.trajectory is not None else None
+        keys = [key for key, _, _ in trajectory.curves] if trajectory is not None else []
+        if trajectory is None or trajectory.state is None or self.y_key not in keys:
+            raise ValueError("no state(t) of this result")
+        index = keys.index(self.y_key)
+        found = np.empty_like(t)
+        for i in np.argsort(t, kind="stable"):  # in increasing time: a stepper steps on from the sample before
+            found[i] = trajectory.state(float(t[i]))[index]
+        return found
+
+
 def of(model):
     """The array form of the fit's model, or None where the per-sample path is the only one: the
-    samples vary in their time alone (each finite, ≥ 0), and the scene and result are one the
-    arrays cover."""
+    samples vary in their time alone (each finite, ≥ 0) and no spec's key is fitted; spin-down's
+    ω, θ, revs under the torque laws on numpy arrays (SpinDown), any other scene's result that its
+    trajectory draws from its state(t) (Traced: found out at the first trial)."""
     samples = model.samples
-    if set(samples.inputs) != {"time"}:
-        return None
-    if model.command.name != "spin-down" or samples.y_key not in SPIN_RESULTS:
-        return None
-    if any(unknown.key is not None for unknown in model.unknowns):
+    if set(samples.inputs) != {"time"} or any(unknown.key is not None for unknown in model.unknowns):
         return None
     t = np.asarray(samples.inputs["time"], dtype=float)
     if not (t.size and np.all(np.isfinite(t)) and np.all(t >= 0)):
         return None
-    try:
-        arguments, _ = read(model.command, model.given([1.0] * len(model.unknowns), {"time": 0.0}))
-    except Exception:  # noqa: BLE001 (a refusal here is the per-sample path's to give, with its reason)
-        return None
-    if not SpinDown.takes({name: value for name, value in arguments.items() if value is not None}):
-        return None
-    return Arrays(model, SpinDown(samples.y_key), t)
+    form = Traced(samples.y_key, model.command.name)
+    if model.command.name == "spin-down" and samples.y_key in SPIN_RESULTS:
+        try:
+            arguments, _ = read(model.command, model.given([1.0] * len(model.unknowns), {"time": 0.0}))
+        except Exception:  # noqa: BLE001 (a refusal here is the per-sample path's to give, with its reason)
+            return None
+        if SpinDown.takes({name: value for name, value in arguments.items() if value is not None}):
+            form = SpinDown(samples.y_key)
+    return Arrays(model, form, t)
 
 
 class Arrays:
     """f(xᵢ; p) at every sample: the scene solved at the anchor sample (its refusals, and the
     check), the array form at all of them."""
 
-    def __init__(self, model, form: SpinDown, t: np.ndarray):
+    def __init__(self, model, form, t: np.ndarray):
         self.model, self.form, self.t = model, form, t
         self.anchor = int(np.argmax(t))  # the latest sample: past a stop, if there is one
         self.failed = False
 
     def predict(self, p, moved=None, timed=lambda work, solves: work()) -> np.ndarray | None:
         """The values at every sample, or None where this trial is the per-sample path's (the
-        arrays disagree with the scene at the anchor: never again for this fit). ``timed(work,
-        solves)`` runs the array's work, counted as the solves it stands for."""
+        arrays disagree with the scene at the anchor, or the form does not apply: never again for
+        this fit). ``timed(work, solves)`` runs the array's work, counted as the solves it stands for."""
         model = self.model
-        anchor = model.value(p, self.anchor, moved)  # (NaN with the reason kept, where the scene refuses)
-        if not math.isfinite(anchor):
+        try:
+            report = model.report(p, model.samples.row(self.anchor), moved)
+        except REFUSALS as err:
+            model.refusal = err  # (the per-sample path gives NaN with the reason kept, as before)
+            return None
+        result = report.results.get(model.samples.y_key)
+        anchor = None if result is None else result.value
+        if not isinstance(anchor, (int, float)) or isinstance(anchor, bool) or not math.isfinite(anchor):
             return None
         try:
             arguments, _ = read(model.command, model.given(p, {"time": 0.0}, moved))
             given = {name: value for name, value in arguments.items() if value is not None}
-            found = timed(lambda: self.form.values(given, self.t), len(self.t) - 1)
-        except (ArithmeticError, ValueError):
+            found = timed(lambda: self.form.values(report, given, self.t) if isinstance(self.form, Traced) else self.form.values(given, self.t),
+                          len(self.t) - 1)
+        except REFUSALS:
+            self.failed = True
             return None
         if not abs(found[self.anchor] - anchor) <= AGREE * abs(anchor):
             self.failed = True
             return None
-        found[self.anchor] = anchor
+        found[self.anchor] = float(anchor)
         return found

@@ -133,3 +133,50 @@ def test_rows_read_a_batch_at_a_time_are_the_rows_read_one_by_one(text, monkeypa
     fast = _read(text)
     monkeypatch.setattr(fast_rows, "_batch", lambda *args: (None, None))
     assert fast == _read(text)
+
+
+def _fast_and_slow(scene: str, held: dict, fitted: list[str], p: list[float], times, y_key: str):
+    """The fit's model at p for samples at ``times``: on arrays (or the trajectory), and solved per sample."""
+    from taucli.fit.samples import Samples
+
+    found = Samples(y_key, "", [0.0] * len(times), {"time": [float(t) for t in times]})
+    model, _, _ = solve.model_of(SCENES[scene], dict(held), fitted, found)
+    assert model.arrays is not None
+    fast = model.predict(np.array(p))
+    assert not model.arrays.failed, f"the arrays were refused: {scene} {held} {p}"
+    model.arrays, model._cache = None, {}
+    return fast, model.predict(np.array(p))
+
+
+def test_a_pendulums_swing_read_from_its_own_state_agrees_with_the_scene():
+    """θ(t) and ω(t) of a pendulum at every sample from the scene's own elliptic motion, set up
+    once per trial (Traced), against a solve per sample: to the last bits."""
+    rng = np.random.default_rng(7)
+    for _ in range(12):
+        held = {"shape": "point", "mass": "1 kg", "radius": f"{rng.uniform(0.2, 3)} m", "angle0": f"{rng.uniform(1, 179)} deg"}
+        times = np.sort(rng.uniform(0, 8, 25))
+        for y_key in ("theta", "omega"):
+            fast, slow = _fast_and_slow("pendulum", held, ["g"], [rng.uniform(2, 20)], times, y_key)
+            assert np.all(np.isfinite(slow)) and np.allclose(fast, slow, rtol=1e-12, atol=1e-12 * np.max(np.abs(slow)))
+
+
+def test_an_atwood_machines_travel_read_from_its_own_state_agrees_with_the_scene():
+    rng = np.random.default_rng(8)
+    for _ in range(12):
+        held = {"m2": f"{rng.uniform(0.1, 3)} kg", "pulley_mass": f"{rng.uniform(0, 1)} kg", "pulley_radius": "5 cm",
+                "axle_friction": f"{rng.uniform(0, 0.05)} N*m"}
+        times = np.sort(rng.uniform(0, 5, 20))
+        for y_key in ("v", "distance"):
+            fast, slow = _fast_and_slow("atwood", held, ["m1"], [rng.uniform(0.1, 3)], times, y_key)
+            assert np.all(np.isfinite(slow)) and np.allclose(fast, slow, rtol=1e-12, atol=1e-12 * np.max(np.abs(slow)))
+
+
+@pytest.mark.parametrize("method", ["rk45", "rk4", "auto"])
+def test_spin_down_under_a_stepping_method_is_stepped_once_through_the_samples(method):
+    """A drag exponent's motion stepped once through the sample times (rk45: SpinDown; a fixed
+    step: the trajectory's sampler), within the stepper's own error of a solve per sample."""
+    held = {"inertia": "0.2 kg*m^2", "friction": "0.02 N*m", "drag": "0.003 N*m*s^2", "drag_exponent": "1.5", "method": method}
+    if method == "rk4":
+        held["dt"] = "5 ms"
+    fast, slow = _fast_and_slow("spin-down", held, ["omega0"], [40.0], np.linspace(0, 25, 30), "omega")
+    assert np.allclose(fast, slow, rtol=0, atol=1e-8 * np.max(np.abs(slow)))
