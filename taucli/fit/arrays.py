@@ -203,7 +203,11 @@ def of(model):
     ω, θ, revs under the torque laws on numpy arrays (SpinDown), any other scene's result that its
     trajectory draws from its state(t) (Traced: found out at the first trial)."""
     samples = model.samples
-    if set(samples.inputs) != {"time"} or any(unknown.key is not None for unknown in model.unknowns):
+    if any(unknown.key is not None for unknown in model.unknowns):
+        return None
+    if model.command.name == "pendulum" and set(samples.inputs) == {"angle0"} and samples.y_key == "period":
+        return Periods.of(model)
+    if set(samples.inputs) != {"time"}:
         return None
     t = np.asarray(samples.inputs["time"], dtype=float)
     if not (t.size and np.all(np.isfinite(t)) and np.all(t >= 0)):
@@ -219,6 +223,37 @@ def of(model):
     return Arrays(model, form, t)
 
 
+class Periods:
+    """A pendulum's period at each sample's amplitude θ₀ (from rest), under gravity alone:
+
+        T(θ₀) = 4K(k)/ω₀ₙ,  k' = cos(θ₀/2)  (exact; the small-angle model: T₀ = 2π/ω₀ₙ at every θ₀)
+
+    so T(θ₀ᵢ) = T(θ₀ₐ)·K(kᵢ)/K(kₐ): the scene solved at the anchor sample a gives ω₀ₙ's part,
+    whatever the body (shape, parts, pivot) and g, and the ratios K(kᵢ) are the scene's own
+    (taucli.numerics.elliptic.complete_k), worked out once. A second sample, the CHECK, solved
+    each trial too, must agree: a scene whose period is not of this form (a torsion spring, a
+    damping) is the per-sample path's after the first trial."""
+
+    def __init__(self, ratio: np.ndarray):
+        self.ratio = ratio
+
+    @staticmethod
+    def of(model):
+        from taucli.numerics.elliptic import complete_k
+
+        angles = np.asarray(model.samples.inputs["angle0"], dtype=float)
+        if not (angles.size > 1 and np.all(np.isfinite(angles)) and np.all(np.abs(angles) < math.pi)):
+            return None
+        small = str(model.held.get("method", "")).replace("_", "-") == "small-angle"
+        ratio = np.ones_like(angles) if small else np.array([complete_k(math.cos(a / 2)) for a in angles.tolist()])
+        found = Arrays(model, Periods(ratio), angles)
+        found.anchor, found.check, found.alone = int(np.argmax(np.abs(angles))), int(np.argmin(np.abs(angles))), 2
+        return found
+
+    def values(self, anchor: float, at: int) -> np.ndarray:
+        return anchor / self.ratio[at] * self.ratio
+
+
 class Arrays:
     """f(xᵢ; p) at every sample: the scene solved at the anchor sample (its refusals, and the
     check), the array form at all of them."""
@@ -226,6 +261,8 @@ class Arrays:
     def __init__(self, model, form, t: np.ndarray):
         self.model, self.form, self.t = model, form, t
         self.anchor = int(np.argmax(t))  # the latest sample: past a stop, if there is one
+        self.check: int | None = None  # a second sample solved each trial (Periods)
+        self.alone = 1  # the samples the scene solves alone each trial (the anchor, and the check)
         self.failed = False
 
     def predict(self, p, moved=None, timed=lambda work, solves: work()) -> np.ndarray | None:
@@ -242,11 +279,19 @@ class Arrays:
         anchor = None if result is None else result.value
         if not isinstance(anchor, (int, float)) or isinstance(anchor, bool) or not math.isfinite(anchor):
             return None
+        if isinstance(self.form, Periods):
+            checked = model.value(p, self.check, moved)
+            found = timed(lambda: self.form.values(float(anchor), self.anchor), len(self.t) - self.alone)
+            if not abs(found[self.check] - checked) <= AGREE * abs(checked):
+                self.failed = True
+                return None
+            found[self.check], found[self.anchor] = checked, float(anchor)
+            return found
         try:
             arguments, _ = read(model.command, model.given(p, {"time": 0.0}, moved))
             given = {name: value for name, value in arguments.items() if value is not None}
             found = timed(lambda: self.form.values(report, given, self.t) if isinstance(self.form, Traced) else self.form.values(given, self.t),
-                          len(self.t) - 1)
+                          len(self.t) - self.alone)
         except REFUSALS:
             self.failed = True
             return None

@@ -122,7 +122,7 @@ class Model:
             return None
         found = self.arrays.predict(p, moved, self._timed)
         if found is not None:
-            self.solves += self.samples.count - 1  # (the anchor's solve counted by itself)
+            self.solves += self.samples.count - self.arrays.alone  # (the samples the scene solved alone counted by themselves)
         return found
 
     def _timed(self, work, solves: int):
