@@ -93,6 +93,11 @@ def _unit_holds(values: np.ndarray, given: np.ndarray) -> bool:
 def collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor, sigma_header, windows, step, used, samples) -> bool:
     """Fill ``samples`` from ``tables`` (True), or leave it for the row-by-row reading (False)
     where some row is refused."""
+    with np.errstate(over="ignore", invalid="ignore"):  # (a value its unit takes past a double is refused below, row by row)
+        return _collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor, sigma_header, windows, step, used, samples)
+
+
+def _collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor, sigma_header, windows, step, used, samples) -> bool:
     mapped = (y_column, *inputs_mapped)
     parts: dict[str, list[np.ndarray]] = {m.target: [] for m in mapped}
     spreads, places, kept_before = [], [], 0
