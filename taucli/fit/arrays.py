@@ -27,6 +27,7 @@ import numpy as np
 
 from taucli.answering.inputs import read
 from taucli.core.errors import InputError
+from taucli.numerics.elliptic import complete_k
 from taucli.scenes.motion import Evolver, Method, evolve
 from taucli.scenes.spin.steps import TWO_PI, Torques
 
@@ -239,8 +240,6 @@ class Periods:
 
     @staticmethod
     def of(model):
-        from taucli.numerics.elliptic import complete_k
-
         angles = np.asarray(model.samples.inputs["angle0"], dtype=float)
         if not (angles.size > 1 and np.all(np.isfinite(angles)) and np.all(np.abs(angles) < math.pi)):
             return None
