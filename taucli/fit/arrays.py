@@ -27,6 +27,7 @@ import numpy as np
 
 from taucli.answering.inputs import read
 from taucli.core.errors import InputError
+from taucli.fit.budget import Spent
 from taucli.numerics.elliptic import complete_k
 from taucli.scenes.motion import Evolver, Method, evolve
 from taucli.scenes.spin.steps import TWO_PI, Torques
@@ -291,7 +292,9 @@ class Arrays:
             given = {name: value for name, value in arguments.items() if value is not None}
             found = timed(lambda: self.form.values(report, given, self.t) if isinstance(self.form, Traced) else self.form.values(given, self.t),
                           len(self.t) - self.alone)
-        except REFUSALS:
+        except Spent:  # the fit's time limit, passed
+            raise
+        except Exception:  # noqa: BLE001 (a trajectory that cannot be read so, whatever the reason: the per-sample path, as before)
             self.failed = True
             return None
         if not abs(found[self.anchor] - anchor) <= AGREE * abs(anchor):

@@ -47,8 +47,8 @@ class Spent(Exception):
 
 def before(model, p) -> None:
     """Time the scene's solve at p on a few samples spread over the table (after one untimed: the
-    first solve imports its solver), or the model on arrays at every sample, and plan the least a fit takes: refused here where even that
-    passes the limit."""
+    first solve imports its solver), or the model on arrays at every sample (taucli.fit.arrays),
+    and plan the least a fit takes: refused here where even that passes the limit."""
     n = model.samples.count
     kept, model.budget = model.budget, None
     model.value(p, 0)

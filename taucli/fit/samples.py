@@ -35,6 +35,7 @@ from taucli.fit.columns import TIME_NAMES, key as _key, quoted as _quoted
 from taucli.writing.report import fmt, pretty_unit
 from taucli.options.table import Command
 
+
 @dataclass(frozen=True)
 class Mapped:
     """A column matched to the scene: an input option (``is_result`` False) or the result measured."""
