@@ -56,6 +56,14 @@ class Places(Sequence):
         return list(dict.fromkeys(source for source, _ in self.parts))
 
 
+def _extend(column, values: np.ndarray) -> None:
+    """Append the doubles to a column of the samples (an array of doubles, or a list)."""
+    if hasattr(column, "frombytes"):
+        column.frombytes(np.ascontiguousarray(values, dtype=float).tobytes())
+    else:
+        column.extend(values.tolist())
+
+
 def _extremes(values: np.ndarray) -> list[float]:
     """The values whose checks stand for all of them (see the module's docstring)."""
     if not values.size:
@@ -135,12 +143,12 @@ def _collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor
             spreads.append(spread)
         places.append((table.source, lines[taken]))
     joined = {name: np.concatenate(found) if found else np.zeros(0) for name, found in parts.items()}
-    samples.y.extend(joined[y_column.target].tolist())
+    _extend(samples.y, joined[y_column.target])
     for m in inputs_mapped:
-        samples.inputs[m.target].extend(joined[m.target].tolist())
+        _extend(samples.inputs[m.target], joined[m.target])
     if sigma_header is not None:
-        samples.sigma.extend(np.concatenate(spreads).tolist())
+        _extend(samples.sigma, np.concatenate(spreads))
     elif sigma_value is not None:
-        samples.sigma.extend([sigma_value] * len(samples.y))
+        _extend(samples.sigma, np.full(len(samples.y), sigma_value))
     samples.places = Places(places)
     return True

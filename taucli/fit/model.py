@@ -30,7 +30,7 @@ from taucli.options.table import Command
 from taucli.answering.unknowns import Unknown
 
 REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError)
-KEPT_VALUES = 2**23  # f's values kept for p asked again, over all the p kept (64 MB)
+KEPT_VALUES = 2**22  # f's values kept for p asked again, over all the p kept (32 MB)
 
 
 def held(command: Command, given: Mapping[str, object], spell, unknowns: list[Unknown] = ()) -> tuple[dict, dict[str, float], dict[str, float], list[str]]:

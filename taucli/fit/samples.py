@@ -30,7 +30,7 @@ from taucli.quantities import units
 from taucli.quantities.kinds import BOUNDS
 from taucli.core.errors import InputError, did_you_mean
 from taucli.fit import bulk, columns
-from taucli.fit.data import Column, DataTable, split_header
+from taucli.fit.data import Column, DataTable, Numbers, split_header
 from taucli.fit.columns import TIME_NAMES, key as _key, quoted as _quoted
 from taucli.writing.report import fmt, pretty_unit
 from taucli.options.table import Command
@@ -269,8 +269,9 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
     windows = [_window(command, text, [y_column, *inputs_mapped], gravity) for text in ranges or ()]
     step = _every(every)
     sigma_value, sigma_factor, sigma_source = _sigma(tables[0], sigma, sigma_header, y_column, gravity)
-    samples = Samples(y_column.target, y_column.si_unit, [], {m.target: [] for m in inputs_mapped}, [] if sigma is not None else None,
-                      sigma_source, inputs_mapped, y_column, notes=notes)
+    # each a compact array of doubles (data.Numbers, equal to a list of the same numbers): a million samples are 8 MB a column
+    samples = Samples(y_column.target, y_column.si_unit, Numbers("d"), {m.target: Numbers("d") for m in inputs_mapped},
+                      Numbers("d") if sigma is not None else None, sigma_source, inputs_mapped, y_column, notes=notes)
     kept_in_window = 0  # (no cap on the samples but the reader's: a fit past its time limit is refused by taucli.fit.budget, --every its way out)
     used = [m.column.header for m in (y_column, *inputs_mapped)] + ([sigma_header] if sigma_header is not None else [])
     if bulk.collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor, sigma_header, windows, step, used, samples):
