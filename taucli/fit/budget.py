@@ -47,12 +47,16 @@ class Spent(Exception):
 
 def before(model, p) -> None:
     """Time the scene's solve at p on a few samples spread over the table (after one untimed: the
-    first solve imports its solver), and plan the least a fit takes: refused here where even that
-    passes the limit."""
+    first solve imports its solver), or the model on arrays at every sample (taucli.fit.arrays),
+    and plan the least a fit takes: refused here where even that passes the limit."""
     n = model.samples.count
     kept, model.budget = model.budget, None
     model.value(p, 0)
+    on_arrays = model.arrays is not None and model.arrays.predict(p) is not None  # (the model at every sample at once: timed so)
     model.budget = kept
+    if on_arrays and model.arrays.predict(p, None, model._timed) is not None:
+        kept.plan(n, linear_evaluations(len(p)), len(p))
+        return
     for i in sorted({round(k * (n - 1) / max(TIMED - 1, 1)) for k in range(min(TIMED, n))}):
         model.value(p, i)
     kept.plan(n, linear_evaluations(len(p)), len(p))
@@ -79,14 +83,15 @@ class Budget:
         self.planned = self.solves + samples * evaluations
         self._check()
 
-    def timed(self, solve):
-        """``solve()``, its time counted (and the fit refused once the time spent passes the limit)."""
+    def timed(self, solve, solves: int = 1):
+        """``solve()``, its time counted as ``solves`` solves' (the model on arrays stands for one a
+        sample: taucli.fit.arrays), and the fit refused once the time spent passes the limit."""
         started = time.perf_counter()
         try:
             return solve()
         finally:
             self.spent += time.perf_counter() - started
-            self.solves += 1
+            self.solves += solves
             if self.progress is not None and self.planned:
                 self.progress(min(self.solves, self.planned), self.planned)
             if self.limit is not None and self.spent > self.limit:

@@ -28,7 +28,7 @@ write it.
 - A binary file, a file that is not UTF-8 or Windows-1252 text, ragged rows, an empty table and
   a line longer than csv's limit are refused, one line each.
 
-Plain Python (csv): no numpy, no pint.
+csv, and numpy for the batches of plain numbers (taucli.fit.fast_rows); no pint.
 """
 
 from __future__ import annotations
@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from taucli.answering.csv_text import MAX_BYTES, delimiter as _delimiter, lines as text_lines, split_header, too_large
 from taucli.core.errors import InputError
 from taucli.core.written import printable
-from taucli.fit import sources
+from taucli.fit import fast_rows, sources
 
 OPTION = "data"  # the argument the messages name (DATA)
 MAX_ROWS = 2_000_000
@@ -126,11 +126,12 @@ def read(source, stdin=None) -> DataTable:
         raise InputError(OPTION, f"{name} line {first[0]}: names a column twice: {', '.join(twice)}")
     if all(_NUMBER.fullmatch(header) for header in headers):
         raise InputError(OPTION, f"{name} line {first[0]}: expected a header naming the columns before the numbers", example="t (s),omega (rad/s)")
-    headers, rows = _units_row(headers, rows, name)
+    headers, rows, pending = _units_row(headers, rows, name)
     values = [Numbers("d") for _ in headers]
     lines = Numbers("q")
     commas = _Commas()
-    for line, cells in rows:
+
+    def add(line: int, cells: list[str]) -> None:
         if len(cells) > len(headers) and not any(cell.strip() for cell in cells[len(headers):]):
             cells = cells[:len(headers)]  # cells under Excel's trailing empty columns
         if len(cells) != len(headers):
@@ -142,6 +143,15 @@ def read(source, stdin=None) -> DataTable:
             # A comma is read as a decimal comma here; the file's commas, all seen, then say whether it is one or the table is refused.
             column.append(_number(cell, line, header, name, commas.seen(line, cell)))
         lines.append(line)
+
+    before = 1 + (pending is not None) + (pending is None and rows is None)  # the header, and the row under it where it was read
+    if pending is not None:
+        add(*pending)
+    # the rest: plain numbers a batch at a time (fast_rows), anything else row by row as the rows above
+    rest = rows if rows is not None else fast_rows.taken(numbered, delimiter, values, lines, commas,
+                                                          lambda pairs, at, count: _rows(pairs, at, delimiter, name, count + before), MAX_ROWS)
+    for line, cells in rest:
+        add(line, cells)
     if not lines:
         raise InputError(OPTION, f"{name} has a header and no rows of numbers")
     decimal_comma = commas.decided(delimiter, name)
@@ -150,16 +160,18 @@ def read(source, stdin=None) -> DataTable:
 
 
 def _units_row(headers: list[str], rows, name: str):
-    """(the headers, the rows) with a row of units under the header (the module's rule) read into
-    the headers: ``t`` over ``s`` is ``t (s)``."""
+    """(the headers, the rows still to read, the row under the header if it is a row of numbers)
+    with a row of units under the header (the module's rule) read into the headers: ``t`` over
+    ``s`` is ``t (s)``. The rows still to read are None where they are the source's own lines,
+    not yet read (the batches of plain numbers may take them: fast_rows)."""
     second = next(rows, None)
     if second is None:
-        return headers, iter(())
+        return headers, iter(()), None
     line, cells = second
     units = [cell.strip() for cell in cells[:len(headers)]]
     if (len(cells) < len(headers) or any(cell.strip() for cell in cells[len(headers):]) or not any(units)
             or any(unit and (_NUMBER.fullmatch(unit) or unit.lower() in _NOT_FINITE or not _UNIT_CELL.fullmatch(unit)) for unit in units)):
-        return headers, itertools.chain([second], rows)
+        return headers, None, second
     named = []
     for header, unit in zip(headers, units):
         unit = unit.strip("()[] ")
@@ -168,7 +180,7 @@ def _units_row(headers: list[str], rows, name: str):
             raise InputError(OPTION, f"{name} line {line}: column {header!r} has the unit {own} in its header and {unit} in the row of units under it",
                              hint="keep one of them")
         named.append(f"{header} ({unit})" if unit and not own else header)
-    return named, rows
+    return named, None, None
 
 
 def _name(source) -> str:
@@ -195,7 +207,7 @@ def _lines(source, stdin, name: str):
     return _closing(handle, _guarded(handle.read, name, "expected a readable data file (or - for stdin)"))
 
 
-_WHAT = "fit takes at most 5000 samples"
+_WHAT = f"fit reads at most {MAX_ROWS:,} rows"
 
 
 def _guarded(read, name: str, expected: str):
@@ -213,11 +225,10 @@ def _closing(handle, lines):
         yield from lines
 
 
-def _rows(numbered, start: int, delimiter: str, name: str):
+def _rows(numbered, start: int, delimiter: str, name: str, count: int = 0):
     """(line number, cells) of the header and each row after it, blank lines and comments left
-    out, streamed; a table past MAX_ROWS refused as soon as it passes."""
+    out, streamed; a table past MAX_ROWS refused as soon as it passes (``count``: the rows before)."""
     reader = csv.reader((line + "\n" for _, line in numbered), delimiter=delimiter)
-    count = 0
     try:
         for cells in reader:
             line = start + reader.line_num
@@ -225,7 +236,7 @@ def _rows(numbered, start: int, delimiter: str, name: str):
                 continue
             count += 1
             if count > MAX_ROWS + 1:  # (the header besides)
-                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows, the most fit reads of a table (it takes at most 5000 samples)",
+                raise InputError(OPTION, f"{name} has more than {MAX_ROWS:,} rows, the most fit reads of a table",
                                  hint=too_large(OPTION, name).hint)
             yield line, cells
     except csv.Error as err:

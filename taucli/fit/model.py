@@ -20,6 +20,7 @@ import numpy as np
 
 from taucli.answering import pipeline
 from taucli.core.errors import InputError, spelled
+from taucli.fit import arrays
 from taucli.fit.samples import Samples
 from taucli.answering.inputs import read
 from taucli.quantities.measurement import split
@@ -29,6 +30,7 @@ from taucli.options.table import Command
 from taucli.answering.unknowns import Unknown
 
 REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError)
+KEPT_VALUES = 2**22  # f's values kept for p asked again, over all the p kept (32 MB)
 
 
 def held(command: Command, given: Mapping[str, object], spell, unknowns: list[Unknown] = ()) -> tuple[dict, dict[str, float], dict[str, float], list[str]]:
@@ -68,8 +70,10 @@ class Model:
         self.budget = None  # a taucli.fit.budget.Budget: the time the solves may take
         self.refusal: Exception | None = None
         self._cache: dict[tuple, np.ndarray] = {}
-        self._rows = [samples.row(i) for i in range(samples.count)]
-        self._runs = list(samples.runs) or [0] * samples.count
+        self._runs = samples.runs if len(samples.runs) else None  # each sample's run, where there are several
+        per_run = any(getattr(unknown, "run", None) is not None for unknown in unknowns)
+        # f at every sample at once, where the scene has a form on arrays (else None; inputs fitted per run: per sample)
+        self.arrays = None if per_run else arrays.of(self)
 
     @property
     def names(self) -> list[str]:
@@ -94,7 +98,7 @@ class Model:
     def value(self, p, i: int, moved: Mapping[str, float] | None = None) -> float:
         """f(xᵢ; p), or NaN where the scene refuses or has no value (the reason kept)."""
         try:
-            result = self.report(p, self._rows[i], moved, self._runs[i]).results.get(self.samples.y_key)
+            result = self.report(p, self.samples.row(i), moved, 0 if self._runs is None else self._runs[i]).results.get(self.samples.y_key)
         except REFUSALS as err:
             self.refusal = err
             return math.nan
@@ -109,10 +113,26 @@ class Model:
         key = (tuple(float(x) for x in p), tuple(sorted((moved or {}).items())))
         found = self._cache.get(key)
         if found is None:
-            found = np.array([self.value(p, i, moved) for i in range(self.samples.count)])
-            if len(self._cache) < 4096:
-                self._cache[key] = found
+            found = self._on_arrays(p, moved)
+            if found is None:
+                found = np.array([self.value(p, i, moved) for i in range(self.samples.count)])
+            if len(self._cache) >= min(4096, max(4, KEPT_VALUES // max(self.samples.count, 1))):
+                del self._cache[next(iter(self._cache))]  # the oldest: a million samples keep a few, not 4096 × 8 MB
+            self._cache[key] = found
         return found
+
+    def _on_arrays(self, p, moved) -> np.ndarray | None:
+        """f at every sample from taucli.fit.arrays (None: the per-sample path), counted as as many solves."""
+        if self.arrays is None or self.arrays.failed:
+            return None
+        found = self.arrays.predict(p, moved, self._timed)
+        if found is not None:
+            self.solves += self.samples.count - self.arrays.alone  # (the samples the scene solved alone counted by themselves)
+        return found
+
+    def _timed(self, work, solves: int):
+        """``work()``, counted as ``solves`` solves of the scene against the budget."""
+        return work() if self.budget is None else self.budget.timed(work, solves)
 
     def at(self, p, row: Mapping[str, float]) -> float:
         """f at inputs ``row`` that are no sample's (a point of the chart's curve)."""

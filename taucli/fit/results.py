@@ -151,7 +151,7 @@ def _slopes(model, p: np.ndarray, row: dict, *, j: int | None = None, held: str 
 def _samples_step(found: Fit) -> Step:
     samples = found.model.samples
     inputs = ", ".join(f"{m.target} (column {m.column.header!r})" for m in samples.columns)
-    files = ", ".join(dict.fromkeys(place[0] for place in samples.places))
+    files = ", ".join(samples.sources())
     left = []
     if samples.outside:
         left.append(f"{samples.outside} outside --range")

@@ -29,13 +29,11 @@ from dataclasses import dataclass, field, replace
 from taucli.quantities import units
 from taucli.quantities.kinds import BOUNDS
 from taucli.core.errors import InputError, did_you_mean
-from taucli.fit import columns, encoder
-from taucli.fit.data import Column, DataTable
+from taucli.fit import bulk, columns, encoder
+from taucli.fit.data import Column, DataTable, Numbers
 from taucli.fit.columns import TIME_NAMES, key as _key, quoted as _quoted
 from taucli.writing.report import fmt, pretty_unit
 from taucli.options.table import Command
-
-MAX_SAMPLES = 5000  # each sample is a solve of the scene, many times over: beyond this, --every or --range
 
 
 @dataclass(frozen=True)
@@ -91,7 +89,12 @@ class Samples:
     @property
     def varying(self) -> list[str]:
         """The inputs that differ between samples, in the order of the columns."""
-        return [name for name, values in self.inputs.items() if len(set(values)) > 1]
+        return [name for name, values in self.inputs.items() if any(value != values[0] for value in values)]
+
+    def sources(self) -> list[str]:
+        """The files the samples come from, in order."""
+        sources = getattr(self.places, "sources", None)
+        return sources() if sources is not None else list(dict.fromkeys(place[0] for place in self.places))
 
 
 _spec, _find = columns.spec, columns.find  # (named in columns.py, where a column's naming is)
@@ -269,11 +272,17 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
     windows = [_window(command, text, [y_column, *inputs_mapped], gravity) for text in ranges or ()]
     step = _every(every)
     sigma_value, sigma_factor, sigma_source = _sigma(tables[0], sigma, sigma_header, y_column, gravity)
-    samples = Samples(y_column.target, y_column.si_unit, [], {m.target: [] for m in inputs_mapped}, [] if sigma is not None else None,
-                      sigma_source, inputs_mapped, y_column, notes=notes)
-    kept_in_window = beyond = 0  # beyond: samples past MAX_SAMPLES, only counted (the fit is refused; its message says how many)
+    # each a compact array of doubles (data.Numbers, equal to a list of the same numbers): a million samples are 8 MB a column
+    samples = Samples(y_column.target, y_column.si_unit, Numbers("d"), {m.target: Numbers("d") for m in inputs_mapped},
+                      Numbers("d") if sigma is not None else None, sigma_source, inputs_mapped, y_column, notes=notes)
+    kept_in_window = 0  # (no cap on the samples but the reader's: a fit past its time limit is refused by taucli.fit.budget, --every its way out)
     used = [m.column.header for m in (y_column, *inputs_mapped)] + ([sigma_header] if sigma_header is not None else [])
     samples.run_names = [table.source for table in tables]
+    # one run: on arrays at once (bulk); several, or a row refused there: row by row, each sample's run and line kept
+    if len(tables) == 1 and bulk.collect(command, tables, y_column, inputs_mapped, sigma_value, sigma_factor, sigma_header, windows, step, used, samples):
+        _note_the_empty_rows(samples, used, False)
+        return samples
+    samples.empty, samples.outside, samples.thinned = [], 0, 0
     for run, table in enumerate(tables):
         for i, line in enumerate(table.lines):
             if any(math.isnan(table.column(header).values[i]) for header in used):
@@ -286,9 +295,6 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
             kept_in_window += 1
             if (kept_in_window - 1) % step:
                 samples.thinned += 1
-                continue
-            if samples.count >= MAX_SAMPLES:
-                beyond += 1
                 continue
             for m in (y_column, *inputs_mapped):  # in SI, a value its unit takes past a double's range, or to 0, is refused as a typed one is
                 _check_unit_made(cells[m.target], table.column(m.column.header).values[i], table.source, line, m.column.header)
@@ -310,10 +316,6 @@ def _collected(command: Command, tables, y_column: Mapped, inputs_mapped: list[M
             samples.places.append((table.source, line))
             samples.runs.append(run)
     _note_the_empty_rows(samples, used, len(tables) > 1)
-    if beyond:
-        count = samples.count + beyond
-        raise InputError("data", f"gives {count} samples, and fit takes at most {MAX_SAMPLES} (each is a solve of the scene, many times over)",
-                         hint=f"thin them with --every {math.ceil(count / MAX_SAMPLES)}, or fit a window with --range")
     return samples
 
 

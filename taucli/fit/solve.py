@@ -359,10 +359,10 @@ def _at_bound(model: Model, at: list[int], p: np.ndarray, y: np.ndarray, sigma, 
     s2 = 1.0 if sigma is not None else float(np.sum((r - Jw @ step) ** 2)) / max(n - m, 1)
     past = [j for j in at if step[j] < 0]
     if past:
-        from scipy.stats import chi2  # deferred: scipy.stats, only for an input on its bound
+        from scipy.special import chdtri  # deferred: χ²'s inverse tail as scipy.stats.chi2.isf works it, without importing scipy.stats
 
         gain = float(np.sum((Jw @ step) ** 2)) / s2 if s2 > 0 else math.inf
-        if gain > float(chi2.isf(BOUND_P, len(past))):
+        if gain > float(chdtri(len(past), BOUND_P)):
             _refuse_bound(model, past, p, gain)
     return p, list(at)
 
