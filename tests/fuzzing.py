@@ -224,7 +224,7 @@ BASES = {
     "balance": ["--mass 'mass=200kg radius=0.2m angle=0deg' --mass 'mass=300kg radius=0.15m angle=45deg' --balance-radius 0.2m",
                 "--mass 'mass=2kg radius=80mm angle=0deg plane=0mm' --mass 'mass=3kg radius=70mm angle=45deg plane=300mm' --plane 100mm --plane 500mm "
                 "--balance-radius 100mm --speed 300rpm --bearing 0m --bearing 0.7m",
-                "--mass 'mass=1.4kg length=100cm' --bearing=-27.5cm --bearing 27.5cm --vertical --speed 6rad/s --g 9.8"],
+                "--mass 'mass=1.4kg length=100cm' --bearing -27.5cm --bearing 27.5cm --vertical --speed 6rad/s --g 9.8"],
 }
 extreme_numbers = st.one_of(
     st.sampled_from(["0", "-0", "-1", "1e-320", "5e-324", "1e-300", "1e-30", "1e-9", "1e9", "1e30", "1e300", "1.7e308", "-1e308", "1e-16", "0.9999999999999999", "1.0000000000000002"]),

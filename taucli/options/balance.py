@@ -11,7 +11,7 @@ TWO_PLANES = ("plane+plane",)
 BEARINGS = ("speed+bearing+bearing",)
 TWO_PLANES_EXAMPLE = ("{mass} 'mass=2kg radius=0.3m angle=0deg plane=0.2m' {mass} 'mass=3kg radius=0.2m angle=90deg plane=0.5m' "
                       "{plane} 0m {plane} 0.8m")
-BEARINGS_EXAMPLE = "{speed} 300rpm {bearing} 0m {bearing} 1m"
+BEARINGS_EXAMPLE = "{speed} 300rpm {bearing} -0.5m {bearing} 1m"
 
 COMMAND = Command(
     name="balance",
@@ -49,7 +49,7 @@ COMMAND = Command(
                example=TWO_PLANES_EXAMPLE),
         Result("balance_mr", "kg*m", "balancing mass × radius (one plane)"),
         Result("balance_angle", "rad", "angle of the balancing mass (one plane)"),
-        Result("balance_mass", "kg", "balancing mass at --balance-radius (one plane)", needs=("balance_radius",)),
+        Result("balance_mass", "kg", "balancing mass at --balance-radius (one plane)"),
         Result("balance_mr_A", "kg*m", "balancing mass × radius in plane A", needs=TWO_PLANES, example=TWO_PLANES_EXAMPLE),
         Result("balance_angle_A", "rad", "angle of the balancing mass in plane A", needs=TWO_PLANES, example=TWO_PLANES_EXAMPLE),
         Result("balance_mass_A", "kg", "balancing mass in plane A at its radius", needs=("plane+plane+balance_radius",),

@@ -75,7 +75,7 @@ def test_irodov_1_281_the_speed_at_which_the_lower_bearing_is_free():
     """Irodov 1.281: a horizontal uniform rod, 1.40 kg and 100 cm, turns about a vertical axis
     through its end A, at the middle of the 55 cm axis. The book: the lower end's horizontal force
     vanishes at ω = √(2g/l) = 6.0 rad/s, and the upper end's is then F = mgl₀/l = 25 N."""
-    done = run_taucli("balance", "--mass", "mass=1.4kg length=100cm", "--bearing=-27.5cm", "--bearing", "27.5cm", "--vertical", "--g", "9.8",
+    done = run_taucli("balance", "--mass", "mass=1.4kg length=100cm", "--bearing", "-27.5cm", "--bearing", "27.5cm", "--vertical", "--g", "9.8",
                       "--find", "speed", "--want", "bearing_force_A=0", "--json")
     assert done.code == 0, done.err
     found = {key: value["value"] for key, value in done.json()["results"].items()}
