@@ -24,7 +24,7 @@ COMMAND = Command(
         "balance both the force and the couple. At a --speed ω the unbalanced force is ω²|U| and the couple ω²|Σ m r l e^(iθ)|; "
         "between two --bearing the loads each carries."
     ),
-    example="taucli balance --mass 'mass=200kg radius=0.2m angle=0deg' --mass 'mass=300kg radius=0.15m angle=45deg' --balance-radius 0.2m",
+    example="taucli balance --mass 'mass=2kg radius=0.2m' --mass 'mass=3kg radius=15cm' --balance-radius 0.2m",
     options=(
         Option("mass", REVOLVING, 'A mass turning with the shaft: "mass=2kg radius=0.3m angle=45deg", with plane=0.5m its position along the shaft; '
                "length= in place of radius= for a uniform rod along the radius from the axis (or from radius=), its centre at r + L/2; "

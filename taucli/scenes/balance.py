@@ -32,7 +32,7 @@ from taucli.options.balance import COMMAND as TABLE
 from taucli.options.table import Results
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.given import Revolving
-from taucli.writing.report import Report, Step, Table, fmt, quantity_text
+from taucli.writing.report import Report, Step, Table, fmt, pretty_unit, quantity_text, term
 
 _EXAMPLE = "{mass} 'mass=2kg radius=0.3m angle=0deg' {mass} 'mass=3kg radius=0.2m angle=90deg'"
 _TWO_PLANES = "{plane} 0m {plane} 0.8m"
@@ -149,6 +149,21 @@ def _polar(value: complex, sizes: Sequence[float]) -> tuple[float, float | None]
     return size, angle + 2 * math.pi if angle < 0 else angle
 
 
+def _signed(x: float) -> str:
+    """A number with a true minus: −1.6, so that a numbers line never shows "× -0.1"."""
+    return "−" + fmt(-x) if x < 0 else fmt(x)
+
+
+def _paren(x: float, unit: str) -> str:
+    return f"({_signed(x)} {pretty_unit(unit)})"
+
+
+def _vec(value: complex, unit: str) -> str:
+    """A vector of the plane by its components along and across the reference line: (21.6 kg·m, −8.4 kg·m)."""
+    shown = pretty_unit(unit)
+    return f"({_signed(value.real)} {shown}, {_signed(value.imag)} {shown})"
+
+
 def _angle_text(angle: float | None) -> str:
     return "—" if angle is None else f"{fmt(math.degrees(angle))}°"
 
@@ -173,7 +188,7 @@ def _arm(m: Revolving, reference: float) -> float:
 
 
 def _polygon_step(mass, rows) -> Step:
-    terms = "; ".join(f"{fmt(m.mass)} × {fmt(m.centre)} = {fmt(m.mass * m.centre)} kg·m at {fmt(math.degrees(m.angle))}°" for m, _ in zip(mass, rows))
+    terms = "; ".join(f"{term(m.mass, 'kg')} × {term(m.centre, 'm')} at {_signed(math.degrees(m.angle))}°" for m in mass)
     total = _sum([r[0] for r in rows])
     rods = [m for m in mass if m.length is not None]
     why = ("each mass's centrifugal pull m r ω² lies along its radius: the m·r add as vectors, the polygon of the books, "
@@ -181,14 +196,13 @@ def _polygon_step(mass, rows) -> Step:
     if rods:
         why += "; a rod along the radius counts at its centre of mass, r + L/2"
     return Step("The masses as vectors m·r, resolved (the table)", "Σ m·r = (Σ m r cos θ, Σ m r sin θ)", terms,
-                f"({fmt(total.real)}, {fmt(total.imag)}) kg·m", why)
+                _vec(total, "kg*m"), why)
 
 
 def _couple_step(mass, rows, reference, couple, size, angle) -> Step:
-    terms = "; ".join(f"{fmt(m.mass * m.centre)} × {fmt(_arm(m, reference))} = {fmt(m.mass * m.centre * _arm(m, reference))} kg·m² "
-                      f"at {fmt(math.degrees(m.angle))}°" for m in mass)
+    terms = "; ".join(f"{term(m.mass * m.centre, 'kg*m')} × {term(_arm(m, reference), 'm')} at {_signed(math.degrees(m.angle))}°" for m in mass)
     return Step(f"The couples m·r·l about the plane at {quantity_text(reference, 'm')}", "Σ m·r·l = (Σ m r l cos θ, Σ m r l sin θ)", terms,
-                f"({fmt(couple.real)}, {fmt(couple.imag)}) kg·m², |Σ m·r·l| = {quantity_text(size, 'kg*m**2')} at {_angle_text(angle)}",
+                f"{_vec(couple, 'kg*m**2')}, |Σ m·r·l| = {quantity_text(size, 'kg*m**2')} at {_angle_text(angle)}",
                 "a mass at l from the reference plane adds the moment m r ω² l about it: the couple polygon, each vector m·r·l drawn along its "
                 "mass's radius (l negative: drawn the other way)")
 
@@ -202,7 +216,7 @@ def _one_plane(results, steps, notes, unbalance, rows, radii, couple_size, along
     results.put("balance_mr", mr)
     results.put("balance_angle", angle)
     steps.append(Step("The balancing mass: the vector that closes the polygon", "m_b r_b = |Σ m·r|,  θ_b = θ(Σ m·r) + 180°",
-                      f"√(({fmt(unbalance.real)})² + ({fmt(unbalance.imag)})²)", f"{quantity_text(mr, 'kg*m')} at {_angle_text(angle)}",
+                      f"√({_paren(unbalance.real, 'kg*m')}² + {_paren(unbalance.imag, 'kg*m')}²)", f"{quantity_text(mr, 'kg*m')} at {_angle_text(angle)}",
                       "the balancing mass's m·r is equal and opposite to the resultant, so the polygon closes and no force is left"))
     if angle is None:
         notes.append("the masses balance already (Σ m·r = 0): no balancing mass is needed, and it has no angle")
@@ -222,10 +236,10 @@ def _two_planes(results, steps, notes, unbalance, couple, rows, plane, radii) ->
     mr_b, angle_b = _polar(in_b, [abs(r[1]) / abs(span) for r in rows])
     mr_a, angle_a = _polar(in_a, [*sizes, abs(in_b)])
     steps.append(Step("Plane B: the vector that closes the couple polygon", "m_B r_B l_B = −Σ m·r·l  (l_B = B − A)",
-                      f"−({fmt(couple.real)}, {fmt(couple.imag)}) / {fmt(span)}", f"{quantity_text(mr_b, 'kg*m')} at {_angle_text(angle_b)}",
+                      f"−{_vec(couple, 'kg*m**2')} / {term(span, 'm')}", f"{quantity_text(mr_b, 'kg*m')} at {_angle_text(angle_b)}",
                       "about plane A the mass in A has no arm, so the mass in B alone closes the couple polygon"))
     steps.append(Step("Plane A: the vector that closes the force polygon", "m_A r_A = −(Σ m·r + m_B r_B)",
-                      f"−(({fmt(unbalance.real)}, {fmt(unbalance.imag)}) + ({fmt(in_b.real)}, {fmt(in_b.imag)}))",
+                      f"−({_vec(unbalance, 'kg*m')} + {_vec(in_b, 'kg*m')})",
                       f"{quantity_text(mr_a, 'kg*m')} at {_angle_text(angle_a)}",
                       "with B's mass the forces must still add to zero: A's mass closes the force polygon"))
     for key, value in (("balance_mr_A", mr_a), ("balance_angle_A", angle_a), ("balance_mr_B", mr_b), ("balance_angle_B", angle_b)):
@@ -256,8 +270,8 @@ def _bearings(results, steps, notes, mass, speed, bearing, gravity) -> None:
     size_b, angle_b = _polar(on_b, [scale])
     weights = " + g Σ m·r" if gravity else ""
     steps.append(Step("Loads on the bearings", f"F_B (b − a) = ω² Σ m·r·(l − a){weights},  F_A = ω² Σ m·r − F_B",
-                      f"(({fmt(square)}) × ({fmt(couple.real)}, {fmt(couple.imag)})"
-                      + (f" + {fmt(gravity)} × ({fmt(unbalance.real)}, {fmt(unbalance.imag)})" if gravity else "") + f") / {fmt(span)}",
+                      f"({term(square, 'rad**2/s**2')} × {_vec(couple, 'kg*m**2')}"
+                      + (f" + {term(gravity, 'm/s**2')} × {_vec(unbalance, 'kg*m')}" if gravity else "") + f") / {term(span, 'm')}",
                       f"F_A = {quantity_text(size_a, 'N')} at {_angle_text(angle_a)}, F_B = {quantity_text(size_b, 'N')} at {_angle_text(angle_b)}",
                       "the shaft presses on its bearings with the masses' centrifugal forces, shared so that their moments balance about either bearing"
                       + ("; on a vertical shaft each weight m g at radius r adds the moment m g r, turning with the shaft" if gravity else "")))
