@@ -46,10 +46,13 @@ HOWS = (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS, WEIGHT_INERT
 _POUND_MASSES = frozenset({"pound", "ounce"})
 
 
-def _has_a_force(ureg, q) -> bool:
-    """Whether a unit of ``q`` is a force (kgf, N, lbf): a weight × a length² is a GD², a J·m is not."""
-    force = ureg.Quantity(1, "N").dimensionality
-    return any(ureg.Quantity(1, name).dimensionality == force for name, _ in q.unit_items())
+_KGF = frozenset({"force_kilogram", "kilogram_force"})
+
+
+def _in_kgf(q) -> bool:
+    """Whether ``q``'s unit holds a kgf: kgf·m² for an inertia is the metric books' GD² (J = GD²/4g). A
+    lbf·ft² could as well be a US WR² (J = WR²/g, a factor of 4 apart) and N·m² either: both stay refused."""
+    return bool(_KGF & {name for name, _ in q.unit_items()})
 
 
 # Names for dimensionalities that show up in "got ..." messages, keyed by exponents.
@@ -267,7 +270,7 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     try:
         if kind.name == "mass" and q.dimensionality == ureg.Quantity(1, "N").dimensionality:
             how, target = WEIGHT, "N"
-        elif kind.name == "moment of inertia" and q.dimensionality == ureg.Quantity(1, "N*m**2").dimensionality and _has_a_force(ureg, q):
+        elif kind.name == "moment of inertia" and q.dimensionality == ureg.Quantity(1, "N*m**2").dimensionality and _in_kgf(q):
             how, q = GD2, q / ureg.Quantity(4 * STANDARD_GRAVITY, "m/s**2")  # GD² = 4gJ: G the weight, D the diameter of gyration
         elif kind.name in FORCES and q.dimensionality != wanted and (q * ureg.Quantity(1, "m/s**2")).dimensionality == wanted:
             how, q = MASS_AS_WEIGHT, q * ureg.Quantity(STANDARD_GRAVITY, "m/s**2")
@@ -284,7 +287,7 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
     if kind.name == "moment of inertia" and how == AS_GIVEN and _POUND_MASSES & {name for name, _ in q.unit_items()}:
         how = WEIGHT_INERTIA  # lb*ft^2, oz*in^2: read as mass × length², which is a WR²'s number too (a note says so)
-    elif kind.name == "moment of inertia" and how == AS_GIVEN and {"force_kilogram", "kilogram_force"} & {name for name, _ in q.unit_items()}:
+    elif kind.name == "moment of inertia" and how == AS_GIVEN and _in_kgf(q):
         how = KGF_INERTIA  # kgf*cm*s^2: the technical units' inertia, with standard gravity in the kgf (a note says so)
     radians = _radians(q.units)
     if kind.name in _RATES or kind.name == "dimensionless" and radians != 0:

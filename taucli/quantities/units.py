@@ -311,7 +311,7 @@ def _note(option: str, text: str, reading: Reading, value: float, gravity: float
 # A pound in an inertia with no s² is a pound of mass; the WR² of US drive catalogues (weight × radius of
 # gyration², in lb·ft²) has the same number, J = WR²/g with W in lbf, so both readings agree.
 _WR2_NOTE = "a pound or ounce of mass, the same number as a WR² (J = WR²/g)"
-# A weight × a length² (kgf·m², N·m²) for an inertia is a GD², the flywheel effect of motor catalogues in
+# A kgf × a length² (kgf·m²) for an inertia is a GD², the flywheel effect of motor catalogues in
 # the technical units (G the weight, D the diameter of gyration): J = GD²/4g. A kgf is the weight of a kg
 # at standard gravity, so J in kg·m² is GD² in kgf·m² over 4; a book that divides by 9.81 is 0.03% low.
 _BOOK_NOTES = {

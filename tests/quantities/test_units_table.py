@@ -187,6 +187,7 @@ def test_the_table_is_read_whole_and_holds_this_issues_rows():
     # the technical units' kgf·cm·s² is 9.80665 N × 0.01 m × 1 s²
     assert typed["4 kgf*m^2"].value == pytest.approx(1.0 * 1.0**2, rel=1e-15) and "GD²" in typed["4 kgf*m^2"].note
     assert typed["1 kgf*cm*s^2"].value == pytest.approx(G0 * 0.01, rel=1e-15) and typed["1 kgf*cm*s^2"].note
+    assert typed["1 lbf*ft^2"].refusal  # a WR² or a GD²: a factor of 4 apart, so refused
 
 
 def _run(argv: list[str], capsys) -> tuple[int, str, str]:
