@@ -42,7 +42,7 @@ _taucli_fit_names() {
     # fit's --fit: the inputs of the scene typed, after the NAME, typed so far
     local i scene="" names prefix=""
     for ((i = 2; i < COMP_CWORD; i++)); do
-        case "${COMP_WORDS[i]}" in inertia|spin-down|atwood|rolling|impulse|pendulum|torque|gyro|drive|flywheel) scene="${COMP_WORDS[i]}"; break ;; esac
+        case "${COMP_WORDS[i]}" in inertia|spin-down|atwood|rolling|impulse|pendulum|torque|gyro|drive|flywheel|balance) scene="${COMP_WORDS[i]}"; break ;; esac
     done
     case "$scene" in
         inertia) names="mass density gyration radius inner_radius outer_radius length width height depth offset body_offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
@@ -55,6 +55,7 @@ _taucli_fit_names() {
         gyro) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span cg_height track speed turn_radius wheel_inertia wheel_radius engine_inertia gear_ratio g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle rotor.inertia rotor.spin" ;;
         drive) names="motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency efficiency_back motor_friction gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
         flywheel) names="inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction scale_torque scale_angle cycle_time rim_radius rim_speed rim_speed_max rim_speed_min density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
+        balance) names="plane balance_radius speed bearing g mass.mass mass.radius mass.angle mass.plane mass.length" ;;
     esac
     [[ "$cur" == *,* ]] && prefix="${cur%,*},"
     COMPREPLY=($(compgen -P "$prefix" -W "$names" -- "${cur##*,}"))
@@ -67,7 +68,7 @@ _taucli() {
         case "${COMP_WORDS[i]}" in -*) ;; *) command="${COMP_WORDS[i]}"; break ;; esac
     done
     if [[ -z "$command" ]]; then
-        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel fit bench completions convert --version --debug --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel balance fit bench completions convert --version --debug --help" -- "$cur"))
         return 0
     fi
     case "$command" in
@@ -521,6 +522,26 @@ _taucli() {
         esac
         COMPREPLY=($(compgen -W "--inertia --shape --mass --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --loops --scale-torque --scale-angle --cycle-time --rim-radius --rim-speed --rim-speed-max --rim-speed-min --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
+    balance)
+        case "$prev" in
+            --mass) :; return 0 ;;
+            --plane) _taucli_units m cm mm km in ft; return 0 ;;
+            --balance-radius) _taucli_units m cm mm km in ft; return 0 ;;
+            --speed) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
+            --bearing) _taucli_units m cm mm km in ft; return 0 ;;
+            --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "unbalance unbalance_angle unbalance_couple balance_mr balance_angle balance_mass balance_mr_A balance_angle_A balance_mass_A balance_mr_B balance_angle_B balance_mass_B force_unbalanced couple_unbalanced bearing_force_A bearing_angle_A bearing_force_B bearing_angle_B" -- "$cur")); return 0 ;;
+            --to) COMPREPLY=($(compgen -W "unbalance= unbalance_angle= unbalance_couple= balance_mr= balance_angle= balance_mass= balance_mr_A= balance_angle_A= balance_mass_A= balance_mr_B= balance_angle_B= balance_mass_B= force_unbalanced= couple_unbalanced= bearing_force_A= bearing_angle_A= bearing_force_B= bearing_angle_B=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
+            --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --points) :; return 0 ;;
+            --y) COMPREPLY=($(compgen -W "unbalance unbalance_angle unbalance_couple balance_mr balance_angle balance_mass balance_mr_A balance_angle_A balance_mass_A balance_mr_B balance_angle_B balance_mass_B force_unbalanced couple_unbalanced bearing_force_A bearing_angle_A bearing_force_B bearing_angle_B" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "plane balance_radius speed bearing g mass.mass mass.radius mass.angle mass.plane mass.length" -- "$cur")); return 0 ;;
+            --want) COMPREPLY=($(compgen -W "unbalance= unbalance_angle= unbalance_couple= balance_mr= balance_angle= balance_mass= balance_mr_A= balance_angle_A= balance_mass_A= balance_mr_B= balance_angle_B= balance_mass_B= force_unbalanced= couple_unbalanced= bearing_force_A= bearing_angle_A= bearing_force_B= bearing_angle_B=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --mc) :; return 0 ;;
+        esac
+        COMPREPLY=($(compgen -W "--mass --plane --balance-radius --speed --bearing --vertical --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        ;;
     fit)
         case "$prev" in
             --fit) _taucli_fit_names; return 0 ;;
@@ -539,7 +560,7 @@ _taucli() {
             --residuals) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
-            (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
+            (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel balance" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
             return 0
         fi
         COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --per-run --counts-per-rev --counts --every --no-limit --json --get --to --no-steps --format --uncertainty --plot --out --residuals --help" -- "$cur"))

@@ -49,7 +49,7 @@ end
 function __taucli_fit_names --description 'the inputs of the scene typed, after the NAME, typed so far'
     set -l scene
     for word in (commandline -opc)
-        contains -- $word inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel; and set scene $word; and break
+        contains -- $word inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel balance; and set scene $word; and break
     end
     set -l prefix (string replace -r -- '[^,]*$' '' (commandline -ct))
     switch "$scene"
@@ -73,6 +73,8 @@ function __taucli_fit_names --description 'the inputs of the scene typed, after 
             printf "$prefix%s\n" motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency efficiency_back motor_friction gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle
         case flywheel
             printf "$prefix%s\n" inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction scale_torque scale_angle cycle_time rim_radius rim_speed rim_speed_max rim_speed_min density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle
+        case balance
+            printf "$prefix%s\n" plane balance_radius speed bearing g mass.mass mass.radius mass.angle mass.plane mass.length
     end
 end
 
@@ -90,6 +92,7 @@ complete -c taucli -n __fish_use_subcommand -a torque -d 'Torque τ = r × F and
 complete -c taucli -n __fish_use_subcommand -a gyro -d 'A spinning top or gyroscope on a pivot: its precession, Ω = mgr/(Iω_s), and the exact steady rates.'
 complete -c taucli -n __fish_use_subcommand -a drive -d 'A motor turning a load through a ratio: the inertia it sees, the torques it gives, a move\'s RMS torque.'
 complete -c taucli -n __fish_use_subcommand -a flywheel -d 'A flywheel\'s fluctuation of speed: Cs = (ω_max − ω_min)/ω_mean and ΔE = Iω²Cs, any two of I, ΔE, Cs; its rim\'s stress.'
+complete -c taucli -n __fish_use_subcommand -a balance -d 'Balancing of rotating masses: the balancing mass·radius and its angle in one plane or two, the unbalanced force and couple, the bearing loads.'
 complete -c taucli -n __fish_use_subcommand -a fit -d 'Fit inputs of a scene to measured samples (least squares): each ± its uncertainty, the fit\'s quality, and the scene at the fitted values.'
 complete -c taucli -n __fish_use_subcommand -a bench -d 'Speed against accuracy: time per solve and error of every method, charted (log-log).'
 complete -c taucli -n __fish_use_subcommand -a completions -d 'Print the completion script for SHELL: commands, options, shapes, methods, and units after a number.'
@@ -1172,7 +1175,65 @@ complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l uncertainty -d '
 complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l mc -x -d 'Check the uncertainties by Monte Carlo with N draws.'
 complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l no-limit -d 'Run --find or --mc however long it is estimated to take (else refused past 60 s).'
 complete -c taucli -n '__fish_seen_subcommand_from flywheel' -l help -d 'Show this message and exit.'
-complete -c taucli -n '__fish_seen_subcommand_from fit' -a 'inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l mass -x -d 'A mass turning with the shaft: "mass=2kg radius=0.3m angle=45deg", with plane=0.5m its position along the shaft; length= in place of radius= for a uniform rod along the radius from the axis (or from radius=), its centre at r + L/2; angle= counter-clockwise from the reference line, default 0 (repeatable).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l plane -x -a '(__taucli_units m cm mm km in ft)' -d 'A balancing plane\'s position along the shaft, from where plane= is measured: once for one plane, twice for two (A, then B); the couples are taken about the first (repeatable).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l balance-radius -x -a '(__taucli_units m cm mm km in ft)' -d 'The radius the balancing mass is put at: its mass m·r/r (once for both planes, or once for each).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l speed -x -a '(__taucli_units rad/s rpm rev/s deg/s Hz)' -d 'The shaft\'s speed ω, for the unbalanced force ω²Σm·r and couple and the bearing loads, e.g. 300rpm.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l bearing -x -a '(__taucli_units m cm mm km in ft)' -d 'A bearing\'s position along the shaft (twice: A, then B), for the load each carries at --speed.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l vertical -d 'The shaft is vertical, positions along it measured upward: each mass\'s weight, at its radius, adds the moment m·g·r that turns with the shaft to the bearings\' loads (else weights are left out, as balancing does).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l g -x -a '(__taucli_units m/s^2 ft/s^2 g0)' -d 'Gravity (default 9.80665 m/s^2).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l json -d 'Print one strict JSON document on stdout.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'unbalance' -d 'unbalance, the size of Σ m·r'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'unbalance_angle' -d 'angle of the unbalance Σ m·r'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'unbalance_couple' -d 'couple unbalance, the size of Σ m·r·l'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_mr' -d 'balancing mass × radius (one plane)'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_angle' -d 'angle of the balancing mass (one plane)'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_mass' -d 'balancing mass at --balance-radius (one plane)'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_mr_A' -d 'balancing mass × radius in plane A'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_angle_A' -d 'angle of the balancing mass in plane A'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_mass_A' -d 'balancing mass in plane A at its radius'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_mr_B' -d 'balancing mass × radius in plane B'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_angle_B' -d 'angle of the balancing mass in plane B'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'balance_mass_B' -d 'balancing mass in plane B at its radius'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'force_unbalanced' -d 'unbalanced force, ω² times the size of Σ m·r'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'couple_unbalanced' -d 'unbalanced couple, ω² times the size of Σ m·r·l'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'bearing_force_A' -d 'load on bearing A'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'bearing_angle_A' -d 'angle of the load on bearing A'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'bearing_force_B' -d 'load on bearing B'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l get -x -a 'bearing_angle_B' -d 'angle of the load on bearing B'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l to -x -a 'unbalance= unbalance_angle= unbalance_couple= balance_mr= balance_angle= balance_mass= balance_mr_A= balance_angle_A= balance_mass_A= balance_mr_B= balance_angle_B= balance_mass_B= force_unbalanced= couple_unbalanced= bearing_force_A= bearing_angle_A= bearing_force_B= bearing_angle_B=' -d 'Show a result in this unit, e.g. --to \'I=g*cm^2\' (repeatable).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l no-steps -d 'Leave out the worked steps (the human view, and --json\'s steps list).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l batch -d 'Many scenes: read JSON lines on stdin, keys the option names (m1, pulley_mass), and write one --json document per line.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l jsonl -d 'Like --json, but a sweep\'s documents one per line rather than one array.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l format -x -a 'md latex html csv' -d 'Write the answer as a document: md (GitHub Markdown), latex (siunitx units, the steps in align*), html (a fragment), or csv (a header with units, a row per point of a sweep).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l plot -d 'Draw the motion against time (a list: one curve per value; a range: its chart), leaving out a sweep\'s table. With --json: the samples.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l out -r -F -d 'Also draw the chart to FILE.svg or FILE.png (needs matplotlib: pip install \'taucli[plot]\').'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l points -x -d 'Values in a range FROM..TO, ends included (default 50).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'unbalance' -d 'unbalance, the size of Σ m·r'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'unbalance_angle' -d 'angle of the unbalance Σ m·r'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'unbalance_couple' -d 'couple unbalance, the size of Σ m·r·l'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_mr' -d 'balancing mass × radius (one plane)'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_angle' -d 'angle of the balancing mass (one plane)'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_mass' -d 'balancing mass at --balance-radius (one plane)'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_mr_A' -d 'balancing mass × radius in plane A'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_angle_A' -d 'angle of the balancing mass in plane A'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_mass_A' -d 'balancing mass in plane A at its radius'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_mr_B' -d 'balancing mass × radius in plane B'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_angle_B' -d 'angle of the balancing mass in plane B'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'balance_mass_B' -d 'balancing mass in plane B at its radius'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'force_unbalanced' -d 'unbalanced force, ω² times the size of Σ m·r'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'couple_unbalanced' -d 'unbalanced couple, ω² times the size of Σ m·r·l'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'bearing_force_A' -d 'load on bearing A'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'bearing_angle_A' -d 'angle of the load on bearing A'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'bearing_force_B' -d 'load on bearing B'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l y -x -a 'bearing_angle_B' -d 'angle of the load on bearing B'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l find -x -a 'plane balance_radius speed bearing g mass.mass mass.radius mass.angle mass.plane mass.length' -d 'Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l want -x -a 'unbalance= unbalance_angle= unbalance_couple= balance_mr= balance_angle= balance_mass= balance_mr_A= balance_angle_A= balance_mass_A= balance_mr_B= balance_angle_B= balance_mass_B= force_unbalanced= couple_unbalanced= bearing_force_A= bearing_angle_A= bearing_force_B= bearing_angle_B=' -d 'The target of --find, e.g. --want \'a=4.0m/s^2\' (may carry an uncertainty).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l uncertainty -d 'With --get: each result\'s standard uncertainty in a second column.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l mc -x -d 'Check the uncertainties by Monte Carlo with N draws.'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l no-limit -d 'Run --find or --mc however long it is estimated to take (else refused past 60 s).'
+complete -c taucli -n '__fish_seen_subcommand_from balance' -l help -d 'Show this message and exit.'
+complete -c taucli -n '__fish_seen_subcommand_from fit' -a 'inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel balance'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -F
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l fit -x -a '(__taucli_fit_names)' -d 'The inputs to fit, by option name (friction,viscous), or a key of a spec as --find takes it (brake.mu); repeatable.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l x -x -d 'A column that is an input of each sample, and which (default time), e.g. "Time (s)" or "amplitude (deg)=angle0" (repeatable).'

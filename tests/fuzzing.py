@@ -32,7 +32,7 @@ from pathlib import Path
 from conftest import strict_json
 from hypothesis import strategies as st
 
-SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro", "drive", "flywheel")  # every scene of taucli.options (tests/front/test_fuzz.py checks)
+SCENES = ("inertia", "spin-down", "atwood", "rolling", "impulse", "pendulum", "torque", "gyro", "drive", "flywheel", "balance")  # every scene of taucli.options (tests/front/test_fuzz.py checks)
 SECONDS = 1.0  # the longest a run may take
 
 # Units by the metavar of the option that takes them.
@@ -100,7 +100,7 @@ def sane_value(option: str, metavar: str | None, files: dict[str, str]) -> st.Se
     """A value a careful user might give: a plain positive number with a unit of the right kind."""
     if metavar in CHOICES:
         return st.sampled_from(CHOICES[metavar][0])
-    if option in ("--get", "--y", "--to", "--points", "--out", "--torque-profile", "--part", "--side1", "--side2", "--pull"):
+    if option in ("--get", "--y", "--to", "--points", "--out", "--torque-profile", "--part", "--side1", "--side2", "--pull") or (metavar or "").startswith('"mass='):
         return option_value(option, metavar, files)
     units = [unit for unit in UNITS.get(metavar, ["kg"]) if unit] or [""]
     return st.tuples(st.floats(min_value=0.01, max_value=50).map(lambda x: f"{x:.3g}"), st.sampled_from(units)).map("".join)
@@ -129,6 +129,11 @@ def option_value(option: str, metavar: str | None, files: dict[str, str]) -> st.
         pull = st.tuples(st.sampled_from(["force=", "force=-", "", "angle=1 force="]), quantity_texts("FORCE"),
                          st.sampled_from(["", " angle=30deg", " angle=-89deg", " angle=120deg"]), st.sampled_from(["", " on=1", " on=2", " on=3", " on=x"]))
         return st.one_of(pull.map("".join), st.text(max_size=30))
+    if metavar and metavar.startswith('"mass='):  # balance's masses
+        mass = st.tuples(st.sampled_from(["mass=", "mass = ", "m=", ""]), quantity_texts("MASS"), st.sampled_from([" radius=", " length=", " radius=-", " "]),
+                         quantity_texts("LENGTH"), st.sampled_from(["", " angle=", " angle=-"]), st.sampled_from(["", "45deg", "1e308deg", "2"]),
+                         st.sampled_from(["", " plane=", " plane=-"]), st.sampled_from(["", "0.3m", "1e-300m", "x"])).map("".join)
+        return st.one_of(mass, st.text(max_size=30))
     if option == "--part":
         part = st.tuples(st.sampled_from(sum(CHOICES["SHAPE"], [])), st.sampled_from([" mass=", " mass = ", " m="]), quantity_texts("MASS"),
                          st.sampled_from([" radius=", " offset=", " length=", " "]), quantity_texts("LENGTH")).map("".join)
@@ -178,6 +183,7 @@ CORE = {
     "gyro": ["--inertia", "--spin", "--mass", "--cm-distance"],
     "drive": ["--motor-inertia", "--ratio", "--load-inertia", "--until-omega"],
     "flywheel": ["--inertia", "--omega-mean", "--fluctuation", "--energy-swing"],
+    "balance": ["--mass", "--mass", "--plane", "--speed"],
 }
 
 
@@ -215,6 +221,10 @@ BASES = {
                  "--energy-per-cycle 26741J --punch-fraction 0.16 --rim-speed 25m/s --fluctuation 0.03",
                  "--shape ring --mass 6.5t --radius 1.8m --energy-swing 56kJ --omega-mean 120rpm",
                  "--inertia 250kg*m^2 --omega-max 303rpm --omega-min 297rpm --rim-radius 0.6m --density 7200kg/m^3"],
+    "balance": ["--mass 'mass=200kg radius=0.2m angle=0deg' --mass 'mass=300kg radius=0.15m angle=45deg' --balance-radius 0.2m",
+                "--mass 'mass=2kg radius=80mm angle=0deg plane=0mm' --mass 'mass=3kg radius=70mm angle=45deg plane=300mm' --plane 100mm --plane 500mm "
+                "--balance-radius 100mm --speed 300rpm --bearing 0m --bearing 0.7m",
+                "--mass 'mass=1.4kg length=100cm' --bearing -27.5cm --bearing 27.5cm --vertical --speed 6rad/s --g 9.8"],
 }
 extreme_numbers = st.one_of(
     st.sampled_from(["0", "-0", "-1", "1e-320", "5e-324", "1e-300", "1e-30", "1e-9", "1e9", "1e30", "1e300", "1.7e308", "-1e308", "1e-16", "0.9999999999999999", "1.0000000000000002"]),

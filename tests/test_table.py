@@ -32,6 +32,7 @@ WORKING = {
     "drive": ["--load-mass", "250kg", "--lead", "10mm", "--ratio", "2", "--efficiency", "0.9", "--mu", "0.2", "--incline", "10deg",
               "--motor-inertia", "0.3e-4kg*m^2", "--speed", "15m/min", "--accel-time", "0.1s", "--run-time", "1s", "--dwell-time", "0.3s",
               "--rated-torque", "0.637N*m", "--stall-torque", "3N*m", "--no-load-speed", "5000rpm"],
+    "balance": ["--mass", "mass=3kg radius=70mm angle=45deg plane=300mm", "--plane", "100mm", "--balance-radius", "100mm", "--speed", "300rpm"],
     "flywheel": ["--omega-mean", "300rpm", "--fluctuation", "0.02", "--energy-swing", "5kJ", "--rim-radius", "0.6m", "--density", "7200kg/m^3",
                  "--allowable-stress", "6MPa"],
 }

@@ -15,7 +15,7 @@ from taucli.core.errors import InputError, did_you_mean
 from taucli.quantities.kinds import article
 from taucli.answering.reading import Inputs, Origin, word
 from taucli.writing.report import Value
-from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, ROTOR, SIDE, TEXT, VECTOR, Command, Option
+from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, REVOLVING, ROTOR, SIDE, TEXT, VECTOR, Command, Option
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:
@@ -175,3 +175,13 @@ READERS = {FLAG: _flag, CHOICE: _choice, FILE: _file, COUNT: _count, TEXT: _as_g
 READERS.update({kind: _repeated for kind in units.KINDS})
 READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec("particles"), COUPLE: _spec("couples"), BRAKE: _spec("brakes"), FACE: _spec("faces"), BAND: _spec("bands")})
 READERS.update({SIDE: _spec("sides"), PULL: _spec("pulls"), ROTOR: _spec("rotors")})
+
+
+def _revolving(option: Option, given, inputs: Inputs, stdin):
+    """balance's --mass, in taucli.answering.revolving (deferred as the other spec readers are)."""
+    from taucli.answering.revolving import revolving  # deferred: the spec readers, only for a spec option
+
+    return revolving(option, given, inputs, stdin)
+
+
+READERS[REVOLVING] = _revolving

@@ -7,11 +7,11 @@ The vocabulary of a table (Command, Option, Result, Results) is ``taucli.options
 May import: taucli.core, taucli.writing.report (a result's Value); never a solver.
 """
 
-from taucli.options import atwood, drive, fit, flywheel, gyro, impulse, inertia, pendulum, rolling, spin_down, tools, torque
+from taucli.options import atwood, balance, drive, fit, flywheel, gyro, impulse, inertia, pendulum, rolling, spin_down, tools, torque
 from taucli.options.table import Command
 
 SCENES: dict[str, Command] = {
-    module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive, flywheel)
+    module.COMMAND.name: module.COMMAND for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive, flywheel, balance)
 }
 COMMANDS: dict[str, Command] = {**SCENES, "fit": fit.COMMAND, "bench": tools.BENCH, "completions": tools.COMPLETIONS, "convert": tools.CONVERT}
 

@@ -4,11 +4,11 @@ Not a scene of its own: SCENE names one, and the words after the data files are 
 options, read by its own table (taucli.fit.command). This table holds what fit itself takes.
 """
 
-from taucli.options import atwood, drive, flywheel, gyro, impulse, inertia, pendulum, rolling, spin_down, torque
+from taucli.options import atwood, balance, drive, flywheel, gyro, impulse, inertia, pendulum, rolling, spin_down, torque
 from taucli.options.common import ANSWER, OUTPUT
 from taucli.options.table import CHOICE, FILE, FLAG, TEXT, Command, Option, Result
 
-SCENE_NAMES = tuple(module.COMMAND.name for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive, flywheel))
+SCENE_NAMES = tuple(module.COMMAND.name for module in (inertia, spin_down, atwood, rolling, impulse, pendulum, torque, gyro, drive, flywheel, balance))
 DATA = "Data"
 SHOWN = ("json", "get", "to", "no_steps", "format")  # of the scenes' answer options: no sweep, batch, --find or --mc
 

@@ -39,8 +39,20 @@ TWO_PI = 2.0 * math.pi
 # over a length, ω = v/R, in radians.
 AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS = 0, 1, 2, 3, 4
 WEIGHT_INERTIA = 5  # lb*ft^2 for a moment of inertia: a mass-pound, which is also the number of a WR² (weight-inertia)
-HOWS = (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS, WEIGHT_INERTIA, *meanings.HOWS)  # and the notes of taucli.quantities.meanings
+# A weight times a length² for a moment of inertia: a GD² (a motor's flywheel effect, kgf·m²), J = GD²/4g; and
+# kgf·length·s², the technical units' inertia: both read with standard gravity, the kgf's own, and a note saying so.
+GD2, KGF_INERTIA = 12, 13
+HOWS = (AS_GIVEN, REVOLUTIONS, WEIGHT, MASS_AS_WEIGHT, OVER_RADIUS, WEIGHT_INERTIA, *meanings.HOWS, GD2, KGF_INERTIA)  # and the notes of taucli.quantities.meanings
 _POUND_MASSES = frozenset({"pound", "ounce"})
+
+
+_KGF = frozenset({"force_kilogram", "kilogram_force"})
+
+
+def _in_kgf(q) -> bool:
+    """Whether ``q``'s unit holds a kgf: kgf·m² for an inertia is the metric books' GD² (J = GD²/4g). A
+    lbf·ft² could as well be a US WR² (J = WR²/g, a factor of 4 apart) and N·m² either: both stay refused."""
+    return bool(_KGF & {name for name, _ in q.unit_items()})
 
 
 # Names for dimensionalities that show up in "got ..." messages, keyed by exponents.
@@ -258,6 +270,8 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     try:
         if kind.name == "mass" and q.dimensionality == ureg.Quantity(1, "N").dimensionality:
             how, target = WEIGHT, "N"
+        elif kind.name == "moment of inertia" and q.dimensionality == ureg.Quantity(1, "N*m**2").dimensionality and _in_kgf(q):
+            how, q = GD2, q / ureg.Quantity(4 * STANDARD_GRAVITY, "m/s**2")  # GD² = 4gJ: G the weight, D the diameter of gyration
         elif kind.name in FORCES and q.dimensionality != wanted and (q * ureg.Quantity(1, "m/s**2")).dimensionality == wanted:
             how, q = MASS_AS_WEIGHT, q * ureg.Quantity(STANDARD_GRAVITY, "m/s**2")
         value = float(q.to(target).magnitude)
@@ -273,6 +287,8 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
         raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
     if kind.name == "moment of inertia" and how == AS_GIVEN and _POUND_MASSES & {name for name, _ in q.unit_items()}:
         how = WEIGHT_INERTIA  # lb*ft^2, oz*in^2: read as mass × length², which is a WR²'s number too (a note says so)
+    elif kind.name == "moment of inertia" and how == AS_GIVEN and _in_kgf(q):
+        how = KGF_INERTIA  # kgf*cm*s^2: the technical units' inertia, with standard gravity in the kgf (a note says so)
     radians = _radians(q.units)
     if kind.name in _RATES or kind.name == "dimensionless" and radians != 0:
         value, how = _angled(cleaned, q, text, option, kind, value, how, revolutions)

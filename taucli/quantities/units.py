@@ -33,7 +33,7 @@ from taucli.core.errors import InputError
 from taucli.quantities.kinds import ANGULAR, KINDS, STANDARD_GRAVITY, Kind, article, check_bounds, out_of_bounds
 from taucli.quantities.unit_text import number_times_unit
 from taucli.quantities.registry import (
-    AS_GIVEN, HOWS, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, WEIGHT_INERTIA, Ambiguous, bare_number, expected, from_pint,
+    AS_GIVEN, GD2, HOWS, KGF_INERTIA, MASS_AS_WEIGHT, NEEDS_ITS_UNIT, OVER_RADIUS, REVOLUTIONS, WEIGHT, WEIGHT_INERTIA, Ambiguous, bare_number, expected, from_pint,
 )
 from taucli.quantities.screen import MAX_DIGITS, MAX_TEXT_LENGTH, screen
 
@@ -297,6 +297,8 @@ def _note(option: str, text: str, reading: Reading, value: float, gravity: float
         said.append(spellings.as_force(reading.unit))
     elif reading.how == WEIGHT_INERTIA:
         said.append(_WR2_NOTE)
+    elif reading.how in _BOOK_NOTES:
+        said.append(_BOOK_NOTES[reading.how])
     elif reading.how == OVER_RADIUS:
         said.append(f"α = a_t/R = {value:.6g} rad/s²" if kind.name == "angular acceleration" else f"ω = v/R = {value:.6g} rad/s")
     elif reading.how == meanings.POWER_AS_TORQUE_SPEED:
@@ -309,6 +311,15 @@ def _note(option: str, text: str, reading: Reading, value: float, gravity: float
 # A pound in an inertia with no s² is a pound of mass; the WR² of US drive catalogues (weight × radius of
 # gyration², in lb·ft²) has the same number, J = WR²/g with W in lbf, so both readings agree.
 _WR2_NOTE = "a pound or ounce of mass, the same number as a WR² (J = WR²/g)"
+# A kgf × a length² (kgf·m²) for an inertia is a GD², the flywheel effect of motor catalogues in
+# the technical units (G the weight, D the diameter of gyration): J = GD²/4g. A kgf is the weight of a kg
+# at standard gravity, so J in kg·m² is GD² in kgf·m² over 4; a book that divides by 9.81 is 0.03% low.
+_BOOK_NOTES = {
+    GD2: "a weight times a length², read as GD² (weight × diameter of gyration², a motor's flywheel effect): J = GD²/4g, "
+         "g = 9.80665 m/s², the kgf's own (J in kg·m² = GD² in kgf·m² / 4; a book dividing by g = 9.81 finds 0.03% less)",
+    KGF_INERTIA: "kgf·length·s², the technical units' inertia, with the kgf at standard gravity 9.80665 m/s² "
+                 "(1 kgf·cm·s² = 0.0980665 kg·m²; a book taking g = 9.81 finds 0.03% more)",
+}
 
 
 def convert(value: float, si_unit: str, target: str, option: str) -> float:
@@ -348,6 +359,8 @@ def converted(value: float, si_unit: str, target: str, option: str) -> Parsed:
         note = f"{option} {target.strip()}: {spellings.as_force(split[1])}"
     elif how == WEIGHT_INERTIA:
         note = f"{option} {target.strip()}: {_WR2_NOTE}"
+    elif how in _BOOK_NOTES:
+        note = f"{option} {target.strip()}: {_BOOK_NOTES[how]}"
     elif how == OVER_RADIUS:
         note = f"{option} {target.strip()}: a speed over a length, in radians ({'α = a_t/R' if kind.name == 'angular acceleration' else 'ω = v/R'})"
     elif how in meanings.NOTES:

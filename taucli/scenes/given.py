@@ -99,6 +99,25 @@ class Rotor:
     sense: str
 
 
+@dataclass(frozen=True)
+class Revolving:
+    """A mass turning with a shaft (balance --mass): m at radius r and angle θ, in the plane at
+    ``plane`` along the shaft (None: not given); a uniform rod along the radius from r outwards
+    where ``length`` is given (its centre of mass at r + L/2)."""
+
+    source: str
+    mass: float
+    radius: float
+    angle: float
+    plane: float | None = None
+    length: float | None = None
+
+    @property
+    def centre(self) -> float:
+        """The radius of its centre of mass: r, or r + L/2 for a rod along the radius."""
+        return self.radius if self.length is None else self.radius + self.length / 2
+
+
 PRESSURES = ("uniform", "wear")  # a face's pressure models (model=)
 
 

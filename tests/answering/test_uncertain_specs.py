@@ -16,7 +16,7 @@ from conftest import example_keys
 from taucli.front import cli
 from taucli.options import SCENES, table
 
-SPEC_KINDS = {table.PART, table.PARTICLE, table.COUPLE, table.BRAKE, table.FACE, table.BAND, table.SIDE, table.PULL, table.ROTOR}
+SPEC_KINDS = {table.PART, table.PARTICLE, table.COUPLE, table.BRAKE, table.FACE, table.BAND, table.SIDE, table.PULL, table.ROTOR, table.REVOLVING}
 
 
 # (scene, option, its value with {u} where "value ± σ" goes, value, σ, unit, keywords changed from the scene's example (None: left out))
@@ -45,6 +45,7 @@ CASES = [
     ("drive", "part", "disc mass={u} radius=0.1m", 2.0, 1e-4, "kg", {"load_inertia": None}),
     ("drive", "ratio", ["{u}", "3"], 10.0, 1e-3, "", {}),
     ("flywheel", "part", "ring mass={u} radius=0.6m", 100.0, 1e-3, "kg", {"rim_radius": None, "density": None, "energy_swing": None}),
+    ("balance", "mass", "mass={u} radius=0.3m angle=45deg", 2.0, 1e-4, "kg", {}),
     ("torque", "lever", ["2m", "{u}"], 1.0, 1e-4, "m", {"r": None, "force": ["10N", "5N"], "angle": ["90deg", "90deg"]}),
 ]
 

@@ -28,6 +28,7 @@ TWICE = {
     table.SIDE: "incline angle=30deg angle=40deg",
     table.PULL: "force=20N force=30N",
     table.ROTOR: "inertia=0.3kg*m^2 inertia=1kg*m^2 spin=5000rpm sense=cw-from-right",
+    table.REVOLVING: "mass=2kg mass=3kg radius=0.3m angle=45deg",
 }
 SPECS = [(scene, option) for scene, command in sorted(SCENES.items()) for option in command.options if option.kind in TWICE]
 

@@ -183,6 +183,11 @@ def test_the_table_is_read_whole_and_holds_this_issues_rows():
     assert typed["2 ton"].refusal and typed["16ton"].refusal
     assert typed["10:1"].value == 10 and typed["85%"].value == pytest.approx(0.85, rel=1e-15)
     assert typed["0.135*20*pi/15 N*m"].value == pytest.approx(0.135 * 20 * PI / 15, rel=1e-15)
+    # #47 item 7: a GD² (weight × diameter of gyration²): 4 kgf·m² is a ring weighing 1 kgf (1 kg) of diameter 2 m, J = mR² = 1 kg·m²;
+    # the technical units' kgf·cm·s² is 9.80665 N × 0.01 m × 1 s²
+    assert typed["4 kgf*m^2"].value == pytest.approx(1.0 * 1.0**2, rel=1e-15) and "GD²" in typed["4 kgf*m^2"].note
+    assert typed["1 kgf*cm*s^2"].value == pytest.approx(G0 * 0.01, rel=1e-15) and typed["1 kgf*cm*s^2"].note
+    assert typed["1 lbf*ft^2"].refusal  # a WR² or a GD²: a factor of 4 apart, so refused
 
 
 def _run(argv: list[str], capsys) -> tuple[int, str, str]:

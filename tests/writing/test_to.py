@@ -33,6 +33,7 @@ OTHER = {
     "m**2": ("cm^2", 1e4),
     "kg*m/s": ("g*cm/s", 1e5),  # #34: an impulse's linear momentum
     "N*s": ("mN*s", 1e3),  # #34: the pivot's impulse
+    "kg*m": ("g*cm", 1e5),  # #47: an unbalance m·r
 }
 
 
