@@ -10,6 +10,8 @@ texts or SI numbers; each returns the Report the command line renders:
 A value the scene cannot use raises taucli.InputError (a ValueError) naming the parameter; a
 result the run did not make, taucli.MissingResult (a KeyError) naming what makes it.
 taucli.convert("3000 rpm", "rad/s") reads a quantity as the options do and writes it in a unit.
+A list of values for one keyword gives a taucli.Sweep, the reports in order (.to_pandas() where
+pandas is installed); report.plot() draws the motion in time as a matplotlib Figure.
 """
 
 from __future__ import annotations
@@ -17,10 +19,11 @@ from __future__ import annotations
 from taucli.core.errors import InputError
 from taucli.options import SCENES  # plain data: no solver, typer, rich or pint
 from taucli.writing.report import Report
+from taucli.writing.swept import Sweep
 from taucli.options.table import MissingResult
 from taucli.core.version import __version__ as __version__  # taucli.__version__
 
-__all__ = ["InputError", "MissingResult", "Report", "convert", *(command.function_name for command in SCENES.values())]
+__all__ = ["InputError", "MissingResult", "Report", "Sweep", "convert", *(command.function_name for command in SCENES.values())]
 
 
 def __getattr__(name: str):

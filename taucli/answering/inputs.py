@@ -32,13 +32,32 @@ def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None 
     gravity = command.option("g")
     if gravity is not None and given.get("g") is not None:  # first: a weight given for a mass needs it
         inputs.gravity = arguments["g"] = READERS[gravity.kind](gravity, given["g"], inputs, stdin)
+    plain = _plain_quantities(command)
     for name in command.in_order(given):  # what was given, not the whole table: a scene has dozens of options
         value = given[name]
-        if value is None or value == () or value == [] or value is False or name in arguments:
+        if value is None or (value.__class__ is not str and (value == () or value == [])) or value is False or name in arguments:
+            continue
+        found = plain.get(name)
+        if found is not None:  # most values of most runs: one quantity, read at once
+            arguments[name] = inputs.quantity(name, value, found[0], sign=found[1])
             continue
         option = command.option(name)
         arguments[name] = READERS[option.kind](option, value, inputs, stdin)
     return arguments, inputs
+
+
+_PLAIN: dict[str, tuple[Command, dict[str, tuple[str, str]]]] = {}  # command's name -> (its table, its one-quantity options: name -> (kind, sign))
+
+
+def _plain_quantities(command: Command) -> dict[str, tuple[str, str]]:
+    """The options ``_repeated`` would read as one quantity (no words, no other kind, not
+    repeatable): looked up once per command, not per run (a batch reads thousands of lines)."""
+    found = _PLAIN.get(command.name)
+    if found is None or found[0] is not command:  # (a test may make a table of the same name)
+        found = command, {option.name: (option.kind, option.sign) for option in command.options
+                          if option.kind in units.KINDS and not option.words and option.also is None and not option.repeatable}
+        _PLAIN[command.name] = found
+    return found[1]
 
 
 def _quantity(option: Option, given, inputs: Inputs, stdin) -> float | None:

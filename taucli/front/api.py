@@ -2,7 +2,8 @@
 
 ``taucli.spin_down(omega0="30 rad/s", inertia=0.1, friction="0.3 N*m")`` reads its keywords as
 the command line reads its options (texts with units; a number is SI), solves, and returns the
-Report. A scene's positional argument (inertia's and rolling's SHAPE) may be given first.
+Report. A scene's positional argument (inertia's and rolling's SHAPE) may be given first. A list
+for one keyword that takes one quantity is a sweep: a Sweep of the reports, one per value.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from taucli.answering.python import plain
 from taucli.options import SCENES
 from taucli.core.errors import InputError
 from taucli.writing.report import Report
+from taucli.writing.swept import Sweep
 from taucli.quantities.kinds import KINDS
 from taucli.options.table import CHOICE, COUNT, FILE, FLAG, TEXT, VECTOR, Command, Option
 
@@ -28,10 +30,10 @@ def function(name: str) -> Callable[..., Report] | None:
     return _made(command)
 
 
-def _made(command: Command) -> Callable[..., Report]:
+def _made(command: Command) -> Callable[..., Report | Sweep]:
     positional = [option.name for option in command.options if option.positional]
 
-    def scene(*args, **given) -> Report:
+    def scene(*args, **given) -> Report | Sweep:
         if len(args) > len(positional):
             raise TypeError(f"{command.function_name}() takes {len(positional)} positional argument(s) but {len(args)} were given")
         for name, value in zip(positional, args):
@@ -40,7 +42,11 @@ def _made(command: Command) -> Callable[..., Report]:
             given[name] = value
         given = {name.replace("-", "_"): plain(value, name) for name, value in given.items()}
         _no_sweeps(command, given)
-        return answer.solve(command, given, find=given.pop("find", None), want=given.pop("want", None))
+        find, want = given.pop("find", None), given.pop("want", None)
+        swept = _swept(command, given)
+        if swept is None:
+            return answer.solve(command, given, find=find, want=want)
+        return Sweep(command.name, swept, given[swept], [answer.solve(command, {**given, swept: value}, find=find, want=want) for value in given[swept]])
 
     parameters = [
         inspect.Parameter(
@@ -72,13 +78,28 @@ def convert(quantity: str, unit: str | None = None):
 
 
 def _no_sweeps(command: Command, given: dict) -> None:
-    """A range "1..3 kg" is the command line's sweep; a function call solves one scene (#42)."""
+    """A range "1..3 kg" is the command line's sweep; in Python a sweep is a list (#42, #46)."""
     for name, value in given.items():
         option = command.option(name)
         if isinstance(value, str) and ".." in value and option is not None and option.sweepable:
-            raise InputError(name, "takes one value: the Python API takes no sweeps (FROM..TO is the command line's); "
-                             "call once per value, as in [taucli." + command.function_name + "(..., " + name + "=x) for x in (1.0, 2.0, 3.0)] (a number is SI)",
+            raise InputError(name, "takes one value, or a list of values for a sweep (FROM..TO is the command line's range); "
+                             f"give the values, as in taucli.{command.function_name}(..., {name}=[1.0, 2.0, 3.0]) (a number is SI)",
                              got=repr(value))
+
+
+def _swept(command: Command, given: dict) -> str | None:
+    """The keyword given a list of values (a sweep: one report per value), or None. A keyword that
+    takes one quantity may be swept (a repeatable one takes its list as its values); one per call."""
+    swept = [name for name, value in given.items() if isinstance(value, (list, tuple)) and (option := command.option(name)) is not None and option.sweepable]
+    if not swept:
+        return None
+    if len(swept) > 1:
+        first, second = swept[:2]
+        raise InputError(second, f"is a list, and so is {{{first}}}: a call sweeps one keyword; for a grid, sweep one in a loop over the other, "
+                         f"as in [taucli.{command.function_name}(..., {first}=x, {second}=[...]) for x in (...)]", got=repr(given[second])[:80])
+    if not given[swept[0]]:
+        raise InputError(swept[0], "is an empty list: a sweep takes one value or more", example=f"{swept[0]}=[1.0, 2.0, 3.0]")
+    return swept[0]
 
 
 def _kind(option: Option) -> str:
@@ -126,6 +147,7 @@ def docstring(command: Command) -> str:
         "Each keyword takes a text with its unit (\"30 rad/s\", \"300 rpm\") or a number in the SI unit",
         "listed; None (the default) leaves it out, as a missing option does. find=NAME with",
         "want=\"RESULT=VALUE\" solves for an input; a text such as \"4.0+/-0.1 kg\" carries an uncertainty.",
+        "A list of values for one keyword gives a taucli.Sweep of reports, one per value (.to_pandas()).",
         "",
         "Keywords:",
         *keywords,

@@ -21,6 +21,7 @@ document, 2 when some line was bad input, 1 when some line met a bug.
 
 from __future__ import annotations
 
+import gc
 import json
 from collections import Counter
 import os
@@ -69,6 +70,7 @@ def run(command: Command, fixed: dict, output: Output, env, *, limit: float | No
     pending: list = []  # texts, or their bytes where the stream has a byte buffer
     size = 0
     signals = _Signals()
+    gc.freeze()  # what start-up made (modules, tables, the unit cache) lives on: the collector need not walk it after every few lines
     try:
         for number, line in enumerate(_lines(lines), start=1):
             signals.busy = True  # from here until the line's answer is out, a signal waits for it
@@ -80,7 +82,8 @@ def run(command: Command, fixed: dict, output: Output, env, *, limit: float | No
                 if line.__class__ is not str:
                     raise line
                 given, answer = _line(line, keys, command, texts)
-                given = {**fixed, **given}
+                if fixed:  # (a line's own dict, made for it: no copy needed where the command line gave nothing)
+                    given = {**fixed, **given}
                 report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), limit=limit)  # notes name keys as a line gives them (#42)
                 shown = output._replace(**answer) if answer else output
                 text = document_text(prepared(report, shown), steps=shown.steps) + "\n"
@@ -113,6 +116,7 @@ def run(command: Command, fixed: dict, output: Output, env, *, limit: float | No
         pass
     finally:
         signals.restore()
+        gc.unfreeze()
     _write(out, pending)
     if signals.caught is not None:
         return _stopped(signals.caught, env)

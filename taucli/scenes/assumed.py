@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from taucli.writing.report import Report, Value
 
 STANDARD_GRAVITY = 9.80665  # m/s², the conventional value (CGPM 1901)
+GRAVITY_NOTE = f"g = {STANDARD_GRAVITY} m/s² (standard gravity); --g to change it"  # written once: every run that takes g says it
 
 
 @dataclass
@@ -25,7 +26,7 @@ class Assumed:
         """--g, or standard gravity with a note that says so."""
         if g is not None:
             return g
-        return self.value("g", STANDARD_GRAVITY, "m/s**2", f"g = {STANDARD_GRAVITY} m/s² (standard gravity); --g to change it")
+        return self.value("g", STANDARD_GRAVITY, "m/s**2", GRAVITY_NOTE)
 
     def applied(self, report: Report) -> Report:
         """The report with the assumed values among its inputs and their notes first."""

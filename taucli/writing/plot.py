@@ -14,12 +14,17 @@ import os
 import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
+from typing import Any
 
 from taucli.quantities.cache import made
 from taucli.core.errors import InputError
-from taucli.core.written import printable
+from taucli.core.written import fmt, pretty_unit, printable
 from taucli.writing import files
-from taucli.writing.report import Report, Trajectory, fmt, pretty_unit
+
+# A Report and its Trajectory (taucli.writing.report), named here by what is read of them and not
+# imported: report.py imports this module for Report.plot(), and the import graph has no loop.
+Report = Any
+Trajectory = Any
 
 MARKERS = ("•", "+", "x", "o", "*", "#", "@", "%")  # one per series, so the series differ without colour
 COLOURS = ("cyan", "magenta", "yellow", "green", "red", "blue", "white", "bright_black")
@@ -294,16 +299,17 @@ def _matplotlib_folder() -> None:
     os.environ["MPLCONFIGDIR"] = folder
 
 
-def write_file(chart: Chart, path: str, said_to=None) -> None:
-    """The chart as an SVG or PNG file (matplotlib, Agg backend); where it went is said on
-    ``said_to`` (stderr: stdout holds the answer alone)."""
+def figure(chart: Chart):
+    """The chart as a matplotlib Figure (not one of pyplot's: nothing is shown or kept open, and
+    no backend is chosen), a panel per quantity over the chart's x; matplotlib is imported here."""
     _matplotlib_folder()
-    import matplotlib  # deferred: matplotlib (hundreds of ms), only for a file
+    try:
+        from matplotlib.figure import Figure  # deferred: matplotlib (hundreds of ms), only for a figure
+    except ImportError:
+        raise ImportError("plot() needs matplotlib: pip install 'taucli[plot]' (from a checkout: pip install '.[plot]')") from None
 
-    matplotlib.use("Agg")
-    from matplotlib import pyplot  # deferred: matplotlib, as above
-
-    figure, axes = pyplot.subplots(len(chart.panels), 1, figsize=(7, 2.6 * len(chart.panels) + 0.6), sharex=True, squeeze=False)
+    drawn = Figure(figsize=(7, 2.6 * len(chart.panels) + 0.6))
+    axes = drawn.subplots(len(chart.panels), 1, sharex=True, squeeze=False)
     for row, panel in zip(axes, chart.panels):
         ax = row[0]
         for n, series in enumerate(panel.series):
@@ -328,11 +334,25 @@ def write_file(chart: Chart, path: str, said_to=None) -> None:
     for x, what in chart.marks:
         axes[0][0].annotate(what, (x, 1.0), xycoords=("data", "axes fraction"), fontsize="small", rotation=90, va="top", ha="right")
     axes[-1][0].set_xlabel(axis_title(chart.x_label, chart.x_unit))
-    figure.suptitle(chart.title, fontsize="medium")
-    figure.tight_layout()
-    try:
-        files.replace_atomically(path, lambda temporary: figure.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()), "--out", "--out chart.svg")
-    finally:
-        pyplot.close(figure)
+    drawn.suptitle(chart.title, fontsize="medium")
+    drawn.tight_layout()
+    return drawn
+
+
+def motion_figure(runs: Sequence[tuple[str, Report]]):
+    """report.plot() and Sweep.plot() (#46 item 10): the motion in time of each run, one series
+    per run, as a matplotlib Figure; each curve in SI, as the trajectory gives it."""
+    for _, report in runs:
+        if report.trajectory is None:
+            raise ValueError(f"plot() draws a motion in time, and this {report.scene} report has none "
+                             "(its results are its answer; a sweep's results against its keyword: Sweep.to_pandas())")
+    return figure(motion_chart(runs))
+
+
+def write_file(chart: Chart, path: str, said_to=None) -> None:
+    """The chart as an SVG or PNG file (matplotlib's Agg renderer, or its SVG one); where it went
+    is said on ``said_to`` (stderr: stdout holds the answer alone)."""
+    drawn = figure(chart)
+    files.replace_atomically(path, lambda temporary: drawn.savefig(temporary, format=os.path.splitext(path)[1][1:].lower()), "--out", "--out chart.svg")
     if said_to is not None:
         said_to.write(f"taucli: wrote the chart to {printable(path)}\n")  # a path's control characters escaped (#43 item 14)

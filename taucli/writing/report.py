@@ -146,6 +146,14 @@ class Report:
 
         return html_fragment(sheet(self))
 
+    def plot(self):
+        """The motion in time as a matplotlib Figure (#46 item 10): a panel per curve of the
+        trajectory the scene gives --plot (spin-down: ω(t) and θ(t); atwood: x(t) and v(t); a
+        pendulum: θ(t) and ω(t)), in SI, t in s, with its moments marked. Needs matplotlib."""
+        from taucli.writing.plot import motion_figure  # deferred: the charts and matplotlib, only when one is drawn
+
+        return motion_figure([("", self)])
+
     def _repr_latex_(self) -> str:
         from taucli.writing.formats import sheet  # deferred: as in __repr__
         from taucli.writing.latex import document

@@ -4,9 +4,11 @@
 
 Writes LINES random Atwood scenes (seeded; unit strings such as "3.217kg" and "1.5 kg", as a
 script would send) to a file, and runs `taucli atwood --batch` on it in a subprocess, with and
-without --no-steps. Each run reports its own peak memory (VmHWM). Prints the median rate over
-the repeats, and, to place the machine, how long pint takes to parse one quantity here (the
-issue quotes about 100 us on its machine).
+without --no-steps, and a spin-down batch beside it. Each run reports its own peak memory
+(VmHWM). The cases are run in turn, REPEATS rounds (interleaved: a busy spell of the machine
+falls on every case alike); prints each case's median rate, the ratio of taucli's --no-steps
+rate to the floor's (#45 item 6: the target is 0.6x or more), and, to place the machine, how
+long pint takes to parse one quantity here (the issue quotes about 100 us on its machine).
 
 It also runs FLOOR, the least a Python program can do under the same contract: read each JSON
 line, look its four units up in a dict, work the massive-pulley formulas inline, and write the
@@ -18,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import random
 import statistics
 import subprocess
@@ -64,8 +67,8 @@ for line in sys.stdin:
             "a_massless": {"value": (m1 - m2) * g / (m1 + m2), "unit": "m/s**2", "label": "acceleration with a massless pulley, for comparison"},
         },
         "steps": [],
-        "notes": ["g = 9.80665 m/s\u00b2 (standard gravity); --g to change it",
-                  "pulley taken as a uniform solid disc (I = \u00bdMR\u00b2); --pulley-shape ring for a thin ring",
+        "notes": ["g = 9.80665 m/s\u00b2 (standard gravity); g to change it",
+                  "pulley taken as a uniform solid disc (I = \u00bdMR\u00b2); pulley_shape ring for a thin ring",
                   "the string taken not to slip on the pulley (a = \u03b1R): friction at the rim turns it"],
     }
     sys.stdout.write(encoder.encode(document) + "\n")
@@ -101,12 +104,22 @@ def write_scenes(path: Path, lines: int) -> None:
             handle.write(json.dumps(scene) + "\n")
 
 
-def run(scenes: Path, extra: list[str], program: str = MEASURED) -> tuple[float, int, int, str]:
+def write_spins(path: Path, lines: int) -> None:
+    """Spin-down scenes beside the Atwood ones: a disc coasting against friction (closed form)."""
+    rng = random.Random(11)
+    with path.open("w") as handle:
+        for _ in range(lines):
+            scene = {"shape": "disc", "mass": f"{rng.uniform(1, 10):.3f} kg", "radius": f"{rng.uniform(5, 50):.1f} cm",
+                     "omega0": f"{rng.uniform(100, 3000):.0f} rpm", "friction": f"{rng.uniform(0.05, 1):.3f} N*m"}
+            handle.write(json.dumps(scene) + "\n")
+
+
+def run(scenes: Path, extra: list[str], program: str = MEASURED, scene: str = "atwood", env: dict | None = None) -> tuple[float, int, int, str]:
     """(seconds, peak KiB, output lines, first output line) of one batch run."""
     with scenes.open() as source, tempfile.TemporaryFile("w+") as sink:
         start = time.perf_counter()
         done = subprocess.run(
-            [sys.executable, "-c", program, "atwood", "--batch", *extra], stdin=source, stdout=sink, stderr=subprocess.PIPE, text=True
+            [sys.executable, "-c", program, scene, "--batch", *extra], stdin=source, stdout=sink, stderr=subprocess.PIPE, text=True, env=env
         )
         elapsed = time.perf_counter() - start
         if done.returncode != 0:
@@ -132,23 +145,36 @@ def main() -> int:
     parser.add_argument("--repeats", type=int, default=3)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as scratch:
-        scenes = Path(scratch) / "scenes.jsonl"
+        scenes, spins = Path(scratch) / "scenes.jsonl", Path(scratch) / "spins.jsonl"
         write_scenes(scenes, args.lines)
-        print(f"{args.lines} Atwood scenes, median of {args.repeats} runs (one process each, one core)")
-        for extra in (["--no-steps"], []):
-            runs = [run(scenes, extra) for _ in range(args.repeats)]
-            seconds = statistics.median(r[0] for r in runs)
-            peak = max(r[1] for r in runs)
-            assert all(r[2] == args.lines for r in runs), "one output line per input line"
-            label = "taucli atwood --batch " + " ".join(extra)
-            print(f"  {label:<34} {args.lines / seconds:8.0f} scenes/s  ({seconds:.2f} s)  peak {peak / 1024:.1f} MiB")
-            if extra:
-                ours, ours_seconds = runs[0][3], seconds
-        floors = [run(scenes, [], FLOOR) for _ in range(args.repeats)]
-        assert same_documents(ours, floors[0][3]), "the floor program writes taucli's document"
-        floor_seconds = statistics.median(r[0] for r in floors)
-        print(f"  {'floor: minimal Python, same I/O':<34} {args.lines / floor_seconds:8.0f} scenes/s  ({floor_seconds:.2f} s)")
-        print(f"  taucli --no-steps runs at {floor_seconds / ours_seconds:.2f}x the floor's rate")
+        write_spins(spins, args.lines)
+        print(f"{args.lines} scenes a run, median of {args.repeats} interleaved runs (one process each, one core)")
+        cases = {  # label -> (program, scene, input, options)
+            "taucli atwood --batch --no-steps": (MEASURED, "atwood", scenes, ["--no-steps"]),
+            "floor: minimal Python, same I/O": (FLOOR, "atwood", scenes, []),
+            "taucli atwood --batch": (MEASURED, "atwood", scenes, []),
+            "taucli spin-down --batch --no-steps": (MEASURED, "spin-down", spins, ["--no-steps"]),
+        }
+        # taucli's modules compiled once, as an installed taucli has them (PYTHONDONTWRITEBYTECODE
+        # would have every run compile them again: start-up that no user pays)
+        env = {name: value for name, value in os.environ.items() if name != "PYTHONDONTWRITEBYTECODE"}
+        env["PYTHONPYCACHEPREFIX"] = str(Path(scratch) / "bytecode")
+        run(scenes, ["--no-steps"], env=env)
+        runs: dict[str, list] = {label: [] for label in cases}
+        for _ in range(args.repeats):  # interleaved: a slow spell of the machine falls on every case alike
+            for label, (program, scene, source, extra) in cases.items():
+                runs[label].append(run(source, extra, program, scene, env))
+        seconds = {}
+        for label, done in runs.items():
+            assert all(r[2] == args.lines for r in done), "one output line per input line"
+            seconds[label] = statistics.median(r[0] for r in done)
+            peak = max(r[1] for r in done)
+            memory = f"  peak {peak / 1024:.1f} MiB" if peak else ""
+            print(f"  {label:<36} {args.lines / seconds[label]:8.0f} scenes/s  ({seconds[label]:.2f} s){memory}")
+        ours = runs["taucli atwood --batch --no-steps"][0][3]
+        assert same_documents(ours, runs["floor: minimal Python, same I/O"][0][3]), "the floor program writes taucli's document"
+        ratio = seconds["floor: minimal Python, same I/O"] / seconds["taucli atwood --batch --no-steps"]
+        print(f"  taucli atwood --batch --no-steps runs at {ratio:.2f}x the floor's rate (target: 0.6x or more)")
     print(f"pint parses '4 kg' in {pint_parse_us():.0f} us on this machine (the issue: about 100 us)")
     return 0
 

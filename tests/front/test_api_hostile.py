@@ -83,8 +83,8 @@ def test_every_keyword_of_every_scene_raises_only_input_error(scene):
             report = function(**arguments)
         except taucli.InputError as err:
             assert str(err)  # a message, naming what is wrong
-        else:
-            assert isinstance(report, Report)
+        else:  # a list for one keyword that takes one quantity: a sweep of reports (#46 item 10)
+            assert isinstance(report, Report) or (isinstance(report, taucli.Sweep) and all(isinstance(row, Report) for row in report))
 
     check()
 
@@ -106,8 +106,10 @@ def test_numpy_scalars_and_arrays_are_numbers_and_vectors():
         assert taucli.atwood(m1=m1, m2=1).results["a"].value == expected
     tau = taucli.torque(r=numpy.array([0.3, 0.4, 0.0]), force=numpy.array([0, 0, 10])).results["tau"].value
     assert tau == pytest.approx(5.0, rel=1e-15)
+    swept = taucli.atwood(m1=4, m2=1, g=numpy.array([1.0, 2.0, 3.0]))  # a 1-d array for one keyword: a sweep (#46 item 10)
+    assert [row.results["a"].value for row in swept] == pytest.approx([0.6, 1.2, 1.8], rel=1e-15)
     with pytest.raises(taucli.InputError, match=r"^g: "):
-        taucli.atwood(m1=4, m2=1, g=numpy.array([1.0, 2.0, 3.0]))
+        taucli.atwood(m1=4, m2=1, g=numpy.array([[1.0, 2.0, 3.0]]))
 
 
 FRICTION = "t (s),omega (rad/s)\n0,29.928\n1,27.012\n2,23.986\n3,20.976\n4,18.048\n5,15.003\n6,11.986\n7,9.090\n8,5.975\n9,2.937\n"  # docs/fit.md
@@ -142,8 +144,8 @@ def test_every_keyword_of_fit_raises_only_input_error(tmp_path):
             report = taucli.fit.fit(scene, *files, **arguments) if "fit" in arguments else taucli.fit.fit(scene, *files, fit=None, **arguments)
         except taucli.InputError as err:
             assert str(err)
-        else:
-            assert isinstance(report, Report)
+        else:  # a list for one keyword that takes one quantity: a sweep of reports (#46 item 10)
+            assert isinstance(report, Report) or (isinstance(report, taucli.Sweep) and all(isinstance(row, Report) for row in report))
 
     check()
 
