@@ -126,7 +126,20 @@ def solve_profile(train: Train, move: Move, limits: dict, results: Results, note
     results.put("power_peak", max(0.0, *powers))
     results.put("power_regen", max(0.0, -min(powers)))
     results.put("power_mean", power_mean)
+    results.put("power_run", parts[1].torque * move.top if move.run > 0 else None)
+    # each phase's torque is constant and ω ramps (mean ω/2) or holds: what flows back where τ < 0
+    regen = move.top * math.fsum((max(-parts[0].torque, 0.0) * move.accel / 2, max(-parts[1].torque, 0.0) * move.run,
+                                  max(-parts[2].torque, 0.0) * move.decel / 2))
+    results.put("energy_regen", regen)
+    results.put("power_resistor", regen / move.cycle)
     steps.extend(_steps(train, move, parts, alpha_up, alpha_down, torque_rms, power_mean))
+    if regen:
+        steps.append(Step("Energy the load gives back per cycle, and a braking resistor's power", "E_r = ω(|τ_d| t_d/2 + …),  P_R = E_r/t_cycle",
+                          f"{quantity_text(move.top, 'rad/s')} × {quantity_text(-parts[2].torque if parts[2].torque < 0 else 0.0, 'N*m')} × "
+                          f"{quantity_text(move.decel, 's')}/2" + (" + …" if parts[0].torque < 0 or parts[1].torque < 0 else ""),
+                          f"E_r = {quantity_text(regen, 'J')}, P_R = {quantity_text(regen / move.cycle, 'W')}",
+                          "while the motor's torque is against its motion the load drives it: that energy goes back to the drive, "
+                          "and a braking resistor takes it as heat, on average over the cycle"))
     steps.extend(_limits(move, parts, peak, torque_rms, limits, results, notes))
     return _curves(move, parts)
 

@@ -77,3 +77,24 @@ def test_refusals(taucli):
     assert_usage_error(taucli(*base, "--efficiency-back", "1.5"), "--efficiency-back")
     assert_usage_error(taucli(*base, "--efficiency-back", "0"), "--efficiency-back")
     assert_usage_error(taucli(*base, "--motor-friction", "-0.1N*m"), "--motor-friction")
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_energy_given_back_per_cycle(seed):
+    """While braking (τ_d < 0) the load drives the motor: ∫(−τω)dt over the ramp down, ω falling
+    linearly from the top speed, is −τ_d ω t_d/2 (mpmath.quad of the ramp); a braking resistor takes
+    it over the cycle. A load torque that brakes it harder than the ramp asks gives nothing back."""
+    rng = random.Random(4770 + seed)
+    for _ in range(8):
+        rotor, load, ratio, eta, torque = rng.uniform(1e-5, 1e-3), rng.uniform(1e-3, 1), rng.uniform(1, 30), rng.uniform(0.5, 1), rng.uniform(0, 5)
+        accel, decel, run, dwell, top = rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0, 2), rng.uniform(0, 1), rng.uniform(100, 400)
+        values = {k: v.value for k, v in taucli.drive(motor_inertia=rotor, load_inertia=load, ratio=[ratio], efficiency=eta, load_torque=torque,
+                                                      accel_time=f"{accel} s", decel_time=f"{decel} s", run_time=f"{run} s", dwell_time=f"{dwell} s",
+                                                      until_omega=f"{top} rad/s").results.items()}
+        q = [mpmath.mpf(x) for x in (rotor, load, ratio, eta, eta, 0, torque)]
+        braking = _torque(*q, -mpmath.mpf(top) / decel)
+        given_back = mpmath.quad(lambda t: max(-braking * top * (1 - t / decel), 0), [0, decel])
+        assert values["energy_regen"] == pytest.approx(float(given_back), rel=1e-12, abs=1e-12)
+        assert values["power_resistor"] == pytest.approx(float(given_back / (accel + run + decel + dwell)), rel=1e-12, abs=1e-12)
+        if run:
+            assert values["power_run"] == pytest.approx(float(_torque(*q, 0) * top), rel=1e-12)
