@@ -97,13 +97,15 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "I k I_cm mass" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "mass density gyration radius inner_radius outer_radius length width height depth offset body_offset g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "I= k= I_cm= mass=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "point ring disc tube sphere shell thick-shell rod plate box cone" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --body-offset --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --body-offset --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     spin-down)
         case "$prev" in
@@ -164,9 +166,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "I alpha0 t_stop theta_stop revs_stop omega_inf normal_floor normal_wall stable omega_unstable omega theta revs L theta_total revs_total t_until theta_until revs_until omega_mean alpha omega0 torque_net torque KE0 KE work_drive work_friction work_viscous work_drag power power_mean power_friction power_viscous power_drag KE_after omega_after energy_delivered lift_height vehicle_speed v_t a_t a_c a_total a_angle s chord v_t0 a_c0 a_total0 a_angle0 torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 torque force lever push_angle friction g viscous corner drive_slope drag drag_exponent time until_omega until_angle until_arc alpha in_time in_angle power ke0 work lift_mass vehicle_mass efficiency rim_accel rim_speed at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "I= alpha0= t_stop= theta_stop= revs_stop= omega_inf= normal_floor= normal_wall= stable= omega_unstable= omega= theta= revs= L= theta_total= revs_total= t_until= theta_until= revs_until= omega_mean= alpha= omega0= torque_net= torque= KE0= KE= work_drive= work_friction= work_viscous= work_drag= power= power_mean= power_friction= power_viscous= power_drag= KE_after= omega_after= energy_delivered= lift_height= vehicle_speed= v_t= a_t= a_c= a_total= a_angle= s= chord= v_t0= a_c0= a_total0= a_angle0= torque_brake= work_brake= power_brake= torque_face= work_face= power_face= force_brake= force_face= pressure_face= torque_band= work_band= power_band= tension_tight= tension_slack= pressure_band=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --band --g --viscous --corner --drive-slope --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --work --lift-mass --vehicle-mass --efficiency --rim-accel --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --torque --force --lever --push-angle --friction --brake --face --band --g --viscous --corner --drive-slope --drag --drag-exponent --time --until-omega --until-angle --until-arc --alpha --in-time --in-angle --power --ke0 --work --lift-mass --vehicle-mass --efficiency --rim-accel --rim-speed --at --energy --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     atwood)
         case "$prev" in
@@ -207,9 +211,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "a T1 T2 alpha a2 a_rim grips rim_mu_min holds a_massless t v distance t_stop distance_stop power_steady torque_steady energy_trip power_trip work_brake v_t a_t a_c a_total a_angle s chord v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "m1 m2 pulley_mass pulley_radius pulley_inertia pulley_gyration axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque counterweight hoist_speed hoist_height trip_time g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "a= T1= T2= alpha= a2= a_rim= grips= rim_mu_min= holds= a_massless= t= v= distance= t_stop= distance_stop= power_steady= torque_steady= energy_trip= power_trip= work_brake= v_t= a_t= a_c= a_total= a_angle= s= chord= v_t0= a_c0= a_total0= a_angle0=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --pulley-gyration --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --counterweight --hoist-speed --hoist-height --trip-time --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--m1 --m2 --pulley-mass --pulley-radius --pulley-shape --pulley-inertia --pulley-gyration --axle-friction --part --radius1 --radius2 --same-side --rim-mu --wrap --fixed-drum --side1 --side2 --incline --mu-k --mu-s --pull --torque --counterweight --hoist-speed --hoist-height --trip-time --g --v0 --distance --time --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     rolling)
         case "$prev" in
@@ -243,13 +249,15 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "a alpha friction mu_min rolls critical_angle T T2 a_hanging alpha_pulley a_hand v v_hanging omega t KE_trans KE_rot KE d_climb h_climb t_climb t_roll d_roll v_roll omega_roll energy_lost v_t a_t a_c a_total a_angle s chord v_t0 a_c0 a_total0 a_angle0 v_ground v_ground_angle a_ground a_ground_angle" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "a= alpha= friction= mu_min= rolls= critical_angle= T= T2= a_hanging= alpha_pulley= a_hand= v= v_hanging= omega= t= KE_trans= KE_rot= KE= d_climb= h_climb= t_climb= t_roll= d_roll= v_roll= omega_roll= energy_lost= v_t= a_t= a_c= a_total= a_angle= s= chord= v_t0= a_c0= a_total0= a_angle0= v_ground= v_ground_angle= a_ground= a_ground_angle=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
         if [[ "$cur" != -* ]]; then
             COMPREPLY=($(compgen -W "sphere shell disc cylinder ring hoop" -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--k2 --inertia --gyration --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --in-place --hanging-mass --string --pulley-mass --pulley-radius --g --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--k2 --inertia --gyration --mass --radius --angle --mu-s --mu-k --length --height --v0 --omega0 --pull --pull-height --pull-angle --axle-radius --yoyo --in-place --hanging-mass --string --pulley-mass --pulley-radius --g --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     impulse)
         case "$prev" in
@@ -297,9 +305,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "J delta_omega inertia omega0 omega1 torque duration L0 L1 KE0 KE1 work peak_torque KE_lost KE_lost_fraction J_net t_slip heat period omega_impact p0 p1 pivot_impulse speed_after torque_brake work_brake power_brake torque_face work_face power_face force_brake force_face pressure_face torque_band work_band power_band tension_tight tension_slack pressure_band v_t a_t a_c a_total a_angle s chord v_t0 a_c0 a_total0 a_angle0" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 momentum0 momentum1 impulse torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm part_after.radius part_after.inner_radius part_after.outer_radius part_after.length part_after.width part_after.height part_after.depth part_after.offset part_after.mass part_after.inertia part_after.gyration part_after.angle particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e particle.speed_relative couple.inertia couple.omega0 couple.mass couple.torque couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "J= delta_omega= inertia= omega0= omega1= torque= duration= L0= L1= KE0= KE1= work= peak_torque= KE_lost= KE_lost_fraction= J_net= t_slip= heat= period= omega_impact= p0= p1= pivot_impulse= speed_after= torque_brake= work_brake= power_brake= torque_face= work_face= power_face= force_brake= force_face= pressure_face= torque_band= work_band= power_band= tension_tight= tension_slack= pressure_band= v_t= a_t= a_c= a_total= a_angle= s= chord= v_t0= a_c0= a_total0= a_angle0=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --momentum0 --momentum1 --impulse --torque --force --lever --push-angle --duration --brake --face --band --g --inertia-final --part-after --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega0 --omega1 --momentum0 --momentum1 --impulse --torque --force --lever --push-angle --duration --brake --face --band --g --inertia-final --part-after --torque-profile --particle --couple --method --at --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     pendulum)
         case "$prev" in
@@ -339,9 +349,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 omega_bottom torsion pivot_friction g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "I= cm_distance= alpha0= omega_bottom= KE_bottom= amplitude= rise= omega= t_angle= t_bottom= period_small= period= pivot_force0= pivot_force_bottom= pivot_force= pivot_radial0= pivot_tangential0= pivot_horizontal0= pivot_vertical0= pivot_radial_bottom= pivot_tangential_bottom= pivot_horizontal_bottom= pivot_vertical_bottom= pivot_radial= pivot_tangential= pivot_horizontal= pivot_vertical= equivalent_length= centre_of_percussion= goes_over= omega0_over= theta= a_t0= v_t= a_t= a_c=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --pivot-friction --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --pivot-friction --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in
@@ -362,9 +374,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "tau_x tau_y tau_z tau sense lever_arm L_x L_y L_z L L_sense" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "lever angle mass g force" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "tau_x= tau_y= tau_z= tau= sense= lever_arm= L_x= L_y= L_z= L= L_sense=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --momentum --about --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--r --force --lever --angle --mass --velocity --momentum --about --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     gyro)
         case "$prev" in
@@ -413,9 +427,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "L omega_p period_p omega_p_slow omega_p_fast spin_min L_orbital pivot_force_vertical pivot_force_horizontal couple effect bearing_force couple_gyro couple_centrifugal reaction_outer reaction_inner speed_overturn lean_balance" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span cg_height track speed turn_radius wheel_inertia wheel_radius engine_inertia gear_ratio g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle rotor.inertia rotor.spin" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "L= omega_p= period_p= omega_p_slow= omega_p_fast= spin_min= L_orbital= pivot_force_vertical= pivot_force_horizontal= couple= effect= bearing_force= couple_gyro= couple_centrifugal= reaction_outer= reaction_inner= speed_overturn= lean_balance=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --precession --spin-sense --turn --lean --craft --rotor --bearing-span --vehicle --cg-height --track --speed --turn-radius --wheel-inertia --wheel-radius --engine-inertia --gear-ratio --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --spin --cm-distance --torque --tilt --inertia-perp --precession --spin-sense --turn --lean --craft --rotor --bearing-span --vehicle --cg-height --track --speed --turn-radius --wheel-inertia --wheel-radius --engine-inertia --gear-ratio --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     drive)
         case "$prev" in
@@ -472,9 +488,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "ratio_total linear_inertia reflected_inertia total_inertia inertia_ratio ratio_optimal load_torque_motor torque_hold alpha torque_accel t_accel theta_accel revs_accel omega_steady time_constant alpha0 KE work_motor work_load work_loss omega_top speed_top t_run t_decel t_cycle theta_move travel alpha_decel torque_decel torque_peak torque_rms power_peak power_regen power_mean power_run energy_regen power_resistor rms_to_rated within_rating" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "motor_inertia stall_torque no_load_speed motor_torque rated_torque peak_torque ratio efficiency efficiency_back motor_friction gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "ratio_total= linear_inertia= reflected_inertia= total_inertia= inertia_ratio= ratio_optimal= load_torque_motor= torque_hold= alpha= torque_accel= t_accel= theta_accel= revs_accel= omega_steady= time_constant= alpha0= KE= work_motor= work_load= work_loss= omega_top= speed_top= t_run= t_decel= t_cycle= theta_move= travel= alpha_decel= torque_decel= torque_peak= torque_rms= power_peak= power_regen= power_mean= power_run= energy_regen= power_resistor= rms_to_rated= within_rating=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --efficiency-back --motor-friction --gear-inertia --load-inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--motor-inertia --stall-torque --no-load-speed --motor-torque --rated-torque --peak-torque --ratio --efficiency --efficiency-back --motor-friction --gear-inertia --load-inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --load-mass --drum-radius --lead --load-torque --load-force --incline --mu --g --until-omega --speed --in-time --alpha --accel --accel-time --run-time --decel-time --dwell-time --distance --move-angle --energy --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     flywheel)
         case "$prev" in
@@ -518,9 +536,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area power_motor stress_margin" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction scale_torque scale_angle cycle_time rim_radius rim_speed rim_speed_max rim_speed_min density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "cs= energy_swing= I= omega_mean= omega_max= omega_min= KE_mean= mass= rim_speed= rim_speed_max= hoop_stress= hoop_stress_max= rim_area= power_motor= stress_margin=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --loops --scale-torque --scale-angle --cycle-time --rim-radius --rim-speed --rim-speed-max --rim-speed-min --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --loops --scale-torque --scale-angle --cycle-time --rim-radius --rim-speed --rim-speed-max --rim-speed-min --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     balance)
         case "$prev" in
@@ -538,9 +558,11 @@ _taucli() {
             --y) COMPREPLY=($(compgen -W "unbalance unbalance_angle unbalance_couple balance_mr balance_angle balance_mass balance_mr_A balance_angle_A balance_mass_A balance_mr_B balance_angle_B balance_mass_B force_unbalanced couple_unbalanced bearing_force_A bearing_angle_A bearing_force_B bearing_angle_B" -- "$cur")); return 0 ;;
             --find) COMPREPLY=($(compgen -W "plane balance_radius speed bearing g mass.mass mass.radius mass.angle mass.plane mass.length" -- "$cur")); return 0 ;;
             --want) COMPREPLY=($(compgen -W "unbalance= unbalance_angle= unbalance_couple= balance_mr= balance_angle= balance_mass= balance_mr_A= balance_angle_A= balance_mass_A= balance_mr_B= balance_angle_B= balance_mass_B= force_unbalanced= couple_unbalanced= bearing_force_A= bearing_angle_A= bearing_force_B= bearing_angle_B=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --minimize) :; return 0 ;;
+            --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--mass --plane --balance-radius --speed --bearing --vertical --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--mass --plane --balance-radius --speed --bearing --vertical --g --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     fit)
         case "$prev" in

@@ -57,6 +57,8 @@ def solve(
     spell: Callable[[str], str] = _as_named,
     limit: float | None = None,
     progress=None,
+    minimize: str | None = None,
+    maximize: str | None = None,
 ) -> Report:
     """The scene's report, as ``pipeline.solve`` gives it, with uncertainties where any input
     carries one, solved for the input ``find`` where ``want`` (RESULT=VALUE) says. ``limit``
@@ -65,11 +67,15 @@ def solve(
     if isinstance(want, str) and find is not None:  # --want KE0=…: what makes KE0 (--energy) is on, as for --get (#48 item 3)
         given = dict(given)
         turn_on_what_makes(command, given, {want.partition("=")[0].strip()})
-    if plain(given, find, want, mc):
+    optimum = _optimum(find, want, minimize, maximize)
+    if optimum is not None:  # what makes the result is on, as for --want
+        given = dict(given)
+        turn_on_what_makes(command, given, {optimum[0]})
+    if plain(given, find, want, mc) and optimum is None:
         return pipeline.solve(command, given, stdin=stdin, spell=spell)
     from taucli.answering import find as finding  # deferred: find and propagate, with what they import, only for these runs
     from taucli.answering import propagate
-    if (find is None) != (want is None):
+    if optimum is None and (find is None) != (want is None):
         raise InputError("find" if find is None else "want", "goes with {" + ("want" if find is None else "find") + "}",
                          example="{find} pulley_inertia {want} a=4.0m/s^2")
     if mc is not None and not 2 <= mc <= propagate.MC_MAX:
@@ -86,6 +92,12 @@ def solve(
         scene.unknowns[name] = input_
         scene.si[name] = centre
     scene.progress = progress
+    if optimum is not None:
+        from taucli.answering.optimum import optimize  # deferred: only for --minimize and --maximize
+
+        if spreads or mc:
+            raise InputError(optimum[2], "takes inputs without uncertainties (and no {mc}): the optimum is found at the values given")
+        return optimize(scene, unknown, optimum[0], optimum[1], notes)
     if unknown is not None:
         return finding.solve_for(scene, unknown, want, spreads, notes, mc)
     nominal = scene.report({})
@@ -100,6 +112,21 @@ def solve(
         scene.plan(mc, "mc")
         propagate.monte_carlo(scene, report, spreads, mc, lambda draw: scene.report(draw))
     return report
+
+
+def _optimum(find, want, minimize, maximize) -> tuple[str, float, str] | None:
+    """(the result, +1 for the least or −1 for the most, the option) where --minimize or --maximize asks; None else."""
+    asked = [(name, value) for name, value in (("minimize", minimize), ("maximize", maximize)) if value is not None]
+    if not asked:
+        return None
+    name, value = asked[0]
+    if len(asked) > 1:
+        raise InputError("maximize", "conflicts with {minimize}: ask for the least or the most of one result")
+    if want is not None:
+        raise InputError(name, "conflicts with {want}: --find solves for a target or for the least or most of a result, one of them")
+    if find is None:
+        raise InputError(name, "goes with {find}: the input whose value gives the " + ("least" if name == "minimize" else "most") + " of the result")
+    return str(value).strip(), 1.0 if name == "minimize" else -1.0, name
 
 
 def _read(command: Command, given: Mapping[str, object], readable: Mapping[str, object]) -> tuple[dict, dict[str, float], dict]:

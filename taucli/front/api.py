@@ -42,11 +42,11 @@ def _made(command: Command) -> Callable[..., Report | Sweep]:
             given[name] = value
         given = {name.replace("-", "_"): plain(value, name) for name, value in given.items()}
         _no_sweeps(command, given)
-        find, want = given.pop("find", None), given.pop("want", None)
+        finding = {name: given.pop(name, None) for name in ("find", "want", "minimize", "maximize")}
         swept = _swept(command, given)
         if swept is None:
-            return answer.solve(command, given, find=find, want=want)
-        return Sweep(command.name, swept, given[swept], [answer.solve(command, {**given, swept: value}, find=find, want=want) for value in given[swept]])
+            return answer.solve(command, given, **finding)
+        return Sweep(command.name, swept, given[swept], [answer.solve(command, {**given, swept: value}, **finding) for value in given[swept]])
 
     parameters = [
         inspect.Parameter(

@@ -38,7 +38,7 @@ from taucli.writing.render import Output, prepared
 from taucli.options.table import FLAG, Command
 
 PER_LINE_OUTPUT = ("to", "no_steps")  # how to answer, which a line may say for itself
-FINDING = ("find", "want")  # --find NAME --want RESULT=VALUE (#22), which a line may say for itself
+FINDING = ("find", "want", "minimize", "maximize")  # --find NAME --want RESULT=VALUE (#22), which a line may say for itself
 _EXAMPLE_LINE = '{"m1": "4kg", "m2": "1kg"}'
 # A write of at most PIPE_BUF bytes reaches a pipe whole (POSIX): lines are written in blocks
 # of no more than this, each block ending a line, so a run that is killed leaves whole lines.
@@ -84,7 +84,8 @@ def run(command: Command, fixed: dict, output: Output, env, *, limit: float | No
                 given, answer = _line(line, keys, command, texts)
                 if fixed:  # (a line's own dict, made for it: no copy needed where the command line gave nothing)
                     given = {**fixed, **given}
-                report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), limit=limit)  # notes name keys as a line gives them (#42)
+                report = solve(command, given, find=given.pop("find", None), want=given.pop("want", None), limit=limit,
+                               minimize=given.pop("minimize", None), maximize=given.pop("maximize", None))  # notes name keys as a line gives them (#42)
                 shown = output._replace(**answer) if answer else output
                 text = document_text(prepared(report, shown), steps=shown.steps) + "\n"
             except TaucliError as err:

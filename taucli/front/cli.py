@@ -244,7 +244,7 @@ def _finding(asked: dict, *, batch: bool = False) -> dict:
     if batch and (asked["mc"] is not None or asked["uncertainty"]):
         name = "mc" if asked["mc"] is not None else "uncertainty"
         raise InputError(name, "does not combine with {batch}, which writes whole JSON documents (each with its \"uncertainty\")")
-    return {name: asked[name] for name in ("find", "want") if asked[name] is not None}
+    return {name: asked[name] for name in ("find", "want", "minimize", "maximize") if asked.get(name) is not None}
 
 
 def _no_such_option(command: Command, unknown: str) -> str:

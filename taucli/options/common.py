@@ -95,6 +95,9 @@ FIND = "Solve for an input, and uncertainty (any quantity may be given as 4.0+/-
 UNCERTAIN = (
     Option("find", TEXT, "Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.", panel=FIND, metavar="NAME"),
     Option("want", TEXT, "The target of --find, e.g. --want 'a=4.0m/s^2' (may carry an uncertainty).", panel=FIND, metavar="RESULT=VALUE"),
+    Option("minimize", TEXT, "With --find NAME: the value of NAME, within its range, that gives the least of this result, e.g. --minimize torque_rms.",
+           panel=FIND, metavar="RESULT"),
+    Option("maximize", TEXT, "With --find NAME: the value of NAME that gives the most of this result, e.g. --maximize power.", panel=FIND, metavar="RESULT"),
     Option("uncertainty", FLAG, "With --get: each result's standard uncertainty in a second column.", panel=FIND),
     Option("mc", COUNT, "Check the uncertainties by Monte Carlo with N draws.", panel=FIND, metavar="N"),
     Option("no_limit", FLAG, "Run --find or --mc however long it is estimated to take (else refused past 60 s).", panel=FIND),

@@ -1,0 +1,62 @@
+"""--find NAME --minimize RESULT / --maximize RESULT (#47 item 6). References from the physics:
+inertia matching (a gear ratio that moves a given load's motion with the least motor torque,
+d/dN (J_m N + J/N) = 0: N = √(J/J_m)) and a rod pivoted off its centre with the least period
+(T ∝ √((L²/12 + d²)/d), least at d = L/√12). An extremum is found to about √ε of itself."""
+
+from __future__ import annotations
+
+import json
+import math
+import random
+
+import pytest
+
+import taucli
+from conftest import assert_usage_error
+
+MOVE = dict(load_mass="10 kg", drum_radius="0.05 m", speed="1 m/s", accel_time="0.2 s", run_time="0.5 s", dwell_time="0.3 s")
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_inertia_matching_is_the_least_rms_torque(seed):
+    rng = random.Random(4760 + seed)
+    for _ in range(3):
+        rotor, mass, radius = 10 ** rng.uniform(-5, -3), rng.uniform(1, 50), rng.uniform(0.01, 0.2)
+        found = taucli.drive(motor_inertia=rotor, load_mass=mass, drum_radius=radius, speed="1 m/s", accel_time="0.2 s", run_time="0.5 s",
+                             find="ratio", minimize="torque_rms").results
+        assert found["ratio"].value == pytest.approx(math.sqrt(mass * radius**2 / rotor), rel=1e-6)
+        assert found["ratio_optimal"].value == pytest.approx(found["ratio"].value, rel=1e-6)  # the scene's own check, √(J/J_m)
+
+
+def test_a_rod_swings_fastest_pivoted_at_l_over_root_12():
+    offset = taucli.pendulum(shape="rod", length="1 m", mass="1 kg", axis="center", find="offset", minimize="period_small").results["offset"].value
+    assert offset == pytest.approx(1 / math.sqrt(12), rel=1e-6)
+
+
+def test_maximize_is_minimize_of_the_negative():
+    """The power a motor's line gives, P = τω = τ_s(1 − ω/ω_nl)ω, is most at ω = ω_nl/2: a drive's
+    steady speed on a load of b ω (no body): the b that takes the most power from the line."""
+    found = taucli.spin_down(torque="10 N*m", drive_slope="-0.1 N*m*s", find="viscous", maximize="power").results
+    # the line τ = 10 − 0.1ω meets bω at ω = 10/(b + 0.1); P = bω² is most where b = 0.1 (ω = 50, half the no-load 100)
+    assert found["viscous"].value == pytest.approx(0.1, rel=1e-6)
+    assert found["omega_inf"].value == pytest.approx(50, rel=1e-6)
+
+
+def test_batch_and_python_agree_with_the_command_line():
+    from conftest import run_taucli
+    line = json.dumps({"motor_inertia": "1e-4kg*m^2", **{k: v.replace(" ", "") for k, v in MOVE.items()}, "find": "ratio", "minimize": "torque_rms"})
+    batch = json.loads(run_taucli("drive", "--batch", "--no-steps", stdin=line + "\n").out)
+    cli = run_taucli("drive", "--motor-inertia", "1e-4kg*m^2", "--load-mass", "10kg", "--drum-radius", "0.05m", "--speed", "1m/s", "--accel-time", "0.2s",
+                     "--run-time", "0.5s", "--dwell-time", "0.3s", "--find", "ratio", "--minimize", "torque_rms", "--get", "ratio")
+    python = taucli.drive(motor_inertia="1e-4 kg*m^2", **MOVE, find="ratio", minimize="torque_rms").results["ratio"].value
+    assert batch["results"]["ratio"]["value"] == pytest.approx(python, rel=1e-15)
+    assert float(cli.out) == pytest.approx(python, rel=1e-14)
+
+
+def test_refusals(taucli):
+    base = ("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s")
+    assert_usage_error(taucli(*base, "--find", "friction", "--minimize", "t_stop"), "--minimize", "falling")
+    assert_usage_error(taucli(*base, "--find", "friction", "--minimize", "t_stop", "--want", "t_stop=3s"), "--minimize", "--want")
+    assert_usage_error(taucli(*base, "--minimize", "t_stop"), "--minimize", "--find")
+    assert_usage_error(taucli(*base, "--find", "friction", "--minimize", "t_stop", "--maximize", "t_stop"), "--maximize")
+    assert_usage_error(taucli(*base, "--find", "friction", "--minimize", "nothing"), "--minimize")
