@@ -15,7 +15,7 @@ from taucli.core.errors import InputError, did_you_mean
 from taucli.quantities.kinds import article
 from taucli.answering.reading import Inputs, Origin, word
 from taucli.writing.report import Value
-from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, REVOLVING, ROTOR, SIDE, TEXT, VECTOR, Command, Option
+from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, REVOLVING, ROTOR, SEGMENT, SIDE, TEXT, VECTOR, Command, Option
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:
@@ -204,3 +204,13 @@ def _revolving(option: Option, given, inputs: Inputs, stdin):
 
 
 READERS[REVOLVING] = _revolving
+
+
+def _segments(option: Option, given, inputs: Inputs, stdin):
+    """drive's --segment, in taucli.answering.duty (deferred as the other spec readers are)."""
+    from taucli.answering.duty import segments  # deferred: the spec readers, only for a spec option
+
+    return segments(option, given, inputs, stdin)
+
+
+READERS[SEGMENT] = _segments

@@ -264,8 +264,8 @@ def _range_hint(found: Fit) -> str:
     low, high = float(np.min(values)) / per, float(np.max(values)) / per
     window = f"{'t' if key == 'time' else key}={_typed(low)}{unit}..{_typed((low + high) / 2)}{unit}"
     shown = f"'{window}'" if SHELL_SPECIAL & set(window) else window
-    return (f"where the model holds over part of the samples only, --range fits that part alone, e.g. --range {shown} "
-            f"(the first half of their {_typed(low)} to {_typed(high)} {pretty_unit(unit)})")
+    return (f"where the model holds over part of the samples only, --range fits that part alone: the first half of their "
+            f"{_typed(low)} to {_typed(high)} {pretty_unit(unit)} is --range {shown}")
 
 
 def _typed(x: float) -> str:

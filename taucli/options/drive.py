@@ -3,7 +3,7 @@
 from dataclasses import replace
 
 from taucli.options.common import ANSWER, BODY_OPTIONS, GRAVITY, MOTION
-from taucli.options.table import FLAG, Command, Option, Result
+from taucli.options.table import FLAG, SEGMENT, Command, Option, Result
 
 MOTOR = "Motor"
 TRAIN = "Drive train"
@@ -43,6 +43,12 @@ COMMAND = Command(
         Option("motor_torque", "torque", "A motor that gives a constant torque from rest (instead of the line), e.g. '1.5N*m'; "
                "0 for a load that runs down freely through the gears.", sign="nonnegative", panel=MOTOR),
         Option("rated_torque", "torque", "The motor's rated (continuous) torque, held against the RMS torque of a move.", panel=MOTOR),
+        Option("rated_power", "power", "The motor's rated (continuous) power, held against the RMS power of a duty cycle (--segment by power=).", panel=MOTOR),
+        Option("segment", SEGMENT, 'A segment of a duty cycle: "time=10min power=100kW" or "time=… torque=…", rest=yes where the motor stands '
+               "still (repeatable, in order): the RMS torque or power over the cycle, e.g. --segment \"time=5min power=0\".", panel=MOTOR, repeatable=True,
+               metavar='"time=… torque=…|power=… [rest=yes]"'),
+        Option("rest_factor", "dimensionless", "How much more slowly the motor cools at a standstill: a rest segment's time counts 1/k of itself "
+               "in the RMS (default 1; the duty class or the maker gives it, often 3 or 4).", panel=MOTOR),
         Option("peak_torque", "torque", "The most torque the motor and its drive give for a short time, held against the peak of a move.",
                panel=MOTOR),
         Option("ratio", "dimensionless", "Speed ratio N of a stage (gear, belt, pulley): motor speed over output speed, 10 for a 10:1 "
@@ -116,20 +122,21 @@ COMMAND = Command(
         Result("speed_top", "m/s", "moving mass's top speed", needs=tuple(f"accel_time+{way}" for way in A_MASS)),
         Result("t_run", "s", "time at the top speed", needs=A_MOVE),
         Result("t_decel", "s", "time to decelerate", needs=A_MOVE),
-        Result("t_cycle", "s", "time of a cycle, dwell included", needs=A_MOVE),
+        Result("t_cycle", "s", "time of a cycle, dwell included", needs=(*A_MOVE, "segment")),
         Result("theta_move", "rad", "motor's angle per move", needs=A_MOVE),
         Result("travel", "m", "moving mass's travel per move", needs=tuple(f"accel_time+{way}" for way in A_MASS)),
         Result("alpha_decel", "rad/s**2", "motor's deceleration (size)", needs=A_MOVE),
         Result("torque_decel", "N*m", "motor torque decelerating (< 0: braking)", needs=A_MOVE),
-        Result("torque_peak", "N*m", "peak motor torque (size)", needs=A_MOVE),
-        Result("torque_rms", "N*m", "RMS motor torque over the cycle", needs=A_MOVE),
+        Result("torque_peak", "N*m", "peak motor torque (size)", needs=(*A_MOVE, "segment")),
+        Result("torque_rms", "N*m", "RMS motor torque over the cycle", needs=(*A_MOVE, "segment")),
+        Result("power_rms", "W", "RMS motor power over the duty cycle", needs=("segment",), example="{segment} 'time=10min power=100kW' {segment} 'time=5min power=0'"),
         Result("power_peak", "W", "peak power the motor gives"),
         Result("power_regen", "W", "peak power the load gives back", needs=A_MOVE),
         Result("power_mean", "W", "mean motor power (net) over the cycle", needs=A_MOVE),
         Result("power_run", "W", "motor power at the top speed, running", needs=A_MOVE),
         Result("energy_regen", "J", "energy the load gives back per cycle (braking)", needs=A_MOVE),
         Result("power_resistor", "W", "mean power of a braking resistor that takes it, E/t_cycle", needs=A_MOVE),
-        Result("rms_to_rated", "", "RMS torque over rated torque", needs=tuple(f"{way}+rated_torque" for way in A_MOVE)),
+        Result("rms_to_rated", "", "RMS torque (or power) over the rated one", needs=(*(f"{way}+rated_torque" for way in A_MOVE), "segment+rated_torque", "segment+rated_power")),
         Result("within_rating", None, "within the motor's ratings", needs=("accel_time+rated_torque", "accel_time+peak_torque")),
     ),
     output=ANSWER,

@@ -41,6 +41,8 @@ ROTOR = "rotor"  # "inertia=… spin=… sense=cw-from-rear": another rotor whos
 NOT_QUANTITIES = NOT_QUANTITIES | {ROTOR}
 REVOLVING = "revolving"  # "mass=… radius=… angle=… [plane=…] [length=…]": a mass turning with a shaft (balance), repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {REVOLVING}
+SEGMENT = "segment"  # "time=… torque=…|power=… [rest=yes]": a segment of a motor's duty cycle (drive), repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {SEGMENT}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {

@@ -29,6 +29,7 @@ TWICE = {
     table.PULL: "force=20N force=30N",
     table.ROTOR: "inertia=0.3kg*m^2 inertia=1kg*m^2 spin=5000rpm sense=cw-from-right",
     table.REVOLVING: "mass=2kg mass=3kg radius=0.3m angle=45deg",
+    table.SEGMENT: "time=1min time=2min torque=1N*m",
 }
 SPECS = [(scene, option) for scene, command in sorted(SCENES.items()) for option in command.options if option.kind in TWICE]
 

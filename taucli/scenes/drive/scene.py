@@ -18,6 +18,7 @@ from taucli.options.drive import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.drive import train as drive_train
+from taucli.scenes.drive.duty import duty_cycle
 from taucli.scenes.drive.motor import Motor, run_up, uniform
 from taucli.scenes.drive.profile import Move, solve_profile, trapezoid
 from taucli.scenes.drive.train import TWO_PI, Train
@@ -61,10 +62,26 @@ def drive(
     distance: float | None = None,
     move_angle: float | None = None,
     energy: bool = False,
+    rated_power: float | None = None,
+    segment: Sequence = (),
+    rest_factor: float | None = None,
     **body_options,
 ) -> Report:
     """``taucli drive``: the motor (--motor-inertia, its law), the train (--ratio, --efficiency),
-    the load (a body at the output, a mass on a drum or screw, what resists), and the motion."""
+    the load (a body at the output, a mass on a drum or screw, what resists), and the motion; or a
+    duty cycle of segments (--segment: duty.py)."""
+    if segment:
+        given = {name: value for name, value in locals().items() if name not in ("segment", "rest_factor", "rated_torque", "rated_power", "body_options")}
+        given.update(body_options)
+        others = [name for name, value in given.items() if value not in (None, False, (), [])]
+        if others:
+            also = ", ".join("{" + name + "}" for name in others[1:])
+            raise InputError(others[0], "does not apply with {segment}: a duty cycle is its segments' times and torques (or powers) alone"
+                             + (f"; leave out {also} too" if also else ""))
+        return duty_cycle(tuple(segment), rest_factor, rated_torque, rated_power)
+    for name, value in (("rest_factor", rest_factor), ("rated_power", rated_power)):
+        if value is not None:
+            raise InputError(name, "goes with {segment}: a duty cycle's segments", example="{segment} 'time=10min power=100kW' {segment} 'time=5min power=0'")
     results, notes, steps, assumed = Results(TABLE), [], [], Assumed()
     stages = tuple(ratio or ())
     n = _ratio(stages)
