@@ -20,6 +20,7 @@ import numpy as np
 
 from taucli.answering import pipeline
 from taucli.core.errors import InputError, spelled
+from taucli.fit import series
 from taucli.fit.samples import Samples
 from taucli.answering.inputs import read
 from taucli.quantities.measurement import split
@@ -69,6 +70,7 @@ class Model:
         self.refusal: Exception | None = None
         self._cache: dict[tuple, np.ndarray] = {}
         self._rows = [samples.row(i) for i in range(samples.count)]
+        self.series = series.usable(self)  # a time series: one run of the scene per p (taucli.fit.series)
 
     @property
     def names(self) -> list[str]:
@@ -102,11 +104,14 @@ class Model:
         return float(value)
 
     def predict(self, p, moved: Mapping[str, float] | None = None) -> np.ndarray:
-        """f(xᵢ; p) for every sample (kept: the same p is asked for again by the steps and the chart)."""
+        """f(xᵢ; p) for every sample (kept: the same p is asked for again by the steps and the chart);
+        a time series from one run of the scene where its trajectory gives it (taucli.fit.series)."""
         key = (tuple(float(x) for x in p), tuple(sorted((moved or {}).items())))
         found = self._cache.get(key)
         if found is None:
-            found = np.array([self.value(p, i, moved) for i in range(self.samples.count)])
+            found = series.predict(self, p, moved) if self.series else None
+            if found is None:
+                found = np.array([self.value(p, i, moved) for i in range(self.samples.count)])
             if len(self._cache) < 4096:
                 self._cache[key] = found
         return found
