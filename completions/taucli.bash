@@ -513,7 +513,7 @@ _taucli() {
             (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --every --no-limit --json --get --to --no-steps --uncertainty --plot --out --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --scale-covariance --every --no-limit --json --get --to --no-steps --uncertainty --plot --out --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

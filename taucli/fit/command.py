@@ -78,17 +78,23 @@ def _not_taken(command: Command, flag: str, known: list[str]) -> InputError:
     return InputError("", f"{flag} is not an option of fit, nor an input of {command.name}", hint=did_you_mean(flag, known))
 
 
-def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None) -> Report:
+def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None,
+           scale_covariance: bool = False) -> Report:
     """The fit's report (what the Python API returns: no time limit, as --find's has none there)."""
-    return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, stdin=stdin, spell=spell)[0]
+    return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, stdin=stdin, spell=spell,
+                  scale_covariance=scale_covariance)[0]
 
 
 def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None,
-           limit: float | None = None, progress=None) -> tuple[Report, solve.Fit]:
+           limit: float | None = None, progress=None, scale_covariance: bool = False) -> tuple[Report, solve.Fit]:
     """The fit's report, and the fit itself (for the chart). ``limit`` (seconds) refuses a fit
-    estimated to take longer (taucli.fit.budget); ``progress`` is told the solves done and planned."""
+    estimated to take longer (taucli.fit.budget); ``progress`` is told the solves done and planned;
+    ``scale_covariance``: with ``sigma``, the covariance scaled by χ²/ν."""
     command = _scene(scene)
     spell = spell or command.flag
+    if scale_covariance and sigma is None:
+        raise InputError("scale_covariance", "scales the covariance by χ²/ν where {sigma} gives the samples' uncertainties; without them "
+                         "it is scaled by the residual variance already", example="{sigma} 0.05rad/s {scale_covariance}")
     tables = [data.read(source, stdin) for source in files]
     names = solve.names_of(fit)
     gravity = read(command, {"g": given["g"]})[0].get("g") if given.get("g") is not None else None
@@ -99,7 +105,7 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
         model.budget = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
     try:
         with np.errstate(all="ignore"):  # numbers past a double's range are looked for where they matter (NaN, inf: refused or said)
-            found = solve.fit(model, starts)
+            found = solve.fit(model, starts, rescale=scale_covariance)
             report = results.written(found)
     except budget.Spent as spent:
         raise spent.refusal from None
@@ -128,7 +134,8 @@ def run(env, given: dict) -> int:
         with render.progress_bar(env.stderr, True) as progress:
             report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
                                    sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin,
-                                   limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress)
+                                   limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress,
+                                   scale_covariance=bool(given.get("scale_covariance")))
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
     drawn = chart.chart(found) if given.get("out") is not None or (given.get("plot") and not output.json) else None

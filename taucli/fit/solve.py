@@ -85,7 +85,8 @@ def model_of(command: Command, given: dict, names: list[str], samples: Samples, 
     return model, starts, notes
 
 
-def fit(model: Model, starts: dict[str, float]) -> Fit:
+def fit(model: Model, starts: dict[str, float], *, rescale: bool = False) -> Fit:
+    """The fit from the starts; ``rescale``: with σ given, the covariance scaled by χ²/ν (taucli.fit.quality.assess)."""
     samples = model.samples
     n, m = samples.count, len(model.unknowns)
     if n <= m:
@@ -137,7 +138,7 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         method = f"bounded nonlinear least squares (trust region reflective, scipy.optimize.least_squares) from {started}"
     _refuse_not_finite(model, J / sigma[:, None] if sigma is not None else J, p)
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
-    found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p, natural)
+    found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p, natural, rescale=rescale)
     for j in range(m):  # nearer its bound than a millionth of its σ (the reflective search nears a bound without reaching it): on it
         if j not in bounded and model.sign(j) == "nonnegative" and p[j] - model.lower(j) <= NEAR_BOUND * math.sqrt(max(found.covariance[j, j], 0.0)):
             p, held = _at_bound(model, [*bounded, j], p, y, sigma, natural)
