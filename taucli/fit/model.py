@@ -29,7 +29,7 @@ from taucli.writing.report import Report, quantity_text
 from taucli.options.table import Command
 from taucli.answering.unknowns import Unknown
 
-REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError)
+REFUSALS = series.REFUSALS
 
 
 def held(command: Command, given: Mapping[str, object], spell, unknowns: list[Unknown] = ()) -> tuple[dict, dict[str, float], dict[str, float], list[str]]:

@@ -18,6 +18,9 @@ import math
 
 import numpy as np
 
+from taucli.core.errors import InputError
+
+REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError)  # what a solve of the scene may raise for inputs it refuses (taucli.fit.model's)
 AGREE = 1e-7  # of the samples' largest size: the trajectory and the scene's own answer at the last sample agree within it
 
 
@@ -31,8 +34,6 @@ def predict(model, p, moved=None) -> np.ndarray | None:
     """f(tᵢ; p) for every sample from one run of the scene, or None where it cannot be read so
     (no trajectory, a curve it does not draw, a refusal, or a trajectory that disagrees with the
     scene's answer): the caller then solves each sample."""
-    from taucli.fit.model import REFUSALS  # (model imports this module)
-
     samples = model.samples
     times = np.asarray(samples.inputs["time"], dtype=float)
     last = int(np.argmax(times))

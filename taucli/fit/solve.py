@@ -118,7 +118,7 @@ def fit(model: Model, starts: dict[str, float], *, rescale: bool = False) -> Fit
         steps.append(_linear_step(model, shape, n))
     else:
         if model.budget is not None:
-            model.budget.plan(n, budget.nonlinear_evaluations(m), m)
+            model.budget.plan(n, budget.nonlinear_evaluations(m), m, budget.per_evaluation(model))
         searches, refusals = [], []
         for number, (q0, q_steps, q_how) in enumerate(candidates):
             if number and not _worth(model, q0, [c[0] for c in candidates[:number]], y, sigma):

@@ -35,7 +35,7 @@ import numpy as np
 from taucli.numerics import roots
 from taucli.quantities import units
 from taucli.core.errors import InputError
-from taucli.fit import swing
+from taucli.fit import decay, swing
 from taucli.fit.model import Model
 from taucli.writing.report import Step, fmt, quantity_text
 from taucli.scenes.assumed import STANDARD_GRAVITY
@@ -267,7 +267,8 @@ def _exponent(regressed, residual) -> float | None:
 
 
 CLOSED: dict[str, Callable[[Model], tuple[dict[str, float], Step] | None]] = {
-    "spin-down": _spin_down, "atwood": _atwood, "rolling": _rolling, "pendulum": swing.pendulum,
+    "spin-down": _spin_down, "atwood": _atwood, "rolling": _rolling,
+    "pendulum": lambda model: decay.start(model) if decay.damped(model) else swing.pendulum(model),  # a damped swing's, or a swing's
 }
 ALTERNATIVES: dict[str, Callable[[Model], list[tuple[dict[str, float], Step]]]] = {"pendulum": swing.alternatives}  # other closed-form starts
 
