@@ -5,6 +5,7 @@ from taucli.options.common import ANSWER, GRAVITY, MOTION, POINT_RESULTS, point_
 from taucli.options.table import CHOICE, FLAG, PART, PULL, SIDE, Command, Option, Result
 
 PULLEY = "Pulley"
+HOIST = "A hoist: its drive and its brake"
 SIDES = "Where the blocks are, and what pulls them"
 
 COMMAND = Command(
@@ -47,6 +48,13 @@ COMMAND = Command(
                "a hanging mass or beside one (repeatable).", panel=SIDES, repeatable=True, metavar='"force=… [angle=…] [on=1|2]"'),
         Option("torque", "torque", "A drive torque on the pulley (a motor, a hoist drum), positive lifting m1 (winding m1's string in).",
                sign="any", panel=SIDES),
+        Option("counterweight", "mass", "A hoist's counterweight, hanging on side 2 (the same as --m2): m1 is the cage or load the drive lifts.",
+               sign="nonnegative", panel=HOIST),
+        Option("hoist_speed", "velocity", "A hoist lifting m1 steadily at this speed (negative: lowering it): the drive's power_steady and torque_steady.",
+               sign="any", panel=HOIST),
+        Option("hoist_height", "length", "A hoist's trip: m1 lifted this far, from rest to rest (negative: lowered): energy_trip, the drive's work.",
+               sign="any", panel=HOIST),
+        Option("trip_time", "time", "The trip's time, with --hoist-height: power_trip, the drive's mean power over it.", panel=HOIST),
         GRAVITY,
         Option("v0", "velocity", "Initial speed of m1 (down positive).", sign="any", default="0", panel=MOTION),
         Option("distance", "length", "Report the time and speed after m1 has moved this far the way the masses first move (null where they stop short).", sign="nonnegative", panel=MOTION),
@@ -69,6 +77,12 @@ COMMAND = Command(
         Result("distance", "m", "displacement of m1 (down positive)…", needs=("time",)),
         Result("t_stop", "s", "time until the masses stop (with --v0)", needs=("v0",), example="{v0} '-2 m/s'"),
         Result("distance_stop", "m", "displacement of m1 until they stop (down positive)", needs=("v0",), example="{v0} '-2 m/s'"),
+        Result("power_steady", "W", "power of the drive lifting m1 steadily at --hoist-speed", needs=("hoist_speed",)),
+        Result("torque_steady", "N*m", "drive torque lifting m1 steadily at --hoist-speed", needs=("hoist_speed+pulley_radius",)),
+        Result("energy_trip", "J", "energy the drive gives per trip (m1 lifted --hoist-height, from rest to rest)", needs=("hoist_height",)),
+        Result("power_trip", "W", "mean power of the drive over the trip, energy_trip / --trip-time", needs=("hoist_height+trip_time",)),
+        Result("work_brake", "J", "energy the axle friction (a brake) takes…",
+               needs=("axle_friction+distance", "axle_friction+v0", "axle_friction+hoist_height"), example="{axle_friction} '0.5 N*m' {pulley_radius} 0.1m {distance} 1m"),
         *POINT_RESULTS,
     ),
     output=ANSWER,

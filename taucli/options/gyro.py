@@ -12,6 +12,8 @@ SPIN_SENSES = tuple(f"{turn}-from-{end}" for end in ("rear", "front", "left", "r
 # How the vehicle turns the rotor's axis: a turn seen from above, a pitch of its front, a roll.
 TURNS = ("left", "right", "pitch-up", "pitch-down", "roll-left", "roll-right")
 CRAFTS = ("vehicle", "ship", "aircraft")
+VEHICLE = "A vehicle on a turn (--vehicle)"
+VEHICLES = ("four-wheeler", "two-wheeler")
 
 COMMAND = Command(
     name="gyro",
@@ -72,6 +74,19 @@ COMMAND = Command(
                '(an engine beside the road wheels; repeatable): the angular momenta add as vectors.', repeatable=True, panel=MACHINE,
                metavar='"inertia=… spin=… sense=…"'),
         Option("bearing_span", "length", "The distance between the rotor shaft's two bearings: each carries the couple as a force C/l.", panel=MACHINE),
+        Option("vehicle", CHOICE, "A vehicle on a turn: four-wheeler (its wheels' loads, the speed it overturns at) or two-wheeler (its lean), "
+               "from --mass, --cg-height, --speed, --turn-radius and its spinning wheels and engine.", choices=VEHICLES, panel=VEHICLE,
+               metavar="four-wheeler|two-wheeler", example="four-wheeler"),
+        Option("cg_height", "length", "Height of the vehicle's centre of gravity above the road, e.g. 0.6m.", panel=VEHICLE),
+        Option("track", "length", "A four-wheeler's track: the distance between its inner and outer wheels, e.g. 1.5m.", panel=VEHICLE),
+        Option("speed", "velocity", "The vehicle's speed round the turn, e.g. 90km/h.", panel=VEHICLE),
+        Option("turn_radius", "length", "Radius of the turn, e.g. 50m.", panel=VEHICLE),
+        Option("wheel_inertia", "moment of inertia", "Each road wheel's moment of inertia about its axle (with its share of the axle), e.g. '0.8kg*m^2'.",
+               sign="nonnegative", panel=VEHICLE),
+        Option("wheel_radius", "length", "The road wheels' radius: they spin at v/r, e.g. 0.3m.", panel=VEHICLE),
+        Option("engine_inertia", "moment of inertia", "The engine's (or motors') rotating parts, all together, about their axis across the vehicle, e.g. '1kg*m^2'.",
+               sign="nonnegative", panel=VEHICLE),
+        Option("gear_ratio", "dimensionless", "The engine's speed over the wheels' (negative: the engine turns against the wheels), e.g. 4.", sign="any", panel=VEHICLE),
         GRAVITY,
     ),
     results=(
@@ -87,6 +102,18 @@ COMMAND = Command(
         Result("couple", "N*m", "gyroscopic couple…", needs=("precession",)),
         Result("effect", None, "effect of the couple on the vehicle", needs=("precession+spin_sense+turn",)),
         Result("bearing_force", "N", "force on each bearing C/l…", needs=("precession+bearing_span",)),
+        Result("couple_gyro", "N*m", "gyroscopic couple of the wheels and engine, (nI_w + GI_e)ω_wΩ", needs=("vehicle",),
+               example="{vehicle} four-wheeler {mass} 2000kg {cg_height} 0.6m {track} 1.5m {speed} 90km/h {turn_radius} 100m {wheel_inertia} '0.8kg*m^2' {wheel_radius} 0.3m"),
+        Result("couple_centrifugal", "N*m", "centrifugal couple mv²h/R", needs=("vehicle",),
+               example="{vehicle} four-wheeler {mass} 2000kg {cg_height} 0.6m {track} 1.5m {speed} 90km/h {turn_radius} 100m"),
+        Result("reaction_outer", "N", "load on each outer wheel", needs=("vehicle+track",),
+               example="{vehicle} four-wheeler {mass} 2000kg {cg_height} 0.6m {track} 1.5m {speed} 90km/h {turn_radius} 100m"),
+        Result("reaction_inner", "N", "load on each inner wheel", needs=("vehicle+track",),
+               example="{vehicle} four-wheeler {mass} 2000kg {cg_height} 0.6m {track} 1.5m {speed} 90km/h {turn_radius} 100m"),
+        Result("speed_overturn", "m/s", "speed at which the inner wheels lift (it overturns)", needs=("vehicle+track",),
+               example="{vehicle} four-wheeler {mass} 2000kg {cg_height} 0.6m {track} 1.5m {speed} 90km/h {turn_radius} 100m"),
+        Result("lean_balance", "rad", "lean from the vertical at which a two-wheeler balances on the turn", needs=("vehicle",),
+               example="{vehicle} two-wheeler {mass} 250kg {cg_height} 0.6m {speed} 90km/h {turn_radius} 100m"),
     ),
     output=ANSWER,
     headline="omega_p",

@@ -22,6 +22,7 @@ COMMAND = Command(
         Option("torsion", "torsion constant", "Torsion constant κ of a spring or wire (torque κθ), e.g. '0.5N*m/rad'.", sign="nonnegative"),
         Option("viscous", "viscous coefficient", "Damping torque bω against the swing (air, a pivot's grease), e.g. '2e-4N*m*s': θ and ω at "
                "--time by rk45 (or --method small-angle), and the decay; the answers energy gives do not hold.", sign="nonnegative"),
+        Option("pivot_friction", "torque", "A friction couple at the pivot: a constant torque against the motion (a rough axle), e.g. 4.8N*m.", sign="nonnegative"),
         GRAVITY,
         Option("start_time", "time", "Clock time of the start (θ = --angle0, ω = --omega0 there): --time is read on the same clock, and before "
                "the start the body is held at --angle0, e.g. 0.35s (a recording started before the release).", sign="any", panel=MOTION),

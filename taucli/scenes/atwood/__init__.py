@@ -23,6 +23,7 @@ from taucli.writing.report import Report, fmt
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.atwood.capstan import solve_rim
 from taucli.scenes.atwood.fixed_drum import solve_fixed_drum
+from taucli.scenes.atwood.hoist import Hoist, check_hoist
 from taucli.scenes.atwood.machine import Machine, solve, solve_machine
 from taucli.scenes.atwood.pulley import Pulley, with_parts
 from taucli.scenes.atwood.pulley_point import on_the_pulley
@@ -61,6 +62,10 @@ def atwood(
     fixed_drum: bool = False,
     part: Sequence = (),
     at: float | None = None,
+    counterweight: float | None = None,
+    hoist_speed: float | None = None,
+    hoist_height: float | None = None,
+    trip_time: float | None = None,
 ) -> Report:
     """``taucli atwood``: m1 and m2 hang unless --side1/--side2 (or --incline for m2) put them on a
     table or a slope; pulls on them (--pull) and a drive on the pulley (--torque); the pulley is
@@ -68,10 +73,20 @@ def atwood(
     a stepped pulley with --radius1/--radius2, both strings on one side with --same-side; a
     string that may slide with --rim-mu; a rope over a drum that cannot turn with --fixed-drum;
     --at r, a point on the pulley; t_stop and distance_stop with --v0; --pulley-gyration k with
-    --pulley-mass M, a pulley of I = Mk²."""
+    --pulley-mass M, a pulley of I = Mk²; a hoist (--counterweight, --hoist-speed, --hoist-height,
+    --trip-time: hoist.py)."""
+    if counterweight is not None:
+        if m2 is not None:
+            raise InputError("counterweight", "conflicts with {m2}: a hoist's counterweight is m2, give it once", example="{m1} 1200kg {counterweight} 950kg")
+        m2 = counterweight
+    hoist = Hoist(hoist_speed, hoist_height, trip_time)
+    check_hoist(hoist)
     if pulley_gyration is not None:  # #42 item 15: the pulley by its radius of gyration
         given = {name: value for name, value in locals().items() if name != "pulley_gyration"}
         return _by_gyration(given, pulley_gyration)
+    if fixed_drum or rim_mu is not None:
+        _refuse("does not apply with {fixed_drum}: a hoist drives a pulley that turns with its string" if fixed_drum
+                else "does not apply with {rim_mu}: a hoist's string grips its drum", hoist_speed=hoist_speed, hoist_height=hoist_height)
     if fixed_drum:
         return _over_a_fixed_drum(m1, m2, g, rim_mu, mu_k, mu_s, wrap, v0, distance, time, at=at, pulley_mass=pulley_mass, pulley_radius=pulley_radius,
                                   pulley_inertia=pulley_inertia,
@@ -80,7 +95,8 @@ def atwood(
     if at is not None:  # the machine, then the point on its pulley (#34: every option passed on, --wrap was left out)
         machine = dict(m1=m1, m2=m2, pulley_mass=pulley_mass, pulley_radius=pulley_radius, pulley_shape=pulley_shape, pulley_inertia=pulley_inertia,
                        axle_friction=axle_friction, side1=side1, side2=side2, incline=incline, mu_k=mu_k, mu_s=mu_s, pull=pull, torque=torque, g=g,
-                       radius1=radius1, radius2=radius2, same_side=same_side, rim_mu=rim_mu, wrap=wrap, part=part)
+                       radius1=radius1, radius2=radius2, same_side=same_side, rim_mu=rim_mu, wrap=wrap, part=part,
+                       hoist_speed=hoist_speed, hoist_height=hoist_height, trip_time=trip_time)
         if rim_mu is not None:
             raise InputError("at", "does not apply with {rim_mu}: where the string slides the pulley's own turning is not followed in time")
         report = atwood(**machine, v0=v0, distance=distance, time=time)
@@ -135,7 +151,7 @@ def atwood(
         m1 or 0.0, m2 or 0.0, pulley, gravity, side_of(side1, "side1"), place2, _pulls(pulled[1]), _pulls(pulled[2]), torque or 0.0,
         None if not stepped else (r1, r2), same_side, ("side1", option2),
     )
-    return assumed.applied(solve_machine(built, v0=v0 or 0.0, distance=distance, time=time, stop=v0 is not None))
+    return assumed.applied(solve_machine(built, v0=v0 or 0.0, distance=distance, time=time, stop=v0 is not None, hoist=hoist))
 
 
 def _over_a_fixed_drum(m1, m2, g, rim_mu, mu_k, mu_s, wrap, v0, distance, time, **others) -> Report:

@@ -31,6 +31,7 @@ from taucli.core.errors import InputError
 from taucli.numerics.exact import product_difference, product_terms
 from taucli.options.atwood import COMMAND as TABLE
 from taucli.writing.report import DeferredSteps, Report, deferred, fmt, quantity_text
+from taucli.scenes.atwood.hoist import Hoist, put_hoist, put_work_brake
 from taucli.scenes.atwood.pulley import DISC_NOTE, Pulley, check_pulley
 from taucli.scenes.atwood.slope import HANGING, Slope, check_slope, side_static
 from taucli.scenes.atwood.statics import held_tensions
@@ -168,9 +169,11 @@ def solve(
 
 def solve_machine(
     machine: Machine, *, v0: float = 0.0, distance: float | None = None, time: float | None = None, stop: bool = False,
+    hoist: Hoist = Hoist(),
 ) -> Report:
     """Acceleration, tensions and the motion that follows, for the machine described (``stop``:
-    report when the masses first stop, t_stop and distance_stop)."""
+    report when the masses first stop, t_stop and distance_stop); a hoist's drive and the energy
+    its brake takes (hoist.py)."""
     notes: list[str] = []
     side1, side2 = _hung(machine.side1, machine.options[0], "1", notes), _hung(machine.side2, machine.options[1], "2", notes)
     machine = machine._replace(side1=side1, side2=side2, kind=_kind(machine, side1, side2))
@@ -221,6 +224,15 @@ def solve_machine(
             _second_phase(motion, f, kinetic, machine, distance, time, notes)
         put_motion(results, motion, distance, time, [] if unknown else notes, stop=stop)  # (unknown: its values go null below, and its notes)
 
+    sliding_known = not ((side1.mu_k is None and f.normal1 > 0) or (side2.mu_k is None and f.normal2 > 0))
+    hoist_steps = put_hoist(results, notes, hoist, loads.drive + f.drive_force, loads.friction if sliding_known else None, f.r1, bool(machine.torque))
+    if machine.pulley.axle_friction and (distance is not None or stop or hoist.height is not None):
+        if distance is not None:
+            put_work_brake(results, f.axle_force, distance if results["t"].value is not None else None, f" over {fmt(distance)} m")
+        elif stop:
+            put_work_brake(results, f.axle_force, results["distance_stop"].value, " until the masses stop")
+        else:
+            put_work_brake(results, f.axle_force, hoist.height, " over the trip")
     if unknown:
         said: list[str] = []
         needs_kinetic(", ".join(name for name, value in results.items() if value.value is not None), said)
@@ -239,6 +251,8 @@ def solve_machine(
                               machine.pulley.axle_friction, a, dict(results), held)
     else:
         steps = DeferredSteps(general_steps, machine, f, (side1.mu_k, side2.mu_k), a, dict(results), held, direction)
+    if hoist_steps:
+        steps = DeferredSteps(lambda first, more: [*first, *more], steps, hoist_steps)
     path = None if unknown else deferred(trajectory, motion or (moving_mass, loads, v0), distance, time, results)
     return Report("atwood", _model(machine, f, loads, held), "closed form", results, steps, notes, trajectory=path)
 

@@ -12,7 +12,9 @@ from collections.abc import Sequence
 from taucli.core.errors import InputError
 from taucli.writing.report import Report
 from taucli.scenes.gyro.machine import machine
+from taucli.scenes.assumed import Assumed
 from taucli.scenes.gyro.top import top
+from taucli.scenes.gyro.vehicle import vehicle_on_a_turn
 
 _MACHINE_ONLY = ("spin_sense", "turn", "lean", "craft", "bearing_span", "rotor")
 _TOP_ONLY = ("cm_distance", "torque", "inertia_perp")
@@ -48,9 +50,35 @@ def gyro(
     bearing_span: float | None = None,
     rotor: Sequence = (),
     g: float | None = None,
+    vehicle: str | None = None,
+    cg_height: float | None = None,
+    track: float | None = None,
+    speed: float | None = None,
+    turn_radius: float | None = None,
+    wheel_inertia: float | None = None,
+    wheel_radius: float | None = None,
+    engine_inertia: float | None = None,
+    gear_ratio: float | None = None,
 ) -> Report:
     """``taucli gyro``: a top on a pivot (its weight at --cm-distance, or --torque), or with
-    --precession a rotor whose axis a vehicle turns (the gyroscopic couple)."""
+    --precession a rotor whose axis a vehicle turns (the gyroscopic couple), or with --vehicle a
+    vehicle on a turn (vehicle.py)."""
+    on_a_turn = {"cg_height": cg_height, "track": track, "speed": speed, "turn_radius": turn_radius, "wheel_inertia": wheel_inertia,
+                 "wheel_radius": wheel_radius, "engine_inertia": engine_inertia, "gear_ratio": gear_ratio}
+    if vehicle is not None:
+        others = {"inertia": inertia, "shape": shape, "spin": spin, "precession": precession, "cm_distance": cm_distance, "torque": torque,
+                  "tilt": tilt, "spin_sense": spin_sense, "turn": turn, "lean": lean, "rotor": rotor or None, "bearing_span": bearing_span,
+                  "part": part or None, "gyration": gyration}
+        for name, value in others.items():
+            if value is not None:
+                raise InputError(name, "does not apply with {vehicle}: the vehicle's wheels and engine are the rotors "
+                                 "({wheel_inertia}, {engine_inertia}), its speed and turn their rates")
+        assumed = Assumed()
+        return assumed.applied(vehicle_on_a_turn(vehicle, mass, cg_height, track, wheel_inertia, wheel_radius, engine_inertia, gear_ratio,
+                                                 speed, turn_radius, assumed.gravity(g)))
+    for name, value in on_a_turn.items():
+        if value is not None:
+            raise InputError(name, "goes with {vehicle}: a vehicle on a turn", example="{vehicle} four-wheeler")
     dims = {"radius": radius, "inner_radius": inner_radius, "outer_radius": outer_radius, "length": length, "width": width, "height": height, "depth": depth}
     given = {"spin_sense": spin_sense, "turn": turn, "lean": lean, "craft": craft, "bearing_span": bearing_span, "rotor": rotor or None,
              "cm_distance": cm_distance, "torque": torque, "inertia_perp": inertia_perp}

@@ -39,6 +39,7 @@ from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.motion import choose, pick_model, put_motion, put_state, solve, trajectory
 from taucli.scenes.pendulum.pivot import put_pivot
 from taucli.scenes.pendulum.reach import put_reach
+from taucli.scenes.pendulum.rough_answer import rough_report
 from taucli.scenes.pendulum.point import put_point
 from taucli.scenes.pendulum.small_angle import small_angle_note
 from taucli.scenes.pendulum.stepped import DEFAULT_DT, DEFAULT_RTOL, BlewUp, Stepped, withhold_if_off
@@ -68,6 +69,7 @@ def pendulum(
     from_top: bool | None = None,
     torsion: float | None = None,
     viscous: float | None = None,
+    pivot_friction: float | None = None,
     g: float | None = None,
     start_time: float | None = None,
     angle: float | None = None,
@@ -81,7 +83,8 @@ def pendulum(
 ) -> Report:
     """``taucli pendulum``: the body (--inertia with --mass and --cm-distance, or --shape ...), its
     start (--angle0 from the downward vertical, or the upward one --from-top; --omega0, or
-    --omega-bottom from the bottom), gravity and --torsion, what to report."""
+    --omega-bottom from the bottom), gravity, --torsion and a couple at the pivot (--pivot-friction,
+    rough_answer.py), what to report."""
     assumed = Assumed()
     zero = Zero(bool(from_top))
     if from_top and torsion:
@@ -96,6 +99,11 @@ def pendulum(
         angle0, omega0 = start_at_the_bottom(omega_bottom, angle0, omega0, zero)
     body = moved(read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion, assumed, gyration, density), length_offset)
     swing, gravity = on_pivot(body, torsion, g, angle0, omega0, angle, assumed)
+    if pivot_friction and (viscous is not None or start_time is not None):
+        raise InputError("pivot_friction", "is not taken with {viscous} or {start_time} yet: a rough pivot's swing is stepped leg by leg "
+                         "from its own start", hint="give one of them")
+    if pivot_friction:
+        return assumed.applied(rough_report(body, swing, gravity, pivot_friction, method, rtol, angle, time, at, bool(components), body.words, zero))
     since = clock.since(time, start_time, swing)
     if viscous is not None:
         return assumed.applied(damped_swing(swing, body, viscous, method or "auto", dt or DEFAULT_DT, rtol or DEFAULT_RTOL, time, since, start_time,

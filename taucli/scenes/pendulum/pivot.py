@@ -37,14 +37,18 @@ class PivotForce(NamedTuple):
 
 
 def pivot_force(swing: Swing, mass: float, cm_distance: float, gravity: float, theta: float, speed: float | None,
-                zero: Zero = Zero()) -> PivotForce | None:
-    """The force at θ (from the bottom), the body turning at |ω| = speed there; None where it never gets there."""
+                zero: Zero = Zero(), alpha: float | None = None) -> PivotForce | None:
+    """The force at θ (from the bottom), the body turning at |ω| = speed there; None where it never
+    gets there. ``alpha``: α there where more than gravity and the spring turn the body (a couple
+    at the pivot), signed as θ."""
     if speed is None:
         return None
     sin, cos = sin_exact(theta), cos_exact(theta)
     radial = mass * (cm_distance * speed * speed + gravity * cos)
-    # across: m d α + m g sin θ = m g sin θ (I − md²)/I − m d κθ/I (no cancellation for a bob)
-    tangential = mass * gravity * sin * (swing.inertia - mass * cm_distance * cm_distance) / swing.inertia - mass * cm_distance * swing.torsion * theta / swing.inertia
+    if alpha is not None:
+        tangential = mass * (cm_distance * alpha + gravity * sin)
+    else:  # across: m d α + m g sin θ = m g sin θ (I − md²)/I − m d κθ/I (no cancellation for a bob)
+        tangential = mass * gravity * sin * (swing.inertia - mass * cm_distance * cm_distance) / swing.inertia - mass * cm_distance * swing.torsion * theta / swing.inertia
     horizontal = tangential * cos - radial * sin
     vertical = radial * cos + tangential * sin
     return PivotForce(radial, tangential, -horizontal if zero.top else horizontal, vertical, math.hypot(radial, tangential))
@@ -54,15 +58,16 @@ _SUFFIXES = {"start": "0", "bottom": "_bottom", "angle": ""}
 
 
 def put_pivot(results: Results, swing: Swing, mass: float | None, cm_distance: float, gravity: float, angle: float | None = None,
-              speed_at_angle: float | None = None, zero: Zero = Zero()) -> None:
+              speed_at_angle: float | None = None, zero: Zero = Zero(), alphas: dict[str, float] | None = None) -> None:
     """The pivot's force at the start, at the bottom and at --angle (with the body's mass): its size
-    and its components; and L = I/(md) (with a mass and d > 0)."""
+    and its components; and L = I/(md) (with a mass and d > 0). ``alphas``: α at "start",
+    "bottom", "angle" where a couple at the pivot turns the body too."""
     if mass is not None:
         where = {"start": (swing.theta0, abs(swing.omega0)), "bottom": (0.0, results["omega_bottom"].value)}
         if angle is not None:
             where["angle"] = (angle, speed_at_angle)
         for name, (theta, speed) in where.items():
-            force = pivot_force(swing, mass, cm_distance, gravity, theta, speed, zero)
+            force = pivot_force(swing, mass, cm_distance, gravity, theta, speed, zero, None if alphas is None else alphas.get(name))
             suffix = _SUFFIXES[name]
             part = f" at {zero.text(theta)}" if name == "angle" else ""
             results.put("pivot_force" + suffix, None if force is None else force.size, part)

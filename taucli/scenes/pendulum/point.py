@@ -18,12 +18,14 @@ from taucli.scenes.point import along
 from taucli.options.table import Results
 
 
-def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravity: float, zero: Zero) -> None:
+def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravity: float, zero: Zero, accel=None) -> None:
     """A point at r from the pivot: a_t = rα along the motion, v_t = r|ω|, a_c = rω², at the start
-    and at --angle; with a step that says why a rod's far end falls faster than g."""
+    and at --angle; with a step that says why a rod's far end falls faster than g. ``accel(θ, ω)``:
+    α where more than gravity and the spring turn the body (a couple at the pivot)."""
+    accel = accel or (lambda theta, _: swing.accel(theta))
     results = Results(TABLE)
     where = f" {fmt(r)} m from the pivot"
-    alpha0 = along(swing.accel(swing.theta0), swing.omega0)
+    alpha0 = along(accel(swing.theta0, swing.omega0), swing.omega0)
     results.put("a_t0", r * alpha0, where)
     steps = [
         Step(
@@ -43,7 +45,7 @@ def put_point(report: Report, swing: Swing, r: float, angle: float | None, gravi
     if angle is not None:
         omega = report.results["omega"].value  # signed: as the body first gets there; None where it never does
         where_at_angle = f"{where} at {zero.text(angle)}"
-        alpha = None if omega is None else along(swing.accel(angle), omega)
+        alpha = None if omega is None else along(accel(angle, omega), omega)
         results.put("v_t", None if omega is None else r * abs(omega), where_at_angle)
         results.put("a_t", None if omega is None else r * alpha, where_at_angle)
         results.put("a_c", None if omega is None else r * omega * omega, where_at_angle)

@@ -27,6 +27,7 @@ from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_conta
 from taucli.scenes.spin.mean import with_omega_mean
 from taucli.scenes.spin.point import with_point
 from taucli.scenes.spin.power import power_report
+from taucli.scenes.spin.steady import steady_report
 from taucli.scenes.spin.steps import Torques
 from taucli.scenes.spin.torque_laws import drive_for_target, solve
 from taucli.scenes.spin.transfer import transfer_report
@@ -68,6 +69,7 @@ def spin_down(
     g: float | None = None,
     at: float | None = None,
     viscous: float | None = None,
+    drive_slope: float | None = None,
     drag: float | None = None,
     drag_exponent: float | None = None,
     time: float | None = None,
@@ -129,6 +131,16 @@ def spin_down(
     if in_angle is not None:  # ω₁ within an angle: the target angle is given, and the drive (or α) is what meets it
         in_angle = _within_angle(in_angle, until_omega, targets, in_time, alpha, torque, push, power)
         targets = {**targets, "until_angle": in_angle}
+
+    if wheel.inertia is None and alpha is None and power is None and in_time is None and in_angle is None and (viscous or drag or drive_slope):
+        asked = next((name for name, value in (*targets.items(), ("at", at)) if value is not None), None)
+        if asked is not None:
+            raise InputError(asked, "needs a body ({inertia} or {shape}): with no body spin-down gives only where the torques balance",
+                             example="{inertia} '2kg*m^2'")
+        return assumed.applied(steady_report(torques, drive_slope or 0.0, omega0, front))
+    if drive_slope is not None:
+        raise InputError("drive_slope", "is read with no body, for the speeds where the torques balance; the motion in time with a drive "
+                         "that changes with speed is not modelled yet (leave out --inertia and --shape)")
 
     # The model: constant α, a motor of constant power, the drive that meets a target in a time or
     # an angle, or the torque laws.

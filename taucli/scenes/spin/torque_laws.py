@@ -130,6 +130,8 @@ def solve(
         results.not_applicable("omega_inf")
     else:
         results.put("omega_inf", omega_inf)
+    if torques.viscous or torques.drag:  # losses that grow with speed and a drive that does not: the net torque falls as ω rises
+        results.put("stable", None if omega_inf is None else True)
 
     if time is not None:
         omega_t, theta_t = answers["omega"], answers["theta"]
