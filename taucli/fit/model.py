@@ -66,6 +66,7 @@ class Model:
         self.spreads = dict(spreads or {})
         self.stdin, self.spell = stdin, spell or command.flag
         self.solves = 0
+        self.evaluations = 0  # of f at every sample (predict's, each n solves or one run of a time series)
         self.budget = None  # a taucli.fit.budget.Budget: the time the solves may take
         self.refusal: Exception | None = None
         self._cache: dict[tuple, np.ndarray] = {}
@@ -109,6 +110,7 @@ class Model:
         key = (tuple(float(x) for x in p), tuple(sorted((moved or {}).items())))
         found = self._cache.get(key)
         if found is None:
+            self.evaluations += 1
             found = series.predict(self, p, moved) if self.series else None
             if found is None:
                 found = np.array([self.value(p, i, moved) for i in range(self.samples.count)])

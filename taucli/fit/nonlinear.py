@@ -39,7 +39,7 @@ def minimize(model: Model, y: np.ndarray, sigma: np.ndarray | None, p0: np.ndarr
     scale = np.where(np.abs(p0) > 0, np.abs(p0), 1.0)
     lower = np.array([model.lower(j) / scale[j] for j in range(len(p0))])
     large = PENALTY * (float(np.max(np.abs(y * weights))) + 1.0)
-    before = model.solves
+    before = model.evaluations
 
     def residuals(u: np.ndarray) -> np.ndarray:
         r = (model.predict(u * scale) - y) * weights
@@ -50,7 +50,7 @@ def minimize(model: Model, y: np.ndarray, sigma: np.ndarray | None, p0: np.ndarr
     p = found.x * scale
     # on its bound, or within AT_BOUND of its start's size of it (the reflective search nears a bound without reaching it)
     at_bound = [j for j in range(len(p)) if found.active_mask[j] != 0 or (model.sign(j) != "any" and p[j] <= lower[j] * scale[j] + AT_BOUND * scale[j])]
-    evaluations = (model.solves - before) // max(model.samples.count, 1)
+    evaluations = model.evaluations - before
     return Outcome(p, found.status > 0, str(found.message), evaluations, int(found.nfev), at_bound)
 
 

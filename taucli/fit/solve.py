@@ -152,8 +152,10 @@ def fit(model: Model, starts: dict[str, float], *, rescale: bool = False) -> Fit
             ("min Σᵢ ((yᵢ − f(xᵢ; p))/σᵢ)²" if sigma is not None else "min Σᵢ (yᵢ − f(xᵢ; p))²") + f" over {', '.join(_bound(model, j) for j in range(m))}",
             result=", ".join(f"{u.name} = {quantity_text(value, units.KINDS[u.kind].si_unit, digits_known(value, uncertainty))}"
                              for u, value, uncertainty in zip(model.unknowns, p, spread)),
-            why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, {_count(outcome.evaluations, 'solve')} of the scene per sample "
-            f"(its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them; "
+            why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, "
+            + (f"{_count(outcome.evaluations, 'run')} of the scene, each read at every sample's time" if model.series
+               else f"{_count(outcome.evaluations, 'solve')} of the scene per sample")
+            + f" (its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them; "
             f"shown to a thousandth of each one's uncertainty (the digits past that are the search's rounding)"
             + (f"; searched from {len(searches)} starts, this the least sum" if len(searches) > 1 else ""),
         ))
