@@ -522,6 +522,7 @@ _taucli() {
             --y) :; return 0 ;;
             --sigma) :; return 0 ;;
             --range) :; return 0 ;;
+            --bound) :; return 0 ;;
             --every) :; return 0 ;;
             --get) COMPREPLY=($(compgen -W "correlation residual_rms r2 chi2_dof samples dropped" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
@@ -531,7 +532,7 @@ _taucli() {
             (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --scale-covariance --every --no-limit --json --get --to --no-steps --uncertainty --plot --out --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --bound --scale-covariance --every --no-limit --json --get --to --no-steps --uncertainty --plot --out --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -1171,6 +1171,7 @@ complete -c taucli -n '__fish_seen_subcommand_from fit' -l x -x -d 'A column tha
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l y -x -d 'The column that was measured, and the result it is, e.g. "Gyroscope z (rad/s)=omega".'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l sigma -x -d 'Each sample\'s standard uncertainty: a column, or one value for all, e.g. 0.05rad/s.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l range -x -d 'Fit only the samples with a column in this window, e.g. t=2s..30s (repeatable).'
+complete -c taucli -n '__fish_seen_subcommand_from fit' -l bound -x -d 'A range a fitted input is held within, e.g. \'viscous=0..0.01N*m*s\' or g=9.5..10.1 (repeatable; either end may be left open). An input held fixed is not fitted: give it as the scene\'s option instead.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l scale-covariance -d 'With --sigma: scale the covariance by χ²/ν (lmfit\'s default), so the σ given weigh the samples and their scatter sets the uncertainties.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l every -x -d 'Use every Nth sample only (a long export), e.g. 10.'
 complete -c taucli -n '__fish_seen_subcommand_from fit' -l no-limit -d 'Run the fit however long it is estimated to take (else refused past 60 s).'

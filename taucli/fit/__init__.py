@@ -55,11 +55,12 @@ def run(*, env, **given) -> int:
 
 
 def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = None, range=(), every=None, stdin=None, scale_covariance: bool = False,
-        **options):
+        bound=(), **options):
     """The fit's Report: ``scene``'s inputs named in ``fit`` ("friction,viscous") fitted to the
     tables ``data`` (file names, pathlib.Path, or open file objects), the scene's other options as
     keywords (texts with units, or SI numbers; numpy numbers too); ``scale_covariance=True`` with
-    ``sigma`` scales the covariance by χ²/ν. Every bad argument raises InputError naming it."""
+    ``sigma`` scales the covariance by χ²/ν; ``bound="viscous=0..0.01N*m*s"`` (or a list) holds a
+    fitted input within a range. Every bad argument raises InputError naming it."""
     _needs_scipy()
     from taucli.fit import command  # deferred: numpy and scipy with it, only for a fit
 
@@ -75,7 +76,7 @@ def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = 
     return command.fitted(scene, sources, options, fit=_texts(fit, "fit", "friction,viscous", alone=True), x=_texts(x, "x", "t (s)=time"),
                           y=_text(y, "y", "omega (rad/s)=omega"), sigma=_text(sigma, "sigma", "0.05 rad/s"),
                           ranges=_texts(range, "range", "time=0..10s"), every=every, stdin=stdin, spell=lambda name: name,
-                          scale_covariance=_flag(scale_covariance, "scale_covariance"))
+                          scale_covariance=_flag(scale_covariance, "scale_covariance"), bounds=_texts(bound, "bound", "viscous=0..0.01N*m*s"))
 
 
 def _flag(value, name: str) -> bool:

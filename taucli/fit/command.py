@@ -79,14 +79,14 @@ def _not_taken(command: Command, flag: str, known: list[str]) -> InputError:
 
 
 def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None,
-           scale_covariance: bool = False) -> Report:
+           scale_covariance: bool = False, bounds=()) -> Report:
     """The fit's report (what the Python API returns: no time limit, as --find's has none there)."""
     return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, stdin=stdin, spell=spell,
-                  scale_covariance=scale_covariance)[0]
+                  scale_covariance=scale_covariance, bounds=bounds)[0]
 
 
 def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, stdin=None, spell=None,
-           limit: float | None = None, progress=None, scale_covariance: bool = False) -> tuple[Report, solve.Fit]:
+           limit: float | None = None, progress=None, scale_covariance: bool = False, bounds=()) -> tuple[Report, solve.Fit]:
     """The fit's report, and the fit itself (for the chart). ``limit`` (seconds) refuses a fit
     estimated to take longer (taucli.fit.budget); ``progress`` is told the solves done and planned;
     ``scale_covariance``: with ``sigma``, the covariance scaled by χ²/ν."""
@@ -100,6 +100,7 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
     gravity = read(command, {"g": given["g"]})[0].get("g") if given.get("g") is not None else None
     found_samples = samples.build(command, tables, x=x, y=y, sigma=sigma, ranges=ranges, every=every, fitted=names, given=set(given), gravity=gravity)
     model, starts, notes = solve.model_of(command, given, names, found_samples, stdin=stdin, spell=spell)
+    solve.bounds_of(model, bounds, gravity)
     if limit is not None or progress is not None:
         faster = [name for name in ("dt", "method") if command.option(name) is not None]
         model.budget = budget.Budget(limit, progress, every=int(str(every).strip()) if every is not None else 1, faster=faster)
@@ -135,7 +136,7 @@ def run(env, given: dict) -> int:
             report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
                                    sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"), stdin=env.stdin,
                                    limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress,
-                                   scale_covariance=bool(given.get("scale_covariance")))
+                                   scale_covariance=bool(given.get("scale_covariance")), bounds=tuple(given.get("bound") or ()))
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
     drawn = chart.chart(found) if given.get("out") is not None or (given.get("plot") and not output.json) else None

@@ -68,6 +68,7 @@ class Model:
         self.solves = 0
         self.evaluations = 0  # of f at every sample (predict's, each n solves or one run of a time series)
         self.budget = None  # a taucli.fit.budget.Budget: the time the solves may take
+        self.bounds: dict[str, tuple[float, float]] = {}  # --bound: a fitted input's (low, high), SI
         self.refusal: Exception | None = None
         self._cache: dict[tuple, np.ndarray] = {}
         self._rows = [samples.row(i) for i in range(samples.count)]
@@ -134,13 +135,27 @@ class Model:
     def sign(self, j: int) -> str:
         return self.unknowns[j].sign
 
-    def lower(self, j: int) -> float:
-        """The least value p_j may take (its option's sign): 0, or −∞."""
+    def natural_lower(self, j: int) -> float:
+        """The least value p_j's option takes (its sign): 0, or −∞."""
         return -math.inf if self.sign(j) == "any" else 0.0
 
+    def lower(self, j: int) -> float:
+        """The least value p_j may take: its option's (0, or −∞), or the --bound given, the larger."""
+        return max(self.natural_lower(j), self.bounds.get(self.names[j], (-math.inf, math.inf))[0])
+
+    def upper(self, j: int) -> float:
+        """The largest value p_j may take: the --bound given, or +∞."""
+        return self.bounds.get(self.names[j], (-math.inf, math.inf))[1]
+
     def allowed(self, j: int, x: float) -> bool:
-        low = self.lower(j)
-        return math.isfinite(x) and (x > low if self.sign(j) == "positive" else x >= low)
+        low = self.natural_lower(j)
+        user_low, user_high = self.bounds.get(self.names[j], (-math.inf, math.inf))
+        return math.isfinite(x) and (x > low if self.sign(j) == "positive" else x >= low) and user_low <= x <= user_high
+
+    def on_user_bound(self, j: int, x: float, tolerance: float) -> bool:
+        """p_j = x lies on a --bound (within ``tolerance``) that is not its option's own."""
+        user_low, user_high = self.bounds.get(self.names[j], (-math.inf, math.inf))
+        return (user_low > self.natural_lower(j) and x - user_low <= tolerance) or user_high - x <= tolerance
 
     def why_refused(self) -> str:
         err = self.refusal

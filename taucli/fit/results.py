@@ -63,7 +63,7 @@ def written(found: Fit) -> Measured:
                                            f"one-sided 95 % upper limit of {name}, at its bound: bound + {solve.UPPER:.3f}σ")
     if fitted.scaled or fitted.rescaled:  # σ from the residuals' scatter: a 95 % interval from Student's t beside ±1σ
         for j, unknown in enumerate(model.unknowns):
-            if j not in found.bounded:
+            if j not in found.bounded and j not in found.on_bound:
                 results[f"{unknown.name}_ci95"] = _interval(found, j, float(sigma[j]), units_of[j])
     results = {key: results[key] for name in model.names for key in (name, f"{name}_ci95", f"{name}_upper95") if key in results}  # each beside its input
     tables = {}
@@ -311,6 +311,10 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
                      f"lies at or past it, within noise), so it is given there with its one-sided 95 % upper limit, {name} ≤ "
                      f"{quantity_text(float(found.p[j] + solve.UPPER * sigma[j]), unit, 3)} (bound + {solve.UPPER:.3f}σ, σ = {fmt(sigma[j], 2)}); "
                      "the other inputs are fitted with it there")
+    for j in found.on_bound:
+        name, unit = model.names[j], units.KINDS[model.unknowns[j].kind].si_unit
+        notes.append(f"warning: {name} ends on the bound given (--bound), {quantity_text(float(found.p[j]), unit)}: the samples ask for a value "
+                     "past it, so the fit is the best within it, and its uncertainty is the curvature's there, not an interval about the samples' best")
     for j, (name, value, s) in enumerate(zip(model.names, found.p, sigma)):
         if s > abs(value) and j not in found.bounded:
             notes.append(f"{name} is not determined better than its own size ({fmt(value, 3)} ± {fmt(s, 2)}): the samples barely depend on it")

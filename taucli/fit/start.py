@@ -355,6 +355,11 @@ def start(model: Model, given: dict[str, float]) -> tuple[np.ndarray, list[Step]
                 f"at the first sample, measured {quantity_text(model.samples.y[0], model.samples.y_unit)})") if math.isfinite(first) else ""
         raise InputError("fit", f"finds no start for {name}: no value of it alone meets the samples tried{said}",
                          hint=f"is an input missing? Else give a start beside --fit, e.g. --{name.replace('_', '-')} VALUE")
+    for j in range(len(names)):  # a start outside a --bound is moved just inside it
+        low, high = model.lower(j), model.upper(j)
+        if p[j] < low or p[j] > high:
+            width = high - low if math.isfinite(high - low) else max(abs(low if math.isfinite(low) else high), 1e-300)
+            p[j] = low + 1e-3 * width if p[j] < low else high - 1e-3 * width
     for j in range(len(names)):  # a start at or past a bound is moved just inside it (the fit moves within the bounds)
         if not model.allowed(j, p[j]) or (model.sign(j) != "any" and p[j] <= 0):
             p[j] = _inside(model, j, p)

@@ -38,6 +38,8 @@ COMMAND = Command(
         Option("y", TEXT, "The column that was measured, and the result it is, e.g. \"Gyroscope z (rad/s)=omega\".", metavar="COLUMN[=RESULT]", panel=DATA),
         Option("sigma", TEXT, "Each sample's standard uncertainty: a column, or one value for all, e.g. 0.05rad/s.", metavar="COLUMN|VALUE", panel=DATA),
         Option("range", TEXT, "Fit only the samples with a column in this window, e.g. t=2s..30s (repeatable).", repeatable=True, metavar="COLUMN=FROM..TO", panel=DATA),
+        Option("bound", TEXT, "A range a fitted input is held within, e.g. 'viscous=0..0.01N*m*s' or g=9.5..10.1 (repeatable; either end may be "
+               "left open). An input held fixed is not fitted: give it as the scene's option instead.", repeatable=True, metavar="NAME=FROM..TO", panel=DATA),
         Option("scale_covariance", FLAG, "With --sigma: scale the covariance by χ²/ν (lmfit's default), so the σ given weigh the samples "
                "and their scatter sets the uncertainties.", panel=DATA),
         Option("every", TEXT, "Use every Nth sample only (a long export), e.g. 10.", metavar="N", panel=DATA),
