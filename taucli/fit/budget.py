@@ -19,6 +19,7 @@ import math
 import time
 
 from taucli.answering.propagate import OverBudget, solve_time
+from taucli.fit import series
 
 TIMED = 5  # samples timed before the fit, spread over the table
 
@@ -55,6 +56,8 @@ def before(model, p) -> None:
     model.budget = kept
     for i in sorted({round(k * (n - 1) / max(TIMED - 1, 1)) for k in range(min(TIMED, n))}):
         model.value(p, i)
+    if model.series:  # one run read at every sample's time, where the scene's trajectory gives it (else model.series is cleared)
+        series.predict(model, p)
     kept.plan(n, linear_evaluations(len(p)), len(p), per_evaluation(model))
 
 

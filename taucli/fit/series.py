@@ -40,10 +40,12 @@ def predict(model, p, moved=None) -> np.ndarray | None:
     try:
         report = model.report(p, samples.row(last), moved)
         if report.trajectory is None:
+            model.series = False  # (the scene draws no trajectory: each sample is solved, and the time budget counts so)
             return None
         trajectory = report.trajectory()
         keys = [key for key, _, _ in trajectory.curves]
         if samples.y_key not in keys or trajectory.state is None:
+            model.series = False
             return None
         column = keys.index(samples.y_key)
         answer = report.results.get(samples.y_key)

@@ -357,7 +357,7 @@ def start(model: Model, given: dict[str, float]) -> tuple[np.ndarray, list[Step]
                          hint=f"is an input missing? Else give a start beside --fit, e.g. --{name.replace('_', '-')} VALUE")
     for j in range(len(names)):  # a start outside a --bound is moved just inside it
         low, high = model.lower(j), model.upper(j)
-        if p[j] < low or p[j] > high:
+        if names[j] in model.bounds and (p[j] < low or p[j] > high) and (p[j] > high or low > model.natural_lower(j)):
             width = high - low if math.isfinite(high - low) else max(abs(low if math.isfinite(low) else high), 1e-300)
             p[j] = low + 1e-3 * width if p[j] < low else high - 1e-3 * width
     for j in range(len(names)):  # a start at or past a bound is moved just inside it (the fit moves within the bounds)
