@@ -50,7 +50,7 @@ _taucli_fit_names() {
         atwood) names="m1 m2 pulley_mass pulley_radius pulley_inertia pulley_gyration axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque counterweight hoist_speed hoist_height trip_time g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
         rolling) names="k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at" ;;
         impulse) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 momentum0 momentum1 impulse torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm part_after.radius part_after.inner_radius part_after.outer_radius part_after.length part_after.width part_after.height part_after.depth part_after.offset part_after.mass part_after.inertia part_after.gyration part_after.angle particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e particle.speed_relative couple.inertia couple.omega0 couple.mass couple.torque couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth" ;;
-        pendulum) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 omega_bottom torsion pivot_friction g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
+        pendulum) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance length_offset angle0 omega0 omega_bottom torsion viscous pivot_friction g start_time angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
         torque) names="lever angle mass g force" ;;
         gyro) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span cg_height track speed turn_radius wheel_inertia wheel_radius engine_inertia gear_ratio g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle rotor.inertia rotor.spin" ;;
         drive) names="motor_inertia stall_torque no_load_speed motor_torque rated_torque rated_power rest_factor peak_torque ratio efficiency efficiency_back motor_friction gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
@@ -329,31 +329,34 @@ _taucli() {
             --offset) _taucli_units m cm mm km in ft; return 0 ;;
             --part) :; return 0 ;;
             --cm-distance) _taucli_units m cm mm km in ft; return 0 ;;
+            --length-offset) _taucli_units m cm mm km in ft; return 0 ;;
             --angle0) _taucli_units deg rad rev; return 0 ;;
             --omega0) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --omega-bottom) _taucli_units 'rad/s' rpm 'rev/s' 'deg/s' Hz; return 0 ;;
             --torsion) _taucli_units 'N*m/rad' 'N*m/deg' 'mN*m/rad'; return 0 ;;
+            --viscous) _taucli_units 'N*m*s' 'N*m/(rad/s)'; return 0 ;;
             --pivot-friction) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --g) _taucli_units 'm/s^2' 'ft/s^2' g0; return 0 ;;
+            --start-time) _taucli_units s ms min h; return 0 ;;
             --angle) _taucli_units deg rad rev; return 0 ;;
             --time) _taucli_units s ms min h; return 0 ;;
             --at) _taucli_units m cm mm km in ft; return 0 ;;
             --method) COMPREPLY=($(compgen -W "auto exact small-angle euler rk4 rk45 verlet" -- "$cur")); return 0 ;;
             --dt) _taucli_units s ms min h; return 0 ;;
             --rtol) :; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
-            --to) COMPREPLY=($(compgen -W "I= cm_distance= alpha0= omega_bottom= KE_bottom= amplitude= rise= omega= t_angle= t_bottom= period_small= period= pivot_force0= pivot_force_bottom= pivot_force= pivot_radial0= pivot_tangential0= pivot_horizontal0= pivot_vertical0= pivot_radial_bottom= pivot_tangential_bottom= pivot_horizontal_bottom= pivot_vertical_bottom= pivot_radial= pivot_tangential= pivot_horizontal= pivot_vertical= equivalent_length= centre_of_percussion= goes_over= omega0_over= theta= a_t0= v_t= a_t= a_c=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta decay_time quality_factor a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
+            --to) COMPREPLY=($(compgen -W "I= cm_distance= alpha0= omega_bottom= KE_bottom= amplitude= rise= omega= t_angle= t_bottom= period_small= period= pivot_force0= pivot_force_bottom= pivot_force= pivot_radial0= pivot_tangential0= pivot_horizontal0= pivot_vertical0= pivot_radial_bottom= pivot_tangential_bottom= pivot_horizontal_bottom= pivot_vertical_bottom= pivot_radial= pivot_tangential= pivot_horizontal= pivot_vertical= equivalent_length= centre_of_percussion= goes_over= omega0_over= theta= decay_time= quality_factor= a_t0= v_t= a_t= a_c=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance angle0 omega0 omega_bottom torsion pivot_friction g angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
-            --want) COMPREPLY=($(compgen -W "I= cm_distance= alpha0= omega_bottom= KE_bottom= amplitude= rise= omega= t_angle= t_bottom= period_small= period= pivot_force0= pivot_force_bottom= pivot_force= pivot_radial0= pivot_tangential0= pivot_horizontal0= pivot_vertical0= pivot_radial_bottom= pivot_tangential_bottom= pivot_horizontal_bottom= pivot_vertical_bottom= pivot_radial= pivot_tangential= pivot_horizontal= pivot_vertical= equivalent_length= centre_of_percussion= goes_over= omega0_over= theta= a_t0= v_t= a_t= a_c=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --y) COMPREPLY=($(compgen -W "I cm_distance alpha0 omega_bottom KE_bottom amplitude rise omega t_angle t_bottom period_small period pivot_force0 pivot_force_bottom pivot_force pivot_radial0 pivot_tangential0 pivot_horizontal0 pivot_vertical0 pivot_radial_bottom pivot_tangential_bottom pivot_horizontal_bottom pivot_vertical_bottom pivot_radial pivot_tangential pivot_horizontal pivot_vertical equivalent_length centre_of_percussion goes_over omega0_over theta decay_time quality_factor a_t0 v_t a_t a_c" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass density gyration radius inner_radius outer_radius length width height depth offset cm_distance length_offset angle0 omega0 omega_bottom torsion viscous pivot_friction g start_time angle time at dt rtol part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
+            --want) COMPREPLY=($(compgen -W "I= cm_distance= alpha0= omega_bottom= KE_bottom= amplitude= rise= omega= t_angle= t_bottom= period_small= period= pivot_force0= pivot_force_bottom= pivot_force= pivot_radial0= pivot_tangential0= pivot_horizontal0= pivot_vertical0= pivot_radial_bottom= pivot_tangential_bottom= pivot_horizontal_bottom= pivot_vertical_bottom= pivot_radial= pivot_tangential= pivot_horizontal= pivot_vertical= equivalent_length= centre_of_percussion= goes_over= omega0_over= theta= decay_time= quality_factor= a_t0= v_t= a_t= a_c=" -- "$cur")); compopt -o nospace; return 0 ;;
             --minimize) :; return 0 ;;
             --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --angle0 --omega0 --omega-bottom --from-top --torsion --pivot-friction --g --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --density --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --cm-distance --length-offset --angle0 --omega0 --omega-bottom --from-top --torsion --viscous --pivot-friction --g --start-time --angle --time --at --components --method --dt --rtol --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     torque)
         case "$prev" in
@@ -577,6 +580,7 @@ _taucli() {
             --per-run) :; return 0 ;;
             --counts-per-rev) :; return 0 ;;
             --counts) COMPREPLY=($(compgen -W "cumulative interval" -- "$cur")); return 0 ;;
+            --bound) :; return 0 ;;
             --every) :; return 0 ;;
             --get) COMPREPLY=($(compgen -W "correlation residual_rms r2 chi2_dof samples dropped" -- "$cur")); return 0 ;;
             --to) :; return 0 ;;
@@ -588,7 +592,7 @@ _taucli() {
             (( COMP_CWORD == i + 1 )) && COMPREPLY=($(compgen -W "inertia spin-down atwood rolling impulse pendulum torque gyro drive flywheel balance" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur"))
             return 0
         fi
-        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --per-run --counts-per-rev --counts --every --no-limit --json --get --to --no-steps --format --uncertainty --plot --out --residuals --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--fit --x --y --sigma --range --per-run --counts-per-rev --counts --bound --scale-covariance --every --no-limit --json --get --to --no-steps --format --uncertainty --plot --out --residuals --help" -- "$cur"))
         ;;
     bench)
         case "$prev" in

@@ -1,7 +1,7 @@
 """Synthetic measurements from the scenes' own forward models, with stated parameters and Gaussian
 noise: the data of docs/fit.md where no published set was found, and of the coverage tests.
 
-    python tests/fit_synthetic.py docs/data      # rewrites docs/data/phyphox-gyroscope.csv
+    python tests/fit_synthetic.py docs/data      # rewrites docs/data/phyphox-gyroscope.csv and damped-swing.csv
 
 and ``docs_tables()`` gives the short tables docs/fit.md shows.
 
@@ -72,6 +72,16 @@ def phyphox_gyroscope(seed: int = 7) -> str:
     return "\n".join(rows) + "\n"
 
 
+def damped_swing(seed: int = 8) -> str:
+    """A 200 g bob on 0.8 m swinging in air (b = 0.004 N·m·s, g = 9.81 m/s²), released from rest at
+    20° 0.35 s before the recording starts: θ(t) at 20 Hz for 15 s, noise 0.004 rad (a rotary
+    sensor's export)."""
+    rng = random.Random(seed)
+    swing = dict(shape="point", mass=0.2, radius=0.8, g=9.81, angle0=math.radians(20), viscous=0.004, start_time=-0.35)
+    rows = [(k / 20, solve("pendulum", **swing, time=k / 20)["theta"] + rng.gauss(0, 0.004)) for k in range(300)]
+    return csv("t (s),theta (rad)", rows, ("g", ".4f"))
+
+
 def docs_tables() -> dict[str, str]:
     """The short tables docs/fit.md shows (``cat``), each from its scene at the parameters named."""
     rng = random.Random(12)
@@ -88,6 +98,11 @@ def docs_tables() -> dict[str, str]:
     torsion = [(m, solve("pendulum", shape="point", mass=m / 1000, radius=0.1, part=["inertia=0.001"], cm_distance=0, torsion=0.01)["period"]
                 + rng.gauss(0, 0.002)) for m in (50, 100, 150, 200, 250)]
     coast = csv("t (s),omega (rad/s)", coast_down([1.5 * i for i in range(12)], 0.05, 11), ("g", ".3f"))
+    rng = random.Random(17)  # lengths to the top of a bob of radius 1.9 cm, periods at 10°
+    lengths = [(length, solve("pendulum", shape="point", mass=0.05, radius=length + 0.019, angle0=math.radians(10), g=9.81)["period"]
+                + rng.gauss(0, 0.002)) for length in (0.3, 0.5, 0.7, 0.9, 1.1)]
+    rng = random.Random(18)  # a coast under drag kω^1.5 alone: k = 0.002 N·m·s^1.5, I = 0.1 kg·m², ω₀ = 30 rad/s
+    drag = [(t, solve("spin-down", inertia=0.1, omega0=30, drag=0.002, drag_exponent=1.5, time=t)["omega"] + rng.gauss(0, 0.05)) for t in range(0, 24, 2)]
     return {
         "coast.csv": coast,
         "coast-de.csv": decimal_comma(coast, "t [s];omega [rad/s]"),
@@ -98,9 +113,12 @@ def docs_tables() -> dict[str, str]:
         "spin-up.csv": csv("t (s),torque (N*m),omega0 (rad/s),omega (rad/s)", spin_up, ("g", "g", "g", ".3f")),
         "periods.csv": csv("amplitude (deg),period (s)", periods, ("g", ".4f")),
         "ramp.csv": csv("angle (deg),length (m),t (s)", ramp, ("g", "g", ".3f")),
+        "lengths.csv": csv("L (m),period (s)", lengths, ("g", ".4f")),
+        "drag.csv": csv("t (s),omega (rad/s)", drag, ("g", ".3f")),
     }
 
 
 if __name__ == "__main__":
     folder = Path(sys.argv[1] if len(sys.argv) > 1 else "docs/data")
     (folder / "phyphox-gyroscope.csv").write_text(phyphox_gyroscope(), encoding="utf-8")
+    (folder / "damped-swing.csv").write_text(damped_swing(), encoding="utf-8")

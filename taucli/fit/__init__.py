@@ -54,12 +54,13 @@ def run(*, env, **given) -> int:
     return command.run(env, given)
 
 
-def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = None, range=(), every=None, per_run=(), counts_per_rev=None, counts=None, stdin=None,
-        **options):
+def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = None, range=(), every=None, per_run=(), counts_per_rev=None, counts=None,
+        stdin=None, scale_covariance: bool = False, bound=(), **options):
     """The fit's Report: ``scene``'s inputs named in ``fit`` ("friction,viscous") fitted to the
     tables ``data`` (file names, pathlib.Path, or open file objects), the scene's other options as
-    keywords (texts with units, or SI numbers; numpy numbers too). Every bad argument raises
-    InputError naming it."""
+    keywords (texts with units, or SI numbers; numpy numbers too); ``scale_covariance=True`` with
+    ``sigma`` scales the covariance by χ²/ν; ``bound="viscous=0..0.01N*m*s"`` (or a list) holds a
+    fitted input within a range. Every bad argument raises InputError naming it."""
     _needs_scipy()
     from taucli.fit import command  # deferred: numpy and scipy with it, only for a fit
 
@@ -76,7 +77,7 @@ def fit(scene: str, *data, fit, x=(), y: str | None = None, sigma: str | None = 
                           y=_text(y, "y", "omega (rad/s)=omega"), sigma=_text(sigma, "sigma", "0.05 rad/s"),
                           ranges=_texts(range, "range", "time=0..10s"), every=every, per_run=_texts(per_run, "per_run", "omega0"),
                           counts_per_rev=_count(counts_per_rev), counts=_text(counts, "counts", "cumulative"), stdin=stdin,
-                          spell=lambda name: name)
+                          spell=lambda name: name, scale_covariance=_flag(scale_covariance, "scale_covariance"), bounds=_texts(bound, "bound", "viscous=0..0.01N*m*s"))
 
 
 def _count(value):
@@ -86,6 +87,12 @@ def _count(value):
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         return repr(value)
     raise InputError("counts_per_rev", "expected the encoder's counts in a revolution, a whole number", example="counts_per_rev=360", got=_shown(value))
+
+
+def _flag(value, name: str) -> bool:
+    if isinstance(value, bool):
+        return value
+    raise InputError(name, "expected True or False", example=f"{name}=True", got=_shown(value))
 
 
 def _shown(value) -> str:

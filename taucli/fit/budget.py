@@ -19,6 +19,7 @@ import math
 import time
 
 from taucli.answering.propagate import OverBudget, solve_time
+from taucli.fit import series
 
 TIMED = 5  # samples timed before the fit, spread over the table
 
@@ -59,7 +60,15 @@ def before(model, p) -> None:
         return
     for i in sorted({round(k * (n - 1) / max(TIMED - 1, 1)) for k in range(min(TIMED, n))}):
         model.value(p, i)
-    kept.plan(n, linear_evaluations(len(p)), len(p))
+    if model.series:  # one run read at every sample's time, where the scene's trajectory gives it (else model.series is cleared)
+        series.predict(model, p)
+    kept.plan(n, linear_evaluations(len(p)), len(p), per_evaluation(model))
+
+
+def per_evaluation(model) -> int:
+    """The solves an evaluation of f at every sample costs, in solves of one sample: n, or about 2
+    where the samples are read off one run to the last sample's time (taucli.fit.series)."""
+    return min(2, model.samples.count) if model.series else model.samples.count
 
 
 class Budget:
@@ -76,11 +85,13 @@ class Budget:
         self.evaluations = 0  # of f at every sample, as planned
         self.inputs = 1
 
-    def plan(self, samples: int, evaluations: int, inputs: int) -> None:
-        """``evaluations`` more of f at every one of ``samples`` (``inputs`` fitted): estimated now,
-        and refused where the whole passes the limit."""
+    def plan(self, samples: int, evaluations: int, inputs: int, per_evaluation: int | None = None) -> None:
+        """``evaluations`` more of f at every one of ``samples`` (``inputs`` fitted), each
+        ``per_evaluation`` solves (one a sample, or 2 for a time series read off one run, which
+        costs about two of its samples' solves: taucli.fit.series): estimated now, and refused
+        where the whole passes the limit."""
         self.samples, self.evaluations, self.inputs = samples, evaluations, inputs
-        self.planned = self.solves + samples * evaluations
+        self.planned = self.solves + (samples if per_evaluation is None else per_evaluation) * evaluations
         self._check()
 
     def timed(self, solve, solves: int = 1):

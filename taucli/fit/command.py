@@ -81,18 +81,22 @@ def _not_taken(command: Command, flag: str, known: list[str]) -> InputError:
 
 
 def fitted(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, per_run=(), counts_per_rev=None, counts=None,
-           stdin=None, spell=None) -> Report:
+           stdin=None, spell=None, scale_covariance: bool = False, bounds=()) -> Report:
     """The fit's report (what the Python API returns: no time limit, as --find's has none there)."""
     return fit_of(scene, files, given, fit=fit, x=x, y=y, sigma=sigma, ranges=ranges, every=every, per_run=per_run, counts_per_rev=counts_per_rev,
-                  counts=counts, stdin=stdin, spell=spell)[0]
+                  counts=counts, stdin=stdin, spell=spell, scale_covariance=scale_covariance, bounds=bounds)[0]
 
 
 def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigma=None, ranges=(), every=None, per_run=(), counts_per_rev=None, counts=None,
-           stdin=None, spell=None, limit: float | None = None, progress=None) -> tuple[Report, solve.Fit]:
+           stdin=None, spell=None, limit: float | None = None, progress=None, scale_covariance: bool = False, bounds=()) -> tuple[Report, solve.Fit]:
     """The fit's report, and the fit itself (for the chart). ``limit`` (seconds) refuses a fit
-    estimated to take longer (taucli.fit.budget); ``progress`` is told the solves done and planned."""
+    estimated to take longer (taucli.fit.budget); ``progress`` is told the solves done and planned;
+    ``scale_covariance``: with ``sigma``, the covariance scaled by χ²/ν."""
     command = _scene(scene)
     spell = spell or command.flag
+    if scale_covariance and sigma is None:
+        raise InputError("scale_covariance", "scales the covariance by χ²/ν where {sigma} gives the samples' uncertainties; without them "
+                         "it is scaled by the residual variance already", example="{sigma} 0.05rad/s {scale_covariance}")
     tables = [data.read(source, stdin) for source in files]
     names = solve.names_of(fit)
     gravity = read(command, {"g": given["g"]})[0].get("g") if given.get("g") is not None else None
@@ -111,10 +115,11 @@ def fit_of(scene: str, files: list[str], given: dict, *, fit, x=(), y=None, sigm
             model, starts = _per_run(model, starts, runs.names(per_run), notes, bound)
         except budget.Spent as spent:  # (one budget for the runs' own fits and the joint one)
             raise spent.refusal from None
+    solve.bounds_of(model, bounds, gravity)  # (after the runs' model: a bound holds for every run's own value too)
     model.budget = bound
     try:
         with np.errstate(all="ignore"):  # numbers past a double's range are looked for where they matter (NaN, inf: refused or said)
-            found = solve.fit(model, starts)
+            found = solve.fit(model, starts, rescale=scale_covariance)
             if runs.names(per_run):  # the starts are the runs' own fits, not values the user gave
                 found.method = found.method.replace("from the starts given", "from each run fitted alone")
             report = results.written(found)
@@ -171,7 +176,8 @@ def run(env, given: dict) -> int:
             report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),
                                    sigma=given.get("sigma"), ranges=tuple(given.get("range") or ()), every=given.get("every"),
                                    per_run=tuple(given.get("per_run") or ()), counts_per_rev=given.get("counts_per_rev"), counts=given.get("counts"), stdin=env.stdin,
-                                   limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress)
+                                   limit=None if given.get("no_limit") else LIMIT_SECONDS, progress=progress,
+                                   scale_covariance=bool(given.get("scale_covariance")), bounds=tuple(given.get("bound") or ()))
     except InputError as err:  # each name by its flag: fit's own (--fit, DATA), else the scene's (--inertia)
         raise InputError("", err.spelled(lambda name: FIT.flag(name) if FIT.option(name) is not None else command.flag(name))) from None
     found.model.budget = None  # the fit is done: the chart's curve and band, and the residuals, are not its time

@@ -20,7 +20,7 @@ import numpy as np
 
 from taucli.answering import pipeline
 from taucli.core.errors import InputError, spelled
-from taucli.fit import arrays
+from taucli.fit import arrays, series
 from taucli.fit.samples import Samples
 from taucli.answering.inputs import read
 from taucli.quantities.measurement import split
@@ -29,7 +29,7 @@ from taucli.writing.report import Report, quantity_text
 from taucli.options.table import Command
 from taucli.answering.unknowns import Unknown
 
-REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError)
+REFUSALS = series.REFUSALS
 KEPT_VALUES = 2**22  # f's values kept for p asked again, over all the p kept (32 MB)
 
 
@@ -67,13 +67,16 @@ class Model:
         self.spreads = dict(spreads or {})
         self.stdin, self.spell = stdin, spell or command.flag
         self.solves = 0
+        self.evaluations = 0  # of f at every sample (predict's, each n solves or one run of a time series)
         self.budget = None  # a taucli.fit.budget.Budget: the time the solves may take
+        self.bounds: dict[str, tuple[float, float]] = {}  # --bound: a fitted input's (low, high), SI
         self.refusal: Exception | None = None
         self._cache: dict[tuple, np.ndarray] = {}
         self._runs = samples.runs if len(samples.runs) else None  # each sample's run, where there are several
         per_run = any(getattr(unknown, "run", None) is not None for unknown in unknowns)
         # f at every sample at once, where the scene has a form on arrays (else None; inputs fitted per run: per sample)
         self.arrays = None if per_run else arrays.of(self)
+        self.series = not per_run and series.usable(self)  # else a time series: one run of the scene per p (taucli.fit.series)
 
     @property
     def names(self) -> list[str]:
@@ -109,11 +112,15 @@ class Model:
         return float(value)
 
     def predict(self, p, moved: Mapping[str, float] | None = None) -> np.ndarray:
-        """f(xᵢ; p) for every sample (kept: the same p is asked for again by the steps and the chart)."""
+        """f(xᵢ; p) for every sample (kept: the same p is asked for again by the steps and the chart);
+        a time series from one run of the scene where its trajectory gives it (taucli.fit.series)."""
         key = (tuple(float(x) for x in p), tuple(sorted((moved or {}).items())))
         found = self._cache.get(key)
         if found is None:
+            self.evaluations += 1
             found = self._on_arrays(p, moved)
+            if found is None and self.series:
+                found = series.predict(self, p, moved)
             if found is None:
                 found = np.array([self.value(p, i, moved) for i in range(self.samples.count)])
             if len(self._cache) >= min(4096, max(4, KEPT_VALUES // max(self.samples.count, 1))):
@@ -150,13 +157,27 @@ class Model:
     def sign(self, j: int) -> str:
         return self.unknowns[j].sign
 
-    def lower(self, j: int) -> float:
-        """The least value p_j may take (its option's sign): 0, or −∞."""
+    def natural_lower(self, j: int) -> float:
+        """The least value p_j's option takes (its sign): 0, or −∞."""
         return -math.inf if self.sign(j) == "any" else 0.0
 
+    def lower(self, j: int) -> float:
+        """The least value p_j may take: its option's (0, or −∞), or the --bound given, the larger."""
+        return max(self.natural_lower(j), self.bounds.get(self.names[j], (-math.inf, math.inf))[0])
+
+    def upper(self, j: int) -> float:
+        """The largest value p_j may take: the --bound given, or +∞."""
+        return self.bounds.get(self.names[j], (-math.inf, math.inf))[1]
+
     def allowed(self, j: int, x: float) -> bool:
-        low = self.lower(j)
-        return math.isfinite(x) and (x > low if self.sign(j) == "positive" else x >= low)
+        low = self.natural_lower(j)
+        user_low, user_high = self.bounds.get(self.names[j], (-math.inf, math.inf))
+        return math.isfinite(x) and (x > low if self.sign(j) == "positive" else x >= low) and user_low <= x <= user_high
+
+    def on_user_bound(self, j: int, x: float, tolerance: float) -> bool:
+        """p_j = x lies on a --bound (within ``tolerance``) that is not its option's own."""
+        user_low, user_high = self.bounds.get(self.names[j], (-math.inf, math.inf))
+        return (user_low > self.natural_lower(j) and x - user_low <= tolerance) or user_high - x <= tolerance
 
     def why_refused(self) -> str:
         err = self.refusal

@@ -38,19 +38,23 @@ def minimize(model: Model, y: np.ndarray, sigma: np.ndarray | None, p0: np.ndarr
     weights = 1.0 / sigma if sigma is not None else np.ones(len(y))
     scale = np.where(np.abs(p0) > 0, np.abs(p0), 1.0)
     lower = np.array([model.lower(j) / scale[j] for j in range(len(p0))])
+    upper = np.array([model.upper(j) / scale[j] for j in range(len(p0))])
     large = PENALTY * (float(np.max(np.abs(y * weights))) + 1.0)
-    before = model.solves
+    before = model.evaluations
 
     def residuals(u: np.ndarray) -> np.ndarray:
         r = (model.predict(u * scale) - y) * weights
         return np.where(np.isfinite(r) & (np.abs(r) < large), r, large)  # (no value, or past the penalty: the penalty, so that the search's differences stay finite)
 
-    found = least_squares(residuals, p0 / scale, bounds=(lower, np.full(len(p0), np.inf)), method="trf", jac="2-point", diff_step=1e-7,
+    found = least_squares(residuals, p0 / scale, bounds=(lower, upper), method="trf", jac="2-point", diff_step=1e-7,
                           x_scale=1.0, ftol=TOLERANCE, xtol=TOLERANCE, gtol=TOLERANCE, max_nfev=MOST_EVALUATIONS)
     p = found.x * scale
     # on its bound, or within AT_BOUND of its start's size of it (the reflective search nears a bound without reaching it)
-    at_bound = [j for j in range(len(p)) if found.active_mask[j] != 0 or (model.sign(j) != "any" and p[j] <= lower[j] * scale[j] + AT_BOUND * scale[j])]
-    evaluations = (model.solves - before) // max(model.samples.count, 1)
+    # (a --bound the search ends on is said, not held: taucli.fit.solve)
+    near = [AT_BOUND * scale[j] for j in range(len(p))]
+    at_bound = [j for j in range(len(p)) if not model.on_user_bound(j, p[j], near[j])
+                and (found.active_mask[j] != 0 or (model.sign(j) != "any" and p[j] <= lower[j] * scale[j] + near[j]))]
+    evaluations = model.evaluations - before
     return Outcome(p, found.status > 0, str(found.message), evaluations, int(found.nfev), at_bound)
 
 

@@ -171,6 +171,7 @@ class Quality:
     lag: tuple[float, float] | None  # (r₁, z)
     degeneracy: Degeneracy
     chi2_low: float | None = None  # the chance of a χ² this small or smaller
+    rescaled: bool = False  # uncertainties given, and the covariance scaled by χ²/ν all the same (--scale-covariance)
 
     @property
     def runs_weak(self) -> bool:
@@ -230,9 +231,11 @@ class Quality:
 
 
 def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray | None, order: np.ndarray, names: list[str], p: np.ndarray,
-           scale: np.ndarray | None = None) -> Quality:
+           scale: np.ndarray | None = None, *, rescale: bool = False) -> Quality:
     """The covariance and the diagnostics of a fit (J unweighted; ``sigma`` each sample's σ or None;
-    ``scale`` each input's natural size, for the test of inputs the samples do not depend on)."""
+    ``scale`` each input's natural size, for the test of inputs the samples do not depend on;
+    ``rescale``: with σ given, the covariance scaled by χ²/ν all the same, (χ²/ν)(JᵀWJ)⁻¹, as
+    lmfit does by default: the σ given then weigh the samples, their scatter sets the size)."""
     n, m = J.shape
     r = y - fitted
     weights = 1.0 / sigma if sigma is not None else np.ones(n)
@@ -247,7 +250,8 @@ def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray |
     chi2 = float(np.sum((r * weights) ** 2)) if sigma is not None else None
     dof = n - m
     s2 = (chi2 if chi2 is not None else rss) / dof
-    covariance = inverse if sigma is not None else inverse * s2
+    rescaled = rescale and sigma is not None
+    covariance = inverse if sigma is not None and not rescaled else inverse * s2
     tss = float(np.sum((y - np.mean(y)) ** 2))
     chi2_p = chi2_low = None
     if chi2 is not None:
@@ -256,7 +260,25 @@ def assess(y: np.ndarray, fitted: np.ndarray, J: np.ndarray, sigma: np.ndarray |
         chi2_p, chi2_low = float(chdtrc(dof, chi2)), float(chdtr(dof, chi2))
     ordered = r[np.argsort(order, kind="stable")]
     return Quality(n, m, r, covariance, sigma is None, s2, math.sqrt(rss / n), 1.0 - rss / tss if tss > 0 else None, chi2,
-                   chi2 / dof if chi2 is not None else None, chi2_p, runs_test(ordered), lag_test(ordered), found, chi2_low)
+                   chi2 / dof if chi2 is not None else None, chi2_p, runs_test(ordered), lag_test(ordered), found, chi2_low, rescaled)
+
+
+INTERVAL = 0.95  # the two-sided interval given beside ±1σ where σ comes from the residuals' scatter
+
+
+def student_t(dof: float, level: float = INTERVAL) -> float:
+    """Student's t quantile: the half-width of a ``level`` interval in units of σ for ν = ``dof``
+    (12.71 for ν = 1, 2.776 for 4, 2.228 for 10, 1.96 as ν → ∞)."""
+    from scipy.stats import t as student  # deferred: scipy.stats, only where σ is from the scatter
+
+    return float(student.ppf(0.5 + level / 2, dof))
+
+
+def effective_dof(dof: int, scatter: float, total: float) -> float:
+    """Welch–Satterthwaite: the degrees of freedom of a variance ``total`` whose part ``scatter``
+    has ν = ``dof`` and the rest (held inputs' uncertainties, known) infinitely many:
+    ν_eff = ν (total/scatter)²."""
+    return math.inf if not scatter > 0 else dof * (total / scatter) ** 2
 
 
 def lag_test(residuals: np.ndarray) -> tuple[float, float] | None:

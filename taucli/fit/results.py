@@ -61,6 +61,11 @@ def written(found: Fit) -> Measured:
         name = model.names[j]
         results[f"{name}_upper95"] = Value(float(found.p[j] + solve.UPPER * sigma[j]), units_of[j],
                                            f"one-sided 95 % upper limit of {name}, at its bound: bound + {solve.UPPER:.3f}σ")
+    if fitted.scaled or fitted.rescaled:  # σ from the residuals' scatter: a 95 % interval from Student's t beside ±1σ
+        for j, unknown in enumerate(model.unknowns):
+            if j not in found.bounded and j not in found.on_bound:
+                results[f"{unknown.name}_ci95"] = _interval(found, j, float(sigma[j]), units_of[j])
+    results = {key: results[key] for name in model.names for key in (name, f"{name}_ci95", f"{name}_upper95") if key in results}  # each beside its input
     tables = {}
     if len(model.unknowns) > 1:
         rho = [[round(float(x), 6) for x in row] for row in fitted.correlation]
@@ -78,7 +83,8 @@ def written(found: Fit) -> Measured:
     notes += _warnings(found, sigma)
     scene, scene_notes = _scene(found, results, spreads)
     method = found.method + ("; uncertainties from the covariance scaled by the residual variance (no uncertainty given for the samples)"
-                             if fitted.scaled else f"; uncertainties from the covariance with the samples' uncertainties ({samples.sigma_source})")
+                             if fitted.scaled else f"; uncertainties from the covariance with the samples' uncertainties ({samples.sigma_source})"
+                             + (f" scaled by χ²/ν = {fmt(fitted.chi2_dof, 4)} (--scale-covariance)" if fitted.rescaled else ""))
     if scene is None:
         return Measured("fit", f"{model.command.name}: fitted", method, results, steps, [*notes, *scene_notes], {}, tables, None,
                         uncertainties=spreads, input_uncertainties=dict(model.spreads))
@@ -88,6 +94,16 @@ def written(found: Fit) -> Measured:
         [*notes, *scene_notes, *scene.notes], scene.inputs, {**tables, **scene.tables}, None,
         uncertainties=spreads, input_uncertainties=dict(model.spreads),
     )
+
+
+def _interval(found: Fit, j: int, spread: float, unit: str) -> Value:
+    """The half-width of input j's 95 % interval, t·σ: Student's t for the residuals' ν = n − m, or
+    where held inputs' uncertainties (known, ν = ∞) add to σ, for Welch–Satterthwaite's ν_eff."""
+    fitted, name = found.quality, found.model.names[j]
+    dof = quality.effective_dof(fitted.dof, math.sqrt(max(fitted.covariance[j, j], 0.0)), spread)
+    t = quality.student_t(dof)
+    shown = f"ν = {fitted.dof}" if dof == fitted.dof else f"ν_eff = {fmt(dof, 3)}, Welch–Satterthwaite"
+    return Value(t * spread, unit, f"95 % interval: {name} ± this (Student's t, {shown}: {t:.3f}σ)")
 
 
 def _scene(found: Fit, results: dict[str, Value], spreads: dict[str, float]) -> tuple[Report | None, list[str]]:
@@ -189,6 +205,11 @@ def _uncertainty_step(found: Fit, sigma: np.ndarray) -> Step:
         equation = "C = s²(JᵀJ)⁻¹,  s² = Σrᵢ²/(n − m)"
         numbers = f"s² = {fmt(fitted.s2)} {squared(unit)}, n = {fitted.n}, m = {fitted.m}".replace(" ,", ",")
         why = "no uncertainty was given for the samples: the scatter of the residuals about the fit stands in for it"
+    elif fitted.rescaled:
+        equation = "C = (χ²/ν)(JᵀWJ)⁻¹,  W = diag(1/σᵢ²),  χ²/ν = Σ(rᵢ/σᵢ)²/(n − m)"
+        numbers = f"σᵢ from {model.samples.sigma_source}, χ²/ν = {fmt(fitted.s2, 4)}, n = {fitted.n}, m = {fitted.m}"
+        why = ("--scale-covariance: the uncertainties given weigh the samples, and the scatter of the residuals sets the size "
+               "(as lmfit does by default)")
     else:
         equation = "C = (JᵀWJ)⁻¹,  W = diag(1/σᵢ²)"
         numbers = f"σᵢ from {model.samples.sigma_source}, n = {fitted.n}, m = {fitted.m}"
@@ -318,6 +339,10 @@ def _warnings(found: Fit, sigma: np.ndarray) -> list[str]:
                      f"lies at or past it, within noise), so it is given there with its one-sided 95 % upper limit, {name} ≤ "
                      f"{quantity_text(float(found.p[j] + solve.UPPER * sigma[j]), unit, 3)} (bound + {solve.UPPER:.3f}σ, σ = {fmt(sigma[j], 2)}); "
                      "the other inputs are fitted with it there")
+    for j in found.on_bound:
+        name, unit = model.names[j], units.KINDS[model.unknowns[j].kind].si_unit
+        notes.append(f"warning: {name} ends on the bound given (--bound), {quantity_text(float(found.p[j]), unit)}: the samples ask for a value "
+                     "past it, so the fit is the best within it, and its uncertainty is the curvature's there, not an interval about the samples' best")
     for j, (name, value, s) in enumerate(zip(model.names, found.p, sigma)):
         if s > abs(value) and j not in found.bounded:
             notes.append(f"{name} is not determined better than its own size ({fmt(value, 3)} ± {fmt(s, 2)}): the samples barely depend on it")

@@ -46,6 +46,7 @@ class Fit:
     starts: list[str] = field(default_factory=list)  # how each input's start was found: "given", "closed form", "root"
     bounded: list[int] = field(default_factory=list)  # the inputs held at their bound (0), the samples asking for no more
     rivals: list[tuple[np.ndarray, float]] = field(default_factory=list)  # other minima from other starts that fit as well: (p, χ²)
+    on_bound: list[int] = field(default_factory=list)  # the inputs that ended on a --bound given (the samples ask for a value past it)
 
 
 def names_of(text) -> list[str]:
@@ -85,7 +86,8 @@ def model_of(command: Command, given: dict, names: list[str], samples: Samples, 
     return model, starts, notes
 
 
-def fit(model: Model, starts: dict[str, float]) -> Fit:
+def fit(model: Model, starts: dict[str, float], *, rescale: bool = False) -> Fit:
+    """The fit from the starts; ``rescale``: with σ given, the covariance scaled by χ²/ν (taucli.fit.quality.assess)."""
     samples = model.samples
     n, m = samples.count, len(model.unknowns)
     if n <= m:
@@ -117,7 +119,7 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         steps.append(_linear_step(model, shape, n))
     else:
         if model.budget is not None:
-            model.budget.plan(n, budget.nonlinear_evaluations(m), m)
+            model.budget.plan(n, budget.nonlinear_evaluations(m), m, budget.per_evaluation(model))
         searches, refusals = [], []
         for number, (q0, q_steps, q_how) in enumerate(candidates):
             if number and not _worth(model, q0, [c[0] for c in candidates[:number]], y, sigma):
@@ -135,11 +137,15 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
         p, bounded, J, outcome = search.p, search.bounded, search.J, search.outcome
         started = "a closed-form start" if "closed form" in how else "the starts given" if set(how) == {"given"} else "a start from single samples"
         method = f"bounded nonlinear least squares (trust region reflective, scipy.optimize.least_squares) from {started}"
+    on_bound = [j for j in range(m) if model.on_user_bound(j, p[j], USER_BOUND * natural[j])]
+    for j in on_bound:  # on it (the reflective search nears a bound without reaching it)
+        p[j] = model.lower(j) if p[j] - model.lower(j) <= model.upper(j) - p[j] else model.upper(j)
     _refuse_not_finite(model, J / sigma[:, None] if sigma is not None else J, p)
     order = np.asarray(samples.inputs[samples.varying[0]] if samples.varying else np.arange(n), dtype=float)
-    found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p, natural)
+    found = quality.assess(y, model.predict(p), J, sigma, order, model.names, p, natural, rescale=rescale)
     for j in range(m):  # nearer its bound than a millionth of its σ (the reflective search nears a bound without reaching it): on it
-        if j not in bounded and model.sign(j) == "nonnegative" and p[j] - model.lower(j) <= NEAR_BOUND * math.sqrt(max(found.covariance[j, j], 0.0)):
+        if (j not in bounded and model.sign(j) == "nonnegative" and p[j] - model.natural_lower(j) <= NEAR_BOUND * math.sqrt(max(found.covariance[j, j], 0.0))
+                and not model.on_user_bound(j, p[j], NEAR_BOUND * natural[j])):
             p, held = _at_bound(model, [*bounded, j], p, y, sigma, natural)
             bounded = held
     covariance, from_held = _with_held(model, p, J, sigma, found.covariance)
@@ -151,12 +157,39 @@ def fit(model: Model, starts: dict[str, float]) -> Fit:
             ("min Σᵢ ((yᵢ − f(xᵢ; p))/σᵢ)²" if sigma is not None else "min Σᵢ (yᵢ − f(xᵢ; p))²") + f" over {', '.join(_bound(model, j) for j in range(m))}",
             result=", ".join(f"{u.name} = {quantity_text(value, units.KINDS[u.kind].si_unit, digits_known(value, uncertainty))}"
                              for u, value, uncertainty in zip(model.unknowns, p, spread)),
-            why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, {_count(outcome.evaluations, 'solve')} of the scene per sample "
-            f"(its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them; "
+            why=f"trust region reflective (scipy) from the start: {_count(outcome.iterations, 'step')}, "
+            + (f"{_count(outcome.evaluations, 'run')} of the scene, each read at every sample's time" if model.series
+               else f"{_count(outcome.evaluations, 'solve')} of the scene per sample")
+            + f" (its Jacobian by differences); it stops where a step changes the sum or p by less than {nonlinear.TOLERANCE:g} of them; "
             f"shown to a thousandth of each one's uncertainty (the digits past that are the search's rounding)"
             + (f"; searched from {len(searches)} starts, this the least sum" if len(searches) > 1 else ""),
         ))
-    return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how, bounded, rivals)
+    return Fit(model, p, found, covariance, from_held, is_linear, method, steps, how, bounded, rivals, on_bound)
+
+
+USER_BOUND = 1e-6  # of an input's natural size: this near a --bound, the fit ends on it
+
+
+def bounds_of(model: Model, texts, gravity=None) -> None:
+    """--bound NAME=FROM..TO for fitted inputs (either end open), read in the input's kind: model.bounds."""
+    for text in texts or ():
+        name, sep, span = str(text).partition("=")
+        low_text, dots, high_text = span.partition("..")
+        name = name.strip().lstrip("-").replace("-", "_")
+        if not sep or not dots:
+            raise InputError("bound", "expected NAME=FROM..TO, a fitted input and its range", example="{bound} 'viscous=0..0.01N*m*s'", got=repr(text))
+        if name not in model.names:
+            raise InputError("bound", f"expected an input named in {{fit}} ({', '.join(model.names)}); one held fixed is given as the scene's option",
+                             example="{bound} 'viscous=0..0.01N*m*s'", got=repr(name))
+        if name in model.bounds:
+            raise InputError("bound", f"is given twice for {name}", got=repr(text))
+        kind = model.unknowns[model.names.index(name)].kind
+        ends = [default if not part.strip() else units.parse(part, "{bound}", kind, sign="any", gravity=gravity).value
+                for part, default in ((low_text, -math.inf), (high_text, math.inf))]
+        j = model.names.index(name)
+        if not ends[0] < ends[1] or ends[1] <= model.natural_lower(j):
+            raise InputError("bound", f"expected FROM below TO, and TO above {name}'s least value", example="{bound} 'viscous=0..0.01N*m*s'", got=repr(text))
+        model.bounds[name] = (ends[0], ends[1])
 
 
 SAME_COST = 1e-8  # two minima whose sums differ by less than this of them are one (the first start's is kept)
@@ -325,6 +358,9 @@ def _at_first(model: Model, p: np.ndarray) -> str:
 def _bound(model: Model, j: int) -> str:
     name = model.names[j]
     sign = model.sign(j)
+    if name in model.bounds:  # --bound
+        low, high = model.lower(j), model.upper(j)
+        return (f"{fmt(low)} ≤ " if math.isfinite(low) else "") + name + (f" ≤ {fmt(high)}" if math.isfinite(high) else "")
     return f"{name} {'> 0' if sign == 'positive' else '≥ 0' if sign == 'nonnegative' else 'free'}"
 
 
@@ -347,7 +383,7 @@ def _at_bound(model: Model, at: list[int], p: np.ndarray, y: np.ndarray, sigma, 
         _refuse_bound(model, strict, p)
     p = np.array(p, dtype=float)
     for j in at:
-        p[j] = model.lower(j)
+        p[j] = model.natural_lower(j)
     J = quality.jacobian(model, p, scale=natural)
     weights = 1.0 / sigma if sigma is not None else np.ones(len(y))
     r = (y - model.predict(p)) * weights

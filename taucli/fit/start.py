@@ -35,7 +35,7 @@ import numpy as np
 from taucli.numerics import roots
 from taucli.quantities import units
 from taucli.core.errors import InputError
-from taucli.fit import swing
+from taucli.fit import decay, swing
 from taucli.fit.model import Model
 from taucli.writing.report import Step, fmt, quantity_text
 from taucli.scenes.assumed import STANDARD_GRAVITY
@@ -166,7 +166,7 @@ def _rolling(model: Model) -> tuple[dict[str, float], Step] | None:
 def _spin_down(model: Model) -> tuple[dict[str, float], Step] | None:
     plain = ("brake", "face", "power", "alpha", "ke0", "rim_speed", "force", "in_time", "until_omega", "until_angle", "until_arc")
     sought = set(model.names)
-    if any(name in model.held for name in plain) or not sought <= {"friction", "viscous", "drag", "omega0", "torque", "inertia"}:
+    if any(name in model.held for name in plain) or not sought <= {"friction", "viscous", "drag", "drag_exponent", "omega0", "torque", "inertia"}:
         return None
     if set(model.samples.inputs) != {"time"} or model.samples.y_key not in ("omega", "theta", "revs"):
         return None
@@ -187,12 +187,20 @@ def _spin_down(model: Model) -> tuple[dict[str, float], Step] | None:
     def integral(values: np.ndarray) -> np.ndarray:
         return np.concatenate([[0.0], np.cumsum((values[1:] + values[:-1]) / 2 * np.diff(t))])
 
-    columns = {"level": np.ones(len(t)), "rate": t - t[0]}
-    if "viscous" in sought or given("viscous"):
-        columns["viscous"] = integral(omega)
-    if "drag" in sought or given("drag"):
-        columns["drag"] = integral(sign * np.abs(omega) ** n)
-    c = _regress(columns, omega)
+    def regressed(n: float) -> dict[str, float] | None:
+        columns = {"level": np.ones(len(t)), "rate": t - t[0]}
+        if "viscous" in sought or given("viscous"):
+            columns["viscous"] = integral(omega)
+        if "drag" in sought or given("drag"):
+            columns["drag"] = integral(sign * np.abs(omega) ** n)
+        return _regress(columns, omega)
+
+    if "drag_exponent" in sought:  # n itself is not linear: the n whose regression leaves the least squares
+        n = _exponent(regressed, lambda c, n: omega - c["level"] - c["rate"] * (t - t[0]) - c.get("viscous", 0.0) * integral(omega)
+                      - c.get("drag", 0.0) * integral(sign * np.abs(omega) ** n))
+        if n is None:
+            return None
+    c = regressed(n)
     if c is None:
         return None
     inertia = model.si.get("inertia")
@@ -219,10 +227,12 @@ def _spin_down(model: Model) -> tuple[dict[str, float], Step] | None:
         found["viscous"] = -inertia * c["viscous"]
     if "drag" in sought:
         found["drag"] = -inertia * c["drag"]
+    if "drag_exponent" in sought:
+        found["drag_exponent"] = n
     if "omega0" in sought:
         slope = c["rate"] + c.get("viscous", 0.0) * omega[0] + c.get("drag", 0.0) * sign * abs(omega[0]) ** n
         found["omega0"] = c["level"] - slope * t[0]
-    terms = "((τ − τ_f)/I)(t − t₁)" + (" − (b/I)∫ω dt" if "viscous" in columns else "") + (" − (k/I)∫ωⁿ dt" if "drag" in columns else "")
+    terms = "((τ − τ_f)/I)(t − t₁)" + (" − (b/I)∫ω dt" if "viscous" in c else "") + (" − (k/I)∫ωⁿ dt" if "drag" in c else "")
     return found, Step(
         "A start from the equation of motion, integrated over the samples",
         f"ω(t) − ω(t₁) = {terms}",
@@ -231,12 +241,34 @@ def _spin_down(model: Model) -> tuple[dict[str, float], Step] | None:
         model.shown(found),
         "I dω/dt = τ − τ_f − bω − kωⁿ integrated from the first sample is linear in its coefficients: least squares over the "
         f"{len(t)} samples where it turns" + (" (ω from the differences of θ)" if model.samples.y_key != "omega" else "")
-        + ", the integrals of ω by the trapezoid rule (integrating smooths the noise that differentiating would raise)",
+        + ", the integrals of ω by the trapezoid rule (integrating smooths the noise that differentiating would raise)"
+        + ("; n, which enters otherwise, is the one of 0.1 to 10 whose least squares leaves the least residual" if "drag_exponent" in sought else ""),
     )
 
 
+EXPONENTS = np.linspace(0.1, 10.0, 100)  # the drag exponents tried for a start (its option takes 0 < n ≤ 10), then refined about the best
+
+
+def _exponent(regressed, residual) -> float | None:
+    """The drag exponent n whose regression ``regressed(n)`` leaves the least sum of squares: on
+    EXPONENTS, then on a grid a hundredth as fine about the best (each a least squares of the
+    samples alone, no solve of the scene)."""
+    def squares(n: float) -> float:
+        c = regressed(n)
+        if c is None or "drag" not in c:
+            return math.inf
+        r = residual(c, n)
+        return float(np.sum(r**2)) if np.all(np.isfinite(r)) else math.inf
+
+    best = min(EXPONENTS, key=squares)
+    step = float(EXPONENTS[1] - EXPONENTS[0])
+    best = min(np.linspace(max(best - step, 0.01), best + step, 41), key=squares)
+    return float(best) if math.isfinite(squares(best)) else None
+
+
 CLOSED: dict[str, Callable[[Model], tuple[dict[str, float], Step] | None]] = {
-    "spin-down": _spin_down, "atwood": _atwood, "rolling": _rolling, "pendulum": swing.pendulum,
+    "spin-down": _spin_down, "atwood": _atwood, "rolling": _rolling,
+    "pendulum": lambda model: decay.start(model) if decay.damped(model) else swing.pendulum(model),  # a damped swing's, or a swing's
 }
 ALTERNATIVES: dict[str, Callable[[Model], list[tuple[dict[str, float], Step]]]] = {"pendulum": swing.alternatives}  # other closed-form starts
 
@@ -323,6 +355,11 @@ def start(model: Model, given: dict[str, float]) -> tuple[np.ndarray, list[Step]
                 f"at the first sample, measured {quantity_text(model.samples.y[0], model.samples.y_unit)})") if math.isfinite(first) else ""
         raise InputError("fit", f"finds no start for {name}: no value of it alone meets the samples tried{said}",
                          hint=f"is an input missing? Else give a start beside --fit, e.g. --{name.replace('_', '-')} VALUE")
+    for j in range(len(names)):  # a start outside a --bound is moved just inside it
+        low, high = model.lower(j), model.upper(j)
+        if names[j] in model.bounds and (p[j] < low or p[j] > high) and (p[j] > high or low > model.natural_lower(j)):
+            width = high - low if math.isfinite(high - low) else max(abs(low if math.isfinite(low) else high), 1e-300)
+            p[j] = low + 1e-3 * width if p[j] < low else high - 1e-3 * width
     for j in range(len(names)):  # a start at or past a bound is moved just inside it (the fit moves within the bounds)
         if not model.allowed(j, p[j]) or (model.sign(j) != "any" and p[j] <= 0):
             p[j] = _inside(model, j, p)

@@ -44,6 +44,10 @@ COMMAND = Command(
                metavar="N", panel=DATA),
         Option("counts", CHOICE, "An encoder's counts: cumulative (since the start) or interval (in each row's interval, since the row before).",
                choices=("cumulative", "interval"), panel=DATA),
+        Option("bound", TEXT, "A range a fitted input is held within, e.g. 'viscous=0..0.01N*m*s' or g=9.5..10.1 (repeatable; either end may be "
+               "left open). An input held fixed is not fitted: give it as the scene's option instead.", repeatable=True, metavar="NAME=FROM..TO", panel=DATA),
+        Option("scale_covariance", FLAG, "With --sigma: scale the covariance by χ²/ν (lmfit's default), so the σ given weigh the samples "
+               "and their scatter sets the uncertainties.", panel=DATA),
         Option("every", TEXT, "Use every Nth sample only (a long export), e.g. 10.", metavar="N", panel=DATA),
         Option("no_limit", FLAG, "Run the fit however long it is estimated to take (else refused past 60 s).", panel=DATA),
     ),

@@ -13,13 +13,19 @@ COMMAND = Command(
     options=(
         *(SIGNED_PARTS if option is PARTS else option for option in BODY_OPTIONS),
         Option("cm_distance", "length", "Distance d from the pivot to the centre of mass (else from the shape and --offset).", sign="nonnegative"),
+        Option("length_offset", "length", "Added to the distance from the pivot to the centre of mass, the body moved along that line (a length "
+               "measured to the top of a bob is short by its radius), e.g. 1.9cm; fit it with --fit length_offset.", sign="any"),
         Option("angle0", "angle", "Starting angle from the downward vertical (90deg: horizontal; with --from-top, from the upward one).", sign="any", default="0", panel=MOTION),
         Option("omega0", "angular velocity", "Starting angular velocity, positive toward larger angles.", sign="any", default="0", panel=MOTION),
         Option("omega_bottom", "angular velocity", "Angular velocity at the bottom, where it starts (instead of --angle0 and --omega0): how far it swings.", sign="any", panel=MOTION),
         Option("from_top", FLAG, "Every angle in and out from the upward vertical, in the same sense (a toppling chimney, a falling stick; gravity alone).", panel=MOTION),
         Option("torsion", "torsion constant", "Torsion constant κ of a spring or wire (torque κθ), e.g. '0.5N*m/rad'.", sign="nonnegative"),
+        Option("viscous", "viscous coefficient", "Damping torque bω against the swing (air, a pivot's grease), e.g. '2e-4N*m*s': θ and ω at "
+               "--time by rk45 (or --method small-angle), and the decay; the answers energy gives do not hold.", sign="nonnegative"),
         Option("pivot_friction", "torque", "A friction couple at the pivot: a constant torque against the motion (a rough axle), e.g. '4.8N*m'.", sign="nonnegative"),
         GRAVITY,
+        Option("start_time", "time", "Clock time of the start (θ = --angle0, ω = --omega0 there): --time is read on the same clock, and before "
+               "the start the body is held at --angle0, e.g. 0.35s (a recording started before the release).", sign="any", panel=MOTION),
         Option("angle", "angle", "Report ω and the time to reach this angle, e.g. 0deg.", sign="any", panel=MOTION, first_reached=("t_angle", "angle0")),
         Option("time", "time", "Report θ and ω at this time, e.g. 2s.", sign="nonnegative", panel=MOTION),
         Option("at", "length", "A point this far from the pivot: its tangential acceleration at the start, and its speed and accelerations at --angle.", sign="nonnegative", panel=MOTION),
@@ -62,6 +68,8 @@ COMMAND = Command(
         Result("goes_over", None, "whether it goes over the top"),
         Result("omega0_over", "rad/s", "starting speed that just reaches the top"),
         Result("theta", "rad", "angle…", needs=("time",)),
+        Result("decay_time", "s", "decay time of small swings' amplitude, τ = 2I/b (e^(−t/τ))", needs=("viscous",)),
+        Result("quality_factor", "", "quality factor of small swings, Q = Ω₀I/b", needs=("viscous",)),
         Result("a_t0", "m/s**2", "tangential acceleration at the start of the point…", needs=("at",)),
         Result("v_t", "m/s", "speed of the point…"),
         Result("a_t", "m/s**2", "tangential acceleration of the point…"),

@@ -31,7 +31,9 @@ from taucli.options.pendulum import COMMAND as TABLE
 from taucli.options.pendulum import COMPONENTS
 from taucli.writing.report import DeferredSteps, Report, deferred, fmt
 from taucli.scenes.assumed import Assumed
-from taucli.scenes.pendulum.body import on_pivot, read_body
+from taucli.scenes.pendulum import clock
+from taucli.scenes.pendulum.body import moved, on_pivot, read_body
+from taucli.scenes.pendulum.damped_scene import damped_swing
 from taucli.scenes.pendulum.exact import exact_model
 from taucli.scenes.pendulum.harmonic import Harmonic
 from taucli.scenes.pendulum.motion import choose, pick_model, put_motion, put_state, solve, trajectory
@@ -60,13 +62,16 @@ def pendulum(
     gyration: float | None = None,
     density=None,
     cm_distance: float | None = None,
+    length_offset: float | None = None,
     angle0: float | None = None,
     omega0: float | None = None,
     omega_bottom: float | None = None,
     from_top: bool | None = None,
     torsion: float | None = None,
+    viscous: float | None = None,
     pivot_friction: float | None = None,
     g: float | None = None,
+    start_time: float | None = None,
     angle: float | None = None,
     time: float | None = None,
     at: float | None = None,
@@ -92,10 +97,18 @@ def pendulum(
     angle0, angle = zero.inward(angle0), zero.inward(angle)
     if omega_bottom is not None:
         angle0, omega0 = start_at_the_bottom(omega_bottom, angle0, omega0, zero)
-    body = read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion, assumed, gyration, density)
+    body = moved(read_body(inertia, shape, mass, axis, offset, part, cm_distance, dims, torsion, assumed, gyration, density), length_offset)
     swing, gravity = on_pivot(body, torsion, g, angle0, omega0, angle, assumed)
+    if pivot_friction and (viscous is not None or start_time is not None):
+        raise InputError("pivot_friction", "is not taken with {viscous} or {start_time} yet: a rough pivot's swing is stepped leg by leg "
+                         "from its own start", hint="give one of them")
     if pivot_friction:
         return assumed.applied(rough_report(body, swing, gravity, pivot_friction, method, rtol, angle, time, at, bool(components), body.words, zero))
+    since = clock.since(time, start_time, swing)
+    if viscous is not None:
+        return assumed.applied(damped_swing(swing, body, viscous, method or "auto", dt or DEFAULT_DT, rtol or DEFAULT_RTOL, time, since, start_time,
+                                            zero, angle=angle, at=at, components=components))
+    clocked, time = time, since  # the motion's own time from here (the clock's where --start-time is given)
     method = choose(method or "auto", swing.gravity_torque > 0, swing.torsion > 0)
     dt, rtol = dt or DEFAULT_DT, rtol or DEFAULT_RTOL
     results = Results(TABLE)
@@ -105,7 +118,9 @@ def pendulum(
     put_energy(results, notes, swing, body.cm_distance, angle, exact, zero)  # energy and the exact motion: the same for every method
     put_reach(results, notes, swing, body.cm_distance, exact, zero)
     model = pick_model(swing, method, exact, dt, rtol)
-    motion = solve(model, exact, method, angle, time, notes)
+    motion = solve(model, exact, method, angle, time if not (time is not None and time < 0) else None, notes)
+    if time is not None and time < 0:  # before the start: held at θ₀
+        motion = motion._replace(state=(swing.theta0, 0.0))
 
     put_motion(results, notes, swing, exact, method, motion, angle, zero)
     speed_at_angle = results["omega"].value if angle is not None else None
@@ -113,16 +128,19 @@ def pendulum(
     if not components:
         for key in COMPONENTS:
             results.pop(key, None)
-    put_state(results, notes, motion.state, angle, time, zero)
+    put_state(results, notes, motion.state, angle, clocked, zero)
     if method == "small-angle" and swing.gravity_torque:
         notes.append(small_angle_note(swing, exact))
-    if isinstance(model, Stepped):
+    if isinstance(model, Stepped) and not (time is not None and time < 0):
         withhold_if_off(results, notes, model, exact, motion.period, motion.t_bottom, motion.state, time, angle, zero)
+    if start_time is not None and clocked is not None:
+        notes.append(clock.note(clocked, start_time))
 
     steps = DeferredSteps(worked_steps, swing, body.mass, body.cm_distance, gravity, body.steps, dict(results), exact, method, angle, zero)
     report = Report(
         "pendulum", model_words(swing, method, exact, body.words), method_words(swing, method, dt, rtol), results, steps, notes,
-        trajectory=deferred(trajectory, model, time, motion.period, motion.t_bottom, zero),
+        trajectory=deferred(clock.on_clock, deferred(trajectory, model, time if time is None or time > 0 else None, motion.period, motion.t_bottom, zero),
+                            start_time, zero.outward(swing.theta0)),
     )
     if at is not None:
         put_point(report, swing, at, angle, gravity, zero)

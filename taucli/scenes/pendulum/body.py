@@ -116,3 +116,25 @@ def _past_half_turn(angle: float) -> str:
     degrees = math.degrees(angle)
     shown = fmt(degrees)
     return f"{shown if abs(float(shown.replace('−', '-'))) > 180 else repr(degrees)} deg"
+
+
+def moved(body: Body, length_offset: float | None) -> Body:
+    """The body moved away from the pivot by δ = --length-offset along the line to its centre of
+    mass (a length measured to the top of a bob is short by the bob's radius): d = d₀ + δ and, by
+    the parallel-axis theorem (I = I_cm + md²), I = I₀ + m((d₀ + δ)² − d₀²) = I₀ + mδ(2d₀ + δ)."""
+    if not length_offset:
+        return body
+    if body.mass is None:
+        raise InputError("length_offset", "moves the body's centre of mass, which needs its {mass} (I = I_cm + md²)", example="{mass} 50g {length_offset} 1.9cm")
+    distance = body.cm_distance + length_offset
+    if distance < 0:
+        raise InputError("length_offset", f"would put the centre of mass on the other side of the pivot (d = {fmt(body.cm_distance)} m "
+                         f"+ {fmt(length_offset)} m < 0)", got=f"{fmt(length_offset)} m")
+    inertia = body.inertia + body.mass * length_offset * (2 * body.cm_distance + length_offset)
+    step = Step("The body moved along the line to its centre of mass by the length offset",
+                "d = d₀ + δ,  I = I₀ + mδ(2d₀ + δ)  (parallel axes: I = I_cm + md²)",
+                f"d₀ = {quantity_text(body.cm_distance, 'm')}, δ = {quantity_text(length_offset, 'm')}, m = {quantity_text(body.mass, 'kg')}, "
+                f"I₀ = {quantity_text(body.inertia, 'kg*m**2')}",
+                f"d = {quantity_text(distance, 'm')}, I = {quantity_text(inertia, 'kg*m**2')}",
+                "a length measured to the top of a bob is short of its centre by the bob's radius")
+    return Body(inertia, body.mass, distance, (*body.steps, step), body.words + f", its centre of mass {fmt(length_offset)} m further from the pivot")
