@@ -60,7 +60,7 @@ function __taucli_fit_names --description 'the inputs of the scene typed, after 
         case atwood
             printf "$prefix%s\n" m1 m2 pulley_mass pulley_radius pulley_inertia pulley_gyration axle_friction radius1 radius2 rim_mu wrap incline mu_k mu_s torque g v0 distance time at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle
         case rolling
-            printf "$prefix%s\n" k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at
+            printf "$prefix%s\n" k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius pull_at time hanging_mass pulley_mass pulley_radius g at
         case impulse
             printf "$prefix%s\n" inertia mass density gyration radius inner_radius outer_radius length width height depth offset omega0 omega1 momentum0 momentum1 impulse torque force lever push_angle duration g inertia_final at part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle brake.mu brake.mu_k brake.mu_s brake.force brake.radius brake.lever brake.pivot brake.offset face.mu face.mu_k face.mu_s face.force face.inner_radius face.outer_radius face.pmax band.mu band.mu_k band.mu_s band.wrap band.radius band.width band.tension band.force band.lever band.slack_arm band.tight_arm part_after.radius part_after.inner_radius part_after.outer_radius part_after.length part_after.width part_after.height part_after.depth part_after.offset part_after.mass part_after.inertia part_after.gyration part_after.angle particle.mass particle.speed particle.radius particle.angle particle.speed_after particle.radius_after particle.e particle.speed_relative couple.inertia couple.omega0 couple.mass couple.torque couple.offset couple.radius couple.inner_radius couple.outer_radius couple.length couple.width couple.height couple.depth
         case pendulum
@@ -427,12 +427,14 @@ complete -c taucli -n '__fish_seen_subcommand_from rolling' -l length -x -a '(__
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l height -x -a '(__taucli_units m cm mm km in ft)' -d 'Height of the slope, instead of --length; a yo-yo\'s drop.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l v0 -x -a '(__taucli_units m/s km/h ft/s mph)' -d 'Speed up the slope, set rolling (negative: down it), from --length above the bottom; on the flat, rolling at v0 (alone) or skidding (with --mu-k or --omega0); a yo-yo thrown down.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l omega0 -x -a '(__taucli_units rad/s rpm rev/s deg/s Hz)' -d 'Spin on the flat, in the rolling sense (skid to roll); a yo-yo spun in place: its spin at the start.'
-complete -c taucli -n '__fish_seen_subcommand_from rolling' -l pull -x -a '(__taucli_units N kN lbf)' -d 'A steady pull on the body (on an incline along the slope, up it), e.g. 10N.'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l pull -x -a '(__taucli_units N kN lbf)' -d 'A steady pull on the body (on an incline along the slope, up it; on a yo-yo upward, with --pull-at), e.g. 10N.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l pull-height -x -a '(__taucli_units m cm mm km in ft)' -d 'Where the pull acts: height above the centre (negative below; R: the top) (default 0).'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l pull-angle -x -a '(__taucli_units deg rad rev)' -d 'Angle of the pull above the surface (on an incline, from the slope) (default 0deg).'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l axle-radius -x -a '(__taucli_units m cm mm km in ft)' -d 'A spool: the string is wound at this radius (below R) and leaves from below unless --pull-height is positive; a yo-yo\'s axle.'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l pull-at -x -a '(__taucli_units m cm mm km in ft)' -d 'A yo-yo\'s --pull (upward): where its line passes, this far from the centre on the far side from the string it unwinds from (negative: the string\'s side; R: a rope that runs under the body and up the far side), e.g. 0.1m (default 0).'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l yoyo -d 'A yo-yo: the body falls as its string, fixed above and wound at --axle-radius, unwinds.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l in-place -d 'A yo-yo spun in place: its string pulled up just hard enough that its centre stays put.'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l time -x -a '(__taucli_units s ms min h)' -d 'A yo-yo\'s state after this time (instead of --height): its velocity, spin and drop, e.g. 3s.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l hanging-mass -x -a '(__taucli_units kg g lb oz tonne)' -d 'A mass hanging from a string that runs from the body along the surface and over a pulley (at the edge of the flat, or the top of the slope), e.g. 2kg.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l string -x -a 'centre top' -d 'Where that string leaves the body: centre (an axle in a frame) or top (wound on the body) (default centre).'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l pulley-mass -x -a '(__taucli_units kg g lb oz tonne)' -d 'Mass of the pulley, a uniform disc (0: massless) (default 0).'
@@ -455,6 +457,8 @@ complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'v' -d 
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'v_hanging' -d 'velocity of the hanging mass, downward'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'omega' -d 'angular velocity'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 't' -d 'time'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'drop' -d 'distance the centre has dropped'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'work_pull' -d 'work done by the pull'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'KE_trans' -d 'kinetic energy of translation'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'KE_rot' -d 'kinetic energy of rotation'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'KE' -d 'kinetic energy, translation and rotation'
@@ -481,7 +485,7 @@ complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'v_grou
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'v_ground_angle' -d 'direction of that velocity'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'a_ground' -d 'acceleration of the point relative to the ground'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l get -x -a 'a_ground_angle' -d 'direction of that acceleration'
-complete -c taucli -n '__fish_seen_subcommand_from rolling' -l to -x -a 'a= alpha= friction= mu_min= rolls= critical_angle= T= T2= a_hanging= alpha_pulley= a_hand= v= v_hanging= omega= t= KE_trans= KE_rot= KE= d_climb= h_climb= t_climb= t_roll= d_roll= v_roll= omega_roll= energy_lost= v_t= a_t= a_c= a_total= a_angle= s= chord= v_t0= a_c0= a_total0= a_angle0= v_ground= v_ground_angle= a_ground= a_ground_angle=' -d 'Show a result in this unit, e.g. --to \'I=g*cm^2\' (repeatable).'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l to -x -a 'a= alpha= friction= mu_min= rolls= critical_angle= T= T2= a_hanging= alpha_pulley= a_hand= v= v_hanging= omega= t= drop= work_pull= KE_trans= KE_rot= KE= d_climb= h_climb= t_climb= t_roll= d_roll= v_roll= omega_roll= energy_lost= v_t= a_t= a_c= a_total= a_angle= s= chord= v_t0= a_c0= a_total0= a_angle0= v_ground= v_ground_angle= a_ground= a_ground_angle=' -d 'Show a result in this unit, e.g. --to \'I=g*cm^2\' (repeatable).'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l no-steps -d 'Leave out the worked steps (the human view, and --json\'s steps list).'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l batch -d 'Many scenes: read JSON lines on stdin, keys the option names (m1, pulley_mass), and write one --json document per line.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l jsonl -d 'Like --json, but a sweep\'s documents one per line rather than one array.'
@@ -504,6 +508,8 @@ complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'v' -d 's
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'v_hanging' -d 'velocity of the hanging mass, downward'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'omega' -d 'angular velocity'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 't' -d 'time'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'drop' -d 'distance the centre has dropped'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'work_pull' -d 'work done by the pull'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'KE_trans' -d 'kinetic energy of translation'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'KE_rot' -d 'kinetic energy of rotation'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'KE' -d 'kinetic energy, translation and rotation'
@@ -530,8 +536,8 @@ complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'v_ground
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'v_ground_angle' -d 'direction of that velocity'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'a_ground' -d 'acceleration of the point relative to the ground'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l y -x -a 'a_ground_angle' -d 'direction of that acceleration'
-complete -c taucli -n '__fish_seen_subcommand_from rolling' -l find -x -a 'k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius hanging_mass pulley_mass pulley_radius g at' -d 'Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.'
-complete -c taucli -n '__fish_seen_subcommand_from rolling' -l want -x -a 'a= alpha= friction= mu_min= rolls= critical_angle= T= T2= a_hanging= alpha_pulley= a_hand= v= v_hanging= omega= t= KE_trans= KE_rot= KE= d_climb= h_climb= t_climb= t_roll= d_roll= v_roll= omega_roll= energy_lost= v_t= a_t= a_c= a_total= a_angle= s= chord= v_t0= a_c0= a_total0= a_angle0= v_ground= v_ground_angle= a_ground= a_ground_angle=' -d 'The target of --find, e.g. --want \'a=4.0m/s^2\' (may carry an uncertainty).'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l find -x -a 'k2 inertia gyration mass radius angle mu_s mu_k length height v0 omega0 pull pull_height pull_angle axle_radius pull_at time hanging_mass pulley_mass pulley_radius g at' -d 'Solve for this input so that --want holds: its option name, e.g. pulley_inertia, or a key of a spec, e.g. particle.speed.'
+complete -c taucli -n '__fish_seen_subcommand_from rolling' -l want -x -a 'a= alpha= friction= mu_min= rolls= critical_angle= T= T2= a_hanging= alpha_pulley= a_hand= v= v_hanging= omega= t= drop= work_pull= KE_trans= KE_rot= KE= d_climb= h_climb= t_climb= t_roll= d_roll= v_roll= omega_roll= energy_lost= v_t= a_t= a_c= a_total= a_angle= s= chord= v_t0= a_c0= a_total0= a_angle0= v_ground= v_ground_angle= a_ground= a_ground_angle=' -d 'The target of --find, e.g. --want \'a=4.0m/s^2\' (may carry an uncertainty).'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l uncertainty -d 'With --get: each result\'s standard uncertainty in a second column.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l mc -x -d 'Check the uncertainties by Monte Carlo with N draws.'
 complete -c taucli -n '__fish_seen_subcommand_from rolling' -l no-limit -d 'Run --find or --mc however long it is estimated to take (else refused past 60 s).'
