@@ -19,7 +19,8 @@ COMMAND = Command(
     options=(
         *BODY_OPTIONS,
         Option("omega0", "angular velocity", "Initial angular velocity, e.g. 300rpm.", sign="any", default="0", panel=MOTION),
-        Option("torque", "torque", "Driving torque along +ω (negative: against it), e.g. '1.5N*m'.", sign="any"),
+        Option("torque", "torque", "Driving torque along +ω (negative: against it), e.g. '1.5N*m'; or a formula of the time t, e.g. '(10 N*m/s)*t'.",
+               sign="any", of_time=True),
         *PUSH,
         Option("friction", "torque", "Constant friction torque at the axle (also holds it at rest), e.g. '0.3N*m'.", sign="nonnegative"),
         BRAKE_OPTION,
@@ -36,8 +37,9 @@ COMMAND = Command(
         Option("until_arc", "length", "The same for a length at the rim (cord off a drum): θ = s/R, e.g. 2m.", sign="any", panel=MOTION),
         Option(
             "alpha", "angular acceleration",
-            "Constant angular acceleration, standing in for the body and its torques (any three of ω₀, ω₁, α, t, θ give the rest).",
-            sign="any", panel=MOTION,
+            "Constant angular acceleration, standing in for the body and its torques (any three of ω₀, ω₁, α, t, θ give the rest); "
+            "or a formula of the time t, e.g. '(2 - 3*t/s) rad/s^2'.",
+            sign="any", panel=MOTION, of_time=True,
         ),
         Option(
             "in_time", "time",
@@ -90,6 +92,7 @@ COMMAND = Command(
         Result("theta_until", "rad", "angle turned until…", needs=("until_omega",), example="{until_omega} 100rpm"),
         Result("revs_until", "rev", "revolutions until…", needs=("until_omega",), example="{until_omega} 100rpm"),
         Result("omega_mean", "rad/s", "mean angular velocity θ/t…"),
+        Result("alpha_end", "rad/s**2", "angular acceleration…", needs=("time",), example="{alpha} '(2 - 3*t/s) rad/s^2' {time} 2s"),
         Result("alpha", "rad/s**2", "angular acceleration (constant)", needs=("alpha", "rim_accel", *TO_A_TARGET)),
         Result("omega0", "rad/s", "initial angular velocity…", needs=("rim_speed", "ke0")),
         Result("torque_net", "N*m", "net torque…", needs=("alpha", *TO_A_TARGET)),

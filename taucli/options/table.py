@@ -84,6 +84,7 @@ class Option:
     of: str | None = None  # VECTOR: the quantity kind of its components ("force")
     words: tuple[str, ...] = ()  # words a quantity option takes as well ("rim" for --at)
     also: str | tuple[str, ...] | None = None  # other quantity kinds it takes, passed on as a Value (rolling's --at 30deg: an angle on the rim)
+    of_time: bool = False  # takes a formula of t as well (quantities.formula), passed on as an OfTime
 
     @property
     def also_kinds(self) -> tuple[str, ...]:
