@@ -1,7 +1,7 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
 from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
-from taucli.options.table import FLAG, Command, Option, Result
+from taucli.options.table import FLAG, PHASE, Command, Option, Result
 
 ENERGY = "Energy added, taken or put to use"
 
@@ -51,6 +51,10 @@ COMMAND = Command(
             "Reach --until-omega within this angle, e.g. 20rev: the constant α, and with a body the drive torque, that does it (stop a wheel in 10 rev: --until-omega 0).",
             sign="any", panel=MOTION,
         ),
+        Option("phase", PHASE, 'One phase of the run, in order (repeatable): a rate, alpha=, torque= (with the body) or the word coast, and '
+               'how it ends, time=, angle= or until-omega=; or two of those ends and no rate, e.g. "alpha=2.9e-3rad/s^2 time=2100s". Each '
+               "phase's α, time, θ and ω in a table, the whole run's in the results.", repeatable=True, panel=MOTION,
+               metavar='"alpha=… time=…"', example="alpha=2rad/s^2 time=3s"),
         Option("power", "power", "A motor of constant power P (τ = P/ω; negative: a load draining the wheel), e.g. 1kW.", sign="any"),
         Option("ke0", "energy", "Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.", sign="nonnegative", panel=MOTION),
         Option("work", "energy", "Work done on the wheel (positive: added; negative: taken, as water takes it from a propeller), giving ω after: "
@@ -82,16 +86,17 @@ COMMAND = Command(
         Result("theta_stop", "rad", "angle turned until it stops"),
         Result("revs_stop", "rev", "revolutions until it stops"),
         Result("omega_inf", "rad/s", "steady speed as t -> ∞"),
-        Result("omega", "rad/s", "angular velocity…", needs=("time", "until_omega", "until_angle")),
-        Result("theta", "rad", "net angle turned…", needs=("time", "until_omega", "until_angle")),
-        Result("revs", "rev", "net revolutions…", needs=("time", "until_omega", "until_angle")),
-        Result("L", "kg*m**2/s", "angular momentum Iω…", needs=("time", "until_omega", "until_angle")),
+        Result("omega", "rad/s", "angular velocity…", needs=("time", "until_omega", "until_angle", "phase")),
+        Result("theta", "rad", "net angle turned…", needs=("time", "until_omega", "until_angle", "phase")),
+        Result("revs", "rev", "net revolutions…", needs=("time", "until_omega", "until_angle", "phase")),
+        Result("L", "kg*m**2/s", "angular momentum Iω…", needs=("time", "until_omega", "until_angle", "phase+inertia")),
         Result("theta_total", "rad", "total angle turned, both ways,…", needs=TURNS_BACK, example=TURNS_BACK_EXAMPLE),
         Result("revs_total", "rev", "total revolutions, both ways,…", needs=TURNS_BACK, example=TURNS_BACK_EXAMPLE),
         Result("t_until", "s", "time to reach…", needs=("until_omega", "until_angle"), example="{until_omega} 100rpm"),
         Result("theta_until", "rad", "angle turned until…", needs=("until_omega",), example="{until_omega} 100rpm"),
         Result("revs_until", "rev", "revolutions until…", needs=("until_omega",), example="{until_omega} 100rpm"),
         Result("omega_mean", "rad/s", "mean angular velocity θ/t…"),
+        Result("t_run", "s", "duration of the whole run, all its phases", needs=("phase",)),
         Result("alpha_end", "rad/s**2", "angular acceleration…", needs=("time",), example="{alpha} '(2 - 3*t/s) rad/s^2' {time} 2s"),
         Result("alpha", "rad/s**2", "angular acceleration (constant)", needs=("alpha", "rim_accel", *TO_A_TARGET)),
         Result("omega0", "rad/s", "initial angular velocity…", needs=("rim_speed", "ke0")),

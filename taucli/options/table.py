@@ -39,6 +39,8 @@ PULL = "pull"  # "force=… [angle=…] [on=1|2]": a pull on a block of atwood, 
 NOT_QUANTITIES = NOT_QUANTITIES | {SIDE, PULL}
 ROTOR = "rotor"  # "inertia=… spin=… sense=cw-from-rear": another rotor whose axis a vehicle turns (gyro), repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {ROTOR}
+PHASE = "phase"  # "[coast] alpha=…|torque=… time=…|angle=…|until-omega=…": one phase of a spin-down run, repeatable, in order
+NOT_QUANTITIES = NOT_QUANTITIES | {PHASE}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {
