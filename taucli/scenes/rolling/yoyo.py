@@ -164,7 +164,7 @@ def _yoyo_steps(ratio, a, tension, results, g=None, mass=None, v0=0.0, height=No
 
 
 def _pulled_steps(ratio, a, tension, g, mass, r, pull, gearing, results, v0, end) -> list[Step]:
-    force, d = pull.force, pull.at
+    force = pull.force
     steps = [
         Step("For the yo-yo's centre (down positive)", "m a = m g − T − F", "", "", "gravity down; the string's tension and the pull F up"),
         Step("Rotation about the centre (the unwinding sense)", "I α = T r − F d", "", "",
