@@ -12,10 +12,11 @@ from typing import TextIO
 
 from taucli.quantities import units
 from taucli.core.errors import InputError, did_you_mean
+from taucli.quantities.formula import mentions_time
 from taucli.quantities.kinds import article
 from taucli.answering.reading import Inputs, Origin, word
 from taucli.writing.report import Value
-from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PULL, REVOLVING, ROTOR, SEGMENT, SIDE, TEXT, VECTOR, Command, Option
+from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PHASE, PULL, REVOLVING, ROTOR, SEGMENT, SIDE, TEXT, VECTOR, Command, Option
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:
@@ -126,6 +127,8 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
         return given.strip().lower()
     if option.also is not None and isinstance(given, str):
         return _either(option, given, inputs)
+    if option.of_time and isinstance(given, str) and mentions_time(given):
+        return _of_time(option, given, inputs)
     if not option.repeatable:
         return _quantity(option, given, inputs, stdin)
     items = list(given) if isinstance(given, (list, tuple)) else [given]
@@ -136,6 +139,15 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
     si = units.KINDS[option.kind].si_unit
     return tuple(inputs.quantity(name, item, option.kind, sign=option.sign, key=key, origin=Origin(option.name, index, None, name, si, option.sign))
                  for index, (name, item, key) in enumerate(zip(names, items, keys)))
+
+
+def _of_time(option: Option, given: str, inputs: Inputs):
+    """A formula of t (--torque '(10 N*m/s)*t'): an OfTime in SI, echoed as typed."""
+    from taucli.quantities.formula import read_formula  # deferred: the formula parser, only for a formula
+
+    formula = read_formula(given, option.name, units.KINDS[option.kind])
+    inputs.values[option.name] = Value(given, None, "")
+    return formula
 
 
 def _either(option: Option, given: str, inputs: Inputs):
@@ -214,3 +226,12 @@ def _segments(option: Option, given, inputs: Inputs, stdin):
 
 
 READERS[SEGMENT] = _segments
+
+
+def _phases(option: Option, given, inputs: Inputs, stdin):
+    from taucli.answering.phase_spec import phases  # deferred: the spec readers (4 ms), only for --phase
+
+    return phases(option, given, inputs, stdin)
+
+
+READERS[PHASE] = _phases

@@ -24,8 +24,10 @@ from dataclasses import dataclass
 
 from taucli.core.errors import InputError
 from taucli.answering.specs import with_key, BAND_FIELDS, BRAKE_FIELDS, COUPLE_FIELDS, FACE_FIELDS, PARTICLE_FIELDS, PART_FIELDS, ROTOR_FIELDS
+from taucli.answering.duty import SEGMENT_FIELDS
+from taucli.answering.phase_spec import PHASE_FIELDS
 from taucli.answering.revolving import REVOLVING_FIELDS
-from taucli.options.table import BAND, BRAKE, COUPLE, FACE, PART, PARTICLE, REVOLVING, ROTOR, VECTOR, Command, Option
+from taucli.options.table import BAND, BRAKE, COUPLE, FACE, PART, PARTICLE, PHASE, REVOLVING, ROTOR, SEGMENT, VECTOR, Command, Option
 from taucli.quantities.units import KINDS
 
 # The keys of each spec that --find may solve for: (kind, sign). Not a face's surfaces= (a whole
@@ -39,6 +41,8 @@ SPEC_KEYS: dict[str, dict[str, tuple[str, str]]] = {
     BRAKE: BRAKE_FIELDS,
     FACE: {key: value for key, value in FACE_FIELDS.items() if key != "surfaces"},
     BAND: BAND_FIELDS,
+    PHASE: PHASE_FIELDS,
+    SEGMENT: SEGMENT_FIELDS,
 }
 
 # Options read as vectors that a scene also takes as one signed size (a force in the plane).

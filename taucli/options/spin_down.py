@@ -1,7 +1,7 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
 from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
-from taucli.options.table import FLAG, Command, Option, Result
+from taucli.options.table import FLAG, PHASE, Command, Option, Result
 
 ENERGY = "Energy added, taken or put to use"
 
@@ -19,7 +19,8 @@ COMMAND = Command(
     options=(
         *BODY_OPTIONS,
         Option("omega0", "angular velocity", "Initial angular velocity, e.g. 300rpm.", sign="any", default="0", panel=MOTION),
-        Option("torque", "torque", "Driving torque along +ω (negative: against it), e.g. '1.5N*m'.", sign="any"),
+        Option("torque", "torque", "Driving torque along +ω (negative: against it), e.g. '1.5N*m'; or a formula of the time t, e.g. '(10 N*m/s)*t'.",
+               sign="any", of_time=True),
         *PUSH,
         Option("friction", "torque", "Constant friction torque at the axle (also holds it at rest), e.g. '0.3N*m'.", sign="nonnegative"),
         BRAKE_OPTION,
@@ -41,8 +42,9 @@ COMMAND = Command(
         Option("until_arc", "length", "The same for a length at the rim (cord off a drum): θ = s/R, e.g. 2m.", sign="any", panel=MOTION),
         Option(
             "alpha", "angular acceleration",
-            "Constant angular acceleration, standing in for the body and its torques (any three of ω₀, ω₁, α, t, θ give the rest).",
-            sign="any", panel=MOTION,
+            "Constant angular acceleration, standing in for the body and its torques (any three of ω₀, ω₁, α, t, θ give the rest); "
+            "or a formula of the time t, e.g. '(2 - 3*t/s) rad/s^2'.",
+            sign="any", panel=MOTION, of_time=True,
         ),
         Option(
             "in_time", "time",
@@ -54,6 +56,10 @@ COMMAND = Command(
             "Reach --until-omega within this angle, e.g. 20rev: the constant α, and with a body the drive torque, that does it (stop a wheel in 10 rev: --until-omega 0).",
             sign="any", panel=MOTION,
         ),
+        Option("phase", PHASE, 'One phase of the run, in order (repeatable): a rate, alpha=, torque= (with the body) or the word coast, and '
+               'how it ends, time=, angle= or until-omega=; or two of those ends and no rate, e.g. "alpha=2.9e-3rad/s^2 time=2100s". Each '
+               "phase's α, time, θ and ω in a table, the whole run's in the results.", repeatable=True, panel=MOTION,
+               metavar='"alpha=… time=…"', example="alpha=2rad/s^2 time=3s"),
         Option("power", "power", "A motor of constant power P (τ = P/ω; negative: a load draining the wheel), e.g. 1kW.", sign="any"),
         Option("ke0", "energy", "Initial kinetic energy, giving ω₀ = √(2E/I), e.g. 1MJ.", sign="nonnegative", panel=MOTION),
         Option("work", "energy", "Work done on the wheel (positive: added; negative: taken, as water takes it from a propeller), giving ω after: "
@@ -91,16 +97,18 @@ COMMAND = Command(
                example="{torque} '20N*m' {friction} '5N*m' {viscous} '0.1N*m*s' {drive_slope} '0.05N*m*s'"),
         Result("omega_unstable", "rad/s", "speed of an unstable balance: below it the wheel runs down, above it runs up", needs=("drive_slope",),
                example="{torque} '5N*m' {friction} '20N*m' {drive_slope} '0.05N*m*s'"),
-        Result("omega", "rad/s", "angular velocity…", needs=("time", "until_omega", "until_angle")),
-        Result("theta", "rad", "net angle turned…", needs=("time", "until_omega", "until_angle")),
-        Result("revs", "rev", "net revolutions…", needs=("time", "until_omega", "until_angle")),
-        Result("L", "kg*m**2/s", "angular momentum Iω…", needs=("time", "until_omega", "until_angle")),
+        Result("omega", "rad/s", "angular velocity…", needs=("time", "until_omega", "until_angle", "phase")),
+        Result("theta", "rad", "net angle turned…", needs=("time", "until_omega", "until_angle", "phase")),
+        Result("revs", "rev", "net revolutions…", needs=("time", "until_omega", "until_angle", "phase")),
+        Result("L", "kg*m**2/s", "angular momentum Iω…", needs=("time", "until_omega", "until_angle", "phase+inertia")),
         Result("theta_total", "rad", "total angle turned, both ways,…", needs=TURNS_BACK, example=TURNS_BACK_EXAMPLE),
         Result("revs_total", "rev", "total revolutions, both ways,…", needs=TURNS_BACK, example=TURNS_BACK_EXAMPLE),
         Result("t_until", "s", "time to reach…", needs=("until_omega", "until_angle"), example="{until_omega} 100rpm"),
         Result("theta_until", "rad", "angle turned until…", needs=("until_omega",), example="{until_omega} 100rpm"),
         Result("revs_until", "rev", "revolutions until…", needs=("until_omega",), example="{until_omega} 100rpm"),
         Result("omega_mean", "rad/s", "mean angular velocity θ/t…"),
+        Result("t_run", "s", "duration of the whole run, all its phases", needs=("phase",)),
+        Result("alpha_end", "rad/s**2", "angular acceleration…", needs=("time",), example="{alpha} '(2 - 3*t/s) rad/s^2' {time} 2s"),
         Result("alpha", "rad/s**2", "angular acceleration (constant)", needs=("alpha", "rim_accel", *TO_A_TARGET)),
         Result("omega0", "rad/s", "initial angular velocity…", needs=("rim_speed", "ke0")),
         Result("torque_net", "N*m", "net torque…", needs=("alpha", *TO_A_TARGET)),

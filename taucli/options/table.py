@@ -43,6 +43,8 @@ REVOLVING = "revolving"  # "mass=… radius=… angle=… [plane=…] [length=�
 NOT_QUANTITIES = NOT_QUANTITIES | {REVOLVING}
 SEGMENT = "segment"  # "time=… torque=…|power=… [rest=yes]": a segment of a motor's duty cycle (drive), repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {SEGMENT}
+PHASE = "phase"  # "[coast] alpha=…|torque=… time=…|angle=…|until-omega=…": one phase of a spin-down run, repeatable, in order
+NOT_QUANTITIES = NOT_QUANTITIES | {PHASE}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {
@@ -88,6 +90,7 @@ class Option:
     of: str | None = None  # VECTOR: the quantity kind of its components ("force")
     words: tuple[str, ...] = ()  # words a quantity option takes as well ("rim" for --at)
     also: str | tuple[str, ...] | None = None  # other quantity kinds it takes, passed on as a Value (rolling's --at 30deg: an angle on the rim)
+    of_time: bool = False  # takes a formula of t as well (quantities.formula), passed on as an OfTime
 
     @property
     def also_kinds(self) -> tuple[str, ...]:

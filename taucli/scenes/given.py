@@ -118,6 +118,20 @@ class Revolving:
         return self.radius if self.length is None else self.radius + self.length / 2
 
 
+@dataclass(frozen=True)
+class Phase:
+    """One phase of a spin-down run (--phase), in order: its rate (α, or a torque with the body's
+    I; a coast: α = 0; or neither, α then following from two ends) and how it ends (a time, a net
+    angle, a speed reached): the values a book gives, in SI, None where not given."""
+
+    source: str
+    alpha: float | None = None
+    torque: float | None = None
+    time: float | None = None
+    angle: float | None = None
+    until_omega: float | None = None
+
+
 PRESSURES = ("uniform", "wear")  # a face's pressure models (model=)
 
 

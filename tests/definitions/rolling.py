@@ -160,6 +160,39 @@ def draw_rolling(rng: random.Random) -> tuple[dict, list[str]]:
         tags.append("stray")
     return kw, tags
 
+def draw_pulled_yoyo(rng: random.Random) -> tuple[dict, list[str]]:
+    """A yo-yo pulled or held besides by a vertical force (#46 item 1): through its centre, on the
+    far side (a rope run under it), on the string's side; after a drop or a time; thrown down or up."""
+    tags = ["pulled yoyo"]
+    mass, radius = mag(rng, -1.5, 1.5), mag(rng, -2, 0)
+    kw: dict = {"yoyo": True, "mass": mass}
+    if rng.random() < 0.6:
+        kw.update(shape=rng.choice(tuple(ROLLING_K2)), radius=radius)
+    else:
+        kw.update(inertia=mass * radius * radius * rng.uniform(0.05, 1.2), radius=radius)
+        tags.append("inertia")
+    if rng.random() < 0.5:
+        kw["axle_radius"] = radius * rng.uniform(0.05, 1)
+        tags.append("axle")
+    if rng.random() < 0.2:
+        kw["g"] = rng.uniform(1, 25)
+    kw["pull"] = mass * G0 * mag(rng, -1.5, 0.3)
+    y = rng.random()
+    if y < 0.6:
+        kw["pull_at"] = signed(rng, radius * rng.uniform(0, 1.2), 0.3)
+        tags.append("pull at")
+    if rng.random() < 0.5:
+        kw["time"] = mag(rng, -1, 1)
+        tags.append("time")
+    elif rng.random() < 0.6:
+        kw["height"] = radius * mag(rng, 0, 2)
+        tags.append("drop")
+    if rng.random() < 0.3:
+        kw["v0"] = signed(rng, math.sqrt(G0 * radius) * mag(rng, -1, 1), 0.5)
+        tags.append("v0")
+    return kw, tags
+
+
 def check_rolling(kw: dict, report, c: Checker) -> None:
     res, inp = values(report), inputs(report)
     model = report.model
@@ -196,19 +229,35 @@ def check_rolling(kw: dict, report, c: Checker) -> None:
         else:
             q = k2 if "axle_radius" not in inp else k2 * (R / r) ** 2
         body_moment_ = q * m * r * r if m is not None and r is not None else None
+        F, d = inp.get("pull", 0.0), inp.get("pull_at", 0.0)
         if m is not None:
-            c.eq("T = m(g − a)", res.get("T"), m * (g - a), m * g, m * a)
+            c.eq("T = m(g − a) − F", res.get("T"), m * (g - a) - F, m * g, m * a, F)
             if body_moment_ is not None:
-                c.eq("I α = T r", body_moment_ * res["alpha"] if res.get("alpha") is not None else None, res["T"] * r)
+                c.eq("I α = T r − F d", body_moment_ * res["alpha"] if res.get("alpha") is not None else None, res["T"] * r - F * d, res["T"] * r, F * d)
+            c.true("T ≥ 0 (a string only pulls)", res["T"] >= 0, f"T = {res['T']}")
         c.eq("alpha = a/r", alpha, a / r if r is not None else None)
+        if "pull" in inp and r is not None:
+            c.eq("a_hand = −a − α d (the pulled point, upward)", res.get("a_hand"), -a - alpha * d, a, alpha * d)
         h, v0 = inp.get("height"), inp.get("v0", 0.0)
+        if "time" in inp:
+            tt, x = inp["time"], res["drop"]
+            c.eq("v = v₀ + a t", v, v0 + a * tt, v0, a * tt)
+            c.eq("x = v₀t + ½at²", x, v0 * tt + a * tt * tt / 2, v0 * tt, a * tt * tt / 2)
+            c.eq("v² = v₀² + 2ax", v * v, v0 * v0 + 2 * a * x, v0 * v0, 2 * a * x)
+            c.eq("omega = v/r", omega, v / r if r is not None else None)
+            energies(v, spin=omega, rotational=body_moment_)
+            if m is not None:
+                work = res.get("work_pull", 0.0)
+                c.eq("KE − KE₀ = m g x + W_pull", res["KE"] - (1 + q) * m * v0 * v0 / 2, m * g * x + work, res["KE"], m * g * x, work)
+                if "pull" in inp and r is not None:
+                    c.eq("W_pull = F × the pulled point's rise", work, -F * (x + d * x / r), F * x)
         if h is not None:
             c.eq("v² = v₀² + 2ah", v * v, v0 * v0 + 2 * a * h, v0 * v0, 2 * a * h)
             c.eq("h = v₀t + ½at²", v0 * t + a * t * t / 2, h, v0 * t, a * t * t / 2)
             c.eq("omega = v/r", omega, v / r if r is not None else None)  # (r the axle's; R when none is given)
             energies(v, spin=omega, rotational=body_moment_)
             if m is not None:
-                c.eq("KE − KE₀ = m g h", res["KE"] - (1 + q) * m * v0 * v0 / 2, m * g * h, res["KE"])
+                c.eq("KE − KE₀ = m g h + W_pull", res["KE"] - (1 + q) * m * v0 * v0 / 2, m * g * h + res.get("work_pull", 0.0), res["KE"], m * g * h)
     elif "skidding" in model:
         v0, w0 = inp["v0"], inp.get("omega0", 0.0)
         if res.get("v_roll") is not None:

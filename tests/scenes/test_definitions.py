@@ -139,6 +139,15 @@ def test_rolling_results_agree_with_their_definitions():
         assert checker.checked[name] >= 5, (name, checker.checked[name])
 
 
+def test_pulled_yoyo_results_agree_with_their_definitions():
+    """#46 item 1: a yo-yo pulled or held besides its string, after a drop or a time (its own draws)."""
+    branches = {"pulled yoyo": 300, "pull at": 150, "time": 100, "drop": 40, "axle": 100, "inertia": 80, "v0": 60, "units": 40}
+    _, checker = run_scene("rolling", rolling.draw_pulled_yoyo, rolling.check_rolling, 700, 46, 0.6, branches)
+    for name in ("I α = T r − F d", "a_hand = −a − α d (the pulled point, upward)", "KE − KE₀ = m g x + W_pull", "W_pull = F × the pulled point's rise",
+                 "KE − KE₀ = m g h + W_pull", "v² = v₀² + 2ax"):
+        assert checker.checked[name] >= 20, (name, checker.checked[name])
+
+
 def test_pendulum_results_agree_with_their_definitions():
     branches = {"inertia": 60, "rod": 40, "disc": 30, "point": 30, "plate": 20, "torsion": 50, "at the top": 20, "angle": 60, "time": 60,
                 "at": 40, "method small-angle": 4, "method rk45": 4, "method verlet": 4, "method exact": 4, "units": 50}

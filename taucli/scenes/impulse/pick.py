@@ -16,6 +16,8 @@ from taucli.scenes.impulse.changing_inertia import solve_changing_inertia
 from taucli.scenes.impulse.clutch import solve_clutch
 from taucli.scenes.impulse.meeting import solve_meeting
 from taucli.scenes.impulse.momentum import solve_momentum
+from taucli.scenes.impulse.of_time import formula_impulse
+from taucli.numerics.of_time import OfTime
 from taucli.scenes.impulse.point import point_after
 from taucli.scenes.impulse.sampled import solve_profile
 from taucli.scenes.inertia import body, body_notes, part_inertia
@@ -64,6 +66,12 @@ def impulse(
         inertia_final, after_steps = body_after(part_after, inertia_final, body_options)
         change = inertia_change(part_after, body_options)
     momenta = {"momentum0": momentum0, "momentum1": momentum1, "impulse": impulse}
+    if isinstance(torque, OfTime):
+        others = {"force": force, "lever": lever, "push_angle": push_angle, "inertia_final": inertia_final, "part_after": part_after or None,
+                  "torque_profile": torque_profile, "particle": particle, "couple": couple, "at": at, "brake": brake, "face": face, "band": band,
+                  "g": g, **momenta}
+        inertia, steps = _body(body_options)
+        return with_period(formula_impulse(torque, duration, inertia, omega0, omega1, others, method, steps))
     report = _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
                       at, brake, face, band, g, body_options, change, momenta)
     said = body_notes(body_options) + (body_notes({**body_options, "part": tuple(part_after)}) if part_after else [])

@@ -28,12 +28,14 @@ from taucli.scenes.rolling.in_place import solve_in_place
 from taucli.scenes.rolling.incline import solve_incline
 from taucli.scenes.rolling.point_on_body import motion, point_on_body
 from taucli.scenes.rolling.pull import Pull, given_pull, solve_pull
-from taucli.scenes.rolling.yoyo import solve_yoyo
+from taucli.scenes.rolling.yoyo import YoyoPull, solve_yoyo
 
 __all__ = ["K2", "Hanging", "Pull", "Roller", "roller", "rolling", "solve_flat", "solve_hanging", "solve_in_place", "solve_incline", "solve_pull",
            "solve_rolling_flat", "solve_yoyo"]
 
-NOT_WITH_YOYO = "does not apply with {yoyo} (a yo-yo falls on its string: {height} for the drop, {v0} to throw it down)"
+NOT_WITH_YOYO = ("does not apply with {yoyo} (a yo-yo falls on its string: {height} or {time} for the run, {v0} to throw it down, "
+                 "{pull} with {pull_at} for a vertical pull on it besides its string)")
+ONLY_YOYO = "applies with {yoyo} (a yo-yo on its string; a pulled body on the flat or a slope moves {length})"
 NOT_IN_PLACE = "does not apply with {in_place} (its centre stays put: {length} for the string the hand pulls, {omega0} for the spin at the start)"
 NOT_WITH_PULL = "does not apply with {pull}: the pulled body starts from rest ({length} for the distance it moves)"
 NOT_WITH_HANGING = "does not apply with {hanging_mass}: the body starts from rest, on the flat or a slope ({length} for the distance it moves)"
@@ -58,6 +60,7 @@ def rolling(
     pull_height: float | None = None,
     pull_angle: float | None = None,
     axle_radius: float | None = None,
+    pull_at: float | None = None,
     yoyo: bool | None = None,
     in_place: bool | None = None,
     hanging_mass: float | None = None,
@@ -65,6 +68,7 @@ def rolling(
     pulley_mass: float | None = None,
     pulley_radius: float | None = None,
     g: float | None = None,
+    time: float | None = None,
     at: object = None,
 ) -> Report:
     """``taucli rolling``: down (or up) an incline, or a ball skidding on the flat (--v0 or
@@ -75,8 +79,10 @@ def rolling(
     --gyration k with --radius R is the body's k² = I/(mR²) = (k/R)²."""
     if gyration is not None:  # #42 item 15: the body by its radius of gyration
         k2 = _by_gyration(gyration, radius, shape, k2, inertia)
+    if not yoyo:
+        _refuse(ONLY_YOYO, pull_at=pull_at, time=time)
     model, report = _solve(shape, k2, inertia, mass, radius, angle, mu_s, mu_k, length, height, v0, omega0, pull, pull_height, pull_angle,
-                           axle_radius, yoyo, in_place, hanging_mass, string, pulley_mass, pulley_radius, g)
+                           axle_radius, yoyo, in_place, hanging_mass, string, pulley_mass, pulley_radius, g, pull_at, time)
     if at is None:
         return report
     body = motion(model, report, v0=v0, omega0=omega0, radius=radius, axle=axle_radius, slope=angle)
@@ -84,7 +90,7 @@ def rolling(
 
 
 def _solve(shape, k2, inertia, mass, radius, angle, mu_s, mu_k, length, height, v0, omega0, pull, pull_height, pull_angle, axle_radius, yoyo,
-           in_place, hanging_mass, string, pulley_mass, pulley_radius, g) -> tuple[str, Report]:
+           in_place, hanging_mass, string, pulley_mass, pulley_radius, g, pull_at=None, time=None) -> tuple[str, Report]:
     """The model the options ask for, by name (as point_on_body.motion reads it), and its report."""
     assumed = Assumed()
     hanging = {"hanging_mass": hanging_mass, "string": string, "pulley_mass": pulley_mass, "pulley_radius": pulley_radius}
@@ -95,9 +101,15 @@ def _solve(shape, k2, inertia, mass, radius, angle, mu_s, mu_k, length, height, 
         return "in place", assumed.applied(solve_in_place(description, gyration2, mass, axle, assumed.gravity(g), omega0=omega0 or 0.0, length=length))
     if yoyo:
         body, about_axle = _yoyo_body(shape, k2, inertia, mass, radius, axle_radius)
-        _refuse(NOT_WITH_YOYO, angle=angle, pull=pull, pull_height=pull_height, pull_angle=pull_angle, mu_s=mu_s, mu_k=mu_k, length=length,
+        _refuse(NOT_WITH_YOYO, angle=angle, pull_height=pull_height, pull_angle=pull_angle, mu_s=mu_s, mu_k=mu_k, length=length,
                 omega0=omega0, **hanging)
-        return "yoyo", assumed.applied(solve_yoyo(body, assumed.gravity(g), axle=axle_radius, height=height, v0=v0 or 0.0, about_axle=about_axle))
+        if pull is None:
+            _needs({"pull_at": pull_at}, "needs {pull} (the force whose line it places)", "{pull} 12N {pull_at} 0.1m")
+        second = None if pull is None else YoyoPull(pull, pull_at or 0.0)
+        if pull is not None and pull_at is None:
+            assumed.notes.append("no --pull-at: the pull's line passes through the centre (a second string tied at the axle)")
+        return "yoyo", assumed.applied(solve_yoyo(body, assumed.gravity(g), axle=axle_radius, height=height, v0=v0 or 0.0, about_axle=about_axle,
+                                                  pull=second, time=time))
     body = roller(shape, k2, inertia, mass, radius)
     if hanging_mass is not None:
         _refuse(NOT_WITH_HANGING, pull=pull, pull_height=pull_height, pull_angle=pull_angle, axle_radius=axle_radius, v0=v0, omega0=omega0, height=height)

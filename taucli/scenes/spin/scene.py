@@ -21,7 +21,10 @@ from taucli.scenes.assumed import Assumed
 from taucli.scenes.inertia import body, body_table
 from taucli.scenes.point import RIM, rim_radius
 from taucli.scenes.push import Push, drive_steps
+from taucli.numerics.of_time import OfTime
 from taucli.scenes.spin.constant_alpha import constant_alpha_report
+from taucli.scenes.spin.of_time import formula_run
+from taucli.scenes.spin.phases import phases_run
 from taucli.scenes.spin.targets import as_given, with_momentum, with_revs_until
 from taucli.scenes.spin.corner import corner_torque
 from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_contacts
@@ -93,6 +96,7 @@ def spin_down(
     method: str = "auto",
     dt: float | None = None,
     rtol: float | None = None,
+    phase: Sequence | None = None,
     **body_options,
 ) -> Report:
     """``taucli spin-down``: the body (--inertia or --shape ...), its torques, and what to report.
@@ -102,6 +106,20 @@ def spin_down(
     ω₀ = 0 unless --omega0 (or --rim-speed, or --ke0) says. --alpha, or no body at all, is
     rotation at constant α: any three of ω₀, ω₁, α, t, θ give the rest.
     """
+    if phase:
+        others = {"torque": torque, "force": force, "lever": lever, "friction": friction, "brake": brake or None, "face": face or None,
+                  "band": band or None, "viscous": viscous, "drag": drag, "until_omega": until_omega, "until_angle": until_angle,
+                  "until_arc": until_arc, "alpha": alpha, "in_time": in_time, "in_angle": in_angle, "power": power, "ke0": ke0,
+                  "rim_speed": rim_speed, "rim_accel": rim_accel, "work": work, "lift_mass": lift_mass, "vehicle_mass": vehicle_mass,
+                  "efficiency": efficiency, "at": at, "dt": dt, "rtol": rtol, "g": g}
+        return phases_run(others, method, phase, omega0, time, body_options)
+    if isinstance(torque, OfTime) or isinstance(alpha, OfTime):
+        others = {"force": force, "lever": lever, "friction": friction, "brake": brake or None, "face": face or None, "band": band or None,
+                  "viscous": viscous, "drag": drag, "until_angle": until_angle, "until_arc": until_arc, "in_time": in_time, "in_angle": in_angle,
+                  "power": power, "ke0": ke0, "rim_speed": rim_speed, "rim_accel": rim_accel, "work": work, "lift_mass": lift_mass,
+                  "vehicle_mass": vehicle_mass, "efficiency": efficiency, "at": at, "dt": dt, "rtol": rtol, "g": g,
+                  "torque" if isinstance(alpha, OfTime) else "alpha": torque if isinstance(alpha, OfTime) else alpha}
+        return formula_run(others, method, torque, alpha, omega0, time, until_omega, body_options)
     if power == 0:
         power = None  # a motor of no power is no motor
     if g is not None and lift_mass is None and corner is None and not any(plate.by_weight for plate in face or ()):

@@ -1,0 +1,276 @@
+"""A quantity as a formula of time: ``(2 - 3*t/s) rad/s^2``, ``10 N*m/s * t``,
+``5 N*m * exp(-t/(2 s))``, read into a taucli.numerics.of_time.OfTime in SI.
+
+The grammar is the one a quantity is written in (numbers, units, + − * / ^ and parentheses, a
+number beside its unit multiplying it, as in ``3 t`` or ``2 N*m``), with ``t`` the one variable,
+the time in its own unit (``t/s`` is a number of seconds), and the functions of FUNCTIONS. It is
+parsed here by recursive descent and never run as code. Each part is kept as a polynomial in t
+while it is one (numbers, units, t, sums, products, a division by a part free of t, a whole
+power up to MAX_POWER), so that a polynomial is integrated exactly; anything else becomes a
+function of t, integrated by quadrature. Units are pint's, each looked up once by name; a sum of
+parts of different dimensions, a function of a dimensioned part, or a result not of the option's
+kind is refused, naming the option. An angular quantity (α) needs its angle unit written, as a
+number does everywhere.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from taucli.core.errors import InputError
+from taucli.numerics.of_time import OfTime
+from taucli.quantities.kinds import Kind
+from taucli.quantities.registry import registry
+
+MAX_LENGTH = 200
+MAX_POWER = 8  # t^8: a whole power beyond it is refused (a formula of a book is of low degree)
+MAX_DEPTH = 40
+FUNCTIONS = {"sqrt": math.sqrt, "sin": math.sin, "cos": math.cos, "tan": math.tan, "exp": math.exp}
+_TOKEN = re.compile(r"\s*(?:(?P<number>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)|(?P<name>[A-Za-zµμΩ_][A-Za-z0-9_µμΩ]*)|(?P<op>\*\*|[-+*/^()]))")
+_SPELLED = {"−": "-", "·": "*", "×": "*", "⋅": "*", "²": "^2", "³": "^3"}
+_T = re.compile(r"(?<![A-Za-z0-9_])t(?![A-Za-z0-9_])")
+
+
+def mentions_time(text: str) -> bool:
+    """Whether ``text`` is a formula of t (t standing alone, not a letter of a unit's name)."""
+    return isinstance(text, str) and _T.search(text) is not None
+
+
+@dataclass
+class _Part:
+    """A part of the formula: a polynomial (coefficients in SI, powers of t in seconds) or a
+    function of t; its dimensions (pint's); whether an angle unit was written in it."""
+
+    dims: object
+    coefficients: list[float] | None = None
+    function: object = None
+    angled: bool = False
+
+    def call(self):
+        if self.coefficients is not None:
+            cs = tuple(self.coefficients)
+
+            def poly(t: float) -> float:
+                total = 0.0
+                for c in reversed(cs):
+                    total = total * t + c
+                return total
+
+            return poly
+        return self.function
+
+
+def read_formula(text: str, option: str, kind: Kind) -> OfTime:
+    """``text`` (a formula of t) as an OfTime in ``kind``'s SI unit, or an InputError naming ``option``."""
+    shown = text
+    for spelled, plain in _SPELLED.items():
+        text = text.replace(spelled, plain)
+    if len(text) > MAX_LENGTH:
+        raise _error(option, kind, shown, f"longer than {MAX_LENGTH} characters")
+    tokens = _tokens(text, option, kind, shown)
+    parser = _Parser(tokens, option, kind, shown)
+    part = parser.sum(0)
+    if parser.position != len(tokens):
+        raise _error(option, kind, shown, f"unexpected {tokens[parser.position][1]!r}")
+    ureg = registry()
+    wanted = ureg.Quantity(1, kind.si_unit)
+    if part.dims != wanted.dimensionality:
+        raise _error(option, kind, shown, f"it is not {_an(kind.name)} (its units make {_dims(part.dims)}; t/s is a number of seconds)")
+    if "rad" in kind.si_unit and not part.angled:
+        raise _error(option, kind, shown, "its angle unit is not written (rad or rev: a number alone is ambiguous)")
+    if part.coefficients is not None:
+        cs = list(part.coefficients)
+        while len(cs) > 1 and cs[-1] == 0:
+            cs.pop()
+        return OfTime(shown, kind.si_unit, coefficients=tuple(cs))
+    return OfTime(shown, kind.si_unit, function=part.function)
+
+
+def _an(name: str) -> str:
+    return ("an " if name[:1] in "aeiou" else "a ") + name
+
+
+def _error(option: str, kind: Kind, shown: str, why: str) -> InputError:
+    return InputError(option, f"expected {_an(kind.name)} or a formula of t (the time) giving one", example=f"'(2 - 3*t/s) {kind.si_unit.replace('**', '^')}'",
+                      got=f"{shown!r}: {why}")
+
+
+def _tokens(text: str, option: str, kind: Kind, shown: str) -> list[tuple[str, str]]:
+    tokens, position = [], 0
+    text = text.rstrip()
+    while position < len(text):
+        found = _TOKEN.match(text, position)
+        if found is None or found.end() == position:
+            raise _error(option, kind, shown, f"{text[position:].strip()[:1]!r} is not part of a formula")
+        kind_of = found.lastgroup
+        tokens.append((kind_of, found.group(kind_of)))
+        position = found.end()
+    return tokens
+
+
+class _Parser:
+    """sum := product (('+'|'-') product)*;  product := signed (('*'|'/'|nothing) signed)*;
+    signed := ('-'|'+') signed | power;  power := atom (('^'|'**') signed)?;
+    atom := number | t | unit | function '(' sum ')' | '(' sum ')'."""
+
+    def __init__(self, tokens, option, kind, shown):
+        self.tokens, self.position, self.option, self.kind, self.shown = tokens, 0, option, kind, shown
+        self.ureg = registry()
+        self.none = self.ureg.Quantity(1, "").dimensionality
+
+    def fail(self, why: str) -> InputError:
+        return _error(self.option, self.kind, self.shown, why)
+
+    def peek(self):
+        return self.tokens[self.position] if self.position < len(self.tokens) else (None, None)
+
+    def take(self):
+        token = self.peek()
+        self.position += 1
+        return token
+
+    def sum(self, depth: int) -> _Part:
+        if depth > MAX_DEPTH:
+            raise self.fail("nested too deeply")
+        part = self.product(depth)
+        while self.peek() in (("op", "+"), ("op", "-")):
+            sign = -1.0 if self.take()[1] == "-" else 1.0
+            other = self.product(depth)
+            part = self.add(part, other, sign)
+        return part
+
+    def product(self, depth: int) -> _Part:
+        part = self.signed(depth)
+        while True:
+            kind_of, text = self.peek()
+            if (kind_of, text) in (("op", "*"), ("op", "/")):
+                self.take()
+                other = self.signed(depth)
+                part = self.multiply(part, other) if text == "*" else self.divide(part, other)
+            elif kind_of in ("number", "name") or (kind_of, text) == ("op", "("):
+                part = self.multiply(part, self.signed(depth))  # 3 t, 2 N*m, 3(t/s): side by side
+            else:
+                return part
+
+    def signed(self, depth: int) -> _Part:
+        if self.peek() in (("op", "-"), ("op", "+")):
+            sign = -1.0 if self.take()[1] == "-" else 1.0
+            return self.scale(self.signed(depth + 1), sign)
+        return self.power(depth)
+
+    def power(self, depth: int) -> _Part:
+        base = self.atom(depth)
+        if self.peek() in (("op", "^"), ("op", "**")):
+            self.take()
+            exponent = self.signed(depth + 1)
+            return self.raise_to(base, exponent)
+        return base
+
+    def atom(self, depth: int) -> _Part:
+        kind_of, text = self.take()
+        if kind_of == "number":
+            return _Part(self.none, [float(text)])
+        if (kind_of, text) == ("op", "("):
+            inner = self.sum(depth + 1)
+            if self.take() != ("op", ")"):
+                raise self.fail("a ( without its )")
+            return inner
+        if kind_of == "name" and text == "t":
+            return _Part(self.ureg.Quantity(1, "s").dimensionality, [0.0, 1.0])
+        if kind_of == "name" and text.lower() in FUNCTIONS:
+            if self.take() != ("op", "("):
+                raise self.fail(f"{text} takes its argument in parentheses: {text}(…)")
+            inner = self.sum(depth + 1)
+            if self.take() != ("op", ")"):
+                raise self.fail("a ( without its )")
+            return self.function(text.lower(), inner)
+        if kind_of == "name":
+            return self.unit(text)
+        raise self.fail("it ends too soon" if kind_of is None else f"unexpected {text!r}")
+
+    def unit(self, name: str) -> _Part:
+        try:
+            quantity = self.ureg.Quantity(1, name)
+            base = quantity.to_base_units()
+        except Exception:  # pint's UndefinedUnitError and its kin: not a unit
+            raise self.fail(f"{name!r} is not a unit (t is the time, the one variable)") from None
+        angled = "radian" in str(base.units) or "revolution" in str(quantity.units)
+        return _Part(quantity.dimensionality, [float(base.magnitude)], angled=angled)
+
+    def add(self, a: _Part, b: _Part, sign: float) -> _Part:
+        if a.dims != b.dims:
+            raise self.fail(f"it adds parts of different kinds ({_dims(a.dims)} and {_dims(b.dims)}): write each term's unit, or t/s for a number of seconds")
+        angled = a.angled or b.angled
+        if a.coefficients is not None and b.coefficients is not None:
+            size = max(len(a.coefficients), len(b.coefficients))
+            cs = [(a.coefficients[k] if k < len(a.coefficients) else 0.0) + sign * (b.coefficients[k] if k < len(b.coefficients) else 0.0) for k in range(size)]
+            return _Part(a.dims, cs, angled=angled)
+        f, g = a.call(), b.call()
+        return _Part(a.dims, function=lambda t: f(t) + sign * g(t), angled=angled)
+
+    def scale(self, a: _Part, factor: float) -> _Part:
+        if a.coefficients is not None:
+            return _Part(a.dims, [factor * c for c in a.coefficients], angled=a.angled)
+        f = a.call()
+        return _Part(a.dims, function=lambda t: factor * f(t), angled=a.angled)
+
+    def multiply(self, a: _Part, b: _Part) -> _Part:
+        dims, angled = a.dims * b.dims, a.angled or b.angled
+        if a.coefficients is not None and b.coefficients is not None:
+            if len(a.coefficients) + len(b.coefficients) - 2 > MAX_POWER:
+                raise self.fail(f"a power of t above {MAX_POWER}")
+            cs = [0.0] * (len(a.coefficients) + len(b.coefficients) - 1)
+            for i, x in enumerate(a.coefficients):
+                for j, y in enumerate(b.coefficients):
+                    cs[i + j] += x * y
+            return _Part(dims, cs, angled=angled)
+        f, g = a.call(), b.call()
+        return _Part(dims, function=lambda t: f(t) * g(t), angled=angled)
+
+    def divide(self, a: _Part, b: _Part) -> _Part:
+        dims, angled = a.dims / b.dims, a.angled or b.angled
+        if b.coefficients is not None and len(b.coefficients) == 1:
+            if b.coefficients[0] == 0:
+                raise self.fail("a division by zero")
+            return _Part(dims, (self.scale(a, 1.0 / b.coefficients[0])).coefficients, self.scale(a, 1.0 / b.coefficients[0]).function, angled)
+        f, g = a.call(), b.call()
+        return _Part(dims, function=lambda t: f(t) / g(t), angled=angled)
+
+    def raise_to(self, base: _Part, exponent: _Part) -> _Part:
+        if exponent.coefficients is None or len(exponent.coefficients) != 1 or exponent.dims != self.none:
+            raise self.fail("a power must be a number (t^2, not 2^t)")
+        n = exponent.coefficients[0]
+        if not math.isfinite(n) or abs(n) > MAX_POWER:
+            raise self.fail(f"a power beyond ±{MAX_POWER}")
+        dims = base.dims**n
+        if base.coefficients is not None and n == int(n) and n >= 0:
+            result = _Part(self.none, [1.0])
+            for _ in range(int(n)):
+                result = self.multiply(result, base)
+            return _Part(dims, result.coefficients, angled=base.angled)
+        if base.coefficients is not None and len(base.coefficients) == 1:
+            return _Part(dims, [base.coefficients[0] ** n], angled=base.angled)
+        f = base.call()
+        return _Part(dims, function=lambda t: f(t) ** n, angled=base.angled)
+
+    def function(self, name: str, inner: _Part) -> _Part:
+        if name == "sqrt":
+            dims = inner.dims**0.5
+        elif inner.dims != self.none:
+            raise self.fail(f"{name}(…) takes a number or an angle, not {_dims(inner.dims)}: t/s is a number of seconds, e.g. {name}(2 rad/s * t)")
+        else:
+            dims = self.none
+        rule, f = FUNCTIONS[name], inner.call()
+        if inner.coefficients is not None and len(inner.coefficients) == 1:
+            try:
+                return _Part(dims, [rule(inner.coefficients[0])])
+            except (ValueError, OverflowError):
+                raise self.fail(f"{name} has no value there") from None
+        return _Part(dims, function=lambda t: rule(f(t)))
+
+
+def _dims(dims) -> str:
+    text = str(dims)
+    return "a number" if text in ("", "dimensionless") else text
