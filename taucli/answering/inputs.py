@@ -52,11 +52,12 @@ _PLAIN: dict[str, tuple[Command, dict[str, tuple[str, str]]]] = {}  # command's 
 
 def _plain_quantities(command: Command) -> dict[str, tuple[str, str]]:
     """The options ``_repeated`` would read as one quantity (no words, no other kind, not
-    repeatable): looked up once per command, not per run (a batch reads thousands of lines)."""
+    repeatable, no formula of t): looked up once per command, not per run (a batch reads thousands
+    of lines). tests/answering/test_plain_quantities.py holds the two to the same options."""
     found = _PLAIN.get(command.name)
     if found is None or found[0] is not command:  # (a test may make a table of the same name)
         found = command, {option.name: (option.kind, option.sign) for option in command.options
-                          if option.kind in units.KINDS and not option.words and option.also is None and not option.repeatable}
+                          if option.kind in units.KINDS and not option.words and option.also is None and not option.repeatable and not option.of_time}
         _PLAIN[command.name] = found
     return found[1]
 
