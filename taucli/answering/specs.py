@@ -306,7 +306,7 @@ _MU_FIELDS = {"mu": ("dimensionless", "nonnegative"), "mu_k": ("dimensionless", 
 BRAKE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "radius": ("length", "positive"),
                 "lever": ("length", "positive"), "pivot": ("length", "positive"), "offset": ("length", "any")}
 FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
-               "surfaces": ("dimensionless", "positive"), "pmax": ("pressure", "positive")}
+               "surfaces": ("dimensionless", "positive"), "pmax": ("pressure", "positive"), "cone": ("angle", "positive")}
 BAND_FIELDS = {**_MU_FIELDS, "wrap": ("angle", "positive"), "radius": ("length", "positive"), "width": ("length", "positive"),
                "tension": ("force", "nonnegative"), "force": ("force", "nonnegative"), "lever": ("length", "positive"),
                "slack_arm": ("length", "positive"), "tight_arm": ("length", "positive")}
@@ -359,8 +359,12 @@ def faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
         surfaces = values.get("surfaces", 1.0)
         if surfaces != int(surfaces):
             raise InputError(source, "surfaces= is a whole number", example=example, got=repr(fields["surfaces"]))
+        cone = values.get("cone")
+        if cone is not None and cone > math.pi / 2 * (1 + 1e-12):
+            raise InputError(source, "cone= is the semi-cone angle, above 0 and at most 90deg (90deg: a flat face)",
+                             example='{face} "mu=0.2 force=5kN inner-radius=170mm outer-radius=205mm cone=20deg"', got=repr("cone=" + fields["cone"]))
         faces.append(Face(source, mu_k, mu_s, values.get("force"), values.get("inner_radius"), values.get("outer_radius"), model, int(surfaces),
-                          values.get("pmax")))
+                          values.get("pmax"), cone))
     return tuple(faces)
 
 

@@ -169,7 +169,8 @@ FACE_OPTION = Option(
     "face", FACE,
     'A flat face pressed on a surface, e.g. "mu=0.2" (the body lying on its face: its weight, its radii) or '
     '"mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm model=uniform|wear surfaces=2" (a clutch plate); '
-    "pmax= (the largest lining pressure) in place of force= (repeatable).",
+    "pmax= (the largest lining pressure) in place of force=; cone= the semi-cone angle of a cone clutch "
+    '("mu=0.2 force=5kN inner-radius=170mm outer-radius=205mm cone=20deg": force= the axial force, the torque the flat face\'s over sin α) (repeatable).',
     repeatable=True, metavar='"mu=… [force=…]"', example="mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm",
 )
 BAND_OPTION = Option(

@@ -20,6 +20,16 @@ A flat annular face pressed with force F between radii Ri and Ro takes, per cont
 
 (the second form of the first keeps its digits as Ri → Ro, where both tend to μ·F·R). Each is a
 constant Coulomb torque: kinetic μ while the body turns, static μ (at least the kinetic) holding it.
+
+A cone clutch (cone= α, the semi-cone angle) presses a conical face between the radii Ri and Ro
+with an axial force F. A ring of the face between r and r + dr has the slant width dr/sin α, so
+the area 2πr·dr/sin α; the normal pressure p on it pushes back along the axis with p·2πr·dr (the
+normal's axial share sin α times the area), and rubs with μ·p·2πr·dr/sin α at the arm r:
+
+    F = ∫ p·2πr·dr  (as a flat face's)        τ = (flat face's τ)/sin α
+
+so the cone multiplies the flat face's torque by 1/sin α (α = 90° is the flat face) and the
+pressures in F are the same as a flat face's.
 """
 
 from __future__ import annotations
@@ -30,6 +40,7 @@ from dataclasses import dataclass
 
 from taucli.core.errors import InputError
 from taucli.writing.report import Step, fmt, quantity_text, term
+from taucli.scenes.angles import sin_exact
 from taucli.scenes.band import band_torques
 from taucli.scenes.given import Band, Brake, Face
 
@@ -143,21 +154,28 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
             force = mass * g
             steps.append(Step(f"Normal force on the {_name(plate.source)}", "F = m·g", f"{quantity_text(mass, 'kg')} × {quantity_text(g, 'm/s**2')}",
                               quantity_text(force, "N"), "the body lies on its face, so the surface carries its weight"))
-        lever = face_radius_factor(inner, outer, plate.pressure)
+        sine = 1.0 if plate.cone is None else sin_exact(plate.cone)
+        lever = face_radius_factor(inner, outer, plate.pressure) / sine
         torque = plate.mu_k * force * lever * plate.surfaces
         face += torque
         face_static += (plate.mu_s if plate.mu_s is not None else plate.mu_k) * force * lever * plate.surfaces
         times = f"; {plate.surfaces} surfaces" if plate.surfaces != 1 else ""
+        cone = "" if plate.cone is None else "/sin α"
         if plate.pressure == "wear":
-            equation = "τ = μ·F·(Ro + Ri)/2" + (" × surfaces" if times else "")
+            equation = f"τ = μ·F·(Ro + Ri)/2{cone}" + (" × surfaces" if times else "")
             why = "worn in, the pressure falls as 1/r so that p·r (the wear rate) is the same everywhere; each ring carries μ·p·2πr·dr·r"
         else:
-            equation = "τ = (2/3)·μ·F·(Ro³ − Ri³)/(Ro² − Ri²) = (2/3)·μ·F·(Ro² + RoRi + Ri²)/(Ro + Ri)" + (" × surfaces" if times else "")
+            equation = (f"τ = (2/3)·μ·F·(Ro³ − Ri³)/(Ro² − Ri²){cone} = (2/3)·μ·F·(Ro² + RoRi + Ri²)/(Ro + Ri){cone}" + (" × surfaces" if times else ""))
             why = "the pressure F/(π(Ro² − Ri²)) is the same everywhere; each ring of radius r carries μ·p·2πr·dr at lever arm r"
-        steps.append(Step(f"Friction torque of the {_name(plate.source)} (uniform {'wear' if plate.pressure == 'wear' else 'pressure'})", equation,
-                          f"μ = {fmt(plate.mu_k)}, F = {quantity_text(force, 'N')}, Ro = {quantity_text(outer, 'm')}, Ri = {quantity_text(inner, 'm')}{times}",
+        if plate.cone is not None:
+            why += ("; on a cone of semi-angle α the ring's slant width is dr/sin α, so its friction is 1/sin α times a flat ring's "
+                    "while its pressure's axial share is the same (F the axial force)")
+        angle = "" if plate.cone is None else f", α = {fmt(math.degrees(plate.cone))}°"
+        kind = "face" if plate.cone is None else "cone"
+        steps.append(Step(f"Friction torque of the {_name(plate.source)} ({'cone, ' if plate.cone is not None else ''}uniform {'wear' if plate.pressure == 'wear' else 'pressure'})", equation,
+                          f"μ = {fmt(plate.mu_k)}, F = {quantity_text(force, 'N')}, Ro = {quantity_text(outer, 'm')}, Ri = {quantity_text(inner, 'm')}{angle}{times}",
                           quantity_text(torque, "N*m"), why))
-        models.append(f"face friction under uniform {'wear' if plate.pressure == 'wear' else 'pressure'}")
+        models.append(f"{kind} friction under uniform {'wear' if plate.pressure == 'wear' else 'pressure'}")
         if len(faces) == 1:
             details.append(("force_face", force, ""))
             details.append(("pressure_face", _face_pressure(plate, force, inner, outer, steps, notes), ""))

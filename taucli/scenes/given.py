@@ -155,6 +155,7 @@ class Face:
     pressure: str = "uniform"  # the model: uniform pressure or uniform wear
     surfaces: int = 1
     pmax: float | None = None  # the largest lining pressure, giving the clamp force with the radii
+    cone: float | None = None  # a cone clutch's semi-cone angle α (None: a flat face, α = 90°); force is then the axial force
 
     @property
     def by_weight(self) -> bool:
