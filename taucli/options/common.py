@@ -178,7 +178,9 @@ BAND_OPTION = Option(
     'A band brake round the body, T₁/T₂ = e^(μθ), torque (T₁ − T₂)·r, e.g. "mu=0.25 wrap=270deg radius=0.3m tension=500N" '
     "(tension= pulls the slack end) or \"mu=0.25 wrap=270deg force=400N lever=750mm slack-arm=125mm\" "
     "(a lever: force= at lever= from its pivot, the slack end at slack-arm=, the tight end at tight-arm=; both: differential); "
-    "width= for the lining pressure; the tight end is the one the drum drags the band towards (repeatable).",
+    "width= for the lining pressure; the tight end is the one the drum drags the band towards; "
+    '"… blocks=12 block-angle=15deg thickness=75mm" (in place of wrap=): a band-and-block brake, T₁/T₂ = ((1 + μ tan θ)/(1 − μ tan θ))ⁿ '
+    "with 2θ each block's angle, torque (T₁ − T₂)·(r + thickness) (repeatable).",
     repeatable=True, metavar='"mu=… wrap=… tension=…|force=… lever=…"', example="mu=0.25 wrap=270deg radius=0.3m tension=500N",
 )
 BRAKE_ON_A_LEVER = "{brake} 'force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.5m'"  # the shoe's force then comes from the lever

@@ -194,9 +194,12 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
             details.extend((("tension_tight", sliding.tight, ""), ("tension_slack", sliding.slack, "")))
             details.append(("pressure_band", None if strap.width is None else sliding.tight / (radius * strap.width), ""))
             if strap.width is None:
-                notes.append(f"pressure_band: null, because {strap.source} has no width= (the lining pressure is T/(r·w))")
-    if bands:
+                notes.append(f"pressure_band: null, because {strap.source} " + ("is lined with blocks, which press the drum, not the band"
+                             if strap.blocks is not None else "has no width= (the lining pressure is T/(r·w))"))
+    if any(strap.blocks is None for strap in bands):
         models.append("band brake T₁/T₂ = e^(μθ)")
+    if any(strap.blocks is not None for strap in bands):
+        models.append("band-and-block brake T₁/T₂ = ((1 + μ tan θ)/(1 − μ tan θ))ⁿ")
     return Contacts(brake, brake_static, face, face_static, tuple(steps), tuple(dict.fromkeys(models)), tuple(notes), band, band_static, tuple(details))
 
 

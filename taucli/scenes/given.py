@@ -126,7 +126,9 @@ class Band:
     μ kinetic and static, ``width`` (None: not given). Pulled by ``tension`` at its slack end, or
     by a lever: ``force`` at ``lever`` from the lever's pivot, the slack end at ``slack_arm`` and
     the tight end at ``tight_arm`` from it (None: that end is fixed at the pivot; both: a
-    differential band brake, the ends on opposite sides of the pivot)."""
+    differential band brake, the ends on opposite sides of the pivot). With ``blocks``, a band-and-block
+    brake: n blocks of angle 2θ on the band press the drum (``wrap`` = 2nθ), the band ``thickness``
+    out from the drum."""
 
     source: str
     mu_k: float
@@ -139,6 +141,9 @@ class Band:
     lever: float | None = None
     slack_arm: float | None = None
     tight_arm: float | None = None
+    blocks: int | None = None  # a band-and-block brake: n blocks, each of angle 2θ (block_angle), lined on the band
+    block_angle: float | None = None
+    thickness: float = 0.0  # the blocks' thickness: the band's line at radius + thickness
 
 
 @dataclass(frozen=True)

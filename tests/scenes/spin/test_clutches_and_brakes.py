@@ -120,3 +120,90 @@ def test_cone_clutch_in_batch_and_cli_as_in_python():
     torque, _ = cone_reference(0.2, 5000, 0.17, 0.205, mpmath.radians(20), "wear")
     assert python == pytest.approx(float(torque), rel=1e-13)
 
+
+# --- band-and-block brakes -----------------------------------------------------------------------
+
+
+def blocks_reference(mu, blocks, block_angle, slack):
+    """The band's tensions block by block: each block of angle 2θ, between T₀ on its slack side and
+    T on its tight side, is held by the drum's push N and its friction μN at its middle; resolving
+    across and along that middle radius, (T + T₀) sin θ − N = 0 and (T − T₀) cos θ − μN = 0, solved
+    for (T, N) as a linear system, block after block from T₂. Returns (T₁, ΣμN)."""
+    mu, half = mpmath.mpf(mu), mpmath.mpf(block_angle) / 2
+    tension, rubbing = mpmath.mpf(slack), mpmath.mpf(0)
+    for _ in range(blocks):
+        matrix = mpmath.matrix([[mpmath.sin(half), -1], [mpmath.cos(half), -mu]])
+        tension, normal = mpmath.lu_solve(matrix, mpmath.matrix([-tension * mpmath.sin(half), tension * mpmath.cos(half)]))
+        rubbing += mu * normal
+    return tension, rubbing
+
+
+def test_band_and_block_khurmi():
+    """Khurmi and Gupta, Theory of Machines, the band-and-block brake of 12 blocks of 15° on a drum
+    600 mm across, the blocks 75 mm thick, μ = 0.3, its ends on pins 40 mm and 150 mm either side of
+    the fulcrum, 250 N at 900 mm; drum and flywheel 1800 kg with k = 600 mm, from 300 rpm. The band's
+    line is 75 mm out from the drum, so τ = (T₁ − T₂)(0.3 + 0.075) m (worked from the statement)."""
+    report = taucli.spin_down(mass="1800kg", gyration="600mm", omega0="300rpm",
+                              band="mu=0.3 blocks=12 block-angle=15deg radius=300mm thickness=75mm force=250N lever=900mm slack-arm=150mm tight-arm=40mm")
+    result = values(report)
+    ratio, _ = blocks_reference(0.3, 12, mpmath.radians(15), 1)
+    slack = 250 * mpmath.mpf("0.9") / (mpmath.mpf("0.15") - mpmath.mpf("0.04") * ratio)
+    torque = (ratio - 1) * slack * mpmath.mpf("0.375")
+    inertia = 1800 * mpmath.mpf("0.6") ** 2
+    assert result["tension_slack"] == pytest.approx(float(slack), rel=1e-13)
+    assert result["tension_tight"] == pytest.approx(float(ratio * slack), rel=1e-13)
+    assert result["torque_band"] == pytest.approx(float(torque), rel=1e-13)
+    assert result["alpha0"] == pytest.approx(float(-torque / inertia), rel=1e-13)
+    assert result["t_stop"] == pytest.approx(float(10 * mpmath.pi / (torque / inertia)), rel=1e-13)
+    assert result["pressure_band"] is None
+
+
+@pytest.mark.parametrize(("mu", "blocks", "degrees"), [(0.3, 12, 15), (0.25, 14, 15), (0.4, 1, 60), (1e-4, 8, 20), (0.5, 20, 18)])
+def test_band_and_block_against_the_blocks_solved_one_by_one(mu, blocks, degrees):
+    """T₁ from T₂ = 100 N grown block by block; the torque (T₁ − T₂)·r from the band's ends
+    (without thickness, the friction's ΣμN·r summed over the blocks, which ties the two)."""
+    result = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm", band=f"mu={mu} blocks={blocks} block-angle={degrees}deg radius=0.2m tension=100N"))
+    tight, rubbing = blocks_reference(mu, blocks, mpmath.radians(degrees), 100)
+    assert result["tension_tight"] == pytest.approx(float(tight), rel=1e-13)
+    assert result["torque_band"] == pytest.approx(float((tight - 100) * mpmath.mpf("0.2")), rel=1e-13)
+    # the friction at the blocks' middles, resolved along the band, is T₁ − T₂ with each block's cos θ
+    assert float(rubbing / mpmath.cos(mpmath.radians(degrees) / 2)) == pytest.approx(float(tight - 100), rel=1e-13)
+
+
+@pytest.mark.parametrize("blocks", [1000, 100000])
+def test_many_short_blocks_are_the_band(blocks):
+    """Limit: n blocks of 2θ covering the same wrap W = 240° tend to the band's e^{μW} as n → ∞: with
+    tan θ = θ + θ³/3 + … and artanh x = x + x³/3 + …, 2n·artanh(μ tan θ) = μW + μ(1 + μ²)W³/(12n²) + O(1/n⁴)."""
+    band = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm", band="mu=0.35 wrap=240deg radius=0.2m tension=100N"))
+    lined = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm",
+                                    band=f"mu=0.35 blocks={blocks} block-angle={240 / blocks!r}deg radius=0.2m tension=100N"))
+    mu, wrap = 0.35, math.radians(240)
+    assert lined["tension_tight"] == pytest.approx(band["tension_tight"] * math.exp(mu * (1 + mu * mu) * wrap**3 / (12 * blocks**2)), rel=1e-11)
+    assert lined["tension_tight"] > band["tension_tight"]
+
+
+def test_band_and_block_same_in_other_units():
+    si = values(taucli.spin_down(inertia="1kg*m^2", omega0="10rad/s", band="mu=0.3 blocks=10 block-angle=20deg radius=0.25m thickness=3cm tension=200N"))
+    us = values(taucli.spin_down(inertia="1kg*m^2", omega0="10rad/s",
+                                 band=f"mu=0.3 blocks=10 block-angle={math.radians(20)!r}rad radius={0.25 / 0.0254!r}in thickness={3 / 2.54!r}in "
+                                      f"tension={200 / 4.4482216152605!r}lbf"))
+    for key in ("torque_band", "tension_tight", "tension_slack", "t_stop"):
+        assert us[key] == pytest.approx(si[key], rel=1e-12), key
+
+
+@pytest.mark.parametrize(
+    ("spec", "fragments"),
+    [
+        ("mu=0.3 blocks=12 radius=0.3m tension=1kN", ["--band", "block-angle="]),
+        ("mu=0.3 block-angle=15deg radius=0.3m tension=1kN", ["--band", "blocks="]),
+        ("mu=0.3 blocks=12 block-angle=15deg wrap=180deg radius=0.3m tension=1kN", ["--band", "wrap="]),
+        ("mu=0.3 blocks=12 block-angle=15deg width=5cm radius=0.3m tension=1kN", ["--band", "width="]),
+        ("mu=0.3 wrap=180deg thickness=5cm radius=0.3m tension=1kN", ["--band", "thickness="]),
+        ("mu=0.3 blocks=2.5 block-angle=15deg radius=0.3m tension=1kN", ["--band", "whole number"]),
+        ("mu=0.3 blocks=30 block-angle=15deg radius=0.3m tension=1kN", ["--band", "full turn"]),
+        ("mu=1.2 blocks=3 block-angle=100deg radius=0.3m tension=1kN", ["--band", "locks itself", "tan θ"]),
+    ],
+)
+def test_band_and_block_refusals(spec, fragments):
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--band", spec), *fragments)
+
