@@ -207,3 +207,61 @@ def test_band_and_block_same_in_other_units():
 def test_band_and_block_refusals(spec, fragments):
     assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--band", spec), *fragments)
 
+
+# --- the temperature rise of a brake -------------------------------------------------------------
+
+
+def heat_reference(inertia, omega0, torque):
+    """The heat of a constant friction torque τ stopping a wheel: ∫ τ·|ω(t)| dt over the stop, with
+    ω(t) = ω₀ − (τ/I)·t integrated by mpmath.quad from 0 to Iω₀/τ."""
+    inertia, omega0, torque = (mpmath.mpf(x) for x in (inertia, omega0, torque))
+    return mpmath.quad(lambda t: torque * abs(omega0 - torque / inertia * t), [0, inertia * omega0 / torque])
+
+
+def test_temperature_rise_serway_brake_drums():
+    """Serway and Vuille, College Physics (11th ed.), ch. 11 problem 24: a 1500 kg car at 30 m/s
+    halts; its four 8.0 kg iron brake drums (c = 448 J/(kg·°C)) take its kinetic energy: ΔT =
+    ½mv²/(4·8·448) = 47 °C (worked from the statement). Here a wheel holding that energy is stopped by a brake."""
+    report = taucli.spin_down(inertia="10kg*m^2", ke0="675kJ", brake="force=2kN mu=0.4 radius=0.3m", heat_mass="32kg", specific_heat="448 J/(kg*K)")
+    result = values(report)
+    omega0 = mpmath.sqrt(2 * mpmath.mpf(675000) / 10)
+    heat = heat_reference(10, omega0, mpmath.mpf("0.4") * 2000 * mpmath.mpf("0.3"))
+    assert result["temperature_rise"] == pytest.approx(float(heat / (32 * 448)), rel=1e-13)
+    assert result["temperature_rise"] == pytest.approx(47.08, abs=0.01)
+    assert any("Temperature rise" in step.title for step in report.steps)
+
+
+def test_temperature_rise_shares_the_heat_with_the_axle():
+    """The brakes', faces' and bands' heat (not the axle's) warms the mass: a 1 N·m axle and a 3 N·m
+    brake stopping 2 kg·m² from 10 rad/s give the brake three quarters of ½Iω₀²."""
+    result = values(taucli.spin_down(inertia=2, omega0=10, friction=1, brake="force=30N mu=0.5 radius=0.2m", heat_mass="2kg", specific_heat="500 J/(kg*K)"))
+    heat = heat_reference(2, 10, 4) * 3 / 4
+    assert result["temperature_rise"] == pytest.approx(float(heat / 1000), rel=1e-13)
+    alone = values(taucli.spin_down(inertia=2, omega0=10, friction=1, heat_mass="2kg", specific_heat="500 J/(kg*K)"))
+    assert alone["temperature_rise"] == pytest.approx(float(heat_reference(2, 10, 1) / 1000), rel=1e-13)
+
+
+def test_temperature_rise_same_in_other_units():
+    si = values(taucli.spin_down(inertia="3kg*m^2", omega0="500rpm", face="mu=0.3 force=1kN inner-radius=5cm outer-radius=10cm", heat_mass="4kg",
+                                 specific_heat="460 J/(kg*K)"))
+    other = values(taucli.spin_down(inertia="3kg*m^2", omega0="500rpm", face="mu=0.3 force=1kN inner-radius=5cm outer-radius=10cm", heat_mass="4000g",
+                                    specific_heat="0.46 kJ/(kg*K)"))
+    assert other["temperature_rise"] == pytest.approx(si["temperature_rise"], rel=1e-14)
+    assert si["temperature_rise"] == pytest.approx(si["work_face"] / (4 * 460), rel=1e-15)
+    shown = run_taucli("spin-down", "--inertia", "3kg*m^2", "--omega0", "500rpm", "--face", "mu=0.3 force=1kN inner-radius=5cm outer-radius=10cm",
+                       "--heat-mass", "4kg", "--specific-heat", "460 J/(kg*K)", "--get", "temperature_rise")
+    assert shown.code == 0 and float(shown.out) == pytest.approx(si["temperature_rise"], rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("args", "fragments"),
+    [
+        (["--brake", "force=10N mu=0.4 radius=0.2m", "--heat-mass", "2kg"], ["--specific-heat"]),
+        (["--brake", "force=10N mu=0.4 radius=0.2m", "--specific-heat", "460 J/(kg*K)"], ["--heat-mass"]),
+        (["--heat-mass", "2kg", "--specific-heat", "460 J/(kg*K)"], ["--heat-mass", "--brake"]),
+        (["--brake", "force=10N mu=0.4 radius=0.2m", "--heat-mass", "2kg", "--specific-heat", "460 J/kg"], ["--specific-heat"]),
+        (["--brake", "force=10N mu=0.4 radius=0.2m", "--heat-mass", "-2kg", "--specific-heat", "460 J/(kg*K)"], ["--heat-mass"]),
+    ],
+)
+def test_temperature_rise_refusals(args, fragments):
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", *args), *fragments)
