@@ -18,7 +18,8 @@ from taucli.options.table import Option
 
 # --brake, --face and --band of spin-down and impulse (#24, #35): "key=value ..." specs like --particle's.
 BRAKE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "radius": ("length", "positive"),
-                "lever": ("length", "positive"), "pivot": ("length", "positive"), "offset": ("length", "any")}
+                "lever": ("length", "positive"), "pivot": ("length", "positive"), "offset": ("length", "any"),
+                "shoe_angle": ("angle", "positive")}
 FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
                "surfaces": ("dimensionless", "positive"), "pmax": ("pressure", "positive"), "cone": ("angle", "positive")}
 BAND_FIELDS = {**_MU_FIELDS, "wrap": ("angle", "positive"), "radius": ("length", "positive"), "width": ("length", "positive"),
@@ -44,7 +45,12 @@ def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
             raise InputError(source, "takes offset= (the friction's arm about the lever's pivot) only with lever= and pivot=", example=lever_example, got=repr(spec))
         values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs, option.name, number - 1)
         mu_k, mu_s = coefficients(source, values)
-        brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius"), values.get("lever"), values.get("pivot"), values.get("offset", 0.0)))
+        shoe_angle = values.get("shoe_angle")
+        if shoe_angle is not None and shoe_angle > math.pi * (1 + 1e-12):
+            raise InputError(source, "shoe-angle= is the arc 2θ the shoe covers, at most 180deg (the pressure p_max·cos φ is 0 at ±90°)",
+                             example='{brake} "force=800N mu=0.35 radius=160mm shoe-angle=90deg"', got=repr("shoe-angle=" + fields["shoe_angle"]))
+        brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius"), values.get("lever"), values.get("pivot"), values.get("offset", 0.0),
+                            shoe_angle))
     return tuple(brakes)
 
 

@@ -162,7 +162,8 @@ BRAKE_OPTION = Option(
     'A brake shoe (or a tool) pressed against the body, e.g. "force=100N mu=0.4 radius=0.5m": torque μ·N·r, like --friction; '
     "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius. On a lever (a block brake): "
     '"force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3": force= at lever= from the lever\'s pivot, the shoe at pivot= from it, '
-    "the friction's line at offset= from it (positive: self-energizing), N = F·lever/(pivot − μ·offset) (repeatable).",
+    "the friction's line at offset= from it (positive: self-energizing), N = F·lever/(pivot − μ·offset); "
+    "shoe-angle= the arc 2θ of a long shoe, μ′ = 4μ·sin θ/(2θ + sin 2θ) in place of μ (repeatable).",
     repeatable=True, metavar='"force=… mu=… radius=…"', example="force=100N mu=0.4 radius=0.5m",
 )
 FACE_OPTION = Option(

@@ -11,6 +11,15 @@ c > 0 where the friction's moment turns the lever the way F does (self-energizin
 pulls the shoe on), c < 0 where it pushes the shoe off, c = 0 where its line passes through the
 pivot. Where x ≤ μ·c the brake locks itself.
 
+A long shoe (shoe-angle= 2θ, the arc it covers, symmetrical about the line to its pivot) wears
+so that the pressure is p_max·cos φ at φ from its middle. Its resultant normal force (along the
+middle) and its friction moment about the axle, per unit width,
+
+    N = ∫ p_max·cos φ·cos φ·r dφ = p_max·r·(2θ + sin 2θ)/2,   τ = ∫ μ·p_max·cos φ·r² dφ = 2μ·p_max·r²·sin θ
+
+give τ = μ′·N·r with μ′ = 4μ·sin θ/(2θ + sin 2θ) (μ′ → μ as θ → 0: a short shoe); the lever's
+equations then take μ′ for μ.
+
 A flat annular face pressed with force F between radii Ri and Ro takes, per contact surface,
 
     uniform pressure:  τ = (2/3)·μ·F·(Ro³ − Ri³)/(Ro² − Ri²) = (2/3)·μ·F·(Ro² + Ro·Ri + Ri²)/(Ro + Ri)
@@ -36,7 +45,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from taucli.core.errors import InputError
 from taucli.writing.report import Step, fmt, quantity_text, term
@@ -116,6 +125,8 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
     brake = brake_static = face = face_static = band = band_static = 0.0
     rim = body_rim(body_options)
     for shoe in brakes:
+        if shoe.shoe_angle is not None:
+            shoe = _long_shoe(shoe, steps)
         radius = shoe.radius if shoe.radius is not None else rim
         if radius is None:
             raise InputError(shoe.source, "needs radius= (the body has no radius to take)", example='{brake} "force=100N mu=0.4 radius=0.5m"')
@@ -201,6 +212,24 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
     if any(strap.blocks is not None for strap in bands):
         models.append("band-and-block brake T₁/T₂ = ((1 + μ tan θ)/(1 − μ tan θ))ⁿ")
     return Contacts(brake, brake_static, face, face_static, tuple(steps), tuple(dict.fromkeys(models)), tuple(notes), band, band_static, tuple(details))
+
+
+def long_shoe_factor(shoe_angle: float) -> float:
+    """μ′/μ of a long shoe of arc 2θ: 4·sin θ/(2θ + sin 2θ) (module docstring); 1 as θ → 0."""
+    half = shoe_angle / 2
+    return 4 * math.sin(half) / (shoe_angle + math.sin(shoe_angle))
+
+
+def _long_shoe(shoe: Brake, steps: list[Step]) -> Brake:
+    """The shoe with its μ made the long shoe's equivalent μ′ (its normal force the resultant N)."""
+    factor = long_shoe_factor(shoe.shoe_angle)
+    equivalent = replace(shoe, mu_k=shoe.mu_k * factor, mu_s=None if shoe.mu_s is None else shoe.mu_s * factor)
+    steps.append(Step(f"Equivalent friction coefficient of the long {_name(shoe.source)}", "μ′ = 4μ·sin θ/(2θ + sin 2θ)",
+                      f"4 × {fmt(shoe.mu_k)} × sin {fmt(math.degrees(shoe.shoe_angle / 2))}° / ({term(shoe.shoe_angle, 'rad')} + sin {fmt(math.degrees(shoe.shoe_angle))}°)",
+                      fmt(equivalent.mu_k),
+                      "the pressure on a long shoe pivoted far from the drum is p_max·cos φ round its arc 2θ; its resultant normal force N is "
+                      "∫ p·cos φ, its friction moment ∫ μ·p·r, so τ = μ′·N·r"))
+    return equivalent
 
 
 def _lever_normal(shoe: Brake, steps: list[Step], notes: list[str]) -> tuple[float, float]:

@@ -118,6 +118,7 @@ class Brake:
     lever: float | None = None
     pivot: float | None = None
     offset: float = 0.0
+    shoe_angle: float | None = None  # a long shoe's arc 2θ (None: a short shoe, its pressure at one point)
 
 
 @dataclass(frozen=True)

@@ -265,3 +265,59 @@ def test_temperature_rise_same_in_other_units():
 )
 def test_temperature_rise_refusals(args, fragments):
     assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", *args), *fragments)
+
+
+# --- long-shoe drum brakes -----------------------------------------------------------------------
+
+
+def long_shoe_reference(mu, normal, radius, shoe_angle):
+    """A long shoe of arc 2θ, its pressure p_max·cos φ (φ from its middle), per unit width: its
+    resultant normal force along the middle N = ∫ p·cos φ·r dφ fixes p_max; its friction moment
+    about the axle is τ = ∫ μ·p·r·r dφ, both over −θ..θ by mpmath.quad. Returns τ."""
+    mu, normal, radius, half = mpmath.mpf(mu), mpmath.mpf(normal), mpmath.mpf(radius), mpmath.mpf(shoe_angle) / 2
+    per_pmax = mpmath.quad(lambda phi: mpmath.cos(phi) * mpmath.cos(phi) * radius, [-half, half])
+    pmax = normal / per_pmax
+    return mpmath.quad(lambda phi: mu * pmax * mpmath.cos(phi) * radius * radius, [-half, half])
+
+
+@pytest.mark.parametrize("degrees", [10, 60, 90, 120, 180])
+def test_long_shoe_against_its_pressure_integrated(degrees):
+    result = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm", brake=f"force=500N mu=0.3 radius=0.2m shoe-angle={degrees}deg"))
+    assert result["torque_brake"] == pytest.approx(float(long_shoe_reference(0.3, 500, 0.2, mpmath.radians(degrees))), rel=1e-13)
+
+
+def test_long_shoe_on_a_lever_brakes_and_dynamometers_illustration():
+    """A textbook's chapter "Brakes and Dynamometers", Illustration 1 (as a Python textbook
+    companion transcribes it): a drum 0.32 m across, the shoe's contact 90°, μ = 0.35, 820 N at
+    0.66 m on the lever, the shoe at 0.3 m and the friction's line 0.06 m from the fulcrum:
+    printed 120.4553 N·m (with π taken as 3.14). N and the friction from the lever's moments,
+    F ℓ = N x − f c, with f = τ/r from the pressure integrated round the arc."""
+    result = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm",
+                                     brake="force=820N lever=0.66m pivot=0.3m offset=0.06m mu=0.35 radius=160mm shoe-angle=90deg"))
+    assert result["torque_brake"] == pytest.approx(120.4553, abs=0.05)
+    ratio = long_shoe_reference(1, 1, 1, mpmath.pi / 2)  # f/N for μ = 1, r = 1
+    mu_equivalent = mpmath.mpf("0.35") * ratio
+    normal = 820 * mpmath.mpf("0.66") / (mpmath.mpf("0.3") - mu_equivalent * mpmath.mpf("0.06"))
+    assert result["force_brake"] == pytest.approx(float(normal), rel=1e-13)
+    assert result["torque_brake"] == pytest.approx(float(mu_equivalent * normal * mpmath.mpf("0.16")), rel=1e-13)
+
+
+def test_a_short_arc_is_the_short_shoe():
+    """Limit: μ′ = 4μ sin θ/(2θ + sin 2θ) → μ as θ → 0 (μ′/μ = 1 + θ²/6 + …)."""
+    short = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm", brake="force=500N mu=0.3 radius=0.2m"))
+    arc = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm", brake="force=500N mu=0.3 radius=0.2m shoe-angle=0.01deg"))
+    half = math.radians(0.005)
+    assert arc["torque_brake"] == pytest.approx(short["torque_brake"] * (1 + half * half / 6), rel=1e-12)
+
+
+def test_long_shoe_same_in_other_units():
+    si = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm", brake="force=500N mu=0.3 radius=0.2m shoe-angle=100deg"))
+    us = values(taucli.spin_down(inertia="1kg*m^2", omega0="100rpm",
+                                 brake=f"force={500 / 4.4482216152605!r}lbf mu=0.3 radius={0.2 / 0.0254!r}in shoe-angle={math.radians(100)!r}rad"))
+    assert us["torque_brake"] == pytest.approx(si["torque_brake"], rel=1e-12)
+
+
+@pytest.mark.parametrize("spec", ["force=5N mu=0.3 radius=0.2m shoe-angle=200deg", "force=5N mu=0.3 radius=0.2m shoe-angle=2",
+                                  "force=5N mu=0.3 radius=0.2m shoe-angle=3m"])
+def test_long_shoe_refusals(spec):
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--brake", spec), "--brake", "shoe-angle=")
