@@ -192,20 +192,22 @@ def _of_neither(option: Option, own: InputError) -> InputError:
     return InputError(option.name, f"{own.expected}{listed}", example=own.example, got=own.got, hint=own.hint)
 
 
-def _spec(name: str):
-    """The reader of a "key=value" spec option (or a vector), in taucli.answering.specs."""
+def _spec(name: str, module: str = "specs"):
+    """The reader of a "key=value" spec option (or a vector), in taucli.answering.specs (the
+    contacts' in taucli.answering.contact_specs)."""
 
     def read(option: Option, given, inputs: Inputs, stdin):
-        from taucli.answering import specs  # deferred: the spec readers and the records they read into (4 ms), only for a spec option
+        import importlib  # deferred: the spec readers and the records they read into (4 ms), only for a spec option
 
-        return getattr(specs, name)(option, given, inputs, stdin)
+        return getattr(importlib.import_module(f"taucli.answering.{module}"), name)(option, given, inputs, stdin)
 
     return read
 
 
 READERS = {FLAG: _flag, CHOICE: _choice, FILE: _file, COUNT: _count, TEXT: _as_given}
 READERS.update({kind: _repeated for kind in units.KINDS})
-READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec("particles"), COUPLE: _spec("couples"), BRAKE: _spec("brakes"), FACE: _spec("faces"), BAND: _spec("bands")})
+READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec("particles"), COUPLE: _spec("couples"), BRAKE: _spec("brakes", "contact_specs"),
+                FACE: _spec("faces", "contact_specs"), BAND: _spec("bands", "contact_specs")})
 READERS.update({SIDE: _spec("sides"), PULL: _spec("pulls"), ROTOR: _spec("rotors")})
 
 

@@ -1,5 +1,6 @@
 """Options given as "key=value" specs, and vectors: a part of a body, a particle, another body on
-the axis, a brake shoe, a pressed face; "x,y,z UNIT". Each spec's keys are quantities read as
+the axis, a block of the Atwood machine; "x,y,z UNIT" (the contacts, brakes, faces and bands, in
+taucli.answering.contact_specs). Each spec's keys are quantities read as
 every quantity is (taucli.answering.reading), into the records of taucli.scenes.given.
 """
 
@@ -12,7 +13,7 @@ from taucli.quantities import units
 from taucli.core.errors import InputError
 from taucli.answering.reading import Inputs, Origin, word
 from taucli.writing.report import Value, fmt
-from taucli.scenes.given import PRESSURES, SURFACES, Band, Brake, Couple, Face, Part, Particle, Pull, Rotor, Side
+from taucli.scenes.given import SURFACES, Couple, Part, Particle, Pull, Rotor, Side
 from taucli.options.table import Option
 
 
@@ -301,90 +302,8 @@ def rotors(option: Option, given, inputs: Inputs, stdin) -> tuple:
     return tuple(rotors)
 
 
-# --brake, --face and --band of spin-down and impulse (#24, #35): "key=value ..." specs like --particle's.
+# μ as a spec gives it: mu= (kinetic) or mu-k= and mu-s= (--brake, --face, --band in taucli.answering.contact_specs; --side1, --side2).
 _MU_FIELDS = {"mu": ("dimensionless", "nonnegative"), "mu_k": ("dimensionless", "nonnegative"), "mu_s": ("dimensionless", "nonnegative")}
-BRAKE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "radius": ("length", "positive"),
-                "lever": ("length", "positive"), "pivot": ("length", "positive"), "offset": ("length", "any")}
-FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
-               "surfaces": ("dimensionless", "positive"), "pmax": ("pressure", "positive")}
-BAND_FIELDS = {**_MU_FIELDS, "wrap": ("angle", "positive"), "radius": ("length", "positive"), "width": ("length", "positive"),
-               "tension": ("force", "nonnegative"), "force": ("force", "nonnegative"), "lever": ("length", "positive"),
-               "slack_arm": ("length", "positive"), "tight_arm": ("length", "positive")}
-
-
-def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
-    """Each "force=… mu=… [radius=…]" (force= the normal force N), or "force=… lever=… pivot=…
-    [offset=…] mu=…" (force= the force F on a lever; see taucli.scenes.contact)."""
-    example = '{brake} "force=100N mu=0.4 radius=0.5m"'
-    lever_example = '{brake} "force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.2m"'
-    brakes = []
-    for number, source, spec in _specs(option, given):
-        _, fields = _spec_fields(spec, source, BRAKE_FIELDS, example, shape_word=False)
-        if "force" not in fields:
-            raise InputError(source, "needs force=", example=example, got=repr(spec))
-        if ("lever" in fields) != ("pivot" in fields):
-            raise InputError(source, "takes lever= (where the force acts) with pivot= (where the shoe is), both from the lever's pivot",
-                             example=lever_example, got=repr(spec))
-        if "offset" in fields and "lever" not in fields:
-            raise InputError(source, "takes offset= (the friction's arm about the lever's pivot) only with lever= and pivot=", example=lever_example, got=repr(spec))
-        values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs, option.name, number - 1)
-        mu_k, mu_s = coefficients(source, values)
-        brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius"), values.get("lever"), values.get("pivot"), values.get("offset", 0.0)))
-    return tuple(brakes)
-
-
-def faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
-    """Each "mu=… [force=… | pmax=…] [inner-radius=… outer-radius=…] [model=uniform|wear] [surfaces=N]".
-    pressure=uniform|wear, the model's old key, is read as model= with a note."""
-    example = '{face} "mu=0.2", or {face} "mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm model=wear surfaces=2"'
-    faces = []
-    for number, source, spec in _specs(option, given):
-        _, fields = _spec_fields(spec, source, {*FACE_FIELDS, "model", "pressure"}, example, shape_word=False)
-        if "pressure" in fields:
-            if fields["pressure"] not in PRESSURES:
-                raise InputError(source, "pressure= was the model's old key (uniform|wear): the largest lining pressure is pmax=, the model model=",
-                                 example='{face} "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm model=wear"', got=repr("pressure=" + fields["pressure"]))
-            if "model" in fields:
-                raise InputError(source, "has model= and pressure=: pressure= is the old spelling of model=, give it once", example=example, got=repr(spec))
-            fields["model"] = fields.pop("pressure")
-            inputs.notes.append(f"{source}: pressure={fields['model']} read as model={fields['model']} (the pressure model; pmax= gives the largest pressure)")
-        if "force" in fields and "pmax" in fields:
-            raise InputError(source, "takes force= (the clamp force) or pmax= (the largest pressure, giving the force), not both",
-                             example='{face} "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm"', got=repr(spec))
-        values = _read_fields(fields, FACE_FIELDS, source, f"face{number}", inputs, option.name, number - 1)
-        mu_k, mu_s = coefficients(source, values)
-        model = fields.get("model", "uniform")
-        if model not in PRESSURES:
-            raise InputError(source, f"model= is one of {', '.join(PRESSURES)}", example=example, got=repr(model))
-        surfaces = values.get("surfaces", 1.0)
-        if surfaces != int(surfaces):
-            raise InputError(source, "surfaces= is a whole number", example=example, got=repr(fields["surfaces"]))
-        faces.append(Face(source, mu_k, mu_s, values.get("force"), values.get("inner_radius"), values.get("outer_radius"), model, int(surfaces),
-                          values.get("pmax")))
-    return tuple(faces)
-
-
-def bands(option: Option, given, inputs: Inputs, stdin) -> tuple:
-    """Each "mu=… wrap=… [radius=…] [width=…]" with "tension=…" (the pull on the slack end) or
-    "force=… lever=… slack-arm=…|tight-arm=…" (a lever; both arms: a differential band brake)."""
-    example = '{band} "mu=0.25 wrap=270deg radius=0.3m force=400N lever=750mm slack-arm=125mm"'
-    bands = []
-    for number, source, spec in _specs(option, given):
-        _, fields = _spec_fields(spec, source, BAND_FIELDS, example, shape_word=False)
-        if "wrap" not in fields:
-            raise InputError(source, "needs wrap= (the angle of drum the band covers)", example=example, got=repr(spec))
-        levered = [key for key in ("force", "lever", "slack_arm", "tight_arm") if key in fields]
-        if ("tension" in fields) == bool(levered):
-            raise InputError(source, "needs tension= (the pull on the band's slack end) or a lever: force= lever= and slack-arm= or tight-arm=, not both",
-                             example=example, got=repr(spec))
-        if levered and ("force" not in fields or "lever" not in fields or not {"slack_arm", "tight_arm"} & set(fields)):
-            raise InputError(source, "a lever needs force= at lever= from its pivot, and slack-arm= or tight-arm= (or both) where the band's ends are",
-                             example=example, got=repr(spec))
-        values = _read_fields(fields, BAND_FIELDS, source, f"band{number}", inputs, option.name, number - 1)
-        mu_k, mu_s = coefficients(source, values)
-        bands.append(Band(source, mu_k, values["wrap"], mu_s, values.get("radius"), values.get("width"), values.get("tension"), values.get("force"),
-                          values.get("lever"), values.get("slack_arm"), values.get("tight_arm")))
-    return tuple(bands)
 
 
 # --side1, --side2 and --pull of atwood (#34): "key=value ..." specs like --brake's.

@@ -165,14 +165,16 @@ BRAKE_OPTION = Option(
     'A brake shoe (or a tool) pressed against the body, e.g. "force=100N mu=0.4 radius=0.5m": torque μ·N·r, like --friction; '
     "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius. On a lever (a block brake): "
     '"force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3": force= at lever= from the lever\'s pivot, the shoe at pivot= from it, '
-    "the friction's line at offset= from it (positive: self-energizing), N = F·lever/(pivot − μ·offset) (repeatable).",
+    "the friction's line at offset= from it (positive: self-energizing), N = F·lever/(pivot − μ·offset); "
+    "shoe-angle= the arc 2θ of a long shoe, μ′ = 4μ·sin θ/(2θ + sin 2θ) in place of μ (repeatable).",
     repeatable=True, metavar='"force=… mu=… radius=…"', example="force=100N mu=0.4 radius=0.5m",
 )
 FACE_OPTION = Option(
     "face", FACE,
     'A flat face pressed on a surface, e.g. "mu=0.2" (the body lying on its face: its weight, its radii) or '
     '"mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm model=uniform|wear surfaces=2" (a clutch plate); '
-    "pmax= (the largest lining pressure) in place of force= (repeatable).",
+    "pmax= (the largest lining pressure) in place of force=; cone= the semi-cone angle of a cone clutch "
+    '("mu=0.2 force=5kN inner-radius=170mm outer-radius=205mm cone=20deg": force= the axial force, the torque the flat face\'s over sin α) (repeatable).',
     repeatable=True, metavar='"mu=… [force=…]"', example="mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm",
 )
 BAND_OPTION = Option(
@@ -180,7 +182,9 @@ BAND_OPTION = Option(
     'A band brake round the body, T₁/T₂ = e^(μθ), torque (T₁ − T₂)·r, e.g. "mu=0.25 wrap=270deg radius=0.3m tension=500N" '
     "(tension= pulls the slack end) or \"mu=0.25 wrap=270deg force=400N lever=750mm slack-arm=125mm\" "
     "(a lever: force= at lever= from its pivot, the slack end at slack-arm=, the tight end at tight-arm=; both: differential); "
-    "width= for the lining pressure; the tight end is the one the drum drags the band towards (repeatable).",
+    "width= for the lining pressure; the tight end is the one the drum drags the band towards; "
+    '"… blocks=12 block-angle=15deg thickness=75mm" (in place of wrap=): a band-and-block brake, T₁/T₂ = ((1 + μ tan θ)/(1 − μ tan θ))ⁿ '
+    "with 2θ each block's angle, torque (T₁ − T₂)·(r + thickness) (repeatable).",
     repeatable=True, metavar='"mu=… wrap=… tension=…|force=… lever=…"', example="mu=0.25 wrap=270deg radius=0.3m tension=500N",
 )
 BRAKE_ON_A_LEVER = "{brake} 'force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.5m'"  # the shoe's force then comes from the lever

@@ -68,6 +68,9 @@ COMMAND = Command(
                "mgh = ηE, e.g. 50kg.", panel=ENERGY),
         Option("vehicle_mass", "mass", "A vehicle the wheel's stored energy sets moving from rest as the wheel comes to rest (or slows to --until-omega): "
                "its speed, ½mv² = ηE, e.g. 1200kg.", panel=ENERGY),
+        Option("heat_mass", "mass", "The mass that takes the heat of the brakes, faces and bands (else of --friction) with --specific-heat: "
+               "its temperature rise ΔT = E/(m·c), E the energy they take to --time, the target or the stop, e.g. 12kg.", panel=ENERGY),
+        Option("specific_heat", "specific heat", "Specific heat c of --heat-mass, e.g. '460 J/(kg*K)' (steel).", panel=ENERGY),
         Option("efficiency", "dimensionless", "Efficiency η, 0 to 1, with which the stored energy reaches --lift-mass or --vehicle-mass.", default="1", panel=ENERGY),
         Option("rim_accel", "acceleration", "Tangential acceleration of the rim, giving α = a_t/R (R the body's radius, or --radius), e.g. '0.5m/s^2'.", sign="any", panel=MOTION),
         Option("rim_speed", "velocity", "Initial speed of the rim, giving ω₀ = v/R (R the body's radius, or --radius with --inertia).", sign="any", panel=MOTION),
@@ -127,6 +130,8 @@ COMMAND = Command(
         Result("KE_after", "J", "kinetic energy after…", needs=("work", *TO_A_LOAD)),
         Result("omega_after", "rad/s", "angular velocity after…", needs=("work", *TO_A_LOAD)),
         Result("energy_delivered", "J", "energy that reaches the load (η × the energy the wheel gives up)", needs=TO_A_LOAD),
+        Result("temperature_rise", "K", "temperature rise of the mass that takes the heat, ΔT = E/(m·c)", needs=("heat_mass",),
+               example="{brake} 'force=100N mu=0.4 radius=0.5m' {heat_mass} 12kg {specific_heat} '460 J/(kg*K)'"),
         Result("lift_height", "m", "height the mass is lifted", needs=("lift_mass",)),
         Result("vehicle_speed", "m/s", "speed the vehicle reaches from rest", needs=("vehicle_mass",)),
         *POINT_RESULTS,

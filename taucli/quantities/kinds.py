@@ -62,6 +62,7 @@ KINDS: dict[str, Kind] = {
         Kind("stress", "Pa", "200 MPa", ("Pa", "kPa", "MPa", "GPa", "psi", "N/mm^2")),
         Kind("torsion constant", "N*m/rad", "'0.5 N*m/rad'", ("N*m/rad", "N*m/deg", "mN*m/rad")),
         Kind("lead", "m/rev", "5 mm", ("mm", "in", "mm/rev", "in/rev")),  # a screw's advance per turn: a length alone is per revolution
+        Kind("specific heat", "J/kg/K", "'460 J/(kg*K)'", ("J/(kg*K)", "kJ/(kg*K)", "J/(g*K)")),  # the heat that warms a kilogram by a kelvin
     )
 }
 

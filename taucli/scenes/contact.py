@@ -11,6 +11,15 @@ c > 0 where the friction's moment turns the lever the way F does (self-energizin
 pulls the shoe on), c < 0 where it pushes the shoe off, c = 0 where its line passes through the
 pivot. Where x ≤ μ·c the brake locks itself.
 
+A long shoe (shoe-angle= 2θ, the arc it covers, symmetrical about the line to its pivot) wears
+so that the pressure is p_max·cos φ at φ from its middle. Its resultant normal force (along the
+middle) and its friction moment about the axle, per unit width,
+
+    N = ∫ p_max·cos φ·cos φ·r dφ = p_max·r·(2θ + sin 2θ)/2,   τ = ∫ μ·p_max·cos φ·r² dφ = 2μ·p_max·r²·sin θ
+
+give τ = μ′·N·r with μ′ = 4μ·sin θ/(2θ + sin 2θ) (μ′ → μ as θ → 0: a short shoe); the lever's
+equations then take μ′ for μ.
+
 A flat annular face pressed with force F between radii Ri and Ro takes, per contact surface,
 
     uniform pressure:  τ = (2/3)·μ·F·(Ro³ − Ri³)/(Ro² − Ri²) = (2/3)·μ·F·(Ro² + Ro·Ri + Ri²)/(Ro + Ri)
@@ -20,16 +29,27 @@ A flat annular face pressed with force F between radii Ri and Ro takes, per cont
 
 (the second form of the first keeps its digits as Ri → Ro, where both tend to μ·F·R). Each is a
 constant Coulomb torque: kinetic μ while the body turns, static μ (at least the kinetic) holding it.
+
+A cone clutch (cone= α, the semi-cone angle) presses a conical face between the radii Ri and Ro
+with an axial force F. A ring of the face between r and r + dr has the slant width dr/sin α, so
+the area 2πr·dr/sin α; the normal pressure p on it pushes back along the axis with p·2πr·dr (the
+normal's axial share sin α times the area), and rubs with μ·p·2πr·dr/sin α at the arm r:
+
+    F = ∫ p·2πr·dr  (as a flat face's)        τ = (flat face's τ)/sin α
+
+so the cone multiplies the flat face's torque by 1/sin α (α = 90° is the flat face) and the
+pressures in F are the same as a flat face's.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from taucli.core.errors import InputError
 from taucli.writing.report import Step, fmt, quantity_text, term
+from taucli.scenes.angles import sin_exact
 from taucli.scenes.band import band_torques
 from taucli.scenes.given import Band, Brake, Face
 
@@ -105,6 +125,8 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
     brake = brake_static = face = face_static = band = band_static = 0.0
     rim = body_rim(body_options)
     for shoe in brakes:
+        if shoe.shoe_angle is not None:
+            shoe = _long_shoe(shoe, steps)
         radius = shoe.radius if shoe.radius is not None else rim
         if radius is None:
             raise InputError(shoe.source, "needs radius= (the body has no radius to take)", example='{brake} "force=100N mu=0.4 radius=0.5m"')
@@ -143,21 +165,28 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
             force = mass * g
             steps.append(Step(f"Normal force on the {_name(plate.source)}", "F = m·g", f"{quantity_text(mass, 'kg')} × {quantity_text(g, 'm/s**2')}",
                               quantity_text(force, "N"), "the body lies on its face, so the surface carries its weight"))
-        lever = face_radius_factor(inner, outer, plate.pressure)
+        sine = 1.0 if plate.cone is None else sin_exact(plate.cone)
+        lever = face_radius_factor(inner, outer, plate.pressure) / sine
         torque = plate.mu_k * force * lever * plate.surfaces
         face += torque
         face_static += (plate.mu_s if plate.mu_s is not None else plate.mu_k) * force * lever * plate.surfaces
         times = f"; {plate.surfaces} surfaces" if plate.surfaces != 1 else ""
+        cone = "" if plate.cone is None else "/sin α"
         if plate.pressure == "wear":
-            equation = "τ = μ·F·(Ro + Ri)/2" + (" × surfaces" if times else "")
+            equation = f"τ = μ·F·(Ro + Ri)/2{cone}" + (" × surfaces" if times else "")
             why = "worn in, the pressure falls as 1/r so that p·r (the wear rate) is the same everywhere; each ring carries μ·p·2πr·dr·r"
         else:
-            equation = "τ = (2/3)·μ·F·(Ro³ − Ri³)/(Ro² − Ri²) = (2/3)·μ·F·(Ro² + RoRi + Ri²)/(Ro + Ri)" + (" × surfaces" if times else "")
+            equation = (f"τ = (2/3)·μ·F·(Ro³ − Ri³)/(Ro² − Ri²){cone} = (2/3)·μ·F·(Ro² + RoRi + Ri²)/(Ro + Ri){cone}" + (" × surfaces" if times else ""))
             why = "the pressure F/(π(Ro² − Ri²)) is the same everywhere; each ring of radius r carries μ·p·2πr·dr at lever arm r"
-        steps.append(Step(f"Friction torque of the {_name(plate.source)} (uniform {'wear' if plate.pressure == 'wear' else 'pressure'})", equation,
-                          f"μ = {fmt(plate.mu_k)}, F = {quantity_text(force, 'N')}, Ro = {quantity_text(outer, 'm')}, Ri = {quantity_text(inner, 'm')}{times}",
+        if plate.cone is not None:
+            why += ("; on a cone of semi-angle α the ring's slant width is dr/sin α, so its friction is 1/sin α times a flat ring's "
+                    "while its pressure's axial share is the same (F the axial force)")
+        angle = "" if plate.cone is None else f", α = {fmt(math.degrees(plate.cone))}°"
+        kind = "face" if plate.cone is None else "cone"
+        steps.append(Step(f"Friction torque of the {_name(plate.source)} ({'cone, ' if plate.cone is not None else ''}uniform {'wear' if plate.pressure == 'wear' else 'pressure'})", equation,
+                          f"μ = {fmt(plate.mu_k)}, F = {quantity_text(force, 'N')}, Ro = {quantity_text(outer, 'm')}, Ri = {quantity_text(inner, 'm')}{angle}{times}",
                           quantity_text(torque, "N*m"), why))
-        models.append(f"face friction under uniform {'wear' if plate.pressure == 'wear' else 'pressure'}")
+        models.append(f"{kind} friction under uniform {'wear' if plate.pressure == 'wear' else 'pressure'}")
         if len(faces) == 1:
             details.append(("force_face", force, ""))
             details.append(("pressure_face", _face_pressure(plate, force, inner, outer, steps, notes), ""))
@@ -176,10 +205,31 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
             details.extend((("tension_tight", sliding.tight, ""), ("tension_slack", sliding.slack, "")))
             details.append(("pressure_band", None if strap.width is None else sliding.tight / (radius * strap.width), ""))
             if strap.width is None:
-                notes.append(f"pressure_band: null, because {strap.source} has no width= (the lining pressure is T/(r·w))")
-    if bands:
+                notes.append(f"pressure_band: null, because {strap.source} " + ("is lined with blocks, which press the drum, not the band"
+                             if strap.blocks is not None else "has no width= (the lining pressure is T/(r·w))"))
+    if any(strap.blocks is None for strap in bands):
         models.append("band brake T₁/T₂ = e^(μθ)")
+    if any(strap.blocks is not None for strap in bands):
+        models.append("band-and-block brake T₁/T₂ = ((1 + μ tan θ)/(1 − μ tan θ))ⁿ")
     return Contacts(brake, brake_static, face, face_static, tuple(steps), tuple(dict.fromkeys(models)), tuple(notes), band, band_static, tuple(details))
+
+
+def long_shoe_factor(shoe_angle: float) -> float:
+    """μ′/μ of a long shoe of arc 2θ: 4·sin θ/(2θ + sin 2θ) (module docstring); 1 as θ → 0."""
+    half = shoe_angle / 2
+    return 4 * math.sin(half) / (shoe_angle + math.sin(shoe_angle))
+
+
+def _long_shoe(shoe: Brake, steps: list[Step]) -> Brake:
+    """The shoe with its μ made the long shoe's equivalent μ′ (its normal force the resultant N)."""
+    factor = long_shoe_factor(shoe.shoe_angle)
+    equivalent = replace(shoe, mu_k=shoe.mu_k * factor, mu_s=None if shoe.mu_s is None else shoe.mu_s * factor)
+    steps.append(Step(f"Equivalent friction coefficient of the long {_name(shoe.source)}", "μ′ = 4μ·sin θ/(2θ + sin 2θ)",
+                      f"4 × {fmt(shoe.mu_k)} × sin {fmt(math.degrees(shoe.shoe_angle / 2))}° / ({term(shoe.shoe_angle, 'rad')} + sin {fmt(math.degrees(shoe.shoe_angle))}°)",
+                      fmt(equivalent.mu_k),
+                      "the pressure on a long shoe pivoted far from the drum is p_max·cos φ round its arc 2θ; its resultant normal force N is "
+                      "∫ p·cos φ, its friction moment ∫ μ·p·r, so τ = μ′·N·r"))
+    return equivalent
 
 
 def _lever_normal(shoe: Brake, steps: list[Step], notes: list[str]) -> tuple[float, float]:

@@ -151,6 +151,7 @@ class Brake:
     lever: float | None = None
     pivot: float | None = None
     offset: float = 0.0
+    shoe_angle: float | None = None  # a long shoe's arc 2θ (None: a short shoe, its pressure at one point)
 
 
 @dataclass(frozen=True)
@@ -159,7 +160,9 @@ class Band:
     μ kinetic and static, ``width`` (None: not given). Pulled by ``tension`` at its slack end, or
     by a lever: ``force`` at ``lever`` from the lever's pivot, the slack end at ``slack_arm`` and
     the tight end at ``tight_arm`` from it (None: that end is fixed at the pivot; both: a
-    differential band brake, the ends on opposite sides of the pivot)."""
+    differential band brake, the ends on opposite sides of the pivot). With ``blocks``, a band-and-block
+    brake: n blocks of angle 2θ on the band press the drum (``wrap`` = 2nθ), the band ``thickness``
+    out from the drum."""
 
     source: str
     mu_k: float
@@ -172,6 +175,9 @@ class Band:
     lever: float | None = None
     slack_arm: float | None = None
     tight_arm: float | None = None
+    blocks: int | None = None  # a band-and-block brake: n blocks, each of angle 2θ (block_angle), lined on the band
+    block_angle: float | None = None
+    thickness: float = 0.0  # the blocks' thickness: the band's line at radius + thickness
 
 
 @dataclass(frozen=True)
@@ -188,6 +194,7 @@ class Face:
     pressure: str = "uniform"  # the model: uniform pressure or uniform wear
     surfaces: int = 1
     pmax: float | None = None  # the largest lining pressure, giving the clamp force with the radii
+    cone: float | None = None  # a cone clutch's semi-cone angle α (None: a flat face, α = 90°); force is then the axial force
 
     @property
     def by_weight(self) -> bool:

@@ -138,6 +138,11 @@ SPELLINGS = {
                              f"{20 / (0.45359237 / 0.3048**2)!r} lb/ft^2", "20"], None, None),
     "linear density": (0.5, ["0.5 kg/m", "500 g/m", "5 g/cm", "0.5 kg*m^-1", "0.005 kg/cm", f"{0.5 / (0.45359237 / 0.3048)!r} lb/ft",
                              "50 g/dm", "0.5"], None, None),
+    # specific heat (spin-down --specific-heat, #47): per kelvin, a kelvin of rise being a degree Celsius of it
+    "specific heat": (460.0, ["460 J/(kg*K)", "460J/(kg*K)", "0.46 kJ/(kg*K)", "0.46 J/(g*K)", "460 J/kg/K", "460 J*kg^-1*K^-1",
+                              "460 m^2/(s^2*K)", "460 W*s/(kg*K)", "460 J/(kg*delta_degC)", "460"],
+                      ("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--brake", "force=10N mu=0.4 radius=0.2m", "--heat-mass", "2kg"),
+                      "--specific-heat"),
 }  # fmt: skip
 
 

@@ -28,6 +28,7 @@ from taucli.scenes.spin.phases import phases_run
 from taucli.scenes.spin.targets import as_given, with_momentum, with_revs_until
 from taucli.scenes.spin.corner import corner_torque
 from taucli.scenes.spin.contacts import put_contacts, split_contacts, with_contacts
+from taucli.scenes.heating import with_temperature_rise
 from taucli.scenes.spin.mean import with_omega_mean
 from taucli.scenes.spin.point import with_point
 from taucli.scenes.spin.power import power_report
@@ -93,6 +94,8 @@ def spin_down(
     vehicle_mass: float | None = None,
     efficiency: float | None = None,
     energy: bool = False,
+    heat_mass: float | None = None,
+    specific_heat: float | None = None,
     method: str = "auto",
     dt: float | None = None,
     rtol: float | None = None,
@@ -183,9 +186,11 @@ def spin_down(
             raise InputError("in_time", "asks for the drive torque that meets the target, so it conflicts with a drive ({torque}, {force}, {power})")
         report, targets, torques = _in_time(wheel, torques, omega0, in_time, targets, front, method, dt, rtol)
     else:
-        report = _under_torques(wheel, torques, omega0, targets, front, drive_steps(push, torque), method, dt, rtol, energy or ke0 is not None)
+        report = _under_torques(wheel, torques, omega0, targets, front, drive_steps(push, torque), method, dt, rtol,
+                                energy or ke0 is not None or heat_mass is not None)
 
     report = assumed.applied(with_contacts(split_contacts(_with_parts(report, wheel.parts), axle, contact), contact))
+    report = with_temperature_rise(report, heat_mass, specific_heat)
     with_revs_until(report.results)
     with_momentum(report.results, wheel.inertia)
     report = with_omega_mean(report, omega0, **targets)

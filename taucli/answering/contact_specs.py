@@ -1,0 +1,131 @@
+"""The contacts pressed on a turning body, given as "key=value" specs (#24, #35, #47): --brake (a
+shoe, on a lever or not), --face (a flat face or a cone clutch's), --band (a band brake, or a
+band-and-block one). Read as taucli.answering.specs reads every spec, into the records of
+taucli.scenes.given.
+"""
+
+from __future__ import annotations
+
+import math
+
+from taucli.core.errors import InputError
+from taucli.answering.reading import Inputs
+from taucli.answering.specs import _MU_FIELDS, _read_fields, _spec_fields, _specs, coefficients
+from taucli.writing.report import fmt
+from taucli.scenes.given import PRESSURES, Band, Brake, Face
+from taucli.options.table import Option
+
+
+# --brake, --face and --band of spin-down and impulse (#24, #35): "key=value ..." specs like --particle's.
+BRAKE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "radius": ("length", "positive"),
+                "lever": ("length", "positive"), "pivot": ("length", "positive"), "offset": ("length", "any"),
+                "shoe_angle": ("angle", "positive")}
+FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
+               "surfaces": ("dimensionless", "positive"), "pmax": ("pressure", "positive"), "cone": ("angle", "positive")}
+BAND_FIELDS = {**_MU_FIELDS, "wrap": ("angle", "positive"), "radius": ("length", "positive"), "width": ("length", "positive"),
+               "tension": ("force", "nonnegative"), "force": ("force", "nonnegative"), "lever": ("length", "positive"),
+               "slack_arm": ("length", "positive"), "tight_arm": ("length", "positive"),
+               "blocks": ("dimensionless", "positive"), "block_angle": ("angle", "positive"), "thickness": ("length", "nonnegative")}
+
+
+def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "force=… mu=… [radius=…]" (force= the normal force N), or "force=… lever=… pivot=…
+    [offset=…] mu=…" (force= the force F on a lever; see taucli.scenes.contact)."""
+    example = '{brake} "force=100N mu=0.4 radius=0.5m"'
+    lever_example = '{brake} "force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.2m"'
+    brakes = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, BRAKE_FIELDS, example, shape_word=False)
+        if "force" not in fields:
+            raise InputError(source, "needs force=", example=example, got=repr(spec))
+        if ("lever" in fields) != ("pivot" in fields):
+            raise InputError(source, "takes lever= (where the force acts) with pivot= (where the shoe is), both from the lever's pivot",
+                             example=lever_example, got=repr(spec))
+        if "offset" in fields and "lever" not in fields:
+            raise InputError(source, "takes offset= (the friction's arm about the lever's pivot) only with lever= and pivot=", example=lever_example, got=repr(spec))
+        values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs, option.name, number - 1)
+        mu_k, mu_s = coefficients(source, values)
+        shoe_angle = values.get("shoe_angle")
+        if shoe_angle is not None and shoe_angle > math.pi * (1 + 1e-12):
+            raise InputError(source, "shoe-angle= is the arc 2θ the shoe covers, at most 180deg (the pressure p_max·cos φ is 0 at ±90°)",
+                             example='{brake} "force=800N mu=0.35 radius=160mm shoe-angle=90deg"', got=repr("shoe-angle=" + fields["shoe_angle"]))
+        brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius"), values.get("lever"), values.get("pivot"), values.get("offset", 0.0),
+                            shoe_angle))
+    return tuple(brakes)
+
+
+def faces(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "mu=… [force=… | pmax=…] [inner-radius=… outer-radius=…] [model=uniform|wear] [surfaces=N]".
+    pressure=uniform|wear, the model's old key, is read as model= with a note."""
+    example = '{face} "mu=0.2", or {face} "mu=0.3 force=2kN inner-radius=5cm outer-radius=12cm model=wear surfaces=2"'
+    faces = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*FACE_FIELDS, "model", "pressure"}, example, shape_word=False)
+        if "pressure" in fields:
+            if fields["pressure"] not in PRESSURES:
+                raise InputError(source, "pressure= was the model's old key (uniform|wear): the largest lining pressure is pmax=, the model model=",
+                                 example='{face} "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm model=wear"', got=repr("pressure=" + fields["pressure"]))
+            if "model" in fields:
+                raise InputError(source, "has model= and pressure=: pressure= is the old spelling of model=, give it once", example=example, got=repr(spec))
+            fields["model"] = fields.pop("pressure")
+            inputs.notes.append(f"{source}: pressure={fields['model']} read as model={fields['model']} (the pressure model; pmax= gives the largest pressure)")
+        if "force" in fields and "pmax" in fields:
+            raise InputError(source, "takes force= (the clamp force) or pmax= (the largest pressure, giving the force), not both",
+                             example='{face} "mu=0.3 pmax=1MPa inner-radius=5cm outer-radius=12cm"', got=repr(spec))
+        values = _read_fields(fields, FACE_FIELDS, source, f"face{number}", inputs, option.name, number - 1)
+        mu_k, mu_s = coefficients(source, values)
+        model = fields.get("model", "uniform")
+        if model not in PRESSURES:
+            raise InputError(source, f"model= is one of {', '.join(PRESSURES)}", example=example, got=repr(model))
+        surfaces = values.get("surfaces", 1.0)
+        if surfaces != int(surfaces):
+            raise InputError(source, "surfaces= is a whole number", example=example, got=repr(fields["surfaces"]))
+        cone = values.get("cone")
+        if cone is not None and cone > math.pi / 2 * (1 + 1e-12):
+            raise InputError(source, "cone= is the semi-cone angle, above 0 and at most 90deg (90deg: a flat face)",
+                             example='{face} "mu=0.2 force=5kN inner-radius=170mm outer-radius=205mm cone=20deg"', got=repr("cone=" + fields["cone"]))
+        faces.append(Face(source, mu_k, mu_s, values.get("force"), values.get("inner_radius"), values.get("outer_radius"), model, int(surfaces),
+                          values.get("pmax"), cone))
+    return tuple(faces)
+
+
+def bands(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "mu=… wrap=… [radius=…] [width=…]" with "tension=…" (the pull on the slack end) or
+    "force=… lever=… slack-arm=…|tight-arm=…" (a lever; both arms: a differential band brake)."""
+    example = '{band} "mu=0.25 wrap=270deg radius=0.3m force=400N lever=750mm slack-arm=125mm"'
+    bands = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, BAND_FIELDS, example, shape_word=False)
+        blocked = "blocks" in fields or "block_angle" in fields
+        block_example = '{band} "mu=0.3 blocks=12 block-angle=15deg radius=300mm thickness=75mm tension=1kN"'
+        if blocked and ("blocks" not in fields or "block_angle" not in fields or "wrap" in fields or "width" in fields):
+            raise InputError(source, "a band-and-block brake takes blocks= (how many) with block-angle= (the angle 2θ each covers), "
+                             "and no wrap= (it is blocks × block-angle) nor width= (the blocks, not the band, press the drum)",
+                             example=block_example, got=repr(spec))
+        if "thickness" in fields and not blocked:
+            raise InputError(source, "takes thickness= (the blocks') only with blocks= and block-angle=", example=block_example, got=repr(spec))
+        if "wrap" not in fields and not blocked:
+            raise InputError(source, "needs wrap= (the angle of drum the band covers)", example=example, got=repr(spec))
+        levered = [key for key in ("force", "lever", "slack_arm", "tight_arm") if key in fields]
+        if ("tension" in fields) == bool(levered):
+            raise InputError(source, "needs tension= (the pull on the band's slack end) or a lever: force= lever= and slack-arm= or tight-arm=, not both",
+                             example=example, got=repr(spec))
+        if levered and ("force" not in fields or "lever" not in fields or not {"slack_arm", "tight_arm"} & set(fields)):
+            raise InputError(source, "a lever needs force= at lever= from its pivot, and slack-arm= or tight-arm= (or both) where the band's ends are",
+                             example=example, got=repr(spec))
+        values = _read_fields(fields, BAND_FIELDS, source, f"band{number}", inputs, option.name, number - 1)
+        mu_k, mu_s = coefficients(source, values)
+        blocks, wrap = None, values.get("wrap")
+        if blocked:
+            blocks = values["blocks"]
+            if blocks != int(blocks):
+                raise InputError(source, "blocks= is a whole number", example=block_example, got=repr(fields["blocks"]))
+            blocks = int(blocks)
+            wrap = blocks * values["block_angle"]
+            if wrap > 2 * math.pi * (1 + 1e-12):
+                raise InputError(source, "has blocks= × block-angle= above a full turn (360deg)", example=block_example,
+                                 got=f"{blocks} × {fmt(math.degrees(values['block_angle']))}° = {fmt(math.degrees(wrap))}°")
+        bands.append(Band(source, mu_k, wrap, mu_s, values.get("radius"), values.get("width"), values.get("tension"), values.get("force"),
+                          values.get("lever"), values.get("slack_arm"), values.get("tight_arm"), blocks, values.get("block_angle"),
+                          values.get("thickness", 0.0)))
+    return tuple(bands)
