@@ -170,7 +170,7 @@ def run(env, given: dict) -> int:
 
         plot.check_file(given["out"])
     if given.get("residuals") is not None:
-        residuals.check(given["residuals"])
+        residuals.check(given["residuals"], files)
     try:
         with render.progress_bar(env.stderr, True, after=BAR_AFTER) as progress:
             report, found = fit_of(command.name, files, scene_given, fit=given.get("fit"), x=tuple(given.get("x") or ()), y=given.get("y"),

@@ -12,8 +12,11 @@ named =x.csv, is written after a quote).
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 
+from taucli.core.errors import InputError
 from taucli.core.written import printable
 from taucli.quantities import units
 from taucli.fit.solve import Fit
@@ -48,9 +51,14 @@ def _finite(x) -> float | None:
     return x if np.isfinite(x) else None  # (a sample the scene gives no value for: an empty cell)
 
 
-def check(path: str) -> None:
-    """Before the fit: a .csv file that can be written (taucli.writing.files)."""
+def check(path: str, data: list = ()) -> None:
+    """Before the fit: a .csv file that can be written (taucli.writing.files), and none of the
+    fit's own data files (``data``: the files given), which it would overwrite."""
     files.check(path, "--residuals", (".csv",), EXAMPLE)
+    for source in data:
+        if isinstance(source, str) and source != "-" and os.path.exists(path) and os.path.exists(source) and os.path.samefile(path, source):
+            raise InputError("residuals", f"names {source}, a data file of this fit: writing the residuals would overwrite the measurements",
+                             example=EXAMPLE)
 
 
 def write(found: Fit, path: str, said_to=None) -> None:

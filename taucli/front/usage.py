@@ -97,8 +97,10 @@ def explain(command: Command | None, args: list[str], at: int) -> str | None:
                 i += 1
             option, value = last
             whole = " ".join((value, *extra))
-            return (f"{option.flag}: got {value!r}, then {' '.join(extra)!r} as words of their own; a value with spaces "
-                    f"is one word only in quotes: {option.flag} '{whole}', or write it without spaces: {option.flag} {typed(''.join((value, *extra)))}")
+            quoted = f"{option.flag}: got {value!r}, then {' '.join(extra)!r} as words of their own; a value with spaces is one word only in quotes: {option.flag} '{whole}'"
+            if any("=" in word for word in (value, *extra)):  # key=value ... of a spec: its spaces part the keys, so only the quotes will do
+                return quoted
+            return quoted + f", or write it without spaces: {option.flag} {typed(''.join((value, *extra)))}"
         return None
     return None
 

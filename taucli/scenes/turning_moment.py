@@ -47,7 +47,7 @@ def swing_from_loops(areas: list[float], scale_torque: float | None, scale_angle
     swing = highest - lowest
     closing = energies[-1]
     if abs(closing) > 1e-9 * math.fsum(abs(a) for a in areas) * per_area:
-        notes.append(f"the loops add to {fmt(math.fsum(areas))} mm², not 0: over a cycle the areas above and below the mean torque line balance; "
+        notes.append(f"--loops add to {fmt(math.fsum(areas))} mm², not 0: over a cycle the areas above and below the mean torque line balance; "
                      "ΔE is taken from the energies at the loops' ends as given")
     at = lambda value: energies.index(value)  # noqa: E731
     steps.append(Step("Energy of one mm² of the diagram", "e = (torque per mm) × (angle per mm)",

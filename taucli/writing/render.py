@@ -176,7 +176,7 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
         else:
             stream.write("".join(bare(named_result(report, name, "--get").value) + "\n" for name in output.get))
         if notes_to is not None:
-            _why_null(report, output.get, notes_to)
+            _about_the_inputs(report, notes_to, _why_null(report, output.get, notes_to))
     elif output.json:
         stream.write(document_text(report, steps=output.steps, plot=plot.plot_document(report) if output.charted else None) + "\n")
     elif output.format:
@@ -209,8 +209,9 @@ def written(report: Report, format: str, *, steps: bool = True) -> str:
     return {"md": formats.markdown, "html": formats.html_fragment}[format](formats.sheet(report, steps=steps))
 
 
-def _why_null(report: Report, names, stream: TextIO) -> None:
-    """For each result --get printed as null, the notes that say why: those that name it, else all."""
+def _why_null(report: Report, names, stream: TextIO) -> list[str]:
+    """For each result --get printed as null, the notes that say why: those that name it, else all
+    (the notes said)."""
     missing = [name for name in dict.fromkeys(names) if report.results[name].value is None]
     said: list[str] = []
     for name in missing:
@@ -220,6 +221,24 @@ def _why_null(report: Report, names, stream: TextIO) -> None:
             said.append(f"{name}: no value with these inputs")
     if said:
         stream.write(said_notes(said))
+    return said
+
+
+def _about_the_inputs(report: Report, stream: TextIO, said: list[str]) -> None:
+    """Beside --get's bare numbers, the notes that speak of an option the run was given (one that
+    plays no part, or that looks wrong): a script reading the number alone must hear of them too,
+    as the human view says them. (Notes _why_null wrote already are not said twice.)"""
+    flags = tuple(f"--{name.replace('_', '-')}" for name in report.inputs)
+    if not flags:
+        return
+    loud = [note for note in report.notes if note not in said and _names_a_flag(note, flags)
+            and not note.startswith("no --") and "to change it" not in note]  # (not a default's note: nothing given there)
+    if loud:
+        stream.write(said_notes(loud))
+
+
+def _names_a_flag(note: str, flags: tuple[str, ...]) -> bool:
+    return any(re.search(rf"(?<![\w-]){re.escape(flag)}(?![\w-])", note) for flag in flags)
 
 
 def said_notes(notes: Sequence[str]) -> str:

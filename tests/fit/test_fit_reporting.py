@@ -322,3 +322,17 @@ def test_where_the_model_is_drawn_at_the_samples_each_fitted_point_carries_its_s
     n, m = found.model.samples.count, 2
     s2 = sum(r * r for r in found.quality.residuals) / (n - m)
     assert sum(s * s for s in fitted.spread) == pytest.approx(s2 * m, rel=1e-3)
+
+
+def test_residuals_never_overwrite_the_data(tmp_path, monkeypatch):
+    """--residuals naming the fit's own data file (as given, or as ./name) is refused before the fit: it would overwrite the measurements."""
+    import shutil
+    from pathlib import Path
+    monkeypatch.chdir(tmp_path)
+    shutil.copy(Path(__file__).resolve().parents[2] / "docs" / "data" / "vernier-two-runs.csv", "runs.csv")
+    before = Path("runs.csv").read_bytes()
+    for named in ("runs.csv", "./runs.csv"):
+        code, out, err = _run("fit", "spin-down", "runs.csv", "--y", "Angular Velocity (rad/s)=omega", "--inertia", "0.05 kg*m^2", "--fit", "friction,viscous,omega0",
+                              "--per-run", "omega0", "--residuals", named)
+        assert code == 2 and out == "" and "would overwrite the measurements" in err, (code, err)
+    assert Path("runs.csv").read_bytes() == before

@@ -88,3 +88,27 @@ def test_a_spin_up_gives_its_revolutions_until_the_target():
     results = run.json()["results"]
     assert results["revs_until"]["unit"] == "rev" and results["revs_until"]["label"] == "revolutions until ω = 100 rad/s"
     assert results["revs_until"]["value"] * 2 * math.pi == pytest.approx(results["theta_until"]["value"], rel=1e-15)
+
+
+def test_get_says_the_notes_about_an_option_given():
+    """--get prints bare numbers; a note that an option given plays no part (or looks wrong) goes to
+    stderr beside them, as the human view says it: a script must not take the number as using it."""
+    from conftest import run_taucli
+    ran = run_taucli("atwood", "--m1", "100kg", "--m2", "40kg", "--g", "10", "--side1", "table", "--mu-k", "0.2", "--get", "a")
+    assert ran.code == 0 and "--mu-k and --mu-s play no part" in ran.err, ran.err
+    quiet = run_taucli("atwood", "--m1", "100kg", "--m2", "40kg", "--g", "10", "--get", "a")
+    assert quiet.code == 0 and quiet.err == "", quiet.err
+
+
+@pytest.mark.parametrize("args", [
+    ("drive", "--segment", "time=10s", "power=100kW"),
+    ("spin-down", "--inertia", "1kg*m^2", "--phase", "alpha=2rad/s^2", "time=5s"),
+    ("balance", "--mass", "mass=10kg", "radius=0.1m", "angle=30deg"),
+    ("atwood", "--m1", "4kg", "--pull", "force=20N", "angle=30deg"),
+])
+def test_a_spec_split_by_the_shell_is_offered_only_in_quotes(args):
+    """key=value words of a spec left unquoted: the fix offered is the quoted spec, never the keys run together."""
+    from conftest import assert_usage_error, run_taucli
+    ran = run_taucli(*args)
+    assert_usage_error(ran, "in quotes")
+    assert "without spaces" not in ran.err, ran.err

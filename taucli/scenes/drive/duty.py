@@ -66,4 +66,4 @@ def duty_cycle(segments: tuple[Segment, ...], rest_factor: float | None, rated_t
                   f"√(({terms}) / ({times}))", quantity_text(rms, unit),
                   f"the motor heats as the square of its current; the steady {quantity} that heats it as much is the RMS"
                   + ("; at rest it cools more slowly, so its rest time counts 1/k of itself" if rests else ""))]
-    return Report("drive", f"a duty cycle of {len(segments)} segments, by {quantity}", "closed form", results, steps, notes)
+    return Report("drive", f"a duty cycle of {len(segments)} segment{'s' if len(segments) != 1 else ''}, by {quantity}", "closed form", results, steps, notes)

@@ -65,17 +65,22 @@ def vehicle_on_a_turn(kind: str, mass: float | None, cg_height: float | None, tr
         results.put("couple_centrifugal", centrifugal)
         share = (gyroscopic + centrifugal) / (2 * track)
         weight_share = mass * g / 4
-        inner = weight_share - share
-        results.put("reaction_outer", weight_share + share)
-        results.put("reaction_inner", inner if inner >= 0 else None)
-        if inner < 0:
-            notes.append(f"reaction_inner: none: the inner wheels lift at this speed, the vehicle overturns (it would take {quantity_text(-inner, 'N')} pulling down)")
+        inner, outer = weight_share - share, weight_share + share
+        lifts = "inner" if inner < 0 else "outer" if outer < 0 else None
+        results.put("reaction_outer", None if lifts else outer)
+        results.put("reaction_inner", None if lifts else inner)
+        if lifts:
+            notes.append(f"reaction_inner, reaction_outer: none: the {lifts} wheels lift at this speed, and the vehicle overturns "
+                         f"{'outward' if lifts == 'inner' else 'inward'} (they would take {quantity_text(-min(inner, outer), 'N')} pulling down)")
         tipping = spinning / wheel_radius if rotating else 0.0
-        tipping += mass * cg_height
-        overturn = math.sqrt(mass * g * track * turn_radius / 2 / tipping) if tipping > 0 else None
+        tipping += mass * cg_height  # the couples are v²/R times this: outward where positive, inward where negative
+        overturn = math.sqrt(mass * g * track * turn_radius / 2 / abs(tipping)) if tipping else None
         results.put("speed_overturn", overturn)
         if overturn is None:
-            notes.append("speed_overturn: none: the engine's couple against the wheels outweighs the centrifugal couple at every speed")
+            notes.append("speed_overturn: none: the engine's couple against the wheels cancels the centrifugal couple at every speed")
+        elif tipping < 0:
+            notes.append("speed_overturn: inward: the engine's couple against the wheels outweighs the centrifugal couple, so the outer wheels "
+                         "unload at this speed")
         steps += [
             Step("Gyroscopic couple", "C_g = (4I_w + G·I_e) ω_w Ω", f"{quantity_text(spinning, 'kg*m**2')} × {quantity_text(omega_wheel, 'rad/s')} × {quantity_text(omega_turn, 'rad/s')}",
                  quantity_text(gyroscopic, "N*m"), "turning the spinning wheels' and engine's angular momentum takes this couple; its reaction on the "
@@ -83,12 +88,14 @@ def vehicle_on_a_turn(kind: str, mass: float | None, cg_height: float | None, tr
             Step("Centrifugal couple", "C_c = m v² h / R", f"{fmt(mass)} kg × ({quantity_text(speed, 'm/s')})² × {quantity_text(cg_height, 'm')} / {quantity_text(turn_radius, 'm')}",
                  quantity_text(centrifugal, "N*m"), "the road's grip turns the vehicle at the ground; the centre of gravity, h above it, tips outward"),
             Step("Load on each wheel", "mg/4 ± (C_g + C_c)/(2x)", f"{quantity_text(weight_share, 'N')} ± {quantity_text(share, 'N')}",
-                 f"outer {quantity_text(weight_share + share, 'N')}, inner {quantity_text(inner, 'N')}", "the couples are carried by the wheels' loads across the track x"),
+                 f"outer {quantity_text(outer, 'N')}, inner {quantity_text(inner, 'N')}" + (" (a negative load: those wheels lift)" if lifts else ""),
+                 "the couples are carried by the wheels' loads across the track x"),
         ]
         if overturn is not None:
-            steps.append(Step("Speed at which it overturns (inner wheels unloaded)", "v² = (mgxR/2) / ((4I_w + GI_e)/r_w + mh)",
-                              f"({fmt(mass)} kg × {quantity_text(g, 'm/s**2')} × {quantity_text(track, 'm')} × {quantity_text(turn_radius, 'm')} / 2) / "
-                              f"({fmt(tipping)} kg·m)", quantity_text(overturn, "m/s"),
+            steps.append(Step(f"Speed at which it overturns ({'inner' if tipping > 0 else 'outer'} wheels unloaded)",
+                              "v = √((mgxR/2) / |(4I_w + GI_e)/r_w + mh|)",
+                              f"√(({fmt(mass)} kg × {quantity_text(g, 'm/s**2')} × {quantity_text(track, 'm')} × {quantity_text(turn_radius, 'm')} / 2) / "
+                              f"{fmt(abs(tipping))} kg·m)", quantity_text(overturn, "m/s"),
                               "both couples grow as v², the weight's share does not"))
     else:
         tangent = speed * speed / (turn_radius * g) * ((spinning / wheel_radius if rotating else 0.0) + mass * cg_height) / (mass * cg_height)

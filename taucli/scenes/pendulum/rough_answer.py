@@ -169,7 +169,7 @@ def _worked_steps(model: Rough, body_steps, mass, cm_distance, gravity, results,
                 "½Iω₀² + U(θ₀) − τ_f|θₐ − θ₀| = U(θₐ)",
                 f"{quantity_text(start_energy, 'J')} − {quantity_text(friction, 'N*m')} × {fmt(abs(theta_a - swing.theta0))} rad "
                 f"= {quantity_text(swing.potential(theta_a), 'J')}",
-                f"θₐ = {fmt(math.degrees(zero.outward(theta_a)))}°",
+                f"{fmt(math.degrees(zero.outward(theta_a)))}°",
                 "all the energy the swing had, less what the couple took, is potential energy where it turns "
                 "(found by rk45 to ω = 0, then Newton's method on the energy)",
             )

@@ -74,15 +74,15 @@ def test_random_four_wheelers_against_the_vectors(seed):
         values = {k: val.value for k, val in taucli.gyro(vehicle="four-wheeler", mass=m, cg_height=h, track=x, wheel_inertia=I_w, engine_inertia=I_e,
                                                          gear_ratio=ratio, wheel_radius=r, speed=v, turn_radius=turn).results.items()}
         inner, outer = _four_wheeler(*(mpmath.mpf(q) for q in (m, h, x, I_w, I_e, ratio, r, v, turn)))
-        assert values["reaction_outer"] == pytest.approx(float(outer), rel=1e-12)
-        if inner < 0:
-            assert values["reaction_inner"] is None
+        if inner < 0 or outer < 0:  # a wheel lifts: it carries no load, and neither side's is the balance's
+            assert values["reaction_inner"] is None and values["reaction_outer"] is None
         else:
+            assert values["reaction_outer"] == pytest.approx(float(outer), rel=1e-12)
             assert values["reaction_inner"] == pytest.approx(float(inner), rel=1e-10, abs=1e-9 * m)
         overturn = values["speed_overturn"]
-        if overturn is not None:  # at that speed the vector balance leaves the inner wheels unloaded
-            at_overturn, _ = _four_wheeler(*(mpmath.mpf(q) for q in (m, h, x, I_w, I_e, ratio, r, overturn, turn)))
-            assert abs(at_overturn) <= 1e-9 * m * 9.8
+        if overturn is not None:  # at that speed the vector balance leaves the inner (or, tipping inward, the outer) wheels unloaded
+            at_overturn = _four_wheeler(*(mpmath.mpf(q) for q in (m, h, x, I_w, I_e, ratio, r, overturn, turn)))
+            assert min(abs(side) for side in at_overturn) <= 1e-9 * m * 9.8
 
 
 @pytest.mark.parametrize("seed", range(2))
@@ -120,3 +120,20 @@ def test_refusals(taucli):
     assert_usage_error(taucli(*base, "--track", "1.5m", "--spin", "100rpm"), "--spin")
     assert_usage_error(taucli("gyro", "--cg-height", "0.6m", "--spin", "100rpm", "--inertia", "1kg*m^2"), "--cg-height", "--vehicle")
     assert_usage_error(taucli(*base[:3], "--vehicle", "tricycle"), "--vehicle")
+
+
+def test_no_load_is_printed_on_a_wheel_that_lifts():
+    """Past the overturning speed, or with an engine turning hard against the wheels (the couple
+    then tips the vehicle inward), a wheel's load would be negative: both loads are null, and
+    speed_overturn is where the wheels that lift are unloaded, by the vector balance."""
+    kw = dict(vehicle="four-wheeler", mass="2500 kg", track="1.5 m", turn_radius="30 m", wheel_radius="0.375 m", wheel_inertia="9 kg*m^2",
+              cg_height="0.9 m")
+    past = taucli.gyro(**kw, speed="100 km/h").results
+    assert past["reaction_inner"].value is None and past["reaction_outer"].value is None
+    inward = taucli.gyro(**kw, speed="100 km/h", engine_inertia="240 kg*m^2", gear_ratio=-5).results
+    assert inward["reaction_inner"].value is None and inward["reaction_outer"].value is None
+    speed = inward["speed_overturn"].value
+    _, outer = _four_wheeler(*(mpmath.mpf(q) for q in (2500, 0.9, 1.5, 9, 240, -5, 0.375, speed, 30)))
+    assert abs(outer) <= 1e-9 * 2500 * 9.8  # the outer wheels unloaded at that speed
+    slower = taucli.gyro(**kw, speed=f"{speed * 0.99} m/s", engine_inertia="240 kg*m^2", gear_ratio=-5).results
+    assert slower["reaction_outer"].value > 0 and slower["reaction_inner"].value > 0
