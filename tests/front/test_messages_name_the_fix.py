@@ -125,7 +125,7 @@ def test_the_two_messages_of_the_issue():
     assert_usage_error(run_taucli("atwood", "--m1", "4kg", "--m2", "1kg", "--get", "v"),
                        "--get: v needs --distance or --time (e.g. --distance '0.2 m')")
     assert_usage_error(run_taucli("spin-down", "--inertia", "2", "--omega0", "30rad/s", "--friction", "1", "--get", "omega"),
-                       "--get: omega needs --time, --until-omega or --until-angle")
+                       "--get: omega needs --time, --until-omega, --until-angle or --phase")
     assert_usage_error(run_taucli("spin-down", "--inertia", "2", "--omega0", "30rad/s", "--friction", "1", "--to", "omega=rpm"),
                        "--to: omega needs --time")
 

@@ -34,6 +34,7 @@ OTHER = {
     "kg*m/s": ("g*cm/s", 1e5),  # #34: an impulse's linear momentum
     "N*s": ("mN*s", 1e3),  # #34: the pivot's impulse
     "kg*m": ("g*cm", 1e5),  # #47: an unbalance m·r
+    "K": ("mK", 1e3),  # #47: a brake's temperature rise (a difference of temperatures)
 }
 
 

@@ -82,7 +82,7 @@ def atwood(
     hoist = Hoist(hoist_speed, hoist_height, trip_time)
     check_hoist(hoist)
     if pulley_gyration is not None:  # #42 item 15: the pulley by its radius of gyration
-        given = {name: value for name, value in locals().items() if name != "pulley_gyration"}
+        given = {name: value for name, value in locals().items() if name not in ("pulley_gyration", "hoist", "counterweight")}
         return _by_gyration(given, pulley_gyration)
     if fixed_drum or rim_mu is not None:
         _refuse("does not apply with {fixed_drum}: a hoist drives a pulley that turns with its string" if fixed_drum

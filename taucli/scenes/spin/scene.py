@@ -6,6 +6,10 @@ laws (the rest). Before any of them: the body, ω₀ (given, from a rim speed or
 energy), a target given as an arc at the rim, the push that makes the drive, and the brakes' and
 faces' friction added to the axle's. After: the parts table, the contacts' shares of the work,
 what was assumed, and a point on the body (--at).
+
+Kept whole: the one reader of spin-down's fifty-odd options, each family read in the order the
+models need it (the models, the corner, the balance with no body and the phases are modules of
+their own); split further, the order would be spread over files that each need the others.
 """
 
 from __future__ import annotations
