@@ -23,7 +23,7 @@ import math
 from taucli.numerics import roots
 from taucli.quantities import units
 from taucli.answering import unknowns
-from taucli.core.errors import InputError, spelled
+from taucli.core.errors import InputError, did_you_mean, spelled
 from taucli.writing.report import Measured, Report, Step, Value, fmt, pretty_unit, quantity_text, term
 from taucli.quantities.measurement import NUMBER_THEN_UNIT, split
 from taucli.answering.propagate import FIND_SOLVES, Scene, combine, jacobian, linearity, monte_carlo, numeric
@@ -41,7 +41,7 @@ def _target(scene: Scene, want: str) -> tuple[str, float, float, str | None, lis
         raise InputError("want", "expected RESULT=VALUE", example="{want} a=4.0m/s^2", got=repr(want))
     result = command.result(key)
     if result is None:
-        raise InputError("want", f"expected a result of {command.name}: {names}", got=repr(key))
+        raise InputError("want", f"expected a result of {command.name}: {names}", got=repr(key), hint=did_you_mean(key, [r.key for r in command.results]))
     if result.unit is None:
         raise InputError("want", f"expected a result that is a number; {key} is yes or no", got=repr(want))
     kind = next((k.name for k in units.KINDS.values() if k.si_unit == result.unit), None)

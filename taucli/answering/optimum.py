@@ -15,7 +15,7 @@ import math
 
 from taucli.answering import unknowns
 from taucli.answering.propagate import FIND_SOLVES, Scene
-from taucli.core.errors import InputError
+from taucli.core.errors import InputError, did_you_mean
 from taucli.numerics import roots
 from taucli.quantities import units
 from taucli.writing.report import Report, Step, Value, quantity_text
@@ -29,7 +29,8 @@ def optimize(scene: Scene, unknown: unknowns.Unknown, key: str, sense: float, no
     option = "minimize" if sense > 0 else "maximize"
     result = command.result(key)
     if result is None:
-        raise InputError(option, f"expected a result of {command.name}: {', '.join(r.key for r in command.results)}", got=repr(key))
+        raise InputError(option, f"expected a result of {command.name}: {', '.join(r.key for r in command.results)}", got=repr(key),
+                         hint=did_you_mean(key, [r.key for r in command.results]))
     if result.unit is None:
         raise InputError(option, f"expected a result that is a number; {key} is yes or no", got=repr(key))
     si_unit = units.KINDS[unknown.kind].si_unit

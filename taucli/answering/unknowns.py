@@ -22,7 +22,7 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from taucli.core.errors import InputError
+from taucli.core.errors import InputError, did_you_mean
 from taucli.answering.contact_specs import BAND_FIELDS, BRAKE_FIELDS, FACE_FIELDS
 from taucli.answering.specs import with_key, COUPLE_FIELDS, PARTICLE_FIELDS, PART_FIELDS, ROTOR_FIELDS
 from taucli.answering.duty import SEGMENT_FIELDS
@@ -172,7 +172,7 @@ def resolve(command: Command, text: str, given: Mapping[str, object]) -> Unknown
     keys = [spelling for spelling in names(command) if spelling.endswith("." + name)]
     if keys:
         raise InputError("find", f"names a key of a spec: say which, as {' or '.join(keys)}", example="{find} " + keys[0], got=repr(text))
-    raise InputError("find", f"expected {described(command)}", got=repr(text))
+    raise InputError("find", f"expected {described(command)}", got=repr(text), hint=did_you_mean(name, names(command)))
 
 
 def described(command: Command) -> str:

@@ -67,7 +67,8 @@ def flywheel(
     results = Results(TABLE)
     if loops is not None:
         if energy_swing is not None or energy_per_cycle is not None:
-            raise InputError("loops", "conflicts with {energy_swing} and {energy_per_cycle}: the diagram's loops give ΔE")
+            given = "energy_swing" if energy_swing is not None else "energy_per_cycle"
+            raise InputError("loops", f"conflicts with {{{given}}}: the diagram's loops give ΔE", example=LOOPS_EXAMPLE)
         energy_swing = swing_from_loops(read_loops(loops), scale_torque, scale_angle, steps, notes)
     elif scale_torque is not None or scale_angle is not None:
         raise InputError("scale_torque" if scale_torque is not None else "scale_angle", "goes with {loops}: the scales of the diagram whose loops are given",

@@ -60,3 +60,6 @@ def test_refusals(taucli):
     assert_usage_error(taucli(*base, "--minimize", "t_stop"), "--minimize", "--find")
     assert_usage_error(taucli(*base, "--find", "friction", "--minimize", "t_stop", "--maximize", "t_stop"), "--maximize")
     assert_usage_error(taucli(*base, "--find", "friction", "--minimize", "nothing"), "--minimize")
+    assert_usage_error(taucli(*base, "--find", "friction", "--minimize", "t_stp"), "did you mean 't_stop'?")
+    assert_usage_error(taucli(*base, "--find", "frction", "--minimize", "t_stop"), "--find", "did you mean 'friction'?")
+    assert_usage_error(taucli(*base, "--find", "friction", "--want", "t_stp=3s"), "--want", "did you mean 't_stop'?")

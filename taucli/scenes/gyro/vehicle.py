@@ -42,7 +42,7 @@ def vehicle_on_a_turn(kind: str, mass: float | None, cg_height: float | None, tr
     if kind == "four-wheeler" and track is None:
         raise InputError("track", "is required for a four-wheeler (the distance between its inner and outer wheels)", example="{track} 1.5m")
     if kind == "two-wheeler" and track is not None:
-        raise InputError("track", "is for a four-wheeler: a two-wheeler leans instead")
+        raise InputError("track", "is for a four-wheeler: a two-wheeler leans instead", example="{vehicle} four-wheeler {track} 1.5m")
     rotating = wheel_inertia is not None or engine_inertia is not None
     if rotating and wheel_radius is None:
         raise InputError("wheel_radius", "is required with {wheel_inertia} or {engine_inertia} (the wheels spin at v/r)", example="{wheel_radius} 0.3m")
