@@ -193,14 +193,7 @@ def _speeds(omega_mean, omega_max, omega_min, rim_speed, rim_radius, fluctuation
     if omega_max is not None:
         if cs is not None:
             raise InputError("fluctuation" if fluctuation is not None else "speed_variation", "conflicts with the band {omega_max} and {omega_min}, which gives Cs")
-        if omega_max <= omega_min:
-            raise InputError("omega_max", "must be above {omega_min}", example="{omega_max} 303rpm {omega_min} 297rpm")
-        mean = (omega_max + omega_min) / 2
-        cs = (omega_max - omega_min) / mean
-        steps.append(Step("Mean speed and coefficient of fluctuation", "ω_mean = (ω_max + ω_min)/2,  Cs = (ω_max − ω_min)/ω_mean",
-                          f"({quantity_text(omega_max, 'rad/s')} + {quantity_text(omega_min, 'rad/s')})/2", f"{quantity_text(mean, 'rad/s')}, Cs = {fmt(cs)}",
-                          "the mean of the two ends, and the band's width over it"))
-        return mean, cs
+        return _band(omega_max, omega_min, "omega", "rad/s", "ω", "the mean of the two ends, and the band's width over it", steps)
     if cs is not None and not 0 < cs < 2:
         raise InputError("fluctuation" if fluctuation is not None else "speed_variation", "expected Cs between 0 and 2 (ω_min = ω_mean(1 − Cs/2) ≥ 0), e.g. 0.02",
                          got=fmt(cs))
@@ -219,13 +212,20 @@ def _rim_band(top: float, bottom: float, rim_speed, fluctuation, speed_variation
     for name, value in (("rim_speed", rim_speed), ("fluctuation", fluctuation), ("speed_variation", speed_variation)):
         if value is not None:
             raise InputError(name, "conflicts with the band {rim_speed_max} and {rim_speed_min}, which gives the mean rim speed and Cs")
+    return _band(top, bottom, "rim_speed", "m/s", "v", "the rim's speed is ωR, so its band has the same Cs as the shaft's", steps)
+
+
+def _band(top: float, bottom: float, name: str, unit: str, symbol: str, why: str, steps) -> tuple[float, float]:
+    """The mean and Cs of a speed band (the shaft's, --omega-max/--omega-min, or the rim's): the mean
+    of its ends, and its width over the mean; refused where the top is not above the bottom."""
     if top <= bottom:
-        raise InputError("rim_speed_max", "must be above {rim_speed_min}", example="{rim_speed_max} 30m/s {rim_speed_min} 29m/s")
+        example = "{omega_max} 303rpm {omega_min} 297rpm" if name == "omega" else "{rim_speed_max} 30m/s {rim_speed_min} 29m/s"
+        raise InputError(f"{name}_max", f"must be above {{{name}_min}}", example=example)
     mean = (top + bottom) / 2
     cs = (top - bottom) / mean
-    steps.append(Step("Mean rim speed and coefficient of fluctuation", "v_mean = (v_max + v_min)/2,  Cs = (v_max − v_min)/v_mean",
-                      f"({quantity_text(top, 'm/s')} + {quantity_text(bottom, 'm/s')})/2", f"{quantity_text(mean, 'm/s')}, Cs = {fmt(cs)}",
-                      "the rim's speed is ωR, so its band has the same Cs as the shaft's"))
+    title = "Mean speed and coefficient of fluctuation" if name == "omega" else "Mean rim speed and coefficient of fluctuation"
+    steps.append(Step(title, f"{symbol}_mean = ({symbol}_max + {symbol}_min)/2,  Cs = ({symbol}_max − {symbol}_min)/{symbol}_mean",
+                      f"({quantity_text(top, unit)} + {quantity_text(bottom, unit)})/2", f"{quantity_text(mean, unit)}, Cs = {fmt(cs)}", why))
     return mean, cs
 
 
