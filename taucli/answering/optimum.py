@@ -21,6 +21,8 @@ from taucli.quantities import units
 from taucli.writing.report import Report, Step, Value, quantity_text
 
 GOLDEN = (math.sqrt(5) - 1) / 2
+CURVE_CELLS = 3  # --plot draws the result over so many of the search grid's cells either side of the optimum
+CURVE_POINTS = 61
 
 
 def optimize(scene: Scene, unknown: unknowns.Unknown, key: str, sense: float, notes: list[str]) -> Report:
@@ -75,8 +77,36 @@ def optimize(scene: Scene, unknown: unknowns.Unknown, key: str, sense: float, no
              f"{key} changes as the square of the distance, so {name} is known to about 1e-8 of itself where {key} is to 1e-16"),
     ]
     method = f"{nominal.method}; {name} by a search of its range and golden-section search for the {way} {key}"
-    return Report(nominal.scene, nominal.model, method, results, [*steps, *nominal.steps], [*nominal.notes, *extra],
-                  nominal.inputs, nominal.tables, nominal.trajectory)
+    window = (made[max(best - CURVE_CELLS, 0)][0], made[min(best + CURVE_CELLS, len(made) - 1)][0])
+    report = Report(nominal.scene, nominal.model, method, results, [*steps, *nominal.steps], [*nominal.notes, *extra],
+                    nominal.inputs, nominal.tables, nominal.trajectory)
+    label = nominal.results[key].label if key in nominal.results else result.label
+    report.chart = lambda: _curve(scene, unknown, result, label, sense, window, x)
+    return report
+
+
+def _curve(scene: Scene, unknown: unknowns.Unknown, result, label: str, sense: float, window: tuple[float, float], optimum: float):
+    """--plot's chart of an optimum: the result against the input over the grid's cells either
+    side of the optimum (CURVE_POINTS solves, made only when the chart is drawn), the optimum marked."""
+    from taucli.writing import plot  # deferred: charts, only when one is drawn
+
+    low, high = window
+    logged = low > 0 and high > 0
+    to, back = (math.log, math.exp) if logged else ((lambda v: v), (lambda v: v))
+    xs = sorted({optimum, *(back(to(low) + (to(high) - to(low)) * i / (CURVE_POINTS - 1)) for i in range(CURVE_POINTS))})
+    scene.plan(len(xs), "find")
+    ys = []
+    for trial in xs:
+        values = scene.results({unknown.name: trial})
+        value = None if values is None else values.get(result.key)
+        ys.append(value if value is not None and math.isfinite(value) else None)
+    si_unit = units.KINDS[unknown.kind].si_unit
+    way = "least" if sense > 0 else "most"
+    panel = plot.Panel(result.key, label or result.key, result.unit or "", (plot.Series("", tuple(xs), tuple(ys)),))
+    note = (f"{unknown.name} from {quantity_text(low, si_unit, 4)} to {quantity_text(high, si_unit, 4)}, "
+            f"{'evenly on a log scale' if logged else 'evenly'} about the {way} {result.key}")
+    return plot.Chart(f"{scene.command.name}: {result.key} against {unknown.name}", unknown.name, unknown.label or unknown.name,
+                      si_unit, (panel,), ((optimum, f"the {way} {result.key}"),), (note,))
 
 
 def _golden(f, low: float, high: float, best: tuple[float, float]) -> tuple[float, float, int]:

@@ -84,7 +84,10 @@ def motion_points(report: Report, t_end: float | None = None) -> list[tuple[floa
 
 
 def plot_document(report: Report) -> dict:
-    """The sampled motion for --json: units, points as objects, and the marked moments."""
+    """The sampled motion for --json: units, points as objects, and the marked moments (or, where
+    --plot draws a chart of another kind, its points against its x: an optimum's curve)."""
+    if report.chart is not None:
+        return chart_document(report.chart())
     trajectory = trajectory_of(report)
     points = motion_points(report)
     keys = ["t", *(key for key, _, _ in trajectory.curves)]
@@ -93,6 +96,19 @@ def plot_document(report: Report) -> dict:
         "points": [dict(zip(keys, (x if math.isfinite(x) else None for x in point))) for point in points],
         "marks": [{"t": t, "what": what} for t, what in trajectory.marks],
         "notes": [trajectory.note] if trajectory.note else [],
+    }
+
+
+def chart_document(chart: Chart) -> dict:
+    """A chart of one series a panel as --json's "plot": its x and each panel's key per point."""
+    keys = [chart.x_key, *(panel.key for panel in chart.panels)]
+    xs = chart.panels[0].series[0].xs
+    columns = [xs, *(panel.series[0].ys for panel in chart.panels)]
+    return {
+        "units": {chart.x_key: chart.x_unit, **{panel.key: panel.unit for panel in chart.panels}},
+        "points": [dict(zip(keys, (x if x is not None and math.isfinite(x) else None for x in row))) for row in zip(*columns)],
+        "marks": [{chart.x_key: x, "what": what} for x, what in chart.marks],
+        "notes": list(chart.notes),
     }
 
 
@@ -252,7 +268,7 @@ def terminal(chart: Chart, columns: int, *, colour: bool, height: int = 12) -> s
     if len(chart.panels[0].series) > 1:
         out += textwrap.wrap(_legend(chart.panels[0].series), columns)
     for x, what in chart.marks:
-        out += textwrap.wrap(f"│ at {chart.x_key} = {fmt(x, 4)} {pretty_unit(chart.x_unit)}: {what}", columns, subsequent_indent="  ")
+        out += textwrap.wrap(f"│ at {chart.x_key} = {fmt(x, 4)} {pretty_unit(chart.x_unit)}".rstrip() + f": {what}", columns, subsequent_indent="  ")
     for note in chart.notes:
         out += textwrap.wrap(f"note: {note}", columns, subsequent_indent="  ")
     return "\n".join(out) + "\n"

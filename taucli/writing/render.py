@@ -162,7 +162,9 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
     report = prepared(report, output)
     if output.charted:
         from taucli.writing import plot  # deferred: charts (2 ms, and plotille or matplotlib when drawn), only for --plot or --out
-    chart = plot.motion_chart([("", report)], chart_units(report, output.to)) if output.drawn else None
+    chart = None
+    if output.drawn:
+        chart = report.chart() if report.chart is not None else plot.motion_chart([("", report)], chart_units(report, output.to))
     if output.out is not None:  # the file first: one that cannot be written (a full disk) is refused before any answer
         plot.write_file(chart, output.out, said_to=notes_to)
     if output.get:

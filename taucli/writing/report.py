@@ -124,6 +124,7 @@ class Report:
     tables: dict[str, Table] = field(default_factory=dict)
     trajectory: Callable[[], Trajectory] | None = None  # built when a plot asks for it (see deferred)
     needs: dict[str, tuple[str, str]] = field(default_factory=dict)  # a result left null for want of an input -> (its option, what it needs) (#42 item 14)
+    chart: Callable[[], object] | None = None  # what --plot draws in place of the motion (an optimum's curve, #47 item 6), built when drawn
 
     # In Python and Jupyter (#36): a short repr, and the documents of --format md, html and latex.
     HEADLINES = 3  # results a repr names
@@ -149,10 +150,11 @@ class Report:
     def plot(self):
         """The motion in time as a matplotlib Figure (#46 item 10): a panel per curve of the
         trajectory the scene gives --plot (spin-down: ω(t) and θ(t); atwood: x(t) and v(t); a
-        pendulum: θ(t) and ω(t)), in SI, t in s, with its moments marked. Needs matplotlib."""
-        from taucli.writing.plot import motion_figure  # deferred: the charts and matplotlib, only when one is drawn
+        pendulum: θ(t) and ω(t)), in SI, t in s, with its moments marked; where --plot draws
+        something else (an optimum's result against its input), that. Needs matplotlib."""
+        from taucli.writing.plot import figure, motion_figure  # deferred: the charts and matplotlib, only when one is drawn
 
-        return motion_figure([("", self)])
+        return figure(self.chart()) if self.chart is not None else motion_figure([("", self)])
 
     def _repr_latex_(self) -> str:
         from taucli.writing.formats import sheet  # deferred: as in __repr__

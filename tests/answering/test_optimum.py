@@ -63,3 +63,42 @@ def test_refusals(taucli):
     assert_usage_error(taucli(*base, "--find", "friction", "--minimize", "t_stp"), "did you mean 't_stop'?")
     assert_usage_error(taucli(*base, "--find", "frction", "--minimize", "t_stop"), "--find", "did you mean 'friction'?")
     assert_usage_error(taucli(*base, "--find", "friction", "--want", "t_stp=3s"), "--want", "did you mean 't_stop'?")
+
+
+def test_plot_draws_the_result_against_the_input_about_the_optimum():
+    """#47 item 6: --plot charts the result against the input, the optimum marked. Each point is
+    the RMS torque of the move at that ratio, from the physics: τ_a = (J_m N + J/N)·v/(r t_a) ... as
+    (J_m + J/N²)·α with α = N v/(r t_a); τ_rms = τ_a √((t_a + t_d)/t_cycle)."""
+    from conftest import run_taucli
+    rotor, mass, radius = 1e-4, 10.0, 0.05
+    args = ("drive", "--motor-inertia", "1e-4kg*m^2", "--load-mass", "10kg", "--drum-radius", "0.05m", "--speed", "1m/s", "--accel-time", "0.2s",
+            "--run-time", "0.5s", "--dwell-time", "0.3s", "--find", "ratio", "--minimize", "torque_rms")
+    document = json.loads(run_taucli(*args, "--json", "--plot").out)
+    plot = document["plot"]
+    assert plot["units"] == {"ratio": "", "torque_rms": "N*m"}
+    points = plot["points"]
+    assert len(points) >= 50
+    ratios = [p["ratio"] for p in points]
+    assert min(ratios) < 15.8 < max(ratios) and max(ratios) / min(ratios) > 10  # either side of the optimum, a decade or more
+    for p in points:
+        ratio = p["ratio"]
+        alpha = ratio * 1.0 / (radius * 0.2)
+        torque_accel = (rotor + mass * radius**2 / ratio**2) * alpha
+        assert p["torque_rms"] == pytest.approx(torque_accel * math.sqrt(0.4 / 1.2), rel=1e-9)
+    least = min(points, key=lambda p: p["torque_rms"])
+    assert least["ratio"] == pytest.approx(math.sqrt(mass * radius**2 / rotor), rel=1e-6)  # the optimum is one of the points
+    assert plot["marks"] == [{"ratio": pytest.approx(least["ratio"], rel=1e-12), "what": "the least torque_rms"}]
+    shown = run_taucli(*args, "--plot", env={"COLUMNS": "80"}).out
+    assert "drive: torque_rms against ratio" in shown and "at ratio = 15.81: the least torque_rms" in shown
+
+
+def test_report_plot_draws_the_optimum_curve():
+    pytest.importorskip("matplotlib")
+    report = taucli.drive(motor_inertia="1e-4 kg*m^2", **MOVE, find="ratio", minimize="torque_rms")
+    figure = report.plot()
+    axes = figure.axes[0]
+    assert "ratio" in axes.get_xlabel() and "RMS motor torque" in axes.get_ylabel()
+    xs, ys = axes.lines[0].get_xdata(), axes.lines[0].get_ydata()
+    least = min(range(len(ys)), key=lambda i: ys[i])
+    assert xs[least] == pytest.approx(math.sqrt(10 * 0.05**2 / 1e-4), rel=1e-6)
+    assert ys[least] == pytest.approx(report.results["torque_rms"].value, rel=1e-12)
