@@ -79,24 +79,35 @@ def lines(read: Callable[[int], object], name: str, option: str, what: str = "")
     """The lines of the table ``read(n)`` gives (bytes or text, a chunk at a time), without their
     ends, decoded as the module says; an InputError naming ``name`` as soon as the table passes
     MAX_BYTES, a line passes MAX_LINE, or the text is binary or in no encoding taucli reads."""
+    for block in blocks(read, name, option, what):
+        yield from block
+
+
+def blocks(read: Callable[[int], object], name: str, option: str, what: str = "") -> Iterator[list[str]]:
+    """``lines``' lines, a list of them per chunk read: a reader of a million rows takes them
+    without a step per line (#45 item 3). A line past MAX_LINE is refused after the lines before it."""
     rest = ""
     number = 0
     for text in _decoded(read, name, option, what):
         rest += text
         hold = rest.endswith("\r")  # its \n may come in the next chunk: "\r\n" is one line end
-        *done, rest = _LINE_END.split(rest[:-1] if hold else rest)
+        whole = rest[:-1] if hold else rest
+        *done, rest = _LINE_END.split(whole) if "\r" in whole else whole.split("\n")  # str.split: a tenth of the time
         rest += "\r" if hold else ""
-        for line in done:
-            number += 1
-            if len(line) > MAX_LINE:
-                raise _too_long(option, name, number)
-            yield line
+        if done and max(map(len, done)) > MAX_LINE:
+            long = next(i for i, line in enumerate(done) if len(line) > MAX_LINE)
+            if long:
+                yield done[:long]
+            raise _too_long(option, name, number + long + 1)
+        if done:
+            number += len(done)
+            yield done
         if len(rest) > MAX_LINE:
             raise _too_long(option, name, number + 1)
     if rest:
         if rest.endswith("\r"):
             rest = rest[:-1]
-        yield rest
+        yield [rest]
 
 
 def _too_long(option: str, name: str, number: int) -> InputError:

@@ -42,7 +42,7 @@ from array import array
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from taucli.answering.csv_text import MAX_BYTES, delimiter as _delimiter, lines as text_lines, split_header, too_large
+from taucli.answering.csv_text import MAX_BYTES, blocks as text_blocks, delimiter as _delimiter, split_header, too_large
 from taucli.core.errors import InputError
 from taucli.core.written import printable
 from taucli.fit import fast_rows, sources
@@ -101,7 +101,7 @@ def read(source, stdin=None) -> DataTable:
     MAX_BYTES of it, whatever it is), each row turned into numbers as it comes: what is kept is the
     numbers, 8 bytes each, and the line each row is on."""
     name = _name(source)
-    numbered = enumerate(_lines(source, stdin, name), start=1)
+    numbered = _Numbered(_lines(source, stdin, name))
     found = next(((number, line) for number, line in numbered if line.strip() and not line.lstrip().startswith("#")), None)
     if found is None:
         raise InputError(OPTION, f"{name} holds no table: expected a header line naming the columns, then a row of numbers per sample",
@@ -188,8 +188,48 @@ def _name(source) -> str:
     return printable("stdin" if source == "-" else source if isinstance(source, str) else str(getattr(source, "name", None) or "the file object"))
 
 
+class _Numbered:
+    """(line number, line) of the source, one at a time, from its lines a block at a time; what is
+    left of them is also taken a block at a time (``blocks``: the batches of plain numbers)."""
+
+    def __init__(self, blocks) -> None:
+        self._blocks = blocks
+        self._block: list[str] = []
+        self._at = 0  # the next line's index in _block
+        self._number = 0  # lines handed out
+
+    def __iter__(self):
+        return self
+
+    def __next__(self) -> tuple[int, str]:
+        while self._at >= len(self._block):
+            self._block, self._at = next(self._blocks), 0
+        line = self._block[self._at]
+        self._at += 1
+        self._number += 1
+        return self._number, line
+
+    def blocks(self):
+        """(the number of its first line, the lines) of what is left, a block at a time."""
+        while True:
+            if self._at >= len(self._block):
+                block = next(self._blocks, None)
+                if block is None:
+                    return
+                self._block, self._at = block, 0
+            taken, first = self._block[self._at:] if self._at else self._block, self._number + 1
+            self._at = len(self._block)
+            self._number += len(taken)
+            yield first, taken
+
+
+def _in_blocks(lines, size: int = fast_rows.BATCH):
+    while block := list(itertools.islice(lines, size)):
+        yield block
+
+
 def _lines(source, stdin, name: str):
-    """The lines of the source, streamed (csv_text.lines), a file larger than the cap refused before it is read."""
+    """The lines of the source a block at a time, streamed (csv_text.blocks), a file larger than the cap refused before it is read."""
     if not isinstance(source, str):  # an open file object (the Python API)
         return _guarded(source.read, name, "expected an open file to read a table from")
     if source == "-":
@@ -197,7 +237,7 @@ def _lines(source, stdin, name: str):
             raise InputError(OPTION, "cannot be - here: no stdin to read it from")
         return _guarded((stdin.buffer if hasattr(stdin, "buffer") else stdin).read, name, "expected a readable stdin")
     if sources.is_zip(source):  # an .xlsx workbook, or phyphox's zip of CSVs
-        return sources.lines(source, name, OPTION, _WHAT)
+        return _in_blocks(sources.lines(source, name, OPTION, _WHAT))
     try:
         if os.path.getsize(source) > MAX_BYTES:  # a regular file says its size (a device or a FIFO says 0: the stream's cap holds there)
             raise too_large(OPTION, name, _WHAT)
@@ -211,9 +251,9 @@ _WHAT = f"fit reads at most {MAX_ROWS:,} rows"
 
 
 def _guarded(read, name: str, expected: str):
-    """csv_text.lines over ``read``, an error of the read itself (an I/O error, a closed file) one line."""
+    """csv_text.blocks over ``read``, an error of the read itself (an I/O error, a closed file) one line."""
     try:
-        yield from text_lines(read, name, OPTION, _WHAT)
+        yield from text_blocks(read, name, OPTION, _WHAT)
     except (OSError, ValueError, TypeError) as err:
         if isinstance(err, InputError):
             raise
