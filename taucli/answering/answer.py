@@ -114,6 +114,9 @@ def solve(
     return report
 
 
+OPTIMUM_EXAMPLE = "{find} ratio {minimize} torque_rms"  # (drive: the gear ratio with the least RMS motor torque)
+
+
 def _optimum(find, want, minimize, maximize) -> tuple[str, float, str] | None:
     """(the result, +1 for the least or −1 for the most, the option) where --minimize or --maximize asks; None else."""
     asked = [(name, value) for name, value in (("minimize", minimize), ("maximize", maximize)) if value is not None]
@@ -121,11 +124,12 @@ def _optimum(find, want, minimize, maximize) -> tuple[str, float, str] | None:
         return None
     name, value = asked[0]
     if len(asked) > 1:
-        raise InputError("maximize", "conflicts with {minimize}: ask for the least or the most of one result")
+        raise InputError("maximize", "conflicts with {minimize}: ask for the least or the most of one result", example=OPTIMUM_EXAMPLE)
     if want is not None:
-        raise InputError(name, "conflicts with {want}: --find solves for a target or for the least or most of a result, one of them")
+        raise InputError(name, "conflicts with {want}: --find solves for a target or for the least or most of a result, one of them", example=OPTIMUM_EXAMPLE)
     if find is None:
-        raise InputError(name, "goes with {find}: the input whose value gives the " + ("least" if name == "minimize" else "most") + " of the result")
+        raise InputError(name, "goes with {find}: the input whose value gives the " + ("least" if name == "minimize" else "most") + " of the result",
+                         example=OPTIMUM_EXAMPLE)
     return str(value).strip(), 1.0 if name == "minimize" else -1.0, name
 
 

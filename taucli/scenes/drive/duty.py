@@ -53,7 +53,8 @@ def duty_cycle(segments: tuple[Segment, ...], rest_factor: float | None, rated_t
     rated = rated_torque if by_torque else rated_power
     other = rated_power if by_torque else rated_torque
     if other is not None:
-        raise InputError("rated_power" if by_torque else "rated_torque", f"goes with segments by {'power' if by_torque else 'torque'}: the segments here are by {quantity}")
+        raise InputError("rated_power" if by_torque else "rated_torque", f"goes with segments by {'power' if by_torque else 'torque'}: the segments here are by {quantity}",
+                         example="{rated_torque} '10N*m'" if by_torque else "{rated_power} 5kW")
     if rated is not None:
         results.put("rms_to_rated", rms / rated)
         if rms > rated:
