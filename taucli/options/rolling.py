@@ -20,6 +20,13 @@ SKIDS_EXAMPLE = ON_THE_FLAT + " {mu_k} 0.5"
 ON_THE_RIM = ("at+radius",)
 ON_THE_RIM_EXAMPLE = "{at} top {radius} 0.2m"
 
+def _on_a_drum(*more: str, ends: bool = False) -> tuple[str, ...]:
+    """What makes a drum's result: a yo-yo with a mass on a drum given by its mass or its I (with its
+    radius), ``more`` options beside, and after a drop or a time where ``ends``."""
+    drums = [("drum_mass", *more), ("drum_inertia", "drum_radius", *(name for name in more if name != "drum_radius"))]
+    return tuple("+".join(("yoyo", *drum, "mass", *((end,) if ends else ()))) for end in (("height", "time") if ends else ("",)) for drum in drums)
+
+
 COMMAND = Command(
     name="rolling",
     summary="A round body on an incline: does it roll or slip, and how fast; a skidding ball; a pulled body, a spool, a yo-yo; a body joined to a hanging mass.",
@@ -83,21 +90,20 @@ COMMAND = Command(
         Result("a_hanging", "m/s**2", "acceleration of the hanging mass, downward", needs=(HANGING,)),
         Result("alpha_pulley", "rad/s**2", "angular acceleration of the pulley", needs=(HANGING + "+pulley_radius",)),
         Result("a_hand", "m/s**2", "acceleration of the string's free end (the hand), upward", needs=("in_place+radius", "yoyo+pull+mass+radius")),
-        Result("alpha_drum", "rad/s**2", "angular acceleration of the yo-yo's drum, unwinding", needs=("yoyo+drum_mass+drum_radius+mass",),
+        Result("alpha_drum", "rad/s**2", "angular acceleration of the yo-yo's drum, unwinding", needs=_on_a_drum("drum_radius"),
                example="{yoyo} {mass} 1kg {drum_mass} 1kg {drum_radius} 0.1m"),
         Result("v", "m/s", "speed…"),
         Result("v_hanging", "m/s", "velocity of the hanging mass, downward…", needs=(HANGING + "+length",)),
         Result("omega", "rad/s", "angular velocity…", needs=("length+radius", "height+radius", "v0+radius", "yoyo+height+radius", "yoyo+time+radius", HANGING + "+length+radius"), example="{length} 2m {radius} 0.1m"),
-        Result("omega_drum", "rad/s", "angular velocity of the yo-yo's drum…", needs=("yoyo+drum_mass+drum_radius+mass+height",),
+        Result("omega_drum", "rad/s", "angular velocity of the yo-yo's drum…", needs=_on_a_drum("drum_radius", ends=True),
                example="{yoyo} {mass} 1kg {drum_mass} 1kg {drum_radius} 0.1m {height} 1m"),
         Result("t", "s", "time…"),
         Result("drop", "m", "distance the centre has dropped…", needs=("yoyo+time",), example="{yoyo} {time} 1s"),
         Result("work_pull", "J", "work done by the pull…", needs=("yoyo+pull+mass+time", "yoyo+pull+mass+height"), example="{yoyo} {mass} 2kg {pull} 5N {time} 1s"),
         Result("KE_trans", "J", "kinetic energy of translation…", needs=("mass",)),
         Result("KE_rot", "J", "kinetic energy of rotation…", needs=("mass",)),
-        Result("KE_drum", "J", "kinetic energy of the yo-yo's drum…", needs=("yoyo+drum_mass+mass+height",),
-               example="{yoyo} {mass} 1kg {drum_mass} 1kg {height} 1m"),
-        Result("work_drum_friction", "J", "energy the drum's axle friction takes…", needs=("yoyo+drum_mass+drum_radius+drum_friction+mass+height",),
+        Result("KE_drum", "J", "kinetic energy of the yo-yo's drum…", needs=_on_a_drum(ends=True), example="{yoyo} {mass} 1kg {drum_mass} 1kg {height} 1m"),
+        Result("work_drum_friction", "J", "energy the drum's axle friction takes…", needs=_on_a_drum("drum_radius", "drum_friction", ends=True),
                example="{yoyo} {mass} 1kg {drum_mass} 1kg {drum_radius} 0.1m {drum_friction} '0.1 N*m' {height} 1m"),
         Result("KE", "J", "kinetic energy, translation and rotation…", needs=("v0+mass", "yoyo+mass+height", HANGING + "+length+radius"), example=ON_THE_FLAT + " {mass} 4kg"),
         Result("d_climb", "m", "distance it climbs up the slope", needs=("v0",)),

@@ -82,12 +82,12 @@ def given_drum(drum_mass: float | None, drum_inertia: float | None, drum_radius:
 
 def solve_yoyo_on_drum(
     roller: Roller, g: float, drum: Drum, *, ratio: float, r: float | None, height: float | None = None, time: float | None = None,
-    force: float = 0.0, at: float = 0.0, pulled: bool = False, model: str = "",
+    force: float = 0.0, at: float = 0.0, pulled: bool = False, model: str = "", notes: list[str] | None = None,
 ) -> Report:
     """The yo-yo of body ``roller`` (q = I/(m r²) = ``ratio``, the string leaving it at ``r``, None
     where no radius is given) on ``drum``: a, T, the body's and the drum's α (and after ``height``
     or ``time``, from rest: v, ω, ω_d, the energies). ``force`` and ``at``: a pull F on the body,
-    its line d from the centre (the module's docstring)."""
+    its line d from the centre (the module's docstring); ``notes``: the yo-yo's own, to keep."""
     mass = roller.mass
     if mass is None:
         raise InputError("mass", "is required with a drum: the drum's share of the fall is I_d/(m R²), against the body's mass", example="{mass} 1kg")
@@ -120,7 +120,7 @@ def solve_yoyo_on_drum(
     results.put("alpha_drum", None if drum.radius is None else a_drum / drum.radius)
     if pulled:
         results.put("a_hand", -(a + a_body * delta), " (where the pull acts)")
-    notes = [] if drum.radius is not None else ["alpha_drum: give --drum-radius (a does not need it for a uniform drum)"]
+    notes = list(notes or []) + ([] if drum.radius is not None else ["alpha_drum: give --drum-radius (a does not need it for a uniform drum)"])
     if r is None:
         notes.append("alpha: give --radius (a does not need it)")
     if held:

@@ -75,7 +75,7 @@ def solve_yoyo(
             raise InputError("v0", "does not apply with a drum: a yo-yo thrown down on a turning drum has its speed shared between its own spin and "
                              "the drum's in a way the throw does not say (it starts from rest)", example="{height} 1m")
         return solve_yoyo_on_drum(roller, g, drum, ratio=ratio, r=r, height=height, time=time, force=0.0 if pull is None else pull.force,
-                                  at=0.0 if pull is None else pull.at, pulled=pull is not None, model=_model(roller, k2, ratio, axle, about_axle, pull))
+                                  at=0.0 if pull is None else pull.at, pulled=pull is not None, model=_model(roller, k2, ratio, axle, about_axle, pull), notes=notes)
     gearing = 1.0
     if pull is None:
         a = g / (1 + ratio)
