@@ -58,9 +58,7 @@ class Drum:
 
     @property
     def description(self) -> str:
-        if self.mass is not None:
-            return f"a uniform drum of {fmt(self.mass)} kg"
-        return f"a drum of I_d = {fmt(self.inertia)} kg·m²"
+        return "a drum (a uniform solid cylinder)" if self.mass is not None else "a drum"
 
 
 def given_drum(drum_mass: float | None, drum_inertia: float | None, drum_radius: float | None, drum_friction: float | None) -> Drum | None:
@@ -127,9 +125,10 @@ def solve_yoyo_on_drum(
         notes.append(f"the drum's axle friction ({fmt(drum.friction)} N·m) holds it: the string's pull T R = {fmt(tension * drum.radius)} N·m is no more")
     end = _the_end(results, a, a_body, a_drum, height, time, r, drum, mass, q, big_q, force, delta, phi)
     steps = DeferredSteps(_steps, q, big_q, f, delta, phi, g, a, per_mass, a_body, a_drum, mass, held, results, end, pulled)
-    shown = f"{model}; its string wound on {drum.description} (I_d/(m R²) = {fmt(big_q)}) on a fixed axle"
+    # no input's value in the model's words: a value moved within its uncertainty is no change of model
+    shown = f"{model}; its string's top end wound on {drum.description} turning on a fixed axle"
     if drum.friction:
-        shown += f", a friction torque of {fmt(drum.friction)} N·m at its axle" + (" (it holds the drum)" if held else "")
+        shown += ", against a friction torque at its axle" + (" that holds it" if held else "")
     trajectory = deferred(_trajectory, a, end, "end of the drop" if height is not None else "the time asked")
     return Report("rolling", shown, "closed form", results, steps, notes, trajectory=trajectory)
 
@@ -173,7 +172,8 @@ def _steps(q, big_q, f, delta, phi, g, a, per_mass, a_body, a_drum, mass, held, 
     steps = [
         Step("For the body's centre (down positive)", f"m a = m g − T{pull}", "", "", "gravity down, the string's tension up" + (", the pull F up" if pulled else "")),
         Step("The body's spin about its centre", "I α = T r" + (" − F d" if pulled else ""), "", "", "the string leaves the body r from its centre"),
-        Step("The drum's spin about its axle", "I_d α_d = T R" + (" − τ_f" if phi else ""), "", "",
+        Step("The drum's spin about its axle", "I_d α_d = T R" + (" − τ_f" if phi else ""), f"I_d/(m R²) = Q = {fmt(big_q)}"
+             + (f", τ_f/(m R) = φ = {term(phi, 'm/s**2')}" if phi else ""), "",
              "the string leaves the drum R from its axle" + ("; the axle's friction opposes its turning" if phi else "")),
         Step("The string does not stretch", "a = r α + R α_d", "", "", "the string unwound from the body and from the drum together is the drop"),
     ]

@@ -253,3 +253,24 @@ def test_the_steps_show_each_equation_and_the_shares():
     for fragment in ("I_d α_d = T R", "a = r α + R α_d", "T = m g q Q / D", "½ I_d ω_d²", "R α_d ="):
         assert fragment in text, (fragment, text)
     assert math.isclose(report.results["KE"].value, 2.0 * G, rel_tol=1e-14)
+
+
+def test_uncertain_drum_inputs_move_no_model():
+    """The model's words carry no drum value (a value moved within its σ is no change of model), so
+    --uncertainty on the drum's mass, I, radius or friction gives no 'far from linear' note; the
+    σ of a is the first-order one, against the closed form's derivative."""
+    run = run_taucli("rolling", "disc", "--yoyo", "--mass", "2kg", "--radius", "0.1m", "--drum-mass", "1+/-0.05kg", "--drum-radius", "0.1+/-0.001m",
+                     "--drum-friction", "0.1+/-0.01 N*m", "--height", "1m", "--get", "a", "--uncertainty")
+    assert run.code == 0, run.err
+    assert "model becomes" not in run.err and "far from linear" not in run.err, run.err
+    value, sigma = (float(x) for x in run.out.split())
+    # a = (Q g + q (g − φ))/(qQ + q + Q), q = 1/2, Q = M/(2m), φ = τ/(m R): ∂a/∂M, ∂a/∂R, ∂a/∂τ by mpmath.diff
+    def a_of(M, R, tau):
+        q, Q, phi = mpmath.mpf(1) / 2, M / 4, tau / (2 * R)
+        return (Q * G + q * (G - phi)) / (q * Q + q + Q)
+    with mpmath.workdps(30):
+        x = (mpmath.mpf(1), mpmath.mpf("0.1"), mpmath.mpf("0.1"))
+        slopes = [mpmath.diff(lambda *v: a_of(*v), x, tuple(int(i == j) for j in range(3))) for i in range(3)]
+        want = mpmath.sqrt(sum((s * e) ** 2 for s, e in zip(slopes, (0.05, 0.001, 0.01))))
+        assert value == pytest.approx(float(a_of(*x)), rel=1e-14)
+    assert sigma == pytest.approx(float(want), rel=1e-5)
