@@ -178,7 +178,8 @@ def _steps(q, big_q, f, delta, phi, g, a, per_mass, a_body, a_drum, mass, held, 
         Step("The string does not stretch", "a = r α + R α_d", "", "", "the string unwound from the body and from the drum together is the drop"),
     ]
     if held:
-        steps.append(Step("The drum holds", "T R ≤ τ_f with α_d = 0:  a = (g − f (1 + d/r)) / (1 + q)", f"q = I/(m r²) = {fmt(q)}",
+        plain = "a = (g − f (1 + d/r)) / (1 + q),  f = F/m" if pulled else "a = g / (1 + q),  T = m g q / (1 + q)"
+        steps.append(Step("The drum holds", f"T R ≤ τ_f with α_d = 0:  {plain}", f"q = I/(m r²) = {fmt(q)}",
                           quantity_text(a, "m/s**2") + f", T = {quantity_text(mass * per_mass, 'N')}",
                           "the plain yo-yo's tension cannot beat the axle's friction, so the drum stays put"))
     else:
