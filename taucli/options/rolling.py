@@ -7,6 +7,7 @@ from taucli.options.table import CHOICE, FLAG, Command, Option, Result
 
 PULL = "Pull, spool and yo-yo"
 HANGING = "Hanging mass over a pulley"
+DRUM = "A yo-yo's drum"
 RIM_POSITIONS = ("top", "bottom", "front", "back")  # scenes.rolling.ground_point.POSITIONS
 STRING_ENDS = ("centre", "top")  # scenes.rolling.hanging: where the string leaves the body
 
@@ -18,6 +19,13 @@ SKIDS = ("v0+mu_k", "omega0+mu_k+radius")
 SKIDS_EXAMPLE = ON_THE_FLAT + " {mu_k} 0.5"
 ON_THE_RIM = ("at+radius",)
 ON_THE_RIM_EXAMPLE = "{at} top {radius} 0.2m"
+
+def _on_a_drum(*more: str, ends: bool = False) -> tuple[str, ...]:
+    """What makes a drum's result: a yo-yo with a mass on a drum given by its mass or its I (with its
+    radius), ``more`` options beside, and after a drop or a time where ``ends``."""
+    drums = [("drum_mass", *more), ("drum_inertia", "drum_radius", *(name for name in more if name != "drum_radius"))]
+    return tuple("+".join(("yoyo", *drum, "mass", *((end,) if ends else ()))) for end in (("height", "time") if ends else ("",)) for drum in drums)
+
 
 COMMAND = Command(
     name="rolling",
@@ -56,6 +64,13 @@ COMMAND = Command(
                choices=STRING_ENDS, default="centre", panel=HANGING, metavar="centre|top"),
         Option("pulley_mass", "mass", "Mass of the pulley, a uniform disc (0: massless).", sign="nonnegative", default="0", panel=HANGING),
         Option("pulley_radius", "length", "Radius of the pulley (needed only for its angular acceleration).", panel=HANGING),
+        Option("drum_mass", "mass", "A yo-yo whose string is wound at its top on a drum that turns on a fixed axle: the drum's mass, "
+               "a uniform solid cylinder (I = M R²/2), e.g. 1kg.", panel=DRUM),
+        Option("drum_inertia", "moment of inertia", "The drum's moment of inertia about its axle, instead of --drum-mass (with --drum-radius).", panel=DRUM),
+        Option("drum_radius", "length", "The radius the string is wound at on the drum (needed only for its α and ω, and with --drum-inertia), e.g. 0.1m.",
+               panel=DRUM),
+        Option("drum_friction", "torque", "A constant friction torque at the drum's axle, opposing its turning (it holds the drum while "
+               "the string's pull T R is no more), e.g. '0.05 N*m'.", sign="nonnegative", panel=DRUM),
         GRAVITY,
         Option("at", "length", "A point of the body: at this radius from the centre, turning with the body (v_t, a_t, a_c, a_total, a_angle, s "
                "about the centre), e.g. 0.05m, or rim (the body's radius; taken when one of those is asked for with no --at); or on the rim "
@@ -75,14 +90,21 @@ COMMAND = Command(
         Result("a_hanging", "m/s**2", "acceleration of the hanging mass, downward", needs=(HANGING,)),
         Result("alpha_pulley", "rad/s**2", "angular acceleration of the pulley", needs=(HANGING + "+pulley_radius",)),
         Result("a_hand", "m/s**2", "acceleration of the string's free end (the hand), upward", needs=("in_place+radius", "yoyo+pull+mass+radius")),
+        Result("alpha_drum", "rad/s**2", "angular acceleration of the yo-yo's drum, unwinding", needs=_on_a_drum("drum_radius"),
+               example="{yoyo} {mass} 1kg {drum_mass} 1kg {drum_radius} 0.1m"),
         Result("v", "m/s", "speed…"),
         Result("v_hanging", "m/s", "velocity of the hanging mass, downward…", needs=(HANGING + "+length",)),
         Result("omega", "rad/s", "angular velocity…", needs=("length+radius", "height+radius", "v0+radius", "yoyo+height+radius", "yoyo+time+radius", HANGING + "+length+radius"), example="{length} 2m {radius} 0.1m"),
+        Result("omega_drum", "rad/s", "angular velocity of the yo-yo's drum…", needs=_on_a_drum("drum_radius", ends=True),
+               example="{yoyo} {mass} 1kg {drum_mass} 1kg {drum_radius} 0.1m {height} 1m"),
         Result("t", "s", "time…"),
         Result("drop", "m", "distance the centre has dropped…", needs=("yoyo+time",), example="{yoyo} {time} 1s"),
         Result("work_pull", "J", "work done by the pull…", needs=("yoyo+pull+mass+time", "yoyo+pull+mass+height"), example="{yoyo} {mass} 2kg {pull} 5N {time} 1s"),
         Result("KE_trans", "J", "kinetic energy of translation…", needs=("mass",)),
         Result("KE_rot", "J", "kinetic energy of rotation…", needs=("mass",)),
+        Result("KE_drum", "J", "kinetic energy of the yo-yo's drum…", needs=_on_a_drum(ends=True), example="{yoyo} {mass} 1kg {drum_mass} 1kg {height} 1m"),
+        Result("work_drum_friction", "J", "energy the drum's axle friction takes…", needs=_on_a_drum("drum_radius", "drum_friction", ends=True),
+               example="{yoyo} {mass} 1kg {drum_mass} 1kg {drum_radius} 0.1m {drum_friction} '0.1 N*m' {height} 1m"),
         Result("KE", "J", "kinetic energy, translation and rotation…", needs=("v0+mass", "yoyo+mass+height", HANGING + "+length+radius"), example=ON_THE_FLAT + " {mass} 4kg"),
         Result("d_climb", "m", "distance it climbs up the slope", needs=("v0",)),
         Result("h_climb", "m", "height it climbs", needs=("v0",)),

@@ -7,6 +7,7 @@ import math
 import random
 
 from definitions.check import G0, Checker, inputs, mag, point_checks, signed, values
+from definitions.rolling_drum import check_drum_yoyo
 
 ROLLING_K2 = {"sphere": 0.4, "shell": 2 / 3, "disc": 0.5, "cylinder": 0.5, "ring": 1.0, "hoop": 1.0}
 
@@ -229,6 +230,9 @@ def check_rolling(kw: dict, report, c: Checker) -> None:
         else:
             q = k2 if "axle_radius" not in inp else k2 * (R / r) ** 2
         body_moment_ = q * m * r * r if m is not None and r is not None else None
+        if "drum_mass" in inp or "drum_inertia" in inp:
+            check_drum_yoyo(kw, res, inp, q, m, r, g, c)
+            return
         F, d = inp.get("pull", 0.0), inp.get("pull_at", 0.0)
         if m is not None:
             c.eq("T = m(g − a) − F", res.get("T"), m * (g - a) - F, m * g, m * a, F)

@@ -85,7 +85,7 @@ brake (α without the friction, the angle past the stop).
 from __future__ import annotations
 
 import pytest
-from definitions import atwood, drive, flywheel, impulse, inertia, pendulum, rolling, spin, vectors
+from definitions import atwood, drive, flywheel, impulse, inertia, pendulum, rolling, rolling_drum, spin, vectors
 from definitions.check import G0, run_scene, values
 
 import taucli
@@ -137,6 +137,16 @@ def test_rolling_results_agree_with_their_definitions():
     for name in ("v_ground = |v + ω × r|", "a_ground = |a + α × r − ω² r|", "v_ground = 0 at the bottom while it rolls", "T₂ − T = ½ m_p a_h (the pulley)",
                  "I α = f R + c T R", "|f| = μk N (slipping)", "I α = T r", "½ I (ω² − ω₀²) = T L", "v = −v₀ + at at the bottom"):
         assert checker.checked[name] >= 5, (name, checker.checked[name])
+
+
+def test_drum_yoyo_results_agree_with_their_definitions():
+    """#46 item 7: a yo-yo on a drum that turns (its own draws): Newton's equations for the body and
+    the drum, the string's condition, the energy of all three motions."""
+    branches = {"drum yoyo": 300, "drum mass": 120, "drum inertia": 120, "drum friction": 60, "no pull": 80, "time": 100, "drop": 40, "units": 40}
+    _, checker = run_scene("rolling", rolling_drum.draw_drum_yoyo, rolling.check_rolling, 700, 47, 0.6, branches)
+    for name in ("I_d α_d = T R − τ_f", "a = r α + R α_d (the string)", "the drum held: T R ≤ τ_f", "KE = m g x + W_pull − W_friction (body and drum)",
+                 "omega = α t (the body's, not v/r)", "KE_drum = ½ I_d ω_d²", "W_friction = τ_f θ_d"):
+        assert checker.checked[name] >= 10, (name, checker.checked[name])
 
 
 def test_pulled_yoyo_results_agree_with_their_definitions():

@@ -12,6 +12,7 @@ assumed:
     pull            a body pulled at a height above its centre; a spool pulled by its string
     hanging         a body joined by a string over a pulley to a hanging mass
     yoyo            a yo-yo falling as its string unwinds
+    drum            a yo-yo whose string is wound at its top on a drum that turns
     in_place        a yo-yo whose string is pulled so that it spins in place
     point_on_body   a point of the body (--at): about its centre, or on its rim seen from the ground (ground_point)
 """
@@ -22,6 +23,7 @@ from taucli.core.errors import InputError
 from taucli.writing.report import Report
 from taucli.scenes.assumed import Assumed
 from taucli.scenes.rolling.body import K2, Roller, roller
+from taucli.scenes.rolling.drum import Drum, given_drum, solve_yoyo_on_drum
 from taucli.scenes.rolling.flat import solve_flat, solve_rolling_flat
 from taucli.scenes.rolling.hanging import Hanging, given_hanging, solve_hanging
 from taucli.scenes.rolling.in_place import solve_in_place
@@ -30,8 +32,8 @@ from taucli.scenes.rolling.point_on_body import motion, point_on_body
 from taucli.scenes.rolling.pull import Pull, given_pull, solve_pull
 from taucli.scenes.rolling.yoyo import YoyoPull, solve_yoyo
 
-__all__ = ["K2", "Hanging", "Pull", "Roller", "roller", "rolling", "solve_flat", "solve_hanging", "solve_in_place", "solve_incline", "solve_pull",
-           "solve_rolling_flat", "solve_yoyo"]
+__all__ = ["K2", "Drum", "Hanging", "Pull", "Roller", "roller", "rolling", "solve_flat", "solve_hanging", "solve_in_place", "solve_incline", "solve_pull",
+           "solve_rolling_flat", "solve_yoyo", "solve_yoyo_on_drum"]
 
 NOT_WITH_YOYO = ("does not apply with {yoyo} (a yo-yo falls on its string: {height} or {time} for the run, {v0} to throw it down, "
                  "{pull} with {pull_at} for a vertical pull on it besides its string)")
@@ -70,19 +72,27 @@ def rolling(
     g: float | None = None,
     time: float | None = None,
     at: object = None,
+    drum_mass: float | None = None,
+    drum_inertia: float | None = None,
+    drum_radius: float | None = None,
+    drum_friction: float | None = None,
 ) -> Report:
     """``taucli rolling``: down (or up) an incline, or a ball skidding on the flat (--v0 or
     --omega0 with no slope, length or height) until it rolls; a body pulled (--pull), a spool
     (--axle-radius), a yo-yo (--yoyo), one spun in place (--in-place), a body joined to a hanging
     mass (--hanging-mass); --at r, a point of the body at r from its centre, or --at top, bottom,
     front, back or an angle (a Value in radians), a point on its rim seen from the ground.
-    --gyration k with --radius R is the body's k² = I/(mR²) = (k/R)²."""
+    --gyration k with --radius R is the body's k² = I/(mR²) = (k/R)². A yo-yo's string may be wound
+    at its top on a drum that turns (--drum-mass or --drum-inertia, --drum-radius, --drum-friction)."""
     if gyration is not None:  # #42 item 15: the body by its radius of gyration
         k2 = _by_gyration(gyration, radius, shape, k2, inertia)
+    drum = {"drum_mass": drum_mass, "drum_inertia": drum_inertia, "drum_radius": drum_radius, "drum_friction": drum_friction}
     if not yoyo:
-        _refuse(ONLY_YOYO, pull_at=pull_at, time=time)
+        _refuse(ONLY_YOYO, pull_at=pull_at, time=time, **drum)
+    if in_place:
+        _refuse(NOT_IN_PLACE, **drum)
     model, report = _solve(shape, k2, inertia, mass, radius, angle, mu_s, mu_k, length, height, v0, omega0, pull, pull_height, pull_angle,
-                           axle_radius, yoyo, in_place, hanging_mass, string, pulley_mass, pulley_radius, g, pull_at, time)
+                           axle_radius, yoyo, in_place, hanging_mass, string, pulley_mass, pulley_radius, g, pull_at, time, given_drum(**drum))
     if at is None:
         return report
     body = motion(model, report, v0=v0, omega0=omega0, radius=radius, axle=axle_radius, slope=angle)
@@ -90,7 +100,7 @@ def rolling(
 
 
 def _solve(shape, k2, inertia, mass, radius, angle, mu_s, mu_k, length, height, v0, omega0, pull, pull_height, pull_angle, axle_radius, yoyo,
-           in_place, hanging_mass, string, pulley_mass, pulley_radius, g, pull_at=None, time=None) -> tuple[str, Report]:
+           in_place, hanging_mass, string, pulley_mass, pulley_radius, g, pull_at=None, time=None, drum=None) -> tuple[str, Report]:
     """The model the options ask for, by name (as point_on_body.motion reads it), and its report."""
     assumed = Assumed()
     hanging = {"hanging_mass": hanging_mass, "string": string, "pulley_mass": pulley_mass, "pulley_radius": pulley_radius}
@@ -109,7 +119,7 @@ def _solve(shape, k2, inertia, mass, radius, angle, mu_s, mu_k, length, height, 
         if pull is not None and pull_at is None:
             assumed.notes.append("no --pull-at: the pull's line passes through the centre (a second string tied at the axle)")
         return "yoyo", assumed.applied(solve_yoyo(body, assumed.gravity(g), axle=axle_radius, height=height, v0=v0 or 0.0, about_axle=about_axle,
-                                                  pull=second, time=time))
+                                                  pull=second, time=time, drum=drum))
     body = roller(shape, k2, inertia, mass, radius)
     if hanging_mass is not None:
         _refuse(NOT_WITH_HANGING, pull=pull, pull_height=pull_height, pull_angle=pull_angle, axle_radius=axle_radius, v0=v0, omega0=omega0, height=height)

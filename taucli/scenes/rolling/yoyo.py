@@ -21,6 +21,7 @@ from taucli.core.errors import InputError
 from taucli.options.rolling import COMMAND as TABLE
 from taucli.writing.report import DeferredSteps, Report, Step, Trajectory, deferred, fmt, quantity_text, term
 from taucli.scenes.rolling.body import Roller
+from taucli.scenes.rolling.drum import Drum, solve_yoyo_on_drum
 from taucli.options.table import Results
 
 
@@ -43,7 +44,7 @@ class YoyoPull:
 
 def solve_yoyo(
     roller: Roller, g: float, *, axle: float | None = None, height: float | None = None, v0: float = 0.0, about_axle: float | None = None,
-    pull: YoyoPull | None = None, time: float | None = None,
+    pull: YoyoPull | None = None, time: float | None = None, drum: Drum | None = None,
 ) -> Report:
     """A yo-yo: the string, fixed above, unwinds from the axle of radius r (default R):
 
@@ -51,7 +52,8 @@ def solve_yoyo(
 
     with q = I/(m r²) = k² (R/r)²: with r = R neither mass nor radius enters a. ``about_axle``: the
     body's k2 is already I/(m r²) for a string wound at that r (I given, the outer radius unknown).
-    ``pull``: a second force on the body (the module's docstring); ``time``: the state after it.
+    ``pull``: a second force on the body (the module's docstring); ``time``: the state after it;
+    ``drum``: the string's top end wound on a drum that turns (drum.py).
     """
     k2, mass, radius = roller.k2, roller.mass, roller.radius
     notes: list[str] = []
@@ -68,6 +70,12 @@ def solve_yoyo(
         r = axle if axle is not None else radius
     if height is not None and time is not None:
         raise InputError("time", "conflicts with {height}: the run ends after a drop or after a time, not both", example="{time} 3s, or {height} 1m")
+    if drum is not None:
+        if v0:
+            raise InputError("v0", "does not apply with a drum: a yo-yo thrown down on a turning drum has its speed shared between its own spin and "
+                             "the drum's in a way the throw does not say (it starts from rest)", example="{height} 1m")
+        return solve_yoyo_on_drum(roller, g, drum, ratio=ratio, r=r, height=height, time=time, force=0.0 if pull is None else pull.force,
+                                  at=0.0 if pull is None else pull.at, pulled=pull is not None, model=_model(roller, k2, ratio, axle, about_axle, pull), notes=notes)
     gearing = 1.0
     if pull is None:
         a = g / (1 + ratio)
@@ -107,14 +115,19 @@ def solve_yoyo(
         steps = DeferredSteps(_yoyo_steps, ratio, a, tension, results if height is not None else None, g, mass, v0, height, r)
     else:
         steps = DeferredSteps(_pulled_steps, ratio, a, tension, g, mass, r, pull, gearing, results, v0, end)
+    model = _model(roller, k2, ratio, axle, about_axle, pull)
+    trajectory = deferred(_yoyo_trajectory, a, v0, end, "end of the drop" if height is not None else "the time asked")
+    return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
+
+
+def _model(roller: Roller, k2: float, ratio: float, axle: float | None, about_axle: float | None, pull: YoyoPull | None) -> str:
     model = f"yo-yo: {roller.description} (k² = I/mR² = {fmt(k2)}) falling as its string unwinds" + ("" if axle is None else f" from an axle of radius {fmt(axle)} m")
     if about_axle is not None:
         model = f"yo-yo: body (I/(m r²) = {fmt(ratio)}) falling as its string unwinds from an axle of radius {fmt(about_axle)} m"
     if pull is not None:
         where = "through the centre" if pull.at == 0 else f"{fmt(abs(pull.at))} m from the centre on the {'far' if pull.at > 0 else 'string'}'s side"
         model += f", pulled up by {fmt(pull.force)} N {where}".replace("far's", "far")
-    trajectory = deferred(_yoyo_trajectory, a, v0, end, "end of the drop" if height is not None else "the time asked")
-    return Report("rolling", model, "closed form", results, steps, notes, trajectory=trajectory)
+    return model
 
 
 def _after_drop(results, a, v0, height, r, mass, ratio, pull, gearing) -> float:
