@@ -25,7 +25,8 @@ import numpy as np
 
 from taucli.answering.inputs import read
 
-FORMS = {"spin-down": "taucli.scenes.spin.arrays", "atwood": "taucli.scenes.atwood.arrays"}
+FORMS = {"spin-down": "taucli.scenes.spin.arrays", "atwood": "taucli.scenes.atwood.arrays", "rolling": "taucli.scenes.rolling.arrays",
+         "pendulum": "taucli.scenes.pendulum.arrays"}
 AGREE = 1e-9  # the anchors' relative difference past which a regime is not taken from the arrays (they agree to about 1e-15)
 HELD = 3  # draws of each regime solved by the scene itself
 
@@ -66,9 +67,9 @@ def solved(scene, columns: Mapping[str, list[float]], draws: int) -> tuple[dict[
 
 
 def summaries(results: Mapping[str, np.ndarray], failed: np.ndarray, keys) -> dict[str, tuple[float, float]]:
-    """(mean, standard deviation) of each result in ``keys`` that two or more draws give, as
-    statistics.fmean and statistics.stdev give them (a correctly rounded sum; the squares about
-    the mean summed so too)."""
+    """(mean, standard deviation) of each result in ``keys`` that two or more draws give: the mean
+    as statistics.fmean gives it (a correctly rounded sum), σ = √(Σ(x − mean)²/(n − 1)) with the
+    rounding of the mean taken back out (statistics.stdev's, to rounding)."""
     found = {}
     for key in keys:
         values = results.get(key)
@@ -79,7 +80,7 @@ def summaries(results: Mapping[str, np.ndarray], failed: np.ndarray, keys) -> di
             continue
         mean = math.fsum(values.tolist()) / len(values)
         deviations = values - mean
-        squares = math.fsum((deviations * deviations).tolist()) - math.fsum(deviations.tolist()) ** 2 / len(values)
+        squares = float(np.dot(deviations, deviations)) - float(np.sum(deviations)) ** 2 / len(values)
         found[key] = (mean, math.sqrt(max(squares, 0.0) / (len(values) - 1)))
     return found
 
