@@ -44,7 +44,11 @@ def solved(scene, columns: Mapping[str, list[float]], draws: int) -> tuple[dict[
     if not columns.keys() <= {name for name, value in arguments.items() if isinstance(value, float)}:
         return None
     drawn = {name: np.asarray(values, dtype=float) for name, values in columns.items()}
-    found = importlib.import_module(module).drawn({**arguments, **drawn})
+    try:
+        with np.errstate(all="ignore"):  # (a draw the form cannot take is NaN, and left to the scene)
+            found = importlib.import_module(module).drawn({**arguments, **drawn})
+    except Exception:  # noqa: BLE001 (a form that fails, whatever the reason: the scalar path, as before)
+        return None
     if found is None:
         return None
     results, regime, taken = found
