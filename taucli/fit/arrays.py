@@ -9,9 +9,10 @@ numpy arrays, by the same closed forms as taucli.scenes.closed_forms (I dω/dt =
     ω(t) = [ω₀E + (A + k r₊ ω₀) G/I] / [E + (kω₀ + β) G/I],  E = e^(−λt), G = (1 − E)/λ, λ = √D/I
     θ(t) = ω₀ G L(x) + r₊√D t² g2(λt)/I + t g1(λt) M(x) k r₊(ω₀ − r₊) G/I,  x = k(ω₀ − r₊)G/I
 
-with g1, g2, L, M the series-guarded fractions of closed_forms (complex where D < 0). A power-law
-drag (n ≠ 1, 2) has no closed form: its motion is stepped once per trial by the scene's own
-stepper, each sample read on from the one before (``Motion.sampler``), not solved from t = 0.
+with g1, g2, L, M the series-guarded fractions of closed_forms (complex where D < 0), on arrays in
+taucli.scenes.closed_arrays (which --mc's draws share). A power-law drag (n ≠ 1, 2) has no closed
+form: its motion is stepped once per trial by the scene's own stepper, each sample read on from the
+one before (``Motion.sampler``), not solved from t = 0.
 
 Held to the scene: every trial also solves the scene itself at one sample (the ANCHOR), which
 gives the refusals and notes as before, and the array's value there must agree with it to

@@ -37,7 +37,6 @@ def drawn(arguments: dict) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarra
         return None
     if given.get("drag_exponent", 2.0) != 2.0 and np.any(np.asarray(given.get("drag", 0.0)) != 0):
         return None
-    inertia = np.asarray(given["inertia"], dtype=float)
     shape = np.broadcast(*(np.asarray(given.get(name, 0.0)) for name in ("inertia", "omega0", "torque", "friction", "viscous", "drag", "time"))).shape
 
     def field(name: str) -> np.ndarray:
