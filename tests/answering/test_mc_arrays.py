@@ -22,15 +22,18 @@ SPIN = {"inertia": "2+/-0.1 kg*m^2", "omega0": "100+/-2 rad/s", "friction": "0.5
 ATWOOD = {"m1": "1.1+/-0.1kg", "m2": "1kg", "pulley_radius": "0.1m", "axle_friction": "0.05 N*m"}
 ROLLING = {"shape": "sphere", "angle": "30+/-1deg", "length": "2+/-0.01m", "mass": "1kg", "radius": "0.1m", "mu_s": "0.17+/-0.01", "mu_k": "0.1"}
 PENDULUM = {"shape": "point", "mass": "1kg", "radius": "1+/-0.01m", "angle0": "30+/-2deg"}
-CLOSED = [("spin-down", SPIN), ("atwood", ATWOOD), ("rolling", ROLLING), ("pendulum", PENDULUM)]
+SPIN_UP = {"inertia": "0.5+/-0.02 kg*m^2", "torque": "2+/-0.1 N*m", "friction": "0.3 N*m", "viscous": "0.01", "time": "5s"}
+CLOSED = [("spin-down", SPIN), ("spin-down", SPIN_UP), ("atwood", ATWOOD), ("rolling", ROLLING), ("pendulum", PENDULUM)]
 
 
 def _spin_scenes(rng: random.Random):
-    """spin-down under its torque laws, every combination the form takes: a drive or none,
-    friction, viscous, quadratic drag, a time or none; wheels that stop before the time, after
-    it, never; steady speeds; D < 0 (friction with drag)."""
+    """spin-down under its torque laws, every combination the form takes: turning either way or
+    set going from rest, a drive or none, friction, viscous, quadratic drag, a time or none;
+    wheels that stop before the time, after it, never; steady speeds; D < 0 (friction with drag)."""
     for _ in range(40):
-        given = {"inertia": 10 ** rng.uniform(-2, 1), "omega0": 10 ** rng.uniform(-1, 2.5)}
+        given = {"inertia": 10 ** rng.uniform(-2, 1), "omega0": rng.choice((-1, 1)) * 10 ** rng.uniform(-1, 2.5)}
+        if rng.random() < 0.2:  # from rest: set going by the drive (or held by friction)
+            del given["omega0"]
         for name, low, high in (("torque", -1, 1), ("friction", -2, 0.5), ("viscous", -4, -1), ("drag", -5, -2)):
             if rng.random() < 0.5:
                 given[name] = 10 ** rng.uniform(low, high) * (rng.choice((-1, 1)) if name == "torque" else 1)

@@ -1,9 +1,10 @@
 """spin-down under the torque laws on arrays: many wheels at once, one a Monte Carlo draw (#45 item 4).
 
-The scene of torque_laws.solve, for a wheel given by --inertia, turning at ω₀ > 0, under a drive τ,
-axle friction τ_f, viscous b and quadratic drag k (n = 2, or none), each draw its own:
+The scene of torque_laws.solve, for a wheel given by --inertia, turning at ω₀ (or set going from
+rest by a drive that beats friction), under a drive τ, axle friction τ_f, viscous b and quadratic
+drag k (n = 2, or none), each draw its own, in the frame of its motion (s = ±1, ω ≥ 0):
 
-    I dω/dt = A − bω − kω²,  A = τ − τ_f  (taucli.scenes.closed_arrays.Phases: the same closed forms)
+    I dω/dt = A − bω − kω²,  A = sτ − τ_f  (taucli.scenes.closed_arrays.Phases: the same closed forms)
     α₀ = (A − bω₀ − kω₀²)/I;  A < 0: t_stop = t(ω₀ → 0), θ_stop = θ(t_stop), held there (|τ| ≤ τ_f)
     ω∞ = 0 after a stop, else r₊ (ω₀ where b = k = 0 and A = 0; none where ω grows without bound)
     at --time t: ω(t), θ(t) (ω = 0, θ = θ_stop past the stop), L = Iω, revs = θ/2π,
@@ -11,8 +12,8 @@ axle friction τ_f, viscous b and quadratic drag k (n = 2, or none), each draw i
 
 ``drawn`` gives each result as an array (NaN where the scene gives none), each draw's regime
 (the scene's results differ between them: a stop, none, no steady speed) and which draws it
-takes: the others (a wheel at rest or turning backwards, one that turns back after its stop)
-are the scene's to solve, one by one. taucli.answering.mc_arrays holds every regime to the
+takes: the others (a wheel that friction holds from the start, one that turns back after its
+stop) are the scene's to solve, one by one. taucli.answering.mc_arrays holds every regime to the
 scene's own solve at a few draws before it uses it.
 """
 
@@ -42,41 +43,49 @@ def drawn(arguments: dict) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarra
     def field(name: str) -> np.ndarray:
         return np.broadcast_to(np.asarray(given.get(name, 0.0), dtype=float), shape).copy()
 
-    inertia, w0, drive, friction, b, k = (field(name) for name in ("inertia", "omega0", "torque", "friction", "viscous", "drag"))
-    a = drive - friction
+    inertia, start, drive, friction, b, k = (field(name) for name in ("inertia", "omega0", "torque", "friction", "viscous", "drag"))
+    # the sense of the motion (motion.start_direction): ω₀'s, or from rest the drive's where it beats friction
+    sense = np.where(start > 0, 1.0, np.where(start < 0, -1.0, np.where(np.abs(drive) > friction, np.sign(drive), 0.0)))
+    w0 = np.abs(start)  # each draw in its own frame, ω ≥ 0
+    a = sense * drive - friction
     phases = Phases(inertia, a, b, k, w0)
     stops = a < 0
-    taken = (w0 > 0) & (inertia > 0) & (friction >= 0) & (b >= 0) & (k >= 0) & ~(stops & (np.abs(drive) > friction))  # (no turn back)
+    taken = (sense != 0) & (inertia > 0) & (friction >= 0) & (b >= 0) & (k >= 0) & ~(stops & (np.abs(drive) > friction))  # (no turn back)
     found = {key: np.full(shape, math.nan) for key in KEYS}
     found["I"] = inertia.copy()
-    found["alpha0"] = (a - b * w0 - k * (w0 * w0)) / inertia  # (Phase.rate at ω₀ > 0: kω₀ⁿ with n = 2)
     with np.errstate(all="ignore"):
+        found["alpha0"] = sense * ((a - b * w0 - k * (w0 * w0)) / inertia)  # (Phase.rate at ω₀ ≥ 0: kω₀ⁿ with n = 2)
         t_stop = phases.stop_time()
-        theta_stop = np.full(shape, math.nan)
+        turned = np.full(shape, math.nan)  # θ_stop in the draw's frame
         if np.any(stops):
-            theta_stop[stops] = phases.part(stops).theta(np.where(np.isfinite(t_stop), t_stop, 0.0)[stops])
+            turned[stops] = phases.part(stops).theta(np.where(np.isfinite(t_stop), t_stop, 0.0)[stops])
+        theta_stop = sense * turned
         found["t_stop"], found["theta_stop"], found["revs_stop"] = t_stop, theta_stop, theta_stop / TWO_PI
         uniform = (b == 0) & (k == 0)
         _, steady = _steady(phases)
-        found["omega_inf"] = np.where(stops, 0.0, np.where(uniform, np.where(a == 0, w0, math.nan), steady))
+        found["omega_inf"] = np.where(stops, 0.0, sense * np.where(uniform, np.where(a == 0, w0, math.nan), steady))
         time = given.get("time")
         if time is not None:
             t = field("time")
             before = ~stops | (t <= np.where(np.isnan(t_stop), np.inf, t_stop))
             omega, theta = np.zeros(shape), theta_stop.copy()
             if np.any(before):
-                omega[before], theta[before] = phases.part(before).state(t[before])
+                speed, angle = phases.part(before).state(t[before])
+                omega[before], theta[before] = sense[before] * speed, sense[before] * angle
             found["omega"], found["L"], found["theta"], found["revs"] = omega, inertia * omega, theta, theta / TWO_PI
             elapsed, last = t, omega
         else:
             theta, elapsed, last = theta_stop, t_stop, np.zeros(shape)
-        mean = np.where(elapsed != 0, theta / elapsed, w0)
-        constant = np.abs(theta - (w0 + last) / 2 * elapsed) <= 1e-12 * (np.abs(w0) + np.abs(last)) * elapsed
-        found["omega_mean"] = np.where((elapsed != 0) & constant, (w0 + last) / 2, mean)
-    regime = stops.astype(int) + 2 * uniform + 4 * (a == 0) + 8 * np.isnan(found["omega_inf"])
+        # ω_mean = θ/t, or ½(ω₀ + ω) at constant α where ω₀ was given (taucli.scenes.spin.mean)
+        mean = theta / elapsed
+        if "omega0" in given:
+            constant = np.abs(theta - (start + last) / 2 * elapsed) <= 1e-12 * (np.abs(start) + np.abs(last)) * elapsed
+            mean = np.where(elapsed == 0, start, np.where(constant, (start + last) / 2, mean))
+        found["omega_mean"] = mean
+    regime = stops.astype(int) + 2 * uniform + 4 * (a == 0) + 8 * np.isnan(found["omega_inf"]) + 16 * (sense < 0) + 32 * (start == 0)
     taken &= np.isfinite(found["alpha0"]) & (~stops | (np.isfinite(t_stop) & np.isfinite(theta_stop)))
     if time is not None:
-        taken &= np.isfinite(found["omega"]) & np.isfinite(found["theta"])
+        taken &= np.isfinite(found["omega"]) & np.isfinite(found["theta"]) & (t > 0)
     return found, regime, taken
 
 
