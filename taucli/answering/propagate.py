@@ -8,7 +8,8 @@ not used: the solvers call ``math`` functions, which refuse complex numbers. Nea
 (a mass near 0) the differences are one-sided. Each uncertain input is also moved by ±1σ: where
 the scene changes its regime there (a stop, roll or slip, friction that holds) or a result bends
 away from its tangent, a note says that first order is rough, and ``--mc N`` (Monte Carlo, N
-draws) gives a check.
+draws) gives a check: draw by draw, or all at once on numpy arrays where the scene has an array
+form (taucli.answering.mc_arrays; the same draws, the same numbers to rounding).
 
 taucli.answering.answer decides when this is asked for; taucli.answering.find uses the same pieces for the solved
 input. Neither is imported here.
