@@ -110,7 +110,7 @@ def solve(
     report = propagate.measured(nominal, sigma, spreads, notes)
     if mc:
         scene.plan(mc, "mc")
-        propagate.monte_carlo(scene, report, spreads, mc, lambda draw: scene.report(draw))
+        propagate.monte_carlo(scene, report, spreads, mc, lambda draw: scene.report(draw), arrays=True)
     return report
 
 

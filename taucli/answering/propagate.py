@@ -8,7 +8,8 @@ not used: the solvers call ``math`` functions, which refuse complex numbers. Nea
 (a mass near 0) the differences are one-sided. Each uncertain input is also moved by ±1σ: where
 the scene changes its regime there (a stop, roll or slip, friction that holds) or a result bends
 away from its tangent, a note says that first order is rough, and ``--mc N`` (Monte Carlo, N
-draws) gives a check.
+draws) gives a check: draw by draw, or all at once on numpy arrays where the scene has an array
+form (taucli.answering.mc_arrays; the same draws, the same numbers to rounding).
 
 taucli.answering.answer decides when this is asked for; taucli.answering.find uses the same pieces for the solved
 input. Neither is imported here.
@@ -51,6 +52,7 @@ class Scene:
         self.limit = limit
         self.spent = 0.0  # seconds in solves
         self.planned: tuple[int, int, str] | None = None  # (solves so far when planned, solves planned, what asked for them)
+        self.spent_before = 0.0  # seconds in solves when the work was planned
         self.progress = None  # called with (done, planned) after each planned solve: a progress bar
         arguments, _ = read(command, readable(command, given, unknown))
         self.si = {name: value for name, value in arguments.items() if isinstance(value, float)}
@@ -64,6 +66,7 @@ class Scene:
     def plan(self, solves: int, setting: str) -> None:
         """``solves`` more solves are to come, asked for by ``setting`` ("mc", "find")."""
         self.planned = (self.solves, solves, setting)
+        self.spent_before = self.spent
 
     def _spend(self, seconds: float) -> None:
         self.spent += seconds
@@ -76,8 +79,10 @@ class Scene:
         if self.limit is None or planned <= done:
             return
         if done in ESTIMATES or self.spent > self.limit:  # estimated again as it goes: solves differ in cost across a --find's range
-            each = self.spent / max(self.solves, 1)
-            estimate = max(each * planned, self.spent)
+            # from the planned solves done so far: the first solve of a run (its modules imported,
+            # its caches filled) took 20 times a warm one, and 10⁵ draws of 80 µs were estimated at 171 s
+            each = (self.spent - self.spent_before) / done if done else self.spent / max(self.solves, 1)
+            estimate = max(self.spent_before + each * planned, self.spent)
             if estimate > self.limit:
                 raise _over_budget(setting, planned, each, estimate, self.limit)
 
@@ -253,28 +258,77 @@ def measured(nominal: Report, sigma: dict[str, float], spreads: Mapping[str, flo
 
 
 def monte_carlo(scene: Scene, report: Measured, spreads: Mapping[str, float], draws: int, solve_draw: Callable[[dict], Report | dict | None],
-                centres: Mapping[str, float] | None = None) -> None:
+                centres: Mapping[str, float] | None = None, arrays: bool = False) -> None:
     """Draw each uncertain input from its normal distribution (redrawn outside its physical range),
     solve, and keep each numeric result's mean and standard deviation, with a note. ``centres``
-    holds the centre of a draw that is not an input (--want's target)."""
+    holds the centre of a draw that is not an input (--want's target). ``arrays``: the scene's
+    draws may be solved all at once on numpy arrays where it has an array form
+    (taucli.answering.mc_arrays: the same draws, the same results to rounding)."""
     import random  # deferred: only --mc draws
-    import statistics  # deferred: 6 ms (it imports fractions and decimal), only for --mc
 
-    rng = random.Random(MC_SEED)
-    samples: dict[str, list[float]] = {}
-    redrawn = failed = 0
+    columns, redrawn = draws_of(scene, spreads, draws, random.Random(MC_SEED), centres)
+    found = None
+    if arrays:
+        try:
+            from taucli.answering import mc_arrays  # deferred: numpy, only for --mc (and the scalar path where numpy is not installed)
+        except ImportError:
+            mc_arrays = None
+        found = mc_arrays.solved(scene, columns, draws) if mc_arrays is not None else None
+    if found is None:
+        summaries, failed = _one_by_one(columns, draws, solve_draw, report)
+    else:
+        results, gave_none = found
+        failed = int(gave_none.sum())
+        summaries = mc_arrays.summaries(results, gave_none, report.results)
+    kept = draws - failed
+    report.draws = draws
+    report.monte_carlo.update(summaries)
+    said = f"Monte Carlo check, {draws} draws (seeded; each uncertain input normal"
+    said += ", redrawn outside its physical range)" if redrawn else ")"
+    if failed:
+        said += f"; {failed} draws gave no scene"
+    shown = "; ".join(f"{key} = {with_uncertainty(mean, spread)}" for key, (mean, spread) in report.monte_carlo.items() if key in report.uncertainties)
+    report.notes.append(f"{said}: {shown}" if kept else said)
+
+
+def draws_of(scene: Scene, spreads: Mapping[str, float], draws: int, rng, centres: Mapping[str, float] | None = None) -> tuple[dict[str, list[float]], int]:
+    """The draws, input by input (name -> its N values), and how many were redrawn: each draw's
+    inputs in the order of ``spreads``, each from rng.gauss about its value (or its ``centres``),
+    redrawn (up to 100 times) while outside the range the input may take."""
+    gauss = rng.gauss
+    plan = []
+    for name, sigma in spreads.items():
+        if centres and name in centres:
+            plan.append((name, centres[name], sigma, None))
+        else:
+            low, high = scene.domain(name)
+            plan.append((name, scene.si[name], sigma, (low, high, scene.sign(name) == "positive")))
+    columns: dict[str, list[float]] = {name: [] for name in spreads}
+    redrawn = 0
     for _ in range(draws):
-        draw = {}
-        for name, sigma in spreads.items():
-            if centres and name in centres:
-                draw[name] = rng.gauss(centres[name], sigma)
+        for name, centre, sigma, bounds in plan:
+            if bounds is None:
+                columns[name].append(gauss(centre, sigma))
                 continue
-            for _attempt in range(100):
-                x = rng.gauss(scene.si[name], sigma)
-                if scene.allowed(name, x):
+            low, high, strict = bounds
+            for _attempt in range(100):  # as Scene.allowed
+                x = gauss(centre, sigma)
+                if (low < x < high) if strict else (low <= x < high):
                     break
                 redrawn += 1
-            draw[name] = x
+            columns[name].append(x)
+    return columns, redrawn
+
+
+def _one_by_one(columns: Mapping[str, list[float]], draws: int, solve_draw, report: Measured) -> tuple[dict[str, tuple[float, float]], int]:
+    """Each draw solved alone: (mean, σ) of each numeric result that two or more draws give, and
+    how many draws gave no scene."""
+    import statistics  # deferred: 6 ms (it imports fractions and decimal), only for --mc
+
+    samples: dict[str, list[float]] = {}
+    failed = 0
+    for i in range(draws):
+        draw = {name: values[i] for name, values in columns.items()}
         try:
             solved = solve_draw(draw)
         except OverBudget:
@@ -287,14 +341,5 @@ def monte_carlo(scene: Scene, report: Measured, spreads: Mapping[str, float], dr
             continue
         for key, value in values.items():
             samples.setdefault(key, []).append(value)
-    kept = draws - failed
-    report.draws = draws
-    for key, values in samples.items():
-        if len(values) >= 2 and key in report.results:
-            report.monte_carlo[key] = (statistics.fmean(values), statistics.stdev(values))
-    said = f"Monte Carlo check, {draws} draws (seeded; each uncertain input normal"
-    said += ", redrawn outside its physical range)" if redrawn else ")"
-    if failed:
-        said += f"; {failed} draws gave no scene"
-    shown = "; ".join(f"{key} = {with_uncertainty(mean, spread)}" for key, (mean, spread) in report.monte_carlo.items() if key in report.uncertainties)
-    report.notes.append(f"{said}: {shown}" if kept else said)
+    return {key: (statistics.fmean(values), statistics.stdev(values)) for key, values in samples.items()
+            if len(values) >= 2 and key in report.results}, failed

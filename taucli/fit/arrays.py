@@ -9,9 +9,10 @@ numpy arrays, by the same closed forms as taucli.scenes.closed_forms (I dω/dt =
     ω(t) = [ω₀E + (A + k r₊ ω₀) G/I] / [E + (kω₀ + β) G/I],  E = e^(−λt), G = (1 − E)/λ, λ = √D/I
     θ(t) = ω₀ G L(x) + r₊√D t² g2(λt)/I + t g1(λt) M(x) k r₊(ω₀ − r₊) G/I,  x = k(ω₀ − r₊)G/I
 
-with g1, g2, L, M the series-guarded fractions of closed_forms (complex where D < 0). A power-law
-drag (n ≠ 1, 2) has no closed form: its motion is stepped once per trial by the scene's own
-stepper, each sample read on from the one before (``Motion.sampler``), not solved from t = 0.
+with g1, g2, L, M the series-guarded fractions of closed_forms (complex where D < 0), on arrays in
+taucli.scenes.closed_arrays (which --mc's draws share). A power-law drag (n ≠ 1, 2) has no closed
+form: its motion is stepped once per trial by the scene's own stepper, each sample read on from the
+one before (``Motion.sampler``), not solved from t = 0.
 
 Held to the scene: every trial also solves the scene itself at one sample (the ANCHOR), which
 gives the refusals and notes as before, and the array's value there must agree with it to
@@ -29,90 +30,17 @@ from taucli.answering.inputs import read
 from taucli.core.errors import InputError
 from taucli.fit.budget import Spent
 from taucli.numerics.elliptic import complete_k
+from taucli.scenes.closed_arrays import phase_state
 from taucli.scenes.motion import Evolver, Method, evolve
 from taucli.scenes.spin.steps import TWO_PI, Torques
 
 REFUSALS = (InputError, OverflowError, ZeroDivisionError, ValueError, ArithmeticError)
 AGREE = 1e-9  # the anchor's relative difference past which the arrays are not used (they agree to about 1e-14)
-SERIES = 64  # terms of the guarded series (|x| < 0.5: the last is below 1e-19 of the first)
 
 # spin-down's inputs the arrays take (any other: the per-sample path); the results they give
 SPIN_INPUTS = {"inertia", "omega0", "torque", "friction", "viscous", "drag", "drag_exponent", "time", "method"}
 SPIN_RESULTS = {"omega": 0, "theta": 1, "revs": 1}
 TRACED_AS = {("atwood", "distance"): "x"}  # a result the trajectory draws under another name (held to it at the anchor)
-
-
-def _horner(x: np.ndarray, coefficient) -> np.ndarray:
-    """Σₙ coefficient(n) (−x)ⁿ, n < SERIES."""
-    total = np.full_like(x, coefficient(SERIES - 1))
-    for n in range(SERIES - 2, -1, -1):
-        total = total * -x + coefficient(n)
-    return total
-
-
-def _guarded(x: np.ndarray, coefficient, outside) -> np.ndarray:
-    """The series where |x| < 0.5, ``outside(x)`` elsewhere (as closed_forms does)."""
-    near = np.abs(x) < 0.5
-    out = np.empty_like(x)
-    if np.any(near):
-        out[near] = _horner(x[near], coefficient)
-    far = ~near
-    if np.any(far):
-        out[far] = outside(x[far])
-    return out
-
-
-_FACTORIAL = [float(math.factorial(n)) for n in range(SERIES + 3)]
-
-
-def exp_fraction(u: np.ndarray) -> np.ndarray:
-    """g1(u) = (1 − e^(−u))/u."""
-    if not np.iscomplexobj(u):
-        return np.where(u == 0, 1.0, -np.expm1(-u) / np.where(u == 0, 1.0, u))
-    return _guarded(u, lambda n: 1 / _FACTORIAL[n + 1], lambda v: (1 - np.exp(-v)) / v)
-
-
-def exp_fraction2(u: np.ndarray) -> np.ndarray:
-    """g2(u) = (1 − g1(u))/u."""
-    return _guarded(u, lambda n: 1 / _FACTORIAL[n + 2], lambda v: (1 - exp_fraction(v)) / v)
-
-
-def log_fraction(x: np.ndarray) -> np.ndarray:
-    """L(x) = ln(1 + x)/x."""
-    if not np.iscomplexobj(x):
-        return np.where(x == 0, 1.0, np.log1p(x) / np.where(x == 0, 1.0, x))
-    return _guarded(x, lambda n: 1 / (n + 1), lambda v: np.log(1 + v) / v)
-
-
-def log_fraction2(x: np.ndarray) -> np.ndarray:
-    """M(x) = (1 − L(x))/x."""
-    return _guarded(x, lambda n: 1 / (n + 2), lambda v: (1 - log_fraction(v)) / v)
-
-
-def phase_state(closed, t: np.ndarray, angle: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """(ω(t), θ(t)) of a ClosedFormPhase at every t of the array (each within the phase); θ
-    zeros where ``angle`` is False (a fit of ω does not need it)."""
-    inertia, a, w0 = closed.inertia, closed.constant, closed.omega0
-    if closed.uniform:
-        return w0 + a / inertia * t, (w0 * t + a / inertia * t * t / 2 if angle else np.zeros_like(t))
-    root, steady = closed._roots()
-    k = closed.drag
-    decay = root * t / inertia
-    beta = (closed.viscous + root) / 2
-    if not angle and not isinstance(root, complex) and root > 0:  # ω alone, D > 0: G/I = (1 − E)/√D, fewer passes over a million samples
-        e = np.exp(-decay)
-        g = -np.expm1(-decay) / root
-        return (w0 * e + (a + k * steady * w0) * g) / (e + (k * w0 + beta) * g), np.zeros_like(t)
-    g1 = exp_fraction(decay)
-    g = t * g1 / inertia  # G/I
-    e = np.exp(-decay)
-    omega = (w0 * e + (a + k * steady * w0) * g) / (e + (k * w0 + beta) * g)
-    if not angle:
-        return np.real(omega), np.zeros_like(t)
-    x = k * (w0 - steady) * g
-    theta = (w0 * t * g1 * log_fraction(x) + steady * root * t * t * exp_fraction2(decay) / inertia
-             + t * g1 * log_fraction2(x) * (k * steady * w0 - k * steady * steady) * g)
-    return np.real(omega), np.real(theta)
 
 
 def motion_state(motion, t: np.ndarray, angle: bool = True) -> tuple[np.ndarray, np.ndarray]:
