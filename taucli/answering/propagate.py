@@ -18,6 +18,7 @@ input. Neither is imported here.
 from __future__ import annotations
 
 import math
+import re
 import time
 from collections.abc import Callable, Mapping
 
@@ -28,6 +29,7 @@ from taucli.quantities.measurement import with_uncertainty
 from taucli.writing.report import Measured, Report, fmt
 from taucli.options.table import Command
 
+_NUMBERS = re.compile(r"\d+(?:[.,]\d+)?(?:[eE][-+−]?\d+)?")  # the numbers in a model's text: the inputs it names
 MC_SEED = 22  # Monte Carlo draws are seeded: the same run gives the same check
 MC_MAX = 100_000
 
@@ -228,7 +230,7 @@ def linearity(scene: Scene, nominal: Report, spreads: Mapping[str, float], slope
             except (InputError, OverflowError, ZeroDivisionError, ValueError) as err:
                 changes.append(f"the scene is refused at {fmt(x)} ({err.expected if isinstance(err, InputError) else err})")
                 continue
-            if moved.model != nominal.model:
+            if _NUMBERS.sub("#", moved.model) != _NUMBERS.sub("#", nominal.model):  # "29° slope" for "30° slope" is no other model
                 changes.append(f"the model becomes “{moved.model}”")
             for key, value in moved.results.items():
                 before = nominal.results.get(key)

@@ -209,3 +209,17 @@ def test_property_sigma_scales_with_the_inputs_sigma_to_first_order(value, relat
 def test_batch_refuses_mc_and_the_get_column(flag):
     code, _, err = run("atwood", "--batch", *flag, stdin='{"m1": "4kg"}\n')
     assert code == 2 and flag[0] in err and "--batch" in err
+
+
+@pytest.mark.parametrize("call", [
+    lambda: taucli.pendulum(shape="point", mass="1kg", radius="1+/-0.01 m", angle0="10deg"),
+    lambda: taucli.rolling(shape="sphere", angle="30+/-1 deg", length="2m"),
+    lambda: taucli.drive(load_mass="250 kg", lead="10mm", ratio=[2], efficiency="0.9+/-0.03", mu=0.2, motor_inertia="0.3e-4 kg*m^2",
+                         distance="0.275m", speed="15m/min", accel="2.5 m/s^2", dwell_time="0.3s"),
+])
+def test_a_model_that_names_an_input_does_not_change_as_the_input_moves(call):
+    """The model's text names the value of an input ("point mass 1 m from the axis", "30° slope",
+    "η = 0.9"): at ±1σ that number moves, and the model is the same one. Only a change of its
+    words (a stop, slipping, a stage held) is far from linear."""
+    report = call()
+    assert not any("far from linear" in note for note in report.notes), report.notes
