@@ -32,12 +32,14 @@ class FormulaFailed(ArithmeticError):
 @dataclass(frozen=True)
 class OfTime:
     """f(t) in SI: ``coefficients`` (c₀, c₁, …) of a polynomial in t (seconds), or None and
-    ``function`` (any other formula); ``text`` as typed, ``si_unit`` the unit f is in."""
+    ``function`` (any other formula); ``text`` as typed, ``si_unit`` the unit f is in;
+    ``variable`` its name (t, or theta: a turning moment's crank angle, in radians)."""
 
     text: str
     si_unit: str
     coefficients: tuple[float, ...] | None = None
     function: Callable[[float], float] | None = None
+    variable: str = "t"
 
     @property
     def exact(self) -> bool:
@@ -69,7 +71,7 @@ class OfTime:
         for k, c in enumerate(self.coefficients):
             if c == 0:
                 continue
-            power = "" if k == 0 else " t" if k == 1 else f" t^{k}"
+            power = "" if k == 0 else f" {self.variable}" if k == 1 else f" {self.variable}^{k}"
             size = f"{abs(c):.6g}"
             body = (size if k == 0 or abs(c) != 1 else "") + power
             sign = "−" if c < 0 else "+"
