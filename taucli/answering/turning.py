@@ -38,7 +38,7 @@ def turning_moment(option, given, inputs: Inputs, stdin):
     if isinstance(given, str):
         if not os.path.isfile(given.strip()) and (mentions_angle(given) or _FORMULA.search(given)):
             formula = read_formula(given, name, units.KINDS["torque"], ANGLE)
-            if formula.exact and len(formula.coefficients) == 1:
+            if formula.coefficients is not None and len(formula.coefficients) == 1:
                 raise InputError(name, "expected a formula of theta: a constant torque has no fluctuation of energy", example=EXAMPLE, got=repr(given))
             inputs.values[name] = Value(given, None, "")
             return formula

@@ -9,7 +9,8 @@ the time in its own unit (``t/s`` is a number of seconds), and the functions of 
 parsed here by recursive descent and never run as code. Each part is kept as a polynomial in t
 while it is one (numbers, units, t, sums, products, a division by a part free of t, a whole
 power up to MAX_POWER), so that a polynomial is integrated exactly; anything else becomes a
-function of t, integrated by quadrature. Units are pint's, each looked up once by name; a sum of
+function of t, integrated by quadrature (of theta, a polynomial plus sines and cosines of
+multiples of it, sin(φ + wθ) and cos(φ + wθ) times numbers and summed, is kept exact too). Units are pint's, each looked up once by name; a sum of
 parts of different dimensions, a function of a dimensioned part, or a result not of the option's
 kind is refused, naming the option. An angular quantity (α) needs its angle unit written, as a
 number does everywhere.
@@ -58,6 +59,13 @@ class _Part:
     coefficients: list[float] | None = None
     function: object = None
     angled: bool = False
+    # A formula of theta that is a polynomial plus sines and cosines of multiples of theta, kept as
+    # ((c₀, c₁, …), ((w, s, c), …)) beside its function: Σcₖθᵏ + Σ(s sin wθ + c cos wθ), integrated exactly.
+    waves: tuple | None = None
+
+    def form(self) -> tuple | None:
+        """The part as a polynomial and its waves, where it is one (a polynomial has none)."""
+        return (tuple(self.coefficients), ()) if self.coefficients is not None else self.waves
 
     def call(self):
         if self.coefficients is not None:
@@ -102,7 +110,7 @@ def read_formula(text: str, option: str, kind: Kind, variable: str = TIME) -> Of
         while len(cs) > 1 and cs[-1] == 0:
             cs.pop()
         return OfTime(shown, kind.si_unit, coefficients=tuple(cs), variable=variable)
-    return OfTime(shown, kind.si_unit, function=part.function, variable=variable)
+    return OfTime(shown, kind.si_unit, function=part.function, variable=variable, waves=part.waves)
 
 
 def _an(name: str) -> str:
@@ -228,13 +236,15 @@ class _Parser:
             cs = [(a.coefficients[k] if k < len(a.coefficients) else 0.0) + sign * (b.coefficients[k] if k < len(b.coefficients) else 0.0) for k in range(size)]
             return _Part(a.dims, cs, angled=angled)
         f, g = a.call(), b.call()
-        return _Part(a.dims, function=lambda t: f(t) + sign * g(t), angled=angled)
+        fa, fb = a.form(), b.form()
+        waves = (_sum(fa[0], fb[0], sign), _merged(fa[1], fb[1], sign)) if fa is not None and fb is not None else None
+        return _Part(a.dims, function=lambda t: f(t) + sign * g(t), angled=angled, waves=waves)
 
     def scale(self, a: _Part, factor: float) -> _Part:
         if a.coefficients is not None:
             return _Part(a.dims, [factor * c for c in a.coefficients], angled=a.angled)
         f = a.call()
-        return _Part(a.dims, function=lambda t: factor * f(t), angled=a.angled)
+        return _Part(a.dims, function=lambda t: factor * f(t), angled=a.angled, waves=_times(a.waves, factor))
 
     def multiply(self, a: _Part, b: _Part) -> _Part:
         dims, angled = a.dims * b.dims, a.angled or b.angled
@@ -247,14 +257,19 @@ class _Parser:
                     cs[i + j] += x * y
             return _Part(dims, cs, angled=angled)
         f, g = a.call(), b.call()
-        return _Part(dims, function=lambda t: f(t) * g(t), angled=angled)
+        waves = None
+        for wave, other in ((a, b), (b, a)):  # a wave times a number: still a wave
+            if wave.waves is not None and other.coefficients is not None and len(other.coefficients) == 1:
+                waves = _times(wave.waves, other.coefficients[0])
+        return _Part(dims, function=lambda t: f(t) * g(t), angled=angled, waves=waves)
 
     def divide(self, a: _Part, b: _Part) -> _Part:
         dims, angled = a.dims / b.dims, a.angled or b.angled
         if b.coefficients is not None and len(b.coefficients) == 1:
             if b.coefficients[0] == 0:
                 raise self.fail("a division by zero")
-            return _Part(dims, (self.scale(a, 1.0 / b.coefficients[0])).coefficients, self.scale(a, 1.0 / b.coefficients[0]).function, angled)
+            scaled = self.scale(a, 1.0 / b.coefficients[0])
+            return _Part(dims, scaled.coefficients, scaled.function, angled, scaled.waves)
         f, g = a.call(), b.call()
         return _Part(dims, function=lambda t: f(t) / g(t), angled=angled)
 
@@ -289,7 +304,35 @@ class _Parser:
                 return _Part(dims, [rule(inner.coefficients[0])])
             except (ValueError, OverflowError):
                 raise self.fail(f"{name} has no value there") from None
-        return _Part(dims, function=lambda t: rule(f(t)))
+        waves = None
+        if self.variable == ANGLE and name in ("sin", "cos") and inner.coefficients is not None and len(inner.coefficients) == 2:
+            phase, w = inner.coefficients  # sin(φ + wθ) = sin φ cos wθ + cos φ sin wθ; cos(φ + wθ) = cos φ cos wθ − sin φ sin wθ
+            terms = ((w, math.cos(phase), math.sin(phase)),) if name == "sin" else ((w, -math.sin(phase), math.cos(phase)),)
+            waves = ((0.0,), terms)
+        return _Part(dims, function=lambda t: rule(f(t)), waves=waves)
+
+
+def _sum(a: tuple, b: tuple, sign: float) -> tuple:
+    size = max(len(a), len(b))
+    return tuple((a[k] if k < len(a) else 0.0) + sign * (b[k] if k < len(b) else 0.0) for k in range(size))
+
+
+def _merged(a: tuple, b: tuple, sign: float) -> tuple:
+    """Σ(s sin wθ + c cos wθ) of both, a term per w (a cosine of −w is of w; a sine changes sign)."""
+    found: dict[float, list[float]] = {}
+    for terms, factor in ((a, 1.0), (b, sign)):
+        for w, s, c in terms:
+            key, s = (w, s) if w > 0 else (-w, -s)
+            held = found.setdefault(key, [0.0, 0.0])
+            held[0] += factor * s
+            held[1] += factor * c
+    return tuple((w, s, c) for w, (s, c) in found.items())
+
+
+def _times(waves: tuple | None, factor: float) -> tuple | None:
+    if waves is None:
+        return None
+    return tuple(factor * c for c in waves[0]), tuple((w, factor * s, factor * c) for w, s, c in waves[1])
 
 
 def _dims(dims) -> str:

@@ -20,7 +20,8 @@ unevenly spaced, and the running integral of a polyline has its extremes exactly
 crosses the mean line (found by linear interpolation), so the work, the mean and ΔE are those of
 one curve; Simpson's parabolas would need even, paired intervals and can overshoot between
 samples, with the crossings no longer on the curve the trapezoids integrate. A formula is
-integrated exactly where it is a polynomial, else by adaptive Gauss–Legendre quadrature
+integrated exactly where it is a polynomial plus sines and cosines of multiples of θ (the books'
+formulas: ∫ sin wθ = (1 − cos wθ)/w), else by adaptive Gauss–Legendre quadrature
 (taucli.numerics.of_time, to about 1e-13), and the crossings are found by Brent's method between
 the sign changes of T − T_mean on a grid of GRID points over the cycle.
 """
@@ -51,7 +52,7 @@ def swing_from_curve(curve: OfTime | Sequence[tuple[float, float]], cycle: float
             swing, mean = _from_formula(curve, cycle, steps)
         except FormulaFailed as failed:
             raise InputError("turning_moment", f"has no finite value at θ = {degrees(failed.at)} ({failed.why})", example=EXAMPLE) from None
-        return swing, mean, ("exact integral" if curve.exact else "Gauss–Legendre quadrature") + ", Brent's method for the crossings"
+        return swing, mean, ("closed-form integral" if curve.exact else "Gauss–Legendre quadrature") + ", Brent's method for the crossings"
     swing, mean = _from_samples([(float(a), float(t)) for a, t in curve], cycle, steps, notes)
     return swing, mean, "trapezoid rule over the samples"
 
@@ -110,7 +111,8 @@ def _from_formula(curve: OfTime, cycle: float | None, steps: list[Step]) -> tupl
             root, _ = brent(excess, a, b, fa, fb)
             points.append((root, energy(root)))
     points.append((cycle, energy(cycle)))
-    how = "exactly (a polynomial)" if curve.exact else "by adaptive Gauss–Legendre quadrature"
+    how = ("exactly (a polynomial)" if curve.coefficients is not None else "exactly (sines and cosines of multiples of θ, and a polynomial)"
+           if curve.exact else "by adaptive Gauss–Legendre quadrature")
     steps.append(Step("Work over the cycle", "W = ∫₀^Θ T dθ", f"over {degrees(cycle)}, {how}", quantity_text(work, "J"), "the area under the diagram"))
     return _swing(points, mean, work, cycle, steps, "where T(θ) = T_mean (Brent's method between the sign changes on a ¼°-fine grid)")
 

@@ -231,3 +231,36 @@ def test_a_bad_file_is_refused_naming_the_option(taucli, tmp_path, text, named):
     path.write_text(text, encoding="utf-8")
     extra = ["--cycle-angle", "180deg"] if "360, 1" in text else []
     assert_usage_error(taucli("flywheel", "--turning-moment", str(path), *extra, "--omega-mean", "600rpm", "--speed-variation", "0.01"), named)
+
+
+def test_sines_and_cosines_of_theta_are_integrated_in_closed_form():
+    """A polynomial plus sines and cosines of multiples of θ (with phases, numbers and units) is
+    integrated exactly: ∫₀^θ and ∫₀^θ∫ against mpmath to rounding; a formula of t keeps its quadrature."""
+    from taucli.quantities import units
+    from taucli.quantities.formula import ANGLE, read_formula
+
+    text = "(3*sin(theta/2 + 0.3) + 2 kN*m/(1 N*m)*cos(-3*theta) - 2*theta + 5*(4*sin(theta)) - cos(2 theta)/4)*(2 N*m)/2"
+    formula = read_formula(text, "turning_moment", units.KINDS["torque"], ANGLE)
+    assert formula.exact and formula.coefficients is None
+
+    def torque(x):
+        return 3 * mpmath.sin(x / 2 + mpmath.mpf("0.3")) + 2000 * mpmath.cos(3 * x) - 2 * x + 20 * mpmath.sin(x) - mpmath.cos(2 * x) / 4
+
+    for theta in (1e-7, 0.01, 0.7, 2.5, 9.0):
+        first = mpmath.quad(torque, [0, theta])
+        second = mpmath.quad(lambda x: (theta - x) * torque(x), [0, theta])
+        assert formula.first(theta) == pytest.approx(float(first), rel=1e-13, abs=1e-15)
+        assert formula.second(theta) == pytest.approx(float(second), rel=1e-13, abs=1e-15)
+        assert formula.at(theta) == pytest.approx(float(torque(theta)), rel=1e-13, abs=1e-12)
+    assert not read_formula("3 N*m * sin(2 rad/s * t)", "torque", units.KINDS["torque"]).exact
+    report = taucli.flywheel(turning_moment=KHURMI, omega_mean="600 rpm", speed_variation=0.01)
+    assert report.method.startswith("closed-form")
+
+
+def test_a_formula_the_grammar_cannot_integrate_goes_to_quadrature():
+    text = "(1000 + 300*sqrt(1 + 0.5*sin(theta)) - 200*cos(theta)^2) N*m"
+    report = taucli.flywheel(turning_moment=text, inertia="5 kg*m^2", omega_mean="300 rpm")
+    assert report.method.startswith("Gauss")
+    mean, swing = _reference(lambda th: 1000 + 300 * mpmath.sqrt(1 + mpmath.sin(th) / 2) - 200 * mpmath.cos(th) ** 2, 2 * mpmath.pi)
+    assert report.results["torque_mean"].value == pytest.approx(float(mean), rel=1e-12)
+    assert report.results["energy_swing"].value == pytest.approx(float(swing), rel=1e-9)
