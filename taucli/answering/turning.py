@@ -24,6 +24,7 @@ from taucli.writing.report import Value
 
 _FORMULA = re.compile(r"[()*^]|\d\s+[A-Za-z]")  # a formula's marks (a path not found that has them is read as a formula, for its message)
 MIN_SAMPLES = 3  # two points are a straight line: no swing to speak of
+MAX_SAMPLES = 100_000  # a book's table has a few dozen rows; ¼° steps over 720° are 2881: more is a file of something else
 EXAMPLE = "{turning_moment} '(15000 + 10000*sin(2*theta) - 6000*cos(2*theta)) N*m'"
 FILE_EXAMPLE = "{turning_moment} diagram.csv"
 WHAT = ("expected a CSV file of crank angle and torque (a header such as 'theta [deg], torque [N*m]', then rows) "
@@ -46,7 +47,9 @@ def turning_moment(option, given, inputs: Inputs, stdin):
         inputs.values[name] = Value(given, None, "")
         return samples
     if isinstance(given, (list, tuple)):
-        return _pairs(name, given)
+        pairs = _pairs(name, given)
+        inputs.values[name] = Value(f"{len(pairs)} samples (θ in rad, T in N*m)", None, "")
+        return pairs
     raise InputError(name, WHAT, example=EXAMPLE, got=f"{given!r} ({type(given).__name__})")
 
 
@@ -56,7 +59,7 @@ def _from_file(name: str, path: str, inputs: Inputs) -> tuple[tuple[float, float
     try:
         with open(path, encoding="utf-8") as handle:
             profile = read_profile(handle, path, option=name, across="angle", least=MIN_SAMPLES)
-            samples = tuple(profile.samples)
+            samples = tuple(_at_most(profile.samples, name))
     except OSError as err:
         raise InputError(name, WHAT, example=FILE_EXAMPLE, got=f"{path!r}: {err.strerror}") from None
     except UnicodeDecodeError:
@@ -65,9 +68,18 @@ def _from_file(name: str, path: str, inputs: Inputs) -> tuple[tuple[float, float
     return samples
 
 
+def _at_most(samples, name: str):
+    for count, sample in enumerate(samples, start=1):
+        if count > MAX_SAMPLES:
+            raise InputError(name, f"has more than {MAX_SAMPLES} rows: expected a turning-moment diagram's table (a book's has a few dozen)", example=FILE_EXAMPLE)
+        yield sample
+
+
 def _pairs(name: str, given) -> tuple[tuple[float, float], ...]:
     """(θ, T) pairs in SI from Python: numbers, the angle increasing, at least MIN_SAMPLES."""
     example = "turning_moment=[(0, 100), (1.5708, 300), (3.1416, 100)]"
+    if len(given) > MAX_SAMPLES:
+        raise InputError(name, f"has more than {MAX_SAMPLES} samples: expected a turning-moment diagram's table (a book's has a few dozen)", example=example)
     try:
         pairs = tuple((float(theta), float(torque)) for theta, torque in given)
     except (TypeError, ValueError):

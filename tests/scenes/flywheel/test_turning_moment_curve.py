@@ -264,3 +264,30 @@ def test_a_formula_the_grammar_cannot_integrate_goes_to_quadrature():
     mean, swing = _reference(lambda th: 1000 + 300 * mpmath.sqrt(1 + mpmath.sin(th) / 2) - 200 * mpmath.cos(th) ** 2, 2 * mpmath.pi)
     assert report.results["torque_mean"].value == pytest.approx(float(mean), rel=1e-12)
     assert report.results["energy_swing"].value == pytest.approx(float(swing), rel=1e-9)
+
+
+def test_too_long_a_table_is_refused_before_it_is_held(taucli, tmp_path):
+    from taucli.answering.turning import MAX_SAMPLES
+
+    path = tmp_path / "long.csv"
+    path.write_text("theta [deg], torque [N*m]\n" + "".join(f"{k / 1000!r}, {k % 7}\n" for k in range(MAX_SAMPLES + 1)), encoding="utf-8")
+    assert_usage_error(taucli("flywheel", "--turning-moment", str(path), "--omega-mean", "600rpm", "--speed-variation", "0.01"), "more than")
+    with pytest.raises(taucli_input_error()):
+        import taucli as api
+
+        api.flywheel(turning_moment=[(k, 1.0) for k in range(MAX_SAMPLES + 1)], omega_mean="600 rpm", speed_variation=0.01)
+
+
+def taucli_input_error():
+    from taucli.core.errors import InputError
+
+    return InputError
+
+
+def test_python_pairs_are_checked(tmp_path):
+    from taucli.core.errors import InputError
+
+    for bad, named in (([(0, 1), (1, 2)], "at least 3"), ([(0, 1), (2, 2), (1, 3)], "sample 3"), ([(0, 1), (1, "x"), (2, 3)], "pairs"),
+                       ([(0, 1), (1, float("nan")), (2, 3)], "finite"), (42, "formula of theta")):
+        with pytest.raises(InputError, match=named):
+            taucli.flywheel(turning_moment=bad, omega_mean="600 rpm", speed_variation=0.01)
