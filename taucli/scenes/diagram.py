@@ -61,6 +61,11 @@ def _from_samples(samples: list[tuple[float, float]], cycle: float | None, steps
     start, span = samples[0][0], samples[-1][0] - samples[0][0]
     if cycle is None:
         cycle = span
+        if not any(abs(span - whole) <= 1e-9 * whole for whole in (math.pi, *PERIODS)):
+            turn = next(whole for whole in (*PERIODS, math.inf) if whole > span)
+            notes.append(f"--turning-moment: the samples span {degrees(span)}, taken as the cycle; where the diagram repeats after "
+                         f"{degrees(turn) if math.isfinite(turn) else 'a whole number of turns'}, give --cycle-angle "
+                         f"{'%gdeg' % math.degrees(turn) if math.isfinite(turn) else ''}".rstrip() + " (its last segment then runs back to the first torque)")
     elif cycle < span * (1 - 1e-9):
         raise InputError("cycle_angle", f"is shorter than the samples' span, {degrees(span)}: give the samples of one cycle", example="{cycle_angle} 720deg",
                          got=degrees(cycle))

@@ -291,3 +291,14 @@ def test_python_pairs_are_checked(tmp_path):
                        ([(0, 1), (1, float("nan")), (2, 3)], "finite"), (42, "formula of theta")):
         with pytest.raises(InputError, match=named):
             taucli.flywheel(turning_moment=bad, omega_mean="600 rpm", speed_variation=0.01)
+
+
+def test_samples_that_stop_short_of_a_turn_are_noted():
+    """A book's table 0°…330° every 30°: the span (330°) is taken as the cycle, with a note naming
+    --cycle-angle 360deg; given it, the table closes on its first torque, and no note."""
+    samples = [(math.radians(d), 15000 + 10000 * math.sin(math.radians(2 * d)) - 6000 * math.cos(math.radians(2 * d))) for d in range(0, 331, 30)]
+    short = taucli.flywheel(turning_moment=samples, omega_mean="600 rpm", speed_variation=0.01)
+    assert any("cycle_angle 360deg" in note for note in short.notes)  # spelled as Python spells it
+    whole = taucli.flywheel(turning_moment=samples, cycle_angle="360 deg", omega_mean="600 rpm", speed_variation=0.01)
+    assert not any("span" in note or "ends at" in note for note in whole.notes)
+    assert whole.results["torque_mean"].value == pytest.approx(15000.0, rel=1e-13)  # the trapezoids are exact for a whole period's sines
