@@ -180,7 +180,7 @@ def _diagram_alone(loops, energy_swing, energy_per_cycle, scale_torque, scale_an
                              ("energy_per_cycle", energy_per_cycle, "the diagram gives the work per cycle"),
                              ("torque_mean", torque_mean, "the diagram gives the mean torque")):
         if value is not None:
-            raise InputError(name, f"conflicts with {{turning_moment}}: {why}", example=DIAGRAM_EXAMPLE + " {omega_mean} 600rpm {speed_variation} 0.01")
+            raise InputError(name, f"conflicts with {{turning_moment}}: {why}", example=DIAGRAM_EXAMPLE)
     for name, value in (("scale_torque", scale_torque), ("scale_angle", scale_angle)):
         if value is not None:
             raise InputError(name, "goes with {loops}: the scales of a drawn diagram's areas ({turning_moment} is the curve itself)", example=LOOPS_EXAMPLE)
