@@ -30,13 +30,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import replace
 
 from taucli.core.errors import InputError
 from taucli.numerics.of_time import FormulaFailed, OfTime
 from taucli.numerics.roots import brent
 from taucli.writing.report import Step, fmt, quantity_text
 
-GRID = 2880  # points over a cycle where T − T_mean is sampled for its sign changes (¼° over 720°)
+GRID = 2880  # points over a cycle where T − T_mean is sampled for its sign changes (¼° over 720°), more for fast waves
+MAX_GRID = 200_000
 PERIODS = (2 * math.pi, 4 * math.pi)  # a formula's cycle where none is given: one turn, else two (a four-stroke's)
 EXAMPLE = "{turning_moment} '(15000 + 10000*sin(2*theta) - 6000*cos(2*theta)) N*m'"
 
@@ -104,9 +106,18 @@ def _from_formula(curve: OfTime, cycle: float | None, steps: list[Step]) -> tupl
                           "one turn (a steam or two-stroke engine), or two for a four-stroke; give --cycle-angle for another"))
     work = curve.first(cycle)
     mean = work / cycle
-    energy = lambda angle: curve.first(angle) - mean * angle  # noqa: E731
-    excess = lambda angle: curve.at(angle) - mean  # noqa: E731
-    grid = [cycle * i / GRID for i in range(GRID + 1)]
+    if curve.exact:  # T − T_mean integrated in closed form as it stands: E(θ) keeps its digits where T_mean θ is far larger
+        above = _less(curve, mean)
+        energy, excess = above.first, above.at
+    else:  # quadrature settles to a share of the integral, which for T − T_mean comes back to 0 at the cycle's end
+        energy = lambda angle: curve.first(angle) - mean * angle  # noqa: E731
+        excess = lambda angle: curve.at(angle) - mean  # noqa: E731
+    count = GRID
+    if curve.waves is not None and curve.waves[1]:  # 16 points to each period of its fastest wave, at the least
+        count = max(GRID, math.ceil(16 * max(w for w, _, _ in curve.waves[1]) * cycle / (2 * math.pi)))
+        if count > MAX_GRID:
+            raise InputError("turning_moment", f"swings too fast to follow: more than {MAX_GRID // 16} periods over the cycle", example=EXAMPLE)
+    grid = [cycle * i / count for i in range(count + 1)]
     values = [excess(angle) for angle in grid]
     points = [(0.0, 0.0)]
     for a, b, fa, fb in zip(grid, grid[1:], values, values[1:]):
@@ -119,7 +130,15 @@ def _from_formula(curve: OfTime, cycle: float | None, steps: list[Step]) -> tupl
     how = ("exactly (a polynomial)" if curve.coefficients is not None else "exactly (sines and cosines of multiples of θ, and a polynomial)"
            if curve.exact else "by adaptive Gauss–Legendre quadrature")
     steps.append(Step("Work over the cycle", "W = ∫₀^Θ T dθ", f"over {degrees(cycle)}, {how}", quantity_text(work, "J"), "the area under the diagram"))
-    return _swing(points, mean, work, cycle, steps, "where T(θ) = T_mean (Brent's method between the sign changes on a ¼°-fine grid)")
+    return _swing(points, mean, work, cycle, steps, "where T(θ) = T_mean (Brent's method between the sign changes on a fine grid)")
+
+
+def _less(curve: OfTime, mean: float) -> OfTime:
+    """T − T_mean of a formula in closed form: its polynomial's constant term less the mean."""
+    if curve.coefficients is not None:
+        return replace(curve, coefficients=(curve.coefficients[0] - mean, *curve.coefficients[1:]))
+    function, (poly, terms) = curve.function, curve.waves
+    return replace(curve, function=lambda angle: function(angle) - mean, waves=((poly[0] - mean, *poly[1:]), terms))
 
 
 def _period(curve: OfTime) -> float:

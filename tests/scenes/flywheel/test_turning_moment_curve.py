@@ -302,3 +302,14 @@ def test_samples_that_stop_short_of_a_turn_are_noted():
     whole = taucli.flywheel(turning_moment=samples, cycle_angle="360 deg", omega_mean="600 rpm", speed_variation=0.01)
     assert not any("span" in note or "ends at" in note for note in whole.notes)
     assert whole.results["torque_mean"].value == pytest.approx(15000.0, rel=1e-13)  # the trapezoids are exact for a whole period's sines
+
+
+def test_a_fast_wave_is_followed_or_refused():
+    """sin(300θ): 600 crossings a turn; the grid follows the fastest wave, 16 points a period
+    (ΔE = 2·(100/300) exactly), and a wave past what a grid can follow is refused."""
+    results = taucli.flywheel(turning_moment="(1000 + 100*sin(300*theta)) N*m", inertia="1 kg*m^2", omega_mean="300 rpm").results
+    assert results["energy_swing"].value == pytest.approx(2 * 100 / 300, rel=1e-12)
+    from taucli.core.errors import InputError
+
+    with pytest.raises(InputError, match="too fast"):
+        taucli.flywheel(turning_moment="(1000 + 100*sin(1e6*theta)) N*m", inertia="1 kg*m^2", omega_mean="300 rpm")
