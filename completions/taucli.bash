@@ -54,7 +54,7 @@ _taucli_fit_names() {
         torque) names="lever angle mass g force" ;;
         gyro) names="inertia mass density gyration radius inner_radius outer_radius length width height depth offset spin cm_distance torque tilt inertia_perp precession lean bearing_span cg_height track speed turn_radius wheel_inertia wheel_radius engine_inertia gear_ratio g part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle rotor.inertia rotor.spin" ;;
         drive) names="motor_inertia stall_torque no_load_speed motor_torque rated_torque rated_power rest_factor peak_torque ratio efficiency efficiency_back motor_friction gear_inertia load_inertia mass density gyration radius inner_radius outer_radius length width height depth offset load_mass drum_radius lead load_torque load_force incline mu g until_omega speed in_time alpha accel accel_time run_time decel_time dwell_time distance move_angle segment.time segment.torque segment.power part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
-        flywheel) names="inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction scale_torque scale_angle cycle_time rim_radius rim_speed rim_speed_max rim_speed_min density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
+        flywheel) names="inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction cycle_angle torque_mean scale_torque scale_angle cycle_time rim_radius rim_speed rim_speed_max rim_speed_min density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" ;;
         balance) names="plane balance_radius speed bearing g mass.mass mass.radius mass.angle mass.plane mass.length" ;;
     esac
     [[ "$cur" == *,* ]] && prefix="${cur%,*},"
@@ -533,6 +533,9 @@ _taucli() {
             --energy-swing) _taucli_units J kJ MJ 'kW*h' Wh; return 0 ;;
             --energy-per-cycle) _taucli_units J kJ MJ 'kW*h' Wh; return 0 ;;
             --punch-fraction) :; return 0 ;;
+            --turning-moment) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
+            --cycle-angle) _taucli_units deg rad rev; return 0 ;;
+            --torque-mean) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --loops) :; return 0 ;;
             --scale-torque) _taucli_units 'N*m' 'mN*m' 'kN*m' 'lbf*ft' 'lbf*in'; return 0 ;;
             --scale-angle) _taucli_units deg rad rev; return 0 ;;
@@ -543,19 +546,19 @@ _taucli() {
             --rim-speed-min) _taucli_units 'm/s' 'km/h' 'ft/s' mph; return 0 ;;
             --density) _taucli_units 'kg/m^3' 'g/cm^3' 'lb/ft^3'; return 0 ;;
             --allowable-stress) _taucli_units Pa kPa MPa GPa psi 'N/mm^2'; return 0 ;;
-            --get) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area power_motor stress_margin" -- "$cur")); return 0 ;;
-            --to) COMPREPLY=($(compgen -W "cs= energy_swing= I= omega_mean= omega_max= omega_min= KE_mean= mass= rim_speed= rim_speed_max= hoop_stress= hoop_stress_max= rim_area= power_motor= stress_margin=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --get) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area power_motor torque_mean power_mean stress_margin" -- "$cur")); return 0 ;;
+            --to) COMPREPLY=($(compgen -W "cs= energy_swing= I= omega_mean= omega_max= omega_min= KE_mean= mass= rim_speed= rim_speed_max= hoop_stress= hoop_stress_max= rim_area= power_motor= torque_mean= power_mean= stress_margin=" -- "$cur")); compopt -o nospace; return 0 ;;
             --format) COMPREPLY=($(compgen -W "md latex html csv" -- "$cur")); return 0 ;;
             --out) COMPREPLY=($(compgen -f -- "$cur")); return 0 ;;
             --points) :; return 0 ;;
-            --y) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area power_motor stress_margin" -- "$cur")); return 0 ;;
-            --find) COMPREPLY=($(compgen -W "inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction scale_torque scale_angle cycle_time rim_radius rim_speed rim_speed_max rim_speed_min density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
-            --want) COMPREPLY=($(compgen -W "cs= energy_swing= I= omega_mean= omega_max= omega_min= KE_mean= mass= rim_speed= rim_speed_max= hoop_stress= hoop_stress_max= rim_area= power_motor= stress_margin=" -- "$cur")); compopt -o nospace; return 0 ;;
+            --y) COMPREPLY=($(compgen -W "cs energy_swing I omega_mean omega_max omega_min KE_mean mass rim_speed rim_speed_max hoop_stress hoop_stress_max rim_area power_motor torque_mean power_mean stress_margin" -- "$cur")); return 0 ;;
+            --find) COMPREPLY=($(compgen -W "inertia mass gyration radius inner_radius outer_radius length width height depth offset omega_mean omega_max omega_min fluctuation speed_variation energy_swing energy_per_cycle punch_fraction cycle_angle torque_mean scale_torque scale_angle cycle_time rim_radius rim_speed rim_speed_max rim_speed_min density allowable_stress part.radius part.inner_radius part.outer_radius part.length part.width part.height part.depth part.offset part.mass part.inertia part.gyration part.angle" -- "$cur")); return 0 ;;
+            --want) COMPREPLY=($(compgen -W "cs= energy_swing= I= omega_mean= omega_max= omega_min= KE_mean= mass= rim_speed= rim_speed_max= hoop_stress= hoop_stress_max= rim_area= power_motor= torque_mean= power_mean= stress_margin=" -- "$cur")); compopt -o nospace; return 0 ;;
             --minimize) :; return 0 ;;
             --maximize) :; return 0 ;;
             --mc) :; return 0 ;;
         esac
-        COMPREPLY=($(compgen -W "--inertia --shape --mass --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --loops --scale-torque --scale-angle --cycle-time --rim-radius --rim-speed --rim-speed-max --rim-speed-min --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
+        COMPREPLY=($(compgen -W "--inertia --shape --mass --gyration --radius --inner-radius --outer-radius --length --width --height --depth --axis --offset --part --omega-mean --omega-max --omega-min --fluctuation --speed-variation --energy-swing --energy-per-cycle --punch-fraction --turning-moment --cycle-angle --torque-mean --loops --scale-torque --scale-angle --cycle-time --rim-radius --rim-speed --rim-speed-max --rim-speed-min --density --allowable-stress --json --get --to --no-steps --batch --jsonl --format --plot --out --points --y --find --want --minimize --maximize --uncertainty --mc --no-limit --help" -- "$cur"))
         ;;
     balance)
         case "$prev" in

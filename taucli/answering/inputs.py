@@ -16,7 +16,7 @@ from taucli.quantities.formula import mentions_time
 from taucli.quantities.kinds import article
 from taucli.answering.reading import Inputs, Origin, word
 from taucli.writing.report import Value
-from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, FACE, FILE, FLAG, PART, PARTICLE, PHASE, PULL, REVOLVING, ROTOR, SEGMENT, SIDE, TEXT, VECTOR, Command, Option
+from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, COUPLE, CURVE, FACE, FILE, FLAG, PART, PARTICLE, PHASE, PULL, REVOLVING, ROTOR, SEGMENT, SIDE, TEXT, VECTOR, Command, Option
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:
@@ -238,3 +238,13 @@ def _phases(option: Option, given, inputs: Inputs, stdin):
 
 
 READERS[PHASE] = _phases
+
+
+def _curve(option: Option, given, inputs: Inputs, stdin):
+    """flywheel's --turning-moment, in taucli.answering.turning (deferred: a file or a formula)."""
+    from taucli.answering.turning import turning_moment  # deferred: the CSV and formula readers, only for a diagram
+
+    return turning_moment(option, given, inputs, stdin)
+
+
+READERS[CURVE] = _curve

@@ -19,7 +19,7 @@ from taucli.core.errors import InputError
 from taucli.writing.report import Report
 from taucli.writing.swept import Sweep
 from taucli.quantities.kinds import KINDS
-from taucli.options.table import CHOICE, COUNT, FILE, FLAG, TEXT, VECTOR, Command, Option
+from taucli.options.table import CHOICE, COUNT, CURVE, FILE, FLAG, TEXT, VECTOR, Command, Option
 
 
 def function(name: str) -> Callable[..., Report] | None:
@@ -112,6 +112,8 @@ def _kind(option: Option) -> str:
         what = "a whole number"
     elif option.kind == FILE:
         what = "a file's path"
+    elif option.kind == CURVE:
+        what = "a CSV file's path (angle, torque), a formula of theta, or (θ rad, T N·m) pairs"
     elif option.kind == TEXT:
         what = "text"
     elif option.kind == VECTOR:

@@ -94,7 +94,7 @@ def _options(command: table.Command, options) -> tuple[Option, ...]:
                 label=(option.kind if option.is_quantity and not option.metavar else option.shown_metavar.split()[0].strip('"')).lower(),
                 choices=choices,
                 units=KINDS[option.kind].common_units if option.is_quantity else (),
-                files=option.kind == table.FILE,
+                files=option.kind in (table.FILE, table.CURVE),
                 described=described,
                 axes=option.name == "axis" and option.kind == table.CHOICE,
                 fit_names=command.name == FIT and option.name == FIT,

@@ -32,17 +32,20 @@ class FormulaFailed(ArithmeticError):
 @dataclass(frozen=True)
 class OfTime:
     """f(t) in SI: ``coefficients`` (c₀, c₁, …) of a polynomial in t (seconds), or None and
-    ``function`` (any other formula); ``text`` as typed, ``si_unit`` the unit f is in."""
+    ``function`` (any other formula); ``text`` as typed, ``si_unit`` the unit f is in;
+    ``variable`` its name (t, or theta: a turning moment's crank angle, in radians)."""
 
     text: str
     si_unit: str
     coefficients: tuple[float, ...] | None = None
     function: Callable[[float], float] | None = None
+    variable: str = "t"
+    waves: tuple | None = None  # ((c₀, c₁, …), ((w, s, c), …)): f = Σcₖxᵏ + Σ(s sin wx + c cos wx), beside ``function``
 
     @property
     def exact(self) -> bool:
-        """Integrated in closed form (a polynomial)."""
-        return self.coefficients is not None
+        """Integrated in closed form (a polynomial, or a polynomial and its waves)."""
+        return self.coefficients is not None or self.waves is not None
 
     def at(self, t: float) -> float:
         if self.coefficients is not None:
@@ -53,12 +56,20 @@ class OfTime:
         """∫₀ᵗ f(s) ds."""
         if self.coefficients is not None:
             return t * _horner([c / (k + 1) for k, c in enumerate(self.coefficients)], t)
+        if self.waves is not None:  # ∫₀ᵗ s sin ws + c cos ws = s(1 − cos wt)/w + c sin(wt)/w, 1 − cos x as 2 sin²(x/2)
+            poly, terms = self.waves
+            return math.fsum([t * _horner([c / (k + 1) for k, c in enumerate(poly)], t),
+                              *(s * 2 * math.sin(w * t / 2) ** 2 / w + c * math.sin(w * t) / w for w, s, c in terms)])
         return self._integral(self._value, t)
 
     def second(self, t: float) -> float:
         """∫₀ᵗ (t − s) f(s) ds = ∫₀ᵗ ∫₀ˢ f."""
         if self.coefficients is not None:
             return t * t * _horner([c / ((k + 1) * (k + 2)) for k, c in enumerate(self.coefficients)], t)
+        if self.waves is not None:  # ∫₀ᵗ of the first: s(t − sin(wt)/w)/w + c·2 sin²(wt/2)/w²
+            poly, terms = self.waves
+            return math.fsum([t * t * _horner([c / ((k + 1) * (k + 2)) for k, c in enumerate(poly)], t),
+                              *(s * t * _less_sine(w * t) / w + c * 2 * math.sin(w * t / 2) ** 2 / (w * w) for w, s, c in terms)])
         return self._integral(lambda s: (t - s) * self._value(s), t)
 
     def describe(self) -> str:
@@ -69,7 +80,7 @@ class OfTime:
         for k, c in enumerate(self.coefficients):
             if c == 0:
                 continue
-            power = "" if k == 0 else " t" if k == 1 else f" t^{k}"
+            power = "" if k == 0 else f" {self.variable}" if k == 1 else f" {self.variable}^{k}"
             size = f"{abs(c):.6g}"
             body = (size if k == 0 or abs(c) != 1 else "") + power
             sign = "−" if c < 0 else "+"
@@ -119,6 +130,17 @@ class OfTime:
             else:
                 pending += [(lo, middle, left), (middle, hi, right)]
         return math.fsum(done)
+
+
+def _less_sine(u: float) -> float:
+    """1 − sin(u)/u, by its series where u is small (the difference would lose its digits)."""
+    if abs(u) > 0.1:
+        return 1 - math.sin(u) / u
+    total, term = 0.0, u * u / 6
+    for k in range(1, 12):  # u²/3! − u⁴/5! + …: each term −u²/((2k + 2)(2k + 3)) of the one before
+        total += term
+        term *= -u * u / ((2 * k + 2) * (2 * k + 3))
+    return total
 
 
 def _horner(coefficients, t: float) -> float:

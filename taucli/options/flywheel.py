@@ -1,7 +1,7 @@
 """taucli flywheel: the fluctuation of a flywheel's speed and energy over a cycle, and its rim."""
 
 from taucli.options.common import ANSWER, BODY_OPTIONS
-from taucli.options.table import TEXT, Command, Option, Result
+from taucli.options.table import CURVE, TEXT, Command, Option, Result
 
 SPEED = "Speed and its fluctuation"
 ENERGY = "Energy"
@@ -31,6 +31,14 @@ COMMAND = Command(
         Option("energy_per_cycle", "energy", "Energy a punch or shear takes each cycle, which the motor supplies evenly over the cycle.", panel=ENERGY),
         Option("punch_fraction", "dimensionless", "Share of the cycle during which the punch takes that energy (0 to 1): ΔE = E(1 − f).",
                sign="nonnegative", default="0", panel=ENERGY),
+        Option("turning_moment", CURVE, "The turning-moment diagram T(θ): a CSV file of crank angle and torque (a header such as "
+               "'theta [deg], torque [N*m]', then rows), or a formula of theta, e.g. '(15000 + 10000*sin(2*theta)) N*m': "
+               "ΔE, the mean torque and power.", panel=DIAGRAM, metavar="FILE|FORMULA",
+               example="'(15000 + 10000*sin(2*theta) - 6000*cos(2*theta)) N*m'"),
+        Option("cycle_angle", "angle", "The crank angle of one cycle, with --turning-moment: 360deg (a two-stroke engine, a steam engine), "
+               "720deg (a four-stroke); default the samples' span, or the formula's period (2π, else 4π).", panel=DIAGRAM),
+        Option("torque_mean", "torque", "The diagram's mean torque, with --loops (the loops are measured from its line): the mean power.",
+               panel=DIAGRAM),
         Option("loops", TEXT, "A turning-moment diagram's loops, in order: their areas in mm², + above the mean torque line and − below, "
                'e.g. "295,-685,390" (with --scale-torque and --scale-angle): ΔE.', panel=DIAGRAM, metavar='"a1,a2,…"'),
         Option("scale_torque", "torque", "The diagram's torque scale: the torque one mm stands for, e.g. '5N*m'.", panel=DIAGRAM),
@@ -59,6 +67,8 @@ COMMAND = Command(
         Result("rim_area", "m**2", "cross-section of the rim, m/(2πRρ)"),
         Result("power_motor", "W", "motor power that supplies the energy per cycle evenly, E/t", needs=("energy_per_cycle+cycle_time",),
                example="{energy_per_cycle} 26.7kJ {punch_fraction} 0.16 {cycle_time} 3s {omega_mean} 300rpm {fluctuation} 0.1"),
+        Result("torque_mean", "N*m", "mean torque over the cycle…", needs=("turning_moment", "loops+torque_mean")),
+        Result("power_mean", "W", "mean power, T_mean ω_mean", needs=("turning_moment", "loops+torque_mean")),
         Result("stress_margin", "", "allowable stress over the hoop stress at the top speed", needs=("allowable_stress",)),
     ),
     output=ANSWER,

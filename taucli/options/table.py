@@ -45,6 +45,8 @@ SEGMENT = "segment"  # "time=… torque=…|power=… [rest=yes]": a segment of 
 NOT_QUANTITIES = NOT_QUANTITIES | {SEGMENT}
 PHASE = "phase"  # "[coast] alpha=…|torque=… time=…|angle=…|until-omega=…": one phase of a spin-down run, repeatable, in order
 NOT_QUANTITIES = NOT_QUANTITIES | {PHASE}
+CURVE = "curve"  # a turning-moment diagram T(θ): a CSV file of crank angle and torque, or a formula of theta (flywheel)
+NOT_QUANTITIES = NOT_QUANTITIES | {CURVE}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {

@@ -26,6 +26,7 @@ from taucli.options.flywheel import COMMAND as TABLE
 from taucli.writing.report import Report, Step, fmt, quantity_text
 from taucli.scenes.inertia import body
 from taucli.scenes.turning_moment import LOOPS_EXAMPLE, read_loops, swing_from_loops
+from taucli.scenes.diagram import EXAMPLE as DIAGRAM_EXAMPLE, swing_from_curve
 from taucli.options.table import Results
 
 _EXAMPLE = "{omega_mean} 300rpm {fluctuation} 0.02 {energy_swing} 5kJ"
@@ -58,13 +59,25 @@ def flywheel(
     cycle_time: float | None = None,
     rim_speed_max: float | None = None,
     rim_speed_min: float | None = None,
+    turning_moment=None,
+    cycle_angle: float | None = None,
+    torque_mean: float | None = None,
     **dims: float | None,
 ) -> Report:
     """``taucli flywheel``: the mean speed (or the band, or a rim's speed) and two of I, ΔE, Cs;
-    ΔE also from a turning-moment diagram's loops (turning_moment.py)."""
+    ΔE also from a turning-moment diagram's loops (turning_moment.py) or from T(θ) itself, a
+    formula of θ (an OfTime) or its samples, SI (θ, T) pairs (diagram.py), with its mean torque."""
     steps: list[Step] = []
     notes: list[str] = []
     results = Results(TABLE)
+    torque_mean_given, method = torque_mean is not None, "closed form"
+    if turning_moment is not None:
+        _diagram_alone(loops, energy_swing, energy_per_cycle, scale_torque, scale_angle, torque_mean)
+        energy_swing, torque_mean, method = swing_from_curve(turning_moment, cycle_angle, steps, notes)
+    elif cycle_angle is not None:
+        raise InputError("cycle_angle", "goes with {turning_moment}: the crank angle of the diagram's cycle", example=DIAGRAM_EXAMPLE + " {cycle_angle} 360deg")
+    elif torque_mean is not None and loops is None:
+        raise InputError("torque_mean", "goes with {loops}: the mean torque line the loops are measured from", example=LOOPS_EXAMPLE + " {torque_mean} '2.5kN*m'")
     if loops is not None:
         if energy_swing is not None or energy_per_cycle is not None:
             given = "energy_swing" if energy_swing is not None else "energy_per_cycle"
@@ -128,7 +141,10 @@ def flywheel(
                           f"{quantity_text(swing, 'J')} / ({quantity_text(moment, 'kg*m**2')} × ({_speed_text(rim_only, rim_speed, mean)})²)", fmt(cs),
                           "ΔE = Iω_mean²Cs read the other way"))
         if cs >= 2:
-            raise InputError("energy_swing", f"is more than the flywheel holds over that speed: Cs = {fmt(cs)} would take ω_min below 0", example=_EXAMPLE)
+            source = "turning_moment" if turning_moment is not None else "loops" if loops is not None else "energy_swing"
+            raise InputError(source, f"gives more than the flywheel holds over that speed: Cs = {fmt(cs)} would take ω_min below 0", example=_EXAMPLE)
+    if torque_mean is not None:
+        _mean_power(results, steps, notes, torque_mean, torque_mean_given, None if rim_only else mean)
     if cycle_time is not None:
         results.put("power_motor", energy_per_cycle / cycle_time)
         steps.append(Step("The motor's power", "P = E/t", f"{quantity_text(energy_per_cycle, 'J')} / {quantity_text(cycle_time, 's')}",
@@ -153,7 +169,33 @@ def flywheel(
     _rim_stress(results, steps, notes, rim_mass, rim_radius, rim_speed if rim_speed is not None else (mean * rim_radius if rim_radius is not None else None),
                 cs, density, allowable_stress)
     model = ("a rim flywheel: ΔE = mv²Cs" if rim_only else "flywheel fluctuation: ΔE = Iω_mean²Cs") + ", Cs = (ω_max − ω_min)/ω_mean"
-    return Report("flywheel", model, "closed form", results, steps, notes)
+    if turning_moment is not None:
+        model = "a turning-moment diagram T(θ): ΔE = max − min of ∫(T − T_mean)dθ; " + model
+    return Report("flywheel", model, method, results, steps, notes)
+
+
+def _diagram_alone(loops, energy_swing, energy_per_cycle, scale_torque, scale_angle, torque_mean) -> None:
+    """T(θ) gives ΔE and the mean torque: refused beside another way of giving them."""
+    for name, value, why in (("loops", loops, "give the diagram one way"), ("energy_swing", energy_swing, "the diagram gives ΔE"),
+                             ("energy_per_cycle", energy_per_cycle, "the diagram gives the work per cycle"),
+                             ("torque_mean", torque_mean, "the diagram gives the mean torque")):
+        if value is not None:
+            raise InputError(name, f"conflicts with {{turning_moment}}: {why}", example=DIAGRAM_EXAMPLE)
+    for name, value in (("scale_torque", scale_torque), ("scale_angle", scale_angle)):
+        if value is not None:
+            raise InputError(name, "goes with {loops}: the scales of a drawn diagram's areas ({turning_moment} is the curve itself)", example=LOOPS_EXAMPLE)
+
+
+def _mean_power(results, steps, notes, torque_mean: float, given: bool, mean: float | None) -> None:
+    """The mean torque (the diagram's, or given with its loops) and the mean power T_mean ω_mean."""
+    results.put("torque_mean", torque_mean, " (given)" if given else ", W/Θ")
+    if mean is None:
+        notes.append("power_mean needs the mean speed ω (a rim's speed alone does not give it): give --rim-radius or --omega-mean")
+        return
+    power = torque_mean * mean
+    results.put("power_mean", power)
+    steps.append(Step("Mean power", "P = T_mean ω_mean", f"{quantity_text(torque_mean, 'N*m')} × {quantity_text(mean, 'rad/s')}", quantity_text(power, "W"),
+                      "the work per cycle over the time of a cycle: T_mean Θ / (Θ/ω_mean)"))
 
 
 def _rim_section(mass: float, rim_radius: float, density: float, **speed_options: float | None) -> Report:
