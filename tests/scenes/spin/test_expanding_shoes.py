@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 
 import taucli
 from conftest import assert_usage_error, run_taucli
+from taucli.answering.contact_specs import BRAKE_FIELDS, EXPANDING_KEYS
 
 mpmath.mp.dps = 30
 
@@ -278,3 +279,31 @@ def test_no_radius_from_a_body_without_one():
     disc = values(taucli.spin_down(shape="disc", mass="10kg", radius="150mm", omega0="10rad/s", brake=_without("radius")))
     with_radius = values(taucli.spin_down(shape="disc", mass="10kg", radius="150mm", omega0="10rad/s", brake=BASE))
     assert disc["torque_brake"] == with_radius["torque_brake"]
+
+
+def _keyed(key, text):
+    """BASE with ``key`` (snake case) set to ``text``, added where BASE has no such key."""
+    spelled = key.replace("_", "-")
+    pairs = [pair for pair in BASE.split() if pair.split("=")[0] != spelled and not (key in ("force", "pmax") and pair.startswith("force="))]
+    return " ".join([*pairs, f"{spelled}={text}"])
+
+
+@pytest.mark.parametrize("key", sorted(BRAKE_FIELDS))
+def test_every_quantity_key_of_an_expanding_brake_refuses_a_wrong_dimension(key):
+    """Class check: each quantity key the --brake spec reads, in an expanding spec (mu-k= and
+    mu-s= in place of mu=), given a value of no kind it takes, is refused naming that key."""
+    spec = _keyed(key, "3 kg*s")
+    if key in ("mu_k", "mu_s"):
+        spec = spec.replace("mu=0.32 ", "")
+    if key in ("pivot", "offset"):  # not read at all with expanding=yes
+        assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--brake", spec), "--brake", f"{key}=")
+        return
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--brake", spec), "--brake", f"{key.replace('_', '-')}=")
+
+
+@pytest.mark.parametrize("key", EXPANDING_KEYS)
+def test_every_expanding_key_needs_expanding_yes(key):
+    """Class check: each key that only internal shoes read is refused on a plain shoe, naming it."""
+    text = {"heel_angle": "0deg", "width": "3cm", "hinge": "3cm", "pmax": "1MPa", "shoes": "both"}[key]
+    assert_usage_error(run_taucli("spin-down", "--inertia", "1kg*m^2", "--omega0", "10rad/s", "--brake", f"force=100N mu=0.4 radius=0.5m {key.replace('_', '-')}={text}"),
+                       "--brake", f"{key.replace('_', '-')}=", "expanding=yes")
