@@ -158,7 +158,7 @@ def expanding_torques(brake: Brake, radius: float) -> Expanding:
     torque = sum(shoe.torque for shoe in shoes)
     steps = [Step(f"Pressure round the {name}'s internal shoes", "p = p_a·sin θ/sin θ_a  (θ_a = θ₂ up to 90°, else 90°)",
                   f"θ₁ = {fmt(math.degrees(arc.heel))}°, θ₂ = θ₁ + {fmt(math.degrees(brake.shoe_angle))}° = {fmt(math.degrees(arc.toe))}°",
-                  f"sin θ_a = {fmt(arc.sin_a)}",
+                  f"θ_a = {fmt(math.degrees(min(arc.toe, math.pi / 2)))}°, sin θ_a = {fmt(arc.sin_a)}",
                   "each shoe turns a little about its hinge pin, so the lining is pressed in, and presses back, in proportion to its distance from "
                   "the pin's line: sin θ, largest at 90° from it (or at the toe, short of 90°)")]
     steps.extend(_shoe_steps(brake, arc, radius, shoes, name))
@@ -183,7 +183,8 @@ def _shoe_steps(brake: Brake, arc: Arc, radius: float, shoes, name: str) -> list
                           "M_N = p_a·b·r·a/sin θ_a·∫sin²θ dθ;  M_f = μ·p_a·b·r/sin θ_a·∫sin θ·(r − a·cos θ) dθ  (θ₁ to θ₂)",
                           f"p_a = {pa}, b = {b}, r = {r}, a = {a}, μ = {mu}, θ from {heel} to {toe}, sin θ_a = {sin_a}" if given_pressure else
                           f"per unit p_a: b = {b}, r = {r}, a = {a}, μ = {mu}, θ from {heel} to {toe}, sin θ_a = {sin_a}",
-                          f"M_N = {quantity_text(shoe.normal_moment, 'N*m')}, M_f = {quantity_text(shoe.friction_moment, 'N*m')}",
+                          f"M_N = {quantity_text(shoe.normal_moment, 'N*m')}, M_f = {quantity_text(shoe.friction_moment, 'N*m')}" if given_pressure else
+                          f"M_N/p_a = {quantity_text(shoe.normal_moment / shoe.pressure, 'm**3')}, M_f/p_a = {quantity_text(shoe.friction_moment / shoe.pressure, 'm**3')}",
                           "each strip of lining pushes on the drum with p·b·r·dθ at the arm a·sin θ about the pin, and rubs along the drum with μ times "
                           "that at the arm r − a·cos θ"))
         why = ("the friction's moment about the pin turns the leading shoe on (self-energizing), so the force needs only M_N − M_f"
@@ -192,7 +193,7 @@ def _shoe_steps(brake: Brake, arc: Arc, radius: float, shoes, name: str) -> list
             steps.append(Step(f"Actuating force from the {shoe.name} shoe's largest pressure", f"F = (M_N {sign} M_f)/c",
                               f"({term(shoe.normal_moment, 'N*m')} {sign} {term(shoe.friction_moment, 'N*m')}) / {c}", quantity_text(shoe.force, "N"), why))
         else:
-            steps.append(Step(f"Largest pressure on the {shoe.name} shoe", f"F·c = M_N {sign} M_f  →  p_a = F·c/((M_N {sign} M_f) per unit p_a)",
+            steps.append(Step(f"Largest pressure on the {shoe.name} shoe", f"F·c = M_N {sign} M_f  →  p_a = F·c/(M_N/p_a {sign} M_f/p_a)",
                               f"{term(shoe.force, 'N')} × {c} / ({term(shoe.normal_moment / shoe.pressure, 'm**3')} {sign} "
                               f"{term(shoe.friction_moment / shoe.pressure, 'm**3')})", quantity_text(shoe.pressure, "Pa"), why))
         steps.append(Step(f"Braking torque of the {shoe.name} shoe", "T = μ·p_a·b·r²·(cos θ₁ − cos θ₂)/sin θ_a",
