@@ -1,5 +1,5 @@
-"""The contacts pressed on a turning body, given as "key=value" specs (#24, #35, #47): --brake (a
-shoe, on a lever or not), --face (a flat face or a cone clutch's), --band (a band brake, or a
+"""The contacts pressed on a turning body, given as "key=value" specs (#24, #35, #47, #48): --brake (a
+shoe, on a lever or not, or internal expanding shoes), --face (a flat face or a cone clutch's), --band (a band brake, or a
 band-and-block one). Read as taucli.answering.specs reads every spec, into the records of
 taucli.scenes.given.
 """
@@ -12,14 +12,16 @@ from taucli.core.errors import InputError
 from taucli.answering.reading import Inputs
 from taucli.answering.specs import _MU_FIELDS, _read_fields, _spec_fields, _specs, coefficients
 from taucli.writing.report import fmt
-from taucli.scenes.given import PRESSURES, Band, Brake, Face
+from taucli.scenes.given import PRESSURES, SHOES, Band, Brake, Face
 from taucli.options.table import Option
 
 
 # --brake, --face and --band of spin-down and impulse (#24, #35): "key=value ..." specs like --particle's.
 BRAKE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "radius": ("length", "positive"),
                 "lever": ("length", "positive"), "pivot": ("length", "positive"), "offset": ("length", "any"),
-                "shoe_angle": ("angle", "positive")}
+                "shoe_angle": ("angle", "positive"), "heel_angle": ("angle", "nonnegative"), "width": ("length", "positive"),
+                "hinge": ("length", "positive"), "pmax": ("pressure", "positive")}
+EXPANDING_KEYS = ("heel_angle", "width", "hinge", "pmax", "shoes")  # only with expanding=yes (taucli.scenes.expanding)
 FACE_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
                "surfaces": ("dimensionless", "positive"), "pmax": ("pressure", "positive"), "cone": ("angle", "positive")}
 BAND_FIELDS = {**_MU_FIELDS, "wrap": ("angle", "positive"), "radius": ("length", "positive"), "width": ("length", "positive"),
@@ -35,7 +37,15 @@ def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
     lever_example = '{brake} "force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.2m"'
     brakes = []
     for number, source, spec in _specs(option, given):
-        _, fields = _spec_fields(spec, source, BRAKE_FIELDS, example, shape_word=False)
+        _, fields = _spec_fields(spec, source, {*BRAKE_FIELDS, "expanding", "shoes"}, example, shape_word=False)
+        if fields.get("expanding", "no") not in ("yes", "no"):
+            raise InputError(source, "expanding= is yes (internal expanding shoes) or no", example=EXPANDING_EXAMPLE, got=repr("expanding=" + fields["expanding"]))
+        if fields.get("expanding") == "yes":
+            brakes.append(_expanding(option, number, source, spec, fields, inputs))
+            continue
+        if any(key in fields for key in EXPANDING_KEYS):
+            key = next(key for key in EXPANDING_KEYS if key in fields)
+            raise InputError(source, f"takes {key.replace('_', '-')}= only with expanding=yes (internal expanding shoes)", example=EXPANDING_EXAMPLE, got=repr(spec))
         if "force" not in fields:
             raise InputError(source, "needs force=", example=example, got=repr(spec))
         if ("lever" in fields) != ("pivot" in fields):
@@ -52,6 +62,37 @@ def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
         brakes.append(Brake(source, values["force"], mu_k, mu_s, values.get("radius"), values.get("lever"), values.get("pivot"), values.get("offset", 0.0),
                             shoe_angle))
     return tuple(brakes)
+
+
+EXPANDING_EXAMPLE = '{brake} "expanding=yes force=2.3kN mu=0.32 width=32mm radius=150mm hinge=123mm lever=212mm heel-angle=0deg shoe-angle=126deg"'
+
+
+def _expanding(option: Option, number: int, source: str, spec: str, fields: dict, inputs: Inputs) -> Brake:
+    """Internal expanding shoes: "expanding=yes force=…|pmax=… mu=… width=… [radius=…] hinge=…
+    lever=… heel-angle=… shoe-angle=… [shoes=both|leading|trailing]" (taucli.scenes.expanding)."""
+    missing = [key for key in ("mu", "width", "hinge", "lever", "heel_angle", "shoe_angle") if key not in fields and not (key == "mu" and "mu_k" in fields)]
+    if missing:
+        raise InputError(source, f"with expanding=yes needs {missing[0].replace('_', '-')}= (the shoes' width=, hinge= the pin's distance from the drum's centre, "
+                         "lever= the actuating force's arm about the pin, heel-angle= and shoe-angle= the lining's arc from the pin's line)",
+                         example=EXPANDING_EXAMPLE, got=repr(spec))
+    if ("force" in fields) == ("pmax" in fields):
+        raise InputError(source, "with expanding=yes takes force= (the actuating force on each shoe) or pmax= (the largest lining pressure), one of them",
+                         example=EXPANDING_EXAMPLE, got=repr(spec))
+    for key in ("pivot", "offset"):
+        if key in fields:
+            raise InputError(source, f"with expanding=yes takes no {key}= (the shoe's own hinge pin is its lever's pivot: hinge= and lever=)",
+                             example=EXPANDING_EXAMPLE, got=repr(spec))
+    shoes = fields.get("shoes", "both")
+    if shoes not in SHOES:
+        raise InputError(source, f"shoes= is one of {', '.join(SHOES)} (leading: the self-energizing one, the drum's rim running past it from its toe towards its hinge pin)",
+                         example=EXPANDING_EXAMPLE, got=repr("shoes=" + shoes))
+    values = _read_fields(fields, BRAKE_FIELDS, source, f"brake{number}", inputs, option.name, number - 1)
+    mu_k, mu_s = coefficients(source, values)
+    if values["heel_angle"] + values["shoe_angle"] > math.pi * (1 + 1e-12):
+        raise InputError(source, "has heel-angle= + shoe-angle= beyond 180deg: the pressure p_a·sin θ falls to 0 at 180° from the pin's line",
+                         example=EXPANDING_EXAMPLE, got=f"{fmt(math.degrees(values['heel_angle'] + values['shoe_angle']))}°")
+    return Brake(source, values.get("force"), mu_k, mu_s, values.get("radius"), values["lever"], None, 0.0, values["shoe_angle"], True,
+                 values["heel_angle"], values["width"], values["hinge"], values.get("pmax"), shoes)
 
 
 def faces(option: Option, given, inputs: Inputs, stdin) -> tuple:

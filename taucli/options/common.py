@@ -166,7 +166,11 @@ BRAKE_OPTION = Option(
     "mu-s= and mu-k= for static and kinetic μ; radius= defaults to the body's radius. On a lever (a block brake): "
     '"force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3": force= at lever= from the lever\'s pivot, the shoe at pivot= from it, '
     "the friction's line at offset= from it (positive: self-energizing), N = F·lever/(pivot − μ·offset); "
-    "shoe-angle= the arc 2θ of a long shoe, μ′ = 4μ·sin θ/(2θ + sin 2θ) in place of μ (repeatable).",
+    "shoe-angle= the arc 2θ of a long shoe, μ′ = 4μ·sin θ/(2θ + sin 2θ) in place of μ. Internal expanding shoes: "
+    '"expanding=yes force=2.3kN mu=0.32 width=32mm radius=150mm hinge=123mm lever=212mm heel-angle=0deg shoe-angle=126deg": '
+    "each shoe hinged on a pin hinge= from the drum's centre, pushed by force= (or pmax=, the largest lining pressure) at lever= from the pin, "
+    "its lining width= wide from heel-angle= to heel-angle= + shoe-angle= (from the pin's line), p = p_a·sin θ/sin θ_a; "
+    "shoes=both (default: one leading, one trailing, the same force), leading (self-energizing: the rim runs past it from its toe towards its pin) or trailing (repeatable).",
     repeatable=True, metavar='"force=… mu=… radius=…"', example="force=100N mu=0.4 radius=0.5m",
 )
 FACE_OPTION = Option(
@@ -187,6 +191,7 @@ BAND_OPTION = Option(
     "with 2θ each block's angle, torque (T₁ − T₂)·(r + thickness) (repeatable).",
     repeatable=True, metavar='"mu=… wrap=… tension=…|force=… lever=…"', example="mu=0.25 wrap=270deg radius=0.3m tension=500N",
 )
+BRAKE_EXPANDING = "{brake} 'expanding=yes force=2.3kN mu=0.32 width=32mm radius=150mm hinge=123mm lever=212mm heel-angle=0deg shoe-angle=126deg'"
 BRAKE_ON_A_LEVER = "{brake} 'force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.5m'"  # the shoe's force then comes from the lever
 CONTACT_RESULTS = (
     Result("torque_brake", "N*m", "friction torque of the brakes", needs=("brake",)),
@@ -196,6 +201,8 @@ CONTACT_RESULTS = (
     Result("work_face", "J", "energy the faces take…", needs=("face",)),
     Result("power_face", "W", "power the faces take…", needs=("face",)),
     Result("force_brake", "N", "normal force on the brake shoe, from its lever", needs=("brake",), example=BRAKE_ON_A_LEVER),
+    Result("force_actuating", "N", "actuating force on each internal expanding shoe, (M_N ∓ M_f)/c", needs=("brake",), example=BRAKE_EXPANDING),
+    Result("pressure_brake", "Pa", "largest lining pressure of the internal expanding shoes (on the leading one, where there is one)", needs=("brake",), example=BRAKE_EXPANDING),
     Result("force_face", "N", "clamp force on the face", needs=("face",)),
     Result("pressure_face", "Pa", "largest lining pressure of the face", needs=("face",)),
     Result("torque_band", "N*m", "friction torque of the band brakes", needs=("band",)),

@@ -30,7 +30,7 @@ NOT_QUANTITIES = NOT_QUANTITIES | {VECTOR}  # read a component at a time by its 
 PARTICLE = "particle"  # "mass=… speed=… radius=… [angle=…] [speed-after=… | e=… | radius-after=…] [speed-relative=…]", repeatable
 COUPLE = "couple"  # "[SHAPE] inertia=… | mass=… dims…, omega0=…": another body on the axis, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
-BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…] [lever=… pivot=… offset=…] [shoe-angle=…]": a brake shoe on a turning body, repeatable
+BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…] [lever=… pivot=… offset=…] [shoe-angle=…]" or "expanding=yes …": a brake shoe on a turning body, repeatable
 FACE = "face"  # "mu=… [force=…|pmax=…] [inner-radius=…] [outer-radius=…] [model=uniform|wear] [surfaces=…] [cone=…]": a pressed flat face (or a cone clutch's conical one), repeatable
 BAND = "band"  # "mu=… wrap=… [radius=…] [width=…] tension=…|force=… lever=… slack-arm=…|tight-arm=…" (blocks=… block-angle=… [thickness=…] in place of wrap=: band-and-block): a band brake, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE, BAND}

@@ -1,5 +1,5 @@
-"""Friction torques of contacts pressed against a turning body: brake shoes, flat faces (#24)
-and band brakes (#35, taucli.scenes.band).
+"""Friction torques of contacts pressed against a turning body: brake shoes, flat faces (#24),
+band brakes (#35, taucli.scenes.band) and internal expanding shoes (#48, taucli.scenes.expanding).
 
 A brake shoe pressed with force N at radius r takes τ = μ·N·r. On a lever (a block brake), the
 force F acts at ℓ from the lever's pivot, the shoe at x from it, and the line of the shoe's
@@ -51,6 +51,7 @@ from taucli.core.errors import InputError
 from taucli.writing.report import Step, fmt, quantity_text, term
 from taucli.scenes.angles import sin_exact
 from taucli.scenes.band import band_torques
+from taucli.scenes.expanding import EXAMPLE as EXPANDING_EXAMPLE, expanding_torques
 from taucli.scenes.given import Band, Brake, Face
 
 def face_radius_factor(inner: float, outer: float, pressure: str) -> float:
@@ -125,13 +126,19 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
     brake = brake_static = face = face_static = band = band_static = 0.0
     rim = body_rim(body_options)
     for shoe in brakes:
+        if shoe.expanding:
+            radius = _radius(shoe, rim, notes)
+            inside = expanding_torques(shoe, radius)
+            brake += inside.torque
+            brake_static += inside.holding
+            steps.extend(inside.steps)
+            notes.extend(inside.notes)
+            if len(brakes) == 1:
+                details.extend((("force_actuating", inside.force, ""), ("pressure_brake", inside.pressure, "")))
+            continue
         if shoe.shoe_angle is not None:
             shoe = _long_shoe(shoe, steps)
-        radius = shoe.radius if shoe.radius is not None else rim
-        if radius is None:
-            raise InputError(shoe.source, "needs radius= (the body has no radius to take)", example='{brake} "force=100N mu=0.4 radius=0.5m"')
-        if shoe.radius is None:
-            notes.append(f"{shoe.source}: pressed at the body's radius r = {quantity_text(radius, 'm')}")
+        radius = _radius(shoe, rim, notes)
         normal, normal_static = shoe.force, shoe.force
         if shoe.lever is not None:
             normal, normal_static = _lever_normal(shoe, steps, notes)
@@ -143,8 +150,10 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
         steps.append(Step(f"Friction torque of the {_name(shoe.source)}", "τ_b = μ·N·r",
                           f"{fmt(shoe.mu_k)} × {quantity_text(normal, 'N')} × {quantity_text(radius, 'm')}", quantity_text(torque, "N*m"),
                           "the shoe's friction force μN acts along the rim, at lever arm r from the axle"))
-    if brakes:
+    if any(not shoe.expanding for shoe in brakes):
         models.append("brake friction μNr")
+    if any(shoe.expanding for shoe in brakes):
+        models.append("internal expanding shoes, p = p_a·sin θ/sin θ_a")
     for plate in faces:
         inner, outer = plate.inner_radius, plate.outer_radius
         if outer is None:
@@ -212,6 +221,17 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
     if any(strap.blocks is not None for strap in bands):
         models.append("band-and-block brake T₁/T₂ = ((1 + μ tan θ)/(1 − μ tan θ))ⁿ")
     return Contacts(brake, brake_static, face, face_static, tuple(steps), tuple(dict.fromkeys(models)), tuple(notes), band, band_static, tuple(details))
+
+
+def _radius(shoe: Brake, rim: float | None, notes: list[str]) -> float:
+    """The radius a shoe presses at: its radius=, else the body's (noted)."""
+    radius = shoe.radius if shoe.radius is not None else rim
+    if radius is None:
+        raise InputError(shoe.source, "needs radius= (the body has no radius to take)",
+                         example=EXPANDING_EXAMPLE if shoe.expanding else '{brake} "force=100N mu=0.4 radius=0.5m"')
+    if shoe.radius is None:
+        notes.append(f"{shoe.source}: pressed at the body's radius r = {quantity_text(radius, 'm')}")
+    return radius
 
 
 def long_shoe_factor(shoe_angle: float) -> float:

@@ -133,6 +133,7 @@ class Phase:
 
 
 PRESSURES = ("uniform", "wear")  # a face's pressure models (model=)
+SHOES = ("both", "leading", "trailing")  # an internal expanding brake's shoes (shoes=): leading is self-energizing
 
 
 @dataclass(frozen=True)
@@ -141,17 +142,37 @@ class Brake:
     ``lever``, ``force`` is the normal force N on the shoe; with it, ``force`` is the force F
     applied to a lever at ``lever`` from the lever's pivot, the shoe at ``pivot`` from it, and the
     line of the shoe's friction force at ``offset`` from the pivot (positive where its moment
-    adds to F's: self-energizing)."""
+    adds to F's: self-energizing).
+
+    ``expanding``: internal expanding shoes (taucli.scenes.expanding), each hinged on a pin
+    ``hinge`` from the drum's centre, its lining of ``width`` from ``heel_angle`` θ₁ to θ₁ +
+    ``shoe_angle`` (angles from the line through the pin and the centre), pushed out by the
+    actuating ``force`` at ``lever`` from the pin (or that force from ``pmax``, the largest
+    lining pressure); ``shoes`` the leading one (self-energizing), the trailing one, or both."""
 
     source: str
-    force: float
+    force: float | None  # None: an internal expanding brake given by pmax
     mu_k: float
     mu_s: float | None = None
     radius: float | None = None
     lever: float | None = None
     pivot: float | None = None
     offset: float = 0.0
-    shoe_angle: float | None = None  # a long shoe's arc 2θ (None: a short shoe, its pressure at one point)
+    shoe_angle: float | None = None  # a long shoe's arc 2θ (None: a short shoe, its pressure at one point); an expanding shoe's lining arc θ₂ − θ₁
+    expanding: bool = False
+    heel_angle: float | None = None  # θ₁ of an expanding shoe, from the line through its hinge pin and the drum's centre
+    width: float | None = None  # the lining's face width b
+    hinge: float | None = None  # a: the hinge pin's distance from the drum's centre
+    pmax: float | None = None  # the largest lining pressure p_a (in place of force)
+    shoes: str = "both"
+
+    @property
+    def sided(self) -> bool:
+        """Its torque depends on the sense the drum turns: a lever whose friction has a moment
+        about its pivot, or one internal shoe alone (leading one way, trailing the other)."""
+        if self.expanding:
+            return self.shoes != "both"
+        return self.lever is not None and bool(self.offset)
 
 
 @dataclass(frozen=True)

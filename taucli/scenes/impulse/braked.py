@@ -21,7 +21,7 @@ from taucli.options.table import Results
 
 def _motion(inertia: float, omega0: float, torque: float, brakes, faces, gravity, body_options: dict, bands=()):
     """The contacts' torques, and the motion under the torque against them (closed form)."""
-    sided = [spec.source for spec in (*bands, *(shoe for shoe in brakes if shoe.lever is not None and shoe.offset))]
+    sided = [spec.source for spec in (*bands, *(shoe for shoe in brakes if shoe.sided))]
     if sided and omega0 and torque and (omega0 > 0) != (torque > 0):
         raise InputError(sided[0], "takes the torque for the sense the body turns, and a torque against ω₀ would stop it and turn it back "
                          "(the tight and slack ends, or the friction's moment, change over): give a torque along ω₀, or work the turn back in a second run",

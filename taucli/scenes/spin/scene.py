@@ -429,7 +429,7 @@ def _under_torques(wheel: Wheel, torques: Torques, omega0, targets: dict, front:
 def _one_sense(brakes, bands, omega0: float | None, drive: float, in_time, in_angle) -> None:
     """A band brake, or a shoe whose friction has a moment about its lever's pivot, takes another
     torque when the wheel turns the other way: refuse where it might turn back."""
-    sided = [spec.source for spec in (*(bands or ()), *(shoe for shoe in brakes or () if shoe.lever is not None and shoe.offset))]
+    sided = [spec.source for spec in (*(bands or ()), *(shoe for shoe in brakes or () if shoe.sided))]
     if not sided:
         return
     if in_time is not None or in_angle is not None:
