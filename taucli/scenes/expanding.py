@@ -197,6 +197,6 @@ def _shoe_steps(brake: Brake, arc: Arc, radius: float, shoes, name: str) -> list
                               f"{term(shoe.force, 'N')} × {c} / ({term(shoe.normal_moment / shoe.pressure, 'm**3')} {sign} "
                               f"{term(shoe.friction_moment / shoe.pressure, 'm**3')})", quantity_text(shoe.pressure, "Pa"), why))
         steps.append(Step(f"Braking torque of the {shoe.name} shoe", "T = μ·p_a·b·r²·(cos θ₁ − cos θ₂)/sin θ_a",
-                          f"{mu} × {pa} × {b} × {r}² × (cos {heel} − cos {toe}) / {sin_a}", quantity_text(shoe.torque, "N*m"),
+                          f"{mu} × {pa} × {b} × ({r})² × (cos {heel} − cos {toe}) / {sin_a}", quantity_text(shoe.torque, "N*m"),
                           "each strip's friction μ·p·b·r·dθ acts along the drum at the arm r from its centre"))
     return steps
