@@ -1,6 +1,6 @@
-"""The contacts pressed on a turning body, given as "key=value" specs (#24, #35, #47): --brake (a
+"""The contacts pressed on a turning body, given as "key=value" specs (#24, #35, #47, #48): --brake (a
 shoe, on a lever or not), --face (a flat face or a cone clutch's), --band (a band brake, or a
-band-and-block one). Read as taucli.answering.specs reads every spec, into the records of
+band-and-block one), --centrifugal (a centrifugal clutch). Read as taucli.answering.specs reads every spec, into the records of
 taucli.scenes.given.
 """
 
@@ -12,7 +12,7 @@ from taucli.core.errors import InputError
 from taucli.answering.reading import Inputs
 from taucli.answering.specs import _MU_FIELDS, _read_fields, _spec_fields, _specs, coefficients
 from taucli.writing.report import fmt
-from taucli.scenes.given import PRESSURES, Band, Brake, Face
+from taucli.scenes.given import PRESSURES, Band, Brake, Centrifugal, Face
 from taucli.options.table import Option
 
 
@@ -26,6 +26,10 @@ BAND_FIELDS = {**_MU_FIELDS, "wrap": ("angle", "positive"), "radius": ("length",
                "tension": ("force", "nonnegative"), "force": ("force", "nonnegative"), "lever": ("length", "positive"),
                "slack_arm": ("length", "positive"), "tight_arm": ("length", "positive"),
                "blocks": ("dimensionless", "positive"), "block_angle": ("angle", "positive"), "thickness": ("length", "nonnegative")}
+
+CENTRIFUGAL_FIELDS = {"shoes": ("dimensionless", "positive"), "mass": ("mass", "positive"), "radius": ("length", "positive"),
+                      "spring_force": ("force", "nonnegative"), "mu": ("dimensionless", "nonnegative"), "drum_radius": ("length", "positive")}
+CENTRIFUGAL_EXAMPLE = '{centrifugal} "shoes=4 mass=6kg radius=160mm spring-force=1450N mu=0.35 drum-radius=250mm"'
 
 
 def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
@@ -129,3 +133,23 @@ def bands(option: Option, given, inputs: Inputs, stdin) -> tuple:
                           values.get("lever"), values.get("slack_arm"), values.get("tight_arm"), blocks, values.get("block_angle"),
                           values.get("thickness", 0.0)))
     return tuple(bands)
+
+
+def centrifugals(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """"shoes=… mass=… radius=… spring-force=… mu=… drum-radius=…" (taucli.scenes.centrifugal):
+    every key is needed; radius= is the shoes' centre of mass when they touch the drum, at most drum-radius=."""
+    clutches = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, CENTRIFUGAL_FIELDS, CENTRIFUGAL_EXAMPLE, shape_word=False)
+        missing = [key.replace("_", "-") + "=" for key in CENTRIFUGAL_FIELDS if key not in fields]
+        if missing:
+            raise InputError(source, f"needs {' '.join(missing)}", example=CENTRIFUGAL_EXAMPLE, got=repr(spec))
+        values = _read_fields(fields, CENTRIFUGAL_FIELDS, source, f"centrifugal{number}", inputs, option.name, number - 1)
+        shoes = values["shoes"]
+        if shoes != int(shoes):
+            raise InputError(source, "shoes= is a whole number", example=CENTRIFUGAL_EXAMPLE, got=repr("shoes=" + fields["shoes"]))
+        if values["radius"] > values["drum_radius"] * (1 + 1e-12):
+            raise InputError(source, "has radius= (the shoes' centre of mass when they touch the drum) beyond drum-radius= (the drum's inner radius)",
+                             example=CENTRIFUGAL_EXAMPLE, got=f"{fmt(values['radius'])} m > {fmt(values['drum_radius'])} m")
+        clutches.append(Centrifugal(source, int(shoes), values["mass"], values["radius"], values["spring_force"], values["mu"], values["drum_radius"]))
+    return tuple(clutches)

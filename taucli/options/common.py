@@ -5,7 +5,7 @@ from __future__ import annotations
 from taucli.core.names import FORMATS, METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
 from dataclasses import replace
 
-from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
+from taucli.options.table import BAND, BRAKE, CENTRIFUGAL, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
 
 BODY = "Body (shape and dimensions)"
 MOTION = "Motion and method"
@@ -187,6 +187,15 @@ BAND_OPTION = Option(
     "with 2θ each block's angle, torque (T₁ − T₂)·(r + thickness) (repeatable).",
     repeatable=True, metavar='"mu=… wrap=… tension=…|force=… lever=…"', example="mu=0.25 wrap=270deg radius=0.3m tension=500N",
 )
+CENTRIFUGAL_OPTION = Option(
+    "centrifugal", CENTRIFUGAL,
+    'A centrifugal clutch, read at ω₀ (the spider\'s speed), e.g. "shoes=4 mass=6kg radius=160mm spring-force=1450N mu=0.35 drum-radius=250mm": '
+    "n shoes of mass= each, their centre of mass at radius= when they touch the drum, each pulled in there by its spring with spring-force=; "
+    "μ between shoe and drum of inner radius drum-radius=. Engagement at ω_e = √(S/(m·r)); above it the clutch passes τ = n·μ·(m·ω₀²·r − S)·R, "
+    "reported beside the motion, not applied to it (alone with --omega0: the clutch only).",
+    metavar='"shoes=… mass=… radius=… spring-force=… mu=… drum-radius=…"',
+    example="shoes=4 mass=6kg radius=160mm spring-force=1450N mu=0.35 drum-radius=250mm",
+)
 BRAKE_ON_A_LEVER = "{brake} 'force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.5m'"  # the shoe's force then comes from the lever
 CONTACT_RESULTS = (
     Result("torque_brake", "N*m", "friction torque of the brakes", needs=("brake",)),
@@ -205,4 +214,7 @@ CONTACT_RESULTS = (
     Result("tension_slack", "N", "band tension at its slack end, T₂", needs=("band",)),
     Result("pressure_band", "Pa", "largest lining pressure under the band, T₁/(r·w)", needs=("band",),
            example="{band} 'mu=0.25 wrap=270deg radius=0.3m tension=500N width=5cm'"),
+    Result("omega_engage", "rad/s", "speed at which the centrifugal clutch engages", needs=("centrifugal",)),
+    Result("torque_centrifugal", "N*m", "torque the centrifugal clutch passes at ω₀", needs=("centrifugal+omega0",)),
+    Result("power_centrifugal", "W", "power the centrifugal clutch passes at ω₀", needs=("centrifugal+omega0",)),
 )

@@ -1,6 +1,6 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
-from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
+from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CENTRIFUGAL_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
 from taucli.options.table import FLAG, PHASE, Command, Option, Result
 
 ENERGY = "Energy added, taken or put to use"
@@ -26,6 +26,7 @@ COMMAND = Command(
         BRAKE_OPTION,
         FACE_OPTION,
         BAND_OPTION,
+        CENTRIFUGAL_OPTION,
         GRAVITY,
         Option("viscous", "viscous coefficient", "Viscous coefficient b (torque bω), e.g. '0.01N*m*s'.", sign="nonnegative"),
         Option("corner", "dimensionless", "The body set down spinning in a corner, its rim on the floor and the wall, with this friction "

@@ -155,6 +155,21 @@ class Brake:
 
 
 @dataclass(frozen=True)
+class Centrifugal:
+    """A centrifugal clutch (taucli.scenes.centrifugal): ``shoes`` shoes of ``mass`` each, their
+    centres of mass at ``radius`` from the axis when they touch the drum, each pulled in there by
+    its spring with ``spring_force``; μ between shoe and drum, the drum's inner radius ``drum_radius``."""
+
+    source: str
+    shoes: int
+    mass: float
+    radius: float
+    spring_force: float
+    mu: float
+    drum_radius: float
+
+
+@dataclass(frozen=True)
 class Band:
     """A band brake: a band wrapped ``wrap`` radians round a drum of ``radius`` (None: the body's),
     μ kinetic and static, ``width`` (None: not given). Pulled by ``tension`` at its slack end, or

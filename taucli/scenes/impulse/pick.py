@@ -7,6 +7,8 @@ from collections.abc import Iterable, Sequence
 from taucli.core.errors import InputError, Unused
 from taucli.writing.report import Report, Step
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.centrifugal import with_centrifugal
+from taucli.options.impulse import COMMAND as TABLE
 from taucli.scenes.given import Band, Brake, Couple, Face, Particle
 from taucli.scenes.impulse.after import body_after, body_centre, inertia_change, with_period
 from taucli.scenes.impulse.balance import solve_balance
@@ -24,6 +26,7 @@ from taucli.scenes.inertia import body, body_notes, part_inertia
 from taucli.scenes.push import Push, drive_steps
 
 
+@with_centrifugal(TABLE)
 def impulse(
     *,
     omega0: float | None = None,

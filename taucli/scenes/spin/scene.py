@@ -22,6 +22,7 @@ from taucli.core.errors import InputError, Unused
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.centrifugal import with_centrifugal
 from taucli.scenes.inertia import body, body_table
 from taucli.scenes.point import RIM, rim_radius
 from taucli.scenes.push import Push, drive_steps
@@ -64,6 +65,7 @@ class Front:
     notes: list[str] = field(default_factory=list)
 
 
+@with_centrifugal(TABLE)
 def spin_down(
     *,
     omega0: float | None = None,
