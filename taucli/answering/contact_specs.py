@@ -1,6 +1,6 @@
 """The contacts pressed on a turning body, given as "key=value" specs (#24, #35, #47, #48): --brake (a
 shoe, on a lever or not, or internal expanding shoes), --face (a flat face or a cone clutch's), --band (a band brake, or a
-band-and-block one). Read as taucli.answering.specs reads every spec, into the records of
+band-and-block one), --caliper (a caliper disc brake), --centrifugal (a centrifugal clutch). Read as taucli.answering.specs reads every spec, into the records of
 taucli.scenes.given.
 """
 
@@ -12,7 +12,7 @@ from taucli.core.errors import InputError
 from taucli.answering.reading import Inputs
 from taucli.answering.specs import _MU_FIELDS, _read_fields, _spec_fields, _specs, coefficients
 from taucli.writing.report import fmt
-from taucli.scenes.given import PRESSURES, SHOES, Band, Brake, Face
+from taucli.scenes.given import PADS, PRESSURES, SHOES, Band, Brake, Caliper, Centrifugal, Face
 from taucli.options.table import Option
 
 
@@ -28,6 +28,15 @@ BAND_FIELDS = {**_MU_FIELDS, "wrap": ("angle", "positive"), "radius": ("length",
                "tension": ("force", "nonnegative"), "force": ("force", "nonnegative"), "lever": ("length", "positive"),
                "slack_arm": ("length", "positive"), "tight_arm": ("length", "positive"),
                "blocks": ("dimensionless", "positive"), "block_angle": ("angle", "positive"), "thickness": ("length", "nonnegative")}
+
+CALIPER_FIELDS = {**_MU_FIELDS, "force": ("force", "nonnegative"), "inner_radius": ("length", "nonnegative"), "outer_radius": ("length", "positive"),
+                  "angle": ("angle", "positive"), "pad_radius": ("length", "positive"), "centre_distance": ("length", "positive"),
+                  "surfaces": ("dimensionless", "positive")}
+CALIPER_EXAMPLE = '{caliper} "mu=0.37 force=3748lbf inner-radius=3.875in outer-radius=5.5in angle=108deg model=wear"'
+BUTTON_EXAMPLE = '{caliper} "mu=0.31 force=500N pad=circular pad-radius=12mm centre-distance=50mm model=wear"'
+CENTRIFUGAL_FIELDS = {"shoes": ("dimensionless", "positive"), "mass": ("mass", "positive"), "radius": ("length", "positive"),
+                      "spring_force": ("force", "nonnegative"), "mu": ("dimensionless", "nonnegative"), "drum_radius": ("length", "positive")}
+CENTRIFUGAL_EXAMPLE = '{centrifugal} "shoes=4 mass=6kg radius=160mm spring-force=1450N mu=0.35 drum-radius=250mm"'
 
 
 def brakes(option: Option, given, inputs: Inputs, stdin) -> tuple:
@@ -170,3 +179,71 @@ def bands(option: Option, given, inputs: Inputs, stdin) -> tuple:
                           values.get("lever"), values.get("slack_arm"), values.get("tight_arm"), blocks, values.get("block_angle"),
                           values.get("thickness", 0.0)))
     return tuple(bands)
+
+
+def centrifugals(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """"shoes=… mass=… radius=… spring-force=… mu=… drum-radius=…" (taucli.scenes.centrifugal):
+    every key is needed; radius= is the shoes' centre of mass when they touch the drum, at most drum-radius=."""
+    clutches = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, CENTRIFUGAL_FIELDS, CENTRIFUGAL_EXAMPLE, shape_word=False)
+        missing = [key.replace("_", "-") + "=" for key in CENTRIFUGAL_FIELDS if key not in fields]
+        if missing:
+            raise InputError(source, f"needs {' '.join(missing)}", example=CENTRIFUGAL_EXAMPLE, got=repr(spec))
+        values = _read_fields(fields, CENTRIFUGAL_FIELDS, source, f"centrifugal{number}", inputs, option.name, number - 1)
+        shoes = values["shoes"]
+        if shoes != int(shoes):
+            raise InputError(source, "shoes= is a whole number", example=CENTRIFUGAL_EXAMPLE, got=repr("shoes=" + fields["shoes"]))
+        if values["radius"] > values["drum_radius"] * (1 + 1e-12):
+            raise InputError(source, "has radius= (the shoes' centre of mass when they touch the drum) beyond drum-radius= (the drum's inner radius)",
+                             example=CENTRIFUGAL_EXAMPLE, got=f"{fmt(values['radius'])} m > {fmt(values['drum_radius'])} m")
+        clutches.append(Centrifugal(source, int(shoes), values["mass"], values["radius"], values["spring_force"], values["mu"], values["drum_radius"]))
+    return tuple(clutches)
+
+
+def calipers(option: Option, given, inputs: Inputs, stdin) -> tuple:
+    """Each "mu=… force=… [pad=annular] [inner-radius=…] outer-radius=… [angle=…] [model=uniform|wear] [surfaces=N]" or
+    "mu=… force=… pad=circular pad-radius=… centre-distance=… [model=…] [surfaces=N]" (taucli.scenes.caliper);
+    pad= follows from the keys where it is not given; surfaces= 2 unless given (a pad each side of the disc)."""
+    annular_keys, circular_keys = ("inner_radius", "outer_radius", "angle"), ("pad_radius", "centre_distance")
+    calipers = []
+    for number, source, spec in _specs(option, given):
+        _, fields = _spec_fields(spec, source, {*CALIPER_FIELDS, "model", "pad"}, CALIPER_EXAMPLE, shape_word=False)
+        given_annular, given_circular = [key for key in annular_keys if key in fields], [key for key in circular_keys if key in fields]
+        if "pad" not in fields and given_annular and given_circular:
+            raise InputError(source, "mixes an annular pad's keys (" + " ".join(key.replace("_", "-") + "=" for key in given_annular) + ") with a circular pad's ("
+                             + " ".join(key.replace("_", "-") + "=" for key in given_circular) + "): give one pad", example=CALIPER_EXAMPLE, got=repr(spec))
+        pad = fields.get("pad", "circular" if given_circular else "annular")
+        if pad not in PADS:
+            raise InputError(source, f"pad= is one of {', '.join(PADS)}", example=BUTTON_EXAMPLE, got=repr("pad=" + pad))
+        example = BUTTON_EXAMPLE if pad == "circular" else CALIPER_EXAMPLE
+        foreign = [key for key in (annular_keys if pad == "circular" else circular_keys) if key in fields]
+        if foreign:
+            raise InputError(source, f"a{'' if pad == 'circular' else 'n'} {pad} pad takes " + (
+                "pad-radius= and centre-distance= (the distance of its centre from the axis), not " if pad == "circular" else
+                "inner-radius=, outer-radius= and angle=, not ") + " nor ".join(key.replace("_", "-") + "=" for key in foreign),
+                example=example, got=repr(spec))
+        needed = ("force", *(circular_keys if pad == "circular" else ("outer_radius",)))
+        missing = [key.replace("_", "-") + "=" for key in needed if key not in fields]
+        if missing:
+            raise InputError(source, f"needs {' '.join(missing)}", example=example, got=repr(spec))
+        model = fields.get("model", "uniform")
+        if model not in PRESSURES:
+            raise InputError(source, f"model= is one of {', '.join(PRESSURES)}", example=example, got=repr("model=" + model))
+        values = _read_fields(fields, CALIPER_FIELDS, source, f"caliper{number}", inputs, option.name, number - 1)
+        mu_k, mu_s = coefficients(source, values)
+        surfaces = values.get("surfaces", 2.0)
+        if surfaces != int(surfaces):
+            raise InputError(source, "surfaces= is a whole number (the pads pressed on the disc, 2 for one caliper)", example=example,
+                             got=repr("surfaces=" + fields["surfaces"]))
+        if pad == "circular" and values["pad_radius"] >= values["centre_distance"]:
+            raise InputError(source, "has pad-radius= not below centre-distance= (the pad would reach the axis)", example=example,
+                             got=f"{fmt(values['pad_radius'])} m ≥ {fmt(values['centre_distance'])} m")
+        inner = values.get("inner_radius", 0.0)
+        if pad == "annular" and inner > values["outer_radius"]:
+            raise InputError(source, "has inner-radius= above outer-radius=", example=example, got=f"{fmt(inner)} m > {fmt(values['outer_radius'])} m")
+        if values.get("angle") is not None and values["angle"] > 2 * math.pi * (1 + 1e-12):
+            raise InputError(source, "angle= is the pad's sector angle, at most 360deg", example=example, got=repr("angle=" + fields["angle"]))
+        calipers.append(Caliper(source, mu_k, values["force"], pad, mu_s, inner, values.get("outer_radius"), values.get("angle"),
+                                values.get("pad_radius"), values.get("centre_distance"), model, int(surfaces)))
+    return tuple(calipers)

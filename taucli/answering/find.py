@@ -285,7 +285,7 @@ def _atwood_inverse(scene: Scene, name: str, target: float):
 
 
 def _stop_inverse(scene: Scene, name: str, target: float):
-    loads = ("viscous", "drag", "torque", "force", "power", "alpha", "brake", "face", "band")
+    loads = ("viscous", "drag", "torque", "force", "power", "alpha", "brake", "face", "band", "caliper")
     if any(option in scene.given for option in loads) or "omega0" not in scene.si or target <= 0:
         return None
     probe = scene.results({name: 1.0})  # I does not depend on the friction

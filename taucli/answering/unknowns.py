@@ -23,16 +23,16 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from taucli.core.errors import InputError, did_you_mean
-from taucli.answering.contact_specs import BAND_FIELDS, BRAKE_FIELDS, FACE_FIELDS
+from taucli.answering.contact_specs import BAND_FIELDS, BRAKE_FIELDS, CALIPER_FIELDS, CENTRIFUGAL_FIELDS, FACE_FIELDS
 from taucli.answering.specs import with_key, COUPLE_FIELDS, PARTICLE_FIELDS, PART_FIELDS, ROTOR_FIELDS
 from taucli.answering.duty import SEGMENT_FIELDS
 from taucli.answering.phase_spec import PHASE_FIELDS
 from taucli.answering.revolving import REVOLVING_FIELDS
-from taucli.options.table import BAND, BRAKE, COUPLE, FACE, PART, PARTICLE, PHASE, REVOLVING, ROTOR, SEGMENT, VECTOR, Command, Option
+from taucli.options.table import BAND, BRAKE, CALIPER, CENTRIFUGAL, COUPLE, FACE, PART, PARTICLE, PHASE, REVOLVING, ROTOR, SEGMENT, VECTOR, Command, Option
 from taucli.quantities.units import KINDS
 
 # The keys of each spec that --find may solve for: (kind, sign). Not a face's surfaces= nor a
-# band's blocks= (whole numbers), nor a part's density= (its unit says whether it is per volume, area or length).
+# band's blocks= nor a clutch's shoes= nor a caliper's surfaces= (whole numbers), nor a part's density= (its unit says whether it is per volume, area or length).
 SPEC_KEYS: dict[str, dict[str, tuple[str, str]]] = {
     PART: {key: value for key, value in PART_FIELDS.items() if key != "density"},
     PARTICLE: PARTICLE_FIELDS,
@@ -42,6 +42,8 @@ SPEC_KEYS: dict[str, dict[str, tuple[str, str]]] = {
     BRAKE: BRAKE_FIELDS,
     FACE: {key: value for key, value in FACE_FIELDS.items() if key != "surfaces"},
     BAND: {key: value for key, value in BAND_FIELDS.items() if key != "blocks"},
+    CENTRIFUGAL: {key: value for key, value in CENTRIFUGAL_FIELDS.items() if key != "shoes"},
+    CALIPER: {key: value for key, value in CALIPER_FIELDS.items() if key != "surfaces"},
     PHASE: PHASE_FIELDS,
     SEGMENT: SEGMENT_FIELDS,
 }

@@ -5,7 +5,7 @@ from __future__ import annotations
 from taucli.core.names import FORMATS, METHOD_NAMES, SHAPE_AXES, SHAPE_NAMES
 from dataclasses import replace
 
-from taucli.options.table import BAND, BRAKE, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
+from taucli.options.table import BAND, BRAKE, CALIPER, CENTRIFUGAL, CHOICE, COUNT, FACE, FILE, FLAG, PART, TEXT, Option, Result
 
 BODY = "Body (shape and dimensions)"
 MOTION = "Motion and method"
@@ -192,6 +192,25 @@ BAND_OPTION = Option(
     repeatable=True, metavar='"mu=… wrap=… tension=…|force=… lever=…"', example="mu=0.25 wrap=270deg radius=0.3m tension=500N",
 )
 BRAKE_EXPANDING = "{brake} 'expanding=yes force=2.3kN mu=0.32 width=32mm radius=150mm hinge=123mm lever=212mm heel-angle=0deg shoe-angle=126deg'"
+CALIPER_OPTION = Option(
+    "caliper", CALIPER,
+    'A caliper disc brake: pads pressed on the disc, each with force=, torque n·μ·F·R_eff (n = surfaces=, 2 unless given: a pad each side), like --friction; '
+    'an annular-sector pad "mu=0.37 force=3748lbf inner-radius=3.875in outer-radius=5.5in angle=108deg model=uniform|wear" '
+    "(R_eff = (2/3)(Ro³ − Ri³)/(Ro² − Ri²) new, (Ro + Ri)/2 worn in; angle= only for the pad pressure), or a circular (button) pad "
+    '"mu=0.31 force=500N pad=circular pad-radius=12mm centre-distance=50mm" (its radius and its centre\'s distance from the axis; '
+    "R_eff = δ·e from the pressure integrated over the circle); mu-s= and mu-k= for static and kinetic μ (repeatable).",
+    repeatable=True, metavar='"mu=… force=… inner-radius=… outer-radius=…|pad=circular pad-radius=… centre-distance=…"',
+    example="mu=0.37 force=3748lbf inner-radius=3.875in outer-radius=5.5in angle=108deg model=wear",
+)
+CENTRIFUGAL_OPTION = Option(
+    "centrifugal", CENTRIFUGAL,
+    'A centrifugal clutch, read at ω₀ (the spider\'s speed), e.g. "shoes=4 mass=6kg radius=160mm spring-force=1450N mu=0.35 drum-radius=250mm": '
+    "n shoes of mass= each, their centre of mass at radius= when they touch the drum, each pulled in there by its spring with spring-force=; "
+    "μ between shoe and drum of inner radius drum-radius=. Engagement at ω_e = √(S/(m·r)); above it the clutch passes τ = n·μ·(m·ω₀²·r − S)·R, "
+    "reported beside the motion, not applied to it (alone with --omega0: the clutch only).",
+    metavar='"shoes=… mass=… radius=… spring-force=… mu=… drum-radius=…"',
+    example="shoes=4 mass=6kg radius=160mm spring-force=1450N mu=0.35 drum-radius=250mm",
+)
 BRAKE_ON_A_LEVER = "{brake} 'force=200N lever=1m pivot=0.4m offset=0.05m mu=0.3 radius=0.5m'"  # the shoe's force then comes from the lever
 CONTACT_RESULTS = (
     Result("torque_brake", "N*m", "friction torque of the brakes", needs=("brake",)),
@@ -212,4 +231,12 @@ CONTACT_RESULTS = (
     Result("tension_slack", "N", "band tension at its slack end, T₂", needs=("band",)),
     Result("pressure_band", "Pa", "largest lining pressure under the band, T₁/(r·w)", needs=("band",),
            example="{band} 'mu=0.25 wrap=270deg radius=0.3m tension=500N width=5cm'"),
+    Result("torque_caliper", "N*m", "friction torque of the caliper disc brakes", needs=("caliper",)),
+    Result("work_caliper", "J", "energy the caliper brakes take…", needs=("caliper",)),
+    Result("power_caliper", "W", "power the caliper brakes take…", needs=("caliper",)),
+    Result("radius_effective", "m", "effective (friction) radius of the caliper's pads, τ = n·μ·F·R_eff", needs=("caliper",)),
+    Result("pressure_caliper", "Pa", "largest pad pressure of the caliper", needs=("caliper",)),
+    Result("omega_engage", "rad/s", "speed at which the centrifugal clutch engages", needs=("centrifugal",)),
+    Result("torque_centrifugal", "N*m", "torque the centrifugal clutch passes at ω₀", needs=("centrifugal+omega0",)),
+    Result("power_centrifugal", "W", "power the centrifugal clutch passes at ω₀", needs=("centrifugal+omega0",)),
 )

@@ -1,14 +1,14 @@
 """taucli impulse: angular impulse and momentum, τΔt = IΔω."""
 
 from taucli.core.names import QUADRATURE_NAMES
-from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
+from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CALIPER_OPTION, CENTRIFUGAL_OPTION, CONTACT_RESULTS, FACE_OPTION, GRAVITY, POINT_RESULTS, PUSH, point_option
 from taucli.options.table import CHOICE, COUPLE, FILE, PART, PARTICLE, Command, Option, Result
 
 MEETS = "Particles and bodies that meet it (L conserved)"
 
 # What makes the results the docs example (a torque for a time) does not (#42 item 18): a contact that takes
 # energy, a particle or body that meets it, a clutch, a particle striking a body whose mass and centre are known.
-CONTACTS = ("brake", "face", "band")
+CONTACTS = ("brake", "face", "band", "caliper")
 MEETINGS = ("particle", "couple")
 CLUTCH = "{couple} 'inertia=3kg*m^2 torque=50N*m'"
 STRUCK_SHAPE = ("particle+shape",)
@@ -33,6 +33,8 @@ COMMAND = Command(
         BRAKE_OPTION,
         FACE_OPTION,
         BAND_OPTION,
+        CALIPER_OPTION,
+        CENTRIFUGAL_OPTION,
         GRAVITY,
         Option("inertia_final", "moment of inertia", "Inertia after a change with no torque (the skater).", metavar="I"),
         Option("part_after", PART, 'The body after a change with no torque, by parts, in place of --part (the body\'s --shape or --inertia stays), '

@@ -1,6 +1,6 @@
 """taucli spin-down: a wheel on a fixed axle, slowing or spun up."""
 
-from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
+from taucli.options.common import ANSWER, BAND_OPTION, BODY_OPTIONS, BRAKE_OPTION, CALIPER_OPTION, CENTRIFUGAL_OPTION, CONTACT_RESULTS, DT, FACE_OPTION, GRAVITY, METHOD, MOTION, POINT_RESULTS, PUSH, RTOL, point_option
 from taucli.options.table import FLAG, PHASE, Command, Option, Result
 
 ENERGY = "Energy added, taken or put to use"
@@ -26,6 +26,8 @@ COMMAND = Command(
         BRAKE_OPTION,
         FACE_OPTION,
         BAND_OPTION,
+        CALIPER_OPTION,
+        CENTRIFUGAL_OPTION,
         GRAVITY,
         Option("viscous", "viscous coefficient", "Viscous coefficient b (torque bω), e.g. '0.01N*m*s'.", sign="nonnegative"),
         Option("corner", "dimensionless", "The body set down spinning in a corner, its rim on the floor and the wall, with this friction "
@@ -80,8 +82,8 @@ COMMAND = Command(
             "Also report the kinetic energy, the work of the drive and of each loss (to --time, else the target, else the stop) and their power "
             "(always with --alpha, --in-time, --power or --ke0; --get KE and the like turn it on).",
             panel=MOTION,
-            makes=("KE0", "KE", "work_drive", "work_friction", "work_viscous", "work_drag", "work_brake", "work_face", "work_band",
-                   "power", "power_mean", "power_friction", "power_viscous", "power_drag", "power_brake", "power_face", "power_band"),
+            makes=("KE0", "KE", "work_drive", "work_friction", "work_viscous", "work_drag", "work_brake", "work_face", "work_band", "work_caliper",
+                   "power", "power_mean", "power_friction", "power_viscous", "power_drag", "power_brake", "power_face", "power_band", "power_caliper"),
         ),
         METHOD,
         DT,

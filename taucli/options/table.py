@@ -33,7 +33,9 @@ NOT_QUANTITIES = NOT_QUANTITIES | {PARTICLE, COUPLE}
 BRAKE = "brake"  # "force=… mu=… [mu-s=…] [radius=…] [lever=… pivot=… offset=…] [shoe-angle=…]" or "expanding=yes …": a brake shoe on a turning body, repeatable
 FACE = "face"  # "mu=… [force=…|pmax=…] [inner-radius=…] [outer-radius=…] [model=uniform|wear] [surfaces=…] [cone=…]": a pressed flat face (or a cone clutch's conical one), repeatable
 BAND = "band"  # "mu=… wrap=… [radius=…] [width=…] tension=…|force=… lever=… slack-arm=…|tight-arm=…" (blocks=… block-angle=… [thickness=…] in place of wrap=: band-and-block): a band brake, repeatable
-NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE, BAND}
+CENTRIFUGAL = "centrifugal"  # "shoes=… mass=… radius=… spring-force=… mu=… drum-radius=…": a centrifugal clutch read at ω₀
+CALIPER = "caliper"  # "mu=… force=… [pad=annular] inner-radius=… outer-radius=… [angle=…] | pad=circular pad-radius=… centre-distance=…, [model=uniform|wear] [surfaces=N]": a caliper disc brake, repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {BRAKE, FACE, BAND, CENTRIFUGAL, CALIPER}
 SIDE = "side"  # "hang" | "table [mu-s=… mu-k=…]" | "incline angle=… [mu-s=… mu-k=…]": where a block of atwood is
 PULL = "pull"  # "force=… [angle=…] [on=1|2]": a pull on a block of atwood, repeatable
 NOT_QUANTITIES = NOT_QUANTITIES | {SIDE, PULL}

@@ -1,5 +1,6 @@
 """Friction torques of contacts pressed against a turning body: brake shoes, flat faces (#24),
-band brakes (#35, taucli.scenes.band) and internal expanding shoes (#48, taucli.scenes.expanding).
+band brakes (#35, taucli.scenes.band), internal expanding shoes (#48, taucli.scenes.expanding) and caliper disc
+brakes (#48, taucli.scenes.caliper).
 
 A brake shoe pressed with force N at radius r takes τ = μ·N·r. On a lever (a block brake), the
 force F acts at ℓ from the lever's pivot, the shoe at x from it, and the line of the shoe's
@@ -51,8 +52,9 @@ from taucli.core.errors import InputError
 from taucli.writing.report import Step, fmt, quantity_text, term
 from taucli.scenes.angles import sin_exact
 from taucli.scenes.band import band_torques
+from taucli.scenes.caliper import caliper_torque
 from taucli.scenes.expanding import EXAMPLE as EXPANDING_EXAMPLE, expanding_torques
-from taucli.scenes.given import Band, Brake, Face
+from taucli.scenes.given import Band, Brake, Caliper, Face
 
 def face_radius_factor(inner: float, outer: float, pressure: str) -> float:
     """The effective radius of an annular face per unit μF: τ = μ·F·(this) per surface."""
@@ -100,30 +102,33 @@ class Contacts:
     band: float = 0.0
     band_static: float = 0.0
     details: tuple[tuple[str, float | None, str], ...] = ()  # (result key, value, label part): forces, tensions, pressures
+    caliper: float = 0.0
+    caliper_static: float = 0.0
 
     @property
     def kinetic(self) -> float:
-        return self.brake + self.face + self.band
+        return self.brake + self.face + self.band + self.caliper
 
     @property
     def static(self) -> float:
-        return self.brake_static + self.face_static + self.band_static
+        return self.brake_static + self.face_static + self.band_static + self.caliper_static
 
     @property
     def shares(self) -> tuple[tuple[str, str, float], ...]:
         """(name, symbol, torque) of each kind of contact present."""
         return tuple((name, symbol, torque) for name, symbol, torque in
-                     (("brake", "τ_b", self.brake), ("face", "τ_face", self.face), ("band", "τ_band", self.band)) if torque)
+                     (("brake", "τ_b", self.brake), ("face", "τ_face", self.face), ("band", "τ_band", self.band),
+                      ("caliper", "τ_cal", self.caliper)) if torque)
 
 
 def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict, mass: float | None, g: float | None,
-             bands: Sequence[Band] = ()) -> Contacts:
-    """The torques of the brakes, faces and bands on a body (its radius, radii and weight where they are not given)."""
+             bands: Sequence[Band] = (), calipers: Sequence[Caliper] = ()) -> Contacts:
+    """The torques of the brakes, faces, bands and calipers on a body (its radius, radii and weight where they are not given)."""
     steps: list[Step] = []
     models: list[str] = []
     notes: list[str] = []
     details: list[tuple[str, float | None, str]] = []
-    brake = brake_static = face = face_static = band = band_static = 0.0
+    brake = brake_static = face = face_static = band = band_static = caliper = caliper_static = 0.0
     rim = body_rim(body_options)
     for shoe in brakes:
         if shoe.expanding:
@@ -216,11 +221,20 @@ def contacts(brakes: Sequence[Brake], faces: Sequence[Face], body_options: dict,
             if strap.width is None:
                 notes.append(f"pressure_band: null, because {strap.source} " + ("is lined with blocks, which press the drum, not the band"
                              if strap.blocks is not None else "has no width= (the lining pressure is T/(r·w))"))
+    for pads in calipers:
+        found = caliper_torque(pads, steps, notes)
+        caliper += found.torque
+        caliper_static += found.holding
+        if len(calipers) == 1:
+            details.extend((("radius_effective", found.radius, ""), ("pressure_caliper", found.pressure, "")))
+    if calipers:
+        models.append("caliper disc brake μF·R_eff per pad")
     if any(strap.blocks is None for strap in bands):
         models.append("band brake T₁/T₂ = e^(μθ)")
     if any(strap.blocks is not None for strap in bands):
         models.append("band-and-block brake T₁/T₂ = ((1 + μ tan θ)/(1 − μ tan θ))ⁿ")
-    return Contacts(brake, brake_static, face, face_static, tuple(steps), tuple(dict.fromkeys(models)), tuple(notes), band, band_static, tuple(details))
+    return Contacts(brake, brake_static, face, face_static, tuple(steps), tuple(dict.fromkeys(models)), tuple(notes), band, band_static, tuple(details),
+                    caliper, caliper_static)
 
 
 def _radius(shoe: Brake, rim: float | None, notes: list[str]) -> float:

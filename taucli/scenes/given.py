@@ -175,6 +175,45 @@ class Brake:
         return self.lever is not None and bool(self.offset)
 
 
+PADS = ("annular", "circular")  # a caliper's pad shapes (pad=)
+
+
+@dataclass(frozen=True)
+class Caliper:
+    """A caliper disc brake (taucli.scenes.caliper): ``surfaces`` pads, each pressed on the disc
+    with ``force``; μ kinetic and static; ``model`` uniform pressure or uniform wear. An annular
+    pad between ``inner_radius`` and ``outer_radius`` over ``angle`` (None: not given, for the
+    pressure only); a circular pad of ``pad_radius`` with its centre at ``centre_distance`` from the axis."""
+
+    source: str
+    mu_k: float
+    force: float
+    pad: str = "annular"
+    mu_s: float | None = None
+    inner_radius: float = 0.0
+    outer_radius: float | None = None
+    angle: float | None = None
+    pad_radius: float | None = None
+    centre_distance: float | None = None
+    model: str = "uniform"
+    surfaces: int = 2
+
+
+@dataclass(frozen=True)
+class Centrifugal:
+    """A centrifugal clutch (taucli.scenes.centrifugal): ``shoes`` shoes of ``mass`` each, their
+    centres of mass at ``radius`` from the axis when they touch the drum, each pulled in there by
+    its spring with ``spring_force``; μ between shoe and drum, the drum's inner radius ``drum_radius``."""
+
+    source: str
+    shoes: int
+    mass: float
+    radius: float
+    spring_force: float
+    mu: float
+    drum_radius: float
+
+
 @dataclass(frozen=True)
 class Band:
     """A band brake: a band wrapped ``wrap`` radians round a drum of ``radius`` (None: the body's),

@@ -12,7 +12,7 @@ from taucli.options.spin_down import COMMAND as TABLE
 from taucli.options.table import Results
 from taucli.writing.report import Report, Step, quantity_text, term
 
-CONTACT_WORKS = ("work_brake", "work_face", "work_band")
+CONTACT_WORKS = ("work_brake", "work_face", "work_band", "work_caliper")
 
 
 def with_temperature_rise(report: Report, heat_mass: float | None, specific_heat: float | None) -> Report:
@@ -25,7 +25,7 @@ def with_temperature_rise(report: Report, heat_mass: float | None, specific_heat
                          example="{heat_mass} 12kg {specific_heat} '460 J/(kg*K)'")
     works = [key for key in CONTACT_WORKS if key in report.results] or [key for key in ("work_friction",) if key in report.results]
     if not works:
-        raise InputError("heat_mass", "needs a friction that makes heat: a {brake}, {face}, {band} or {friction} (ΔT = E/(m·c), E the energy it takes)",
+        raise InputError("heat_mass", "needs a friction that makes heat: a {brake}, {face}, {band}, {caliper} or {friction} (ΔT = E/(m·c), E the energy it takes)",
                          example="{brake} 'force=100N mu=0.4 radius=0.5m' {heat_mass} 12kg {specific_heat} '460 J/(kg*K)'")
     results = Results(TABLE)
     results.update(report.results)

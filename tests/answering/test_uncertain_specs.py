@@ -16,7 +16,7 @@ from conftest import example_keys
 from taucli.front import cli
 from taucli.options import SCENES, table
 
-SPEC_KINDS = {table.PART, table.PARTICLE, table.COUPLE, table.BRAKE, table.FACE, table.BAND, table.SIDE, table.PULL, table.ROTOR, table.REVOLVING}
+SPEC_KINDS = {table.PART, table.PARTICLE, table.COUPLE, table.BRAKE, table.FACE, table.BAND, table.CALIPER, table.CENTRIFUGAL, table.SIDE, table.PULL, table.ROTOR, table.REVOLVING}
 
 
 # (scene, option, its value with {u} where "value ± σ" goes, value, σ, unit, keywords changed from the scene's example (None: left out))
@@ -27,6 +27,8 @@ CASES = [
     ("spin-down", "brake", "force={u} mu=0.4 radius=0.1m", 10.0, 1e-3, "N", {}),
     ("spin-down", "face", "mu={u} force=10N inner-radius=5cm outer-radius=12cm", 0.3, 1e-4, "", {}),
     ("spin-down", "band", "mu=0.25 wrap={u} radius=0.1m tension=10N", 4.0, 1e-4, "rad", {}),
+    ("spin-down", "caliper", "mu=0.4 force={u} inner-radius=80mm outer-radius=130mm angle=60deg", 100.0, 1e-3, "N", {}),
+    ("spin-down", "centrifugal", "shoes=4 mass={u} radius=160mm spring-force=1450N mu=0.35 drum-radius=250mm", 6.0, 1e-4, "kg", {"omega0": "400rpm"}),
     ("atwood", "part", "point mass={u} offset=5cm", 0.5, 1e-4, "kg", {}),
     ("atwood", "side1", "incline angle={u}", 0.5, 1e-4, "rad", {}),
     ("atwood", "side2", "table mu={u}", 0.2, 1e-4, "", {}),
@@ -35,6 +37,8 @@ CASES = [
     ("impulse", "brake", "force={u} mu=0.4 radius=0.1m", 1.0, 1e-4, "N", {}),
     ("impulse", "face", "mu={u} force=10N inner-radius=5cm outer-radius=12cm", 0.3, 1e-4, "", {}),
     ("impulse", "band", "mu=0.25 wrap={u} radius=0.1m tension=10N", 4.0, 1e-4, "rad", {}),
+    ("impulse", "caliper", "mu=0.4 force=10N pad-radius={u} centre-distance=50mm model=wear", 0.012, 1e-6, "m", {}),
+    ("impulse", "centrifugal", "shoes=4 mass=6kg radius=160mm spring-force={u} mu=0.35 drum-radius=250mm", 1450.0, 1e-2, "N", {"omega0": "400rpm"}),
     ("impulse", "part_after", "point mass={u} offset=20cm", 0.1, 1e-4, "kg", {"omega0": "10rad/s", "torque": None, "duration": None}),
     ("impulse", "particle", "mass={u} speed=4m/s radius=0.5m", 0.3, 1e-4, "kg", {"torque": None, "duration": None}),
     ("impulse", "couple", "inertia={u} omega0=0", 0.2, 1e-4, "kg*m^2", {"omega0": "10rad/s", "torque": None, "duration": None}),

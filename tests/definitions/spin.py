@@ -104,6 +104,17 @@ def draw_spin(rng: random.Random) -> tuple[dict, list[str]]:
             kw["band"] = [spec(**fields)]
             tags.append("band")
 
+        if side.random() < 0.1:  # a caliper disc brake (#48): an annular pad, n·μ·F·R_eff
+            mu, outer = side.uniform(0.1, 0.8), mag(side, -1.5, 0)
+            fields = {"mu": (mu, ""), "force": (torque_scale / (mu * outer) * mag(side, -1, 0), "N"),
+                      "inner_radius": (outer * side.uniform(0, 0.95), "m"), "outer_radius": (outer, "m")}
+            if side.random() < 0.5:
+                fields["model"] = "wear"
+            if side.random() < 0.3:
+                fields["surfaces"] = "1"
+            kw["caliper"] = [spec(**fields)]
+            tags.append("caliper")
+
     def targets(p_time, p_omega, p_angle):
         maybe("time", p_time, T * mag(rng, -1, 0.5))
         maybe("until_omega", p_omega, signed(rng, W * mag(rng, -0.7, 0.5)))
@@ -278,7 +289,8 @@ def check_spin(kw: dict, report, c: Checker) -> None:
     n = inp.get("drag_exponent", 2.0)
     b, k, axle = inp.get("viscous", 0.0), inp.get("drag", 0.0), inp.get("friction", 0.0)
     brake, face, band = res.get("torque_brake", 0.0), res.get("torque_face", 0.0), res.get("torque_band", 0.0)
-    f = axle + brake + face + band
+    caliper = res.get("torque_caliper", 0.0)
+    f = axle + brake + face + band + caliper
     if mode == "bisection":
         drive = res["torque"]
     elif "force" in inp:
@@ -312,6 +324,11 @@ def check_spin(kw: dict, report, c: Checker) -> None:
             c.eq("torque_brake = Σ μNr", res.get("torque_brake"), want_brake)
         if kw.get("face"):
             c.eq("torque_face = μF r_eff (its weight the body's)", res.get("torque_face"), want_face)
+    if kw.get("caliper"):
+        ri, ro = inp.get("caliper1_inner_radius", 0.0), inp["caliper1_outer_radius"]
+        lever = (ro + ri) / 2 if "model=wear" in kw["caliper"][0] else 2 * (ro**3 - ri**3) / (3 * (ro**2 - ri**2))
+        c.eq("torque_caliper = n μ F R_eff", res.get("torque_caliper"), inp.get("caliper1_surfaces", 2) * inp["caliper1_mu"] * inp["caliper1_force"] * lever)
+        c.eq("radius_effective = τ/(n μ F)", res.get("radius_effective"), lever)
     if kw.get("band"):
         c.eq("torque_band = (T₁ − T₂) r, T₁ = T₂ e^{μθ}", res.get("torque_band"), band_torque(inp, kw, rim))
         mu, wrap = inp.get("band1_mu", inp.get("band1_mu_k")), inp["band1_wrap"]
@@ -363,7 +380,7 @@ def check_spin(kw: dict, report, c: Checker) -> None:
         c.eq("KE0 = ½ I ω₀²", res.get("KE0"), inertia * w0 * w0 / 2)
         if res.get("KE") is not None and omega_end is not None:
             c.eq("KE = ½ I ω² at the end", res["KE"], inertia * omega_end * omega_end / 2)
-    works = [res.get(name) for name in ("work_friction", "work_viscous", "work_drag", "work_brake", "work_face", "work_band")]
+    works = [res.get(name) for name in ("work_friction", "work_viscous", "work_drag", "work_brake", "work_face", "work_band", "work_caliper")]
     # The balance is an identity of the exact motion. A stepped one (rk45: a motor against losses, a drag
     # exponent other than 1 or 2) keeps it to its own accuracy, rtol 1e-10 by default: 1e-9 here; euler and
     # rk4 answers are good to 1e-3 by design (their error estimate withholds worse), so not to this.
@@ -374,7 +391,8 @@ def check_spin(kw: dict, report, c: Checker) -> None:
              rel=1e-9 if stepped else REL)
     if res.get("work_drive") is not None and t_end:
         c.eq("power_mean = work_drive / t", res.get("power_mean"), res["work_drive"] / t_end)
-    contact_work = [(torque, res.get(name)) for torque, name in ((axle, "work_friction"), (brake, "work_brake"), (face, "work_face"), (band, "work_band")) if torque]
+    contact_work = [(torque, res.get(name)) for torque, name in ((axle, "work_friction"), (brake, "work_brake"), (face, "work_face"), (band, "work_band"),
+                                                                 (caliper, "work_caliper")) if torque]
     if len(contact_work) > 1 and all(w is not None for _, w in contact_work):
         swept = math.fsum(w for _, w in contact_work) / f
         for torque, w in contact_work:
@@ -393,7 +411,7 @@ def check_spin(kw: dict, report, c: Checker) -> None:
             net, swept = res["theta_stop"], abs(res["theta_stop"])
         else:
             net = swept = None
-        friction_work = [w for w in (res.get("work_friction"), res.get("work_brake"), res.get("work_face"), res.get("work_band")) if w is not None]
+        friction_work = [w for w in (res.get("work_friction"), res.get("work_brake"), res.get("work_face"), res.get("work_band"), res.get("work_caliper")) if w is not None]
         if swept is not None and friction_work:
             c.eq("the friction's work = τ_f × the angle swept", math.fsum(friction_work), f * swept)
         if net is not None and mode in ("laws", "bisection") and kw.get("method") is None:
@@ -402,7 +420,7 @@ def check_spin(kw: dict, report, c: Checker) -> None:
         driving = min(t_end, res["t_stop"]) if res.get("t_stop") is not None else t_end
         c.eq("work_drive = P t (while it turns)", res["work_drive"], power * driving)
     if omega_at is not None:
-        for name, torque in (("power_friction", axle), ("power_brake", brake), ("power_face", face), ("power_band", band)):
+        for name, torque in (("power_friction", axle), ("power_brake", brake), ("power_face", face), ("power_band", band), ("power_caliper", caliper)):
             if torque:
                 c.eq(f"{name} = τ |ω|", res.get(name), torque * abs(omega_at))
         c.eq("power_viscous = b ω²", res.get("power_viscous"), b * omega_at * omega_at)

@@ -25,6 +25,8 @@ TWICE = {
     table.BRAKE: "force=100N force=200N mu=0.4 radius=0.5m",
     table.FACE: "mu=0.2 mu=0.3",
     table.BAND: "mu=0.25 mu=0.3 wrap=270deg radius=0.3m tension=100N",
+    table.CALIPER: "mu=0.3 mu=0.4 force=1kN inner-radius=80mm outer-radius=130mm",
+    table.CENTRIFUGAL: "shoes=4 shoes=3 mass=6kg radius=160mm spring-force=1450N mu=0.35 drum-radius=250mm",
     table.SIDE: "incline angle=30deg angle=40deg",
     table.PULL: "force=20N force=30N",
     table.ROTOR: "inertia=0.3kg*m^2 inertia=1kg*m^2 spin=5000rpm sense=cw-from-right",

@@ -94,7 +94,7 @@ import taucli
 def test_spin_down_results_agree_with_their_definitions():
     branches = {"laws": 150, "alpha": 40, "kinematics": 40, "power": 40, "in_time": 40, "closed": 15, "bisection": 10, "friction": 80,
                 "viscous": 60, "drag": 50, "drag_exponent": 5, "torque": 60, "push": 8, "brake": 30, "face": 8, "face weight": 8,
-                "band": 30, "brake lever": 15, "face pmax": 10, "time": 100, "until_omega": 50, "until_angle": 30, "until_arc": 4, "energy": 100, "at": 60, "ke0": 8, "rim_speed": 8,
+                "band": 30, "caliper": 30, "brake lever": 15, "face pmax": 10, "time": 100, "until_omega": 50, "until_angle": 30, "until_arc": 4, "energy": 100, "at": 60, "ke0": 8, "rim_speed": 8,
                 "stepper": 5, "held": 3, "units": 200}
     _, checker = run_scene("spin_down", spin.draw_spin, spin.check_spin, 2600, 31, 0.5, branches)
     assert checker.checked["KE0 − KE = Σ losses − work_drive"] > 100

@@ -19,22 +19,23 @@ from taucli.scenes.motion import Evolver, Loads, Method, evolve
 from taucli.options.table import Results
 
 
-def _motion(inertia: float, omega0: float, torque: float, brakes, faces, gravity, body_options: dict, bands=()):
+def _motion(inertia: float, omega0: float, torque: float, brakes, faces, gravity, body_options: dict, bands=(), calipers=()):
     """The contacts' torques, and the motion under the torque against them (closed form)."""
     sided = [spec.source for spec in (*bands, *(shoe for shoe in brakes if shoe.sided))]
     if sided and omega0 and torque and (omega0 > 0) != (torque > 0):
         raise InputError(sided[0], "takes the torque for the sense the body turns, and a torque against ω₀ would stop it and turn it back "
                          "(the tight and slack ends, or the friction's moment, change over): give a torque along ω₀, or work the turn back in a second run",
                          example="{torque} '5N*m' {omega0} 100rpm")
-    contact = contacts(brakes, faces, body_options, body_mass(**body_options) if faces else body_options.get("mass"), gravity, bands)
+    contact = contacts(brakes, faces, body_options, body_mass(**body_options) if faces else body_options.get("mass"), gravity, bands, calipers)
     loads = Loads(drive=torque, friction=contact.kinetic, static=contact.static)
     return contact, evolve(inertia, loads, omega0, Evolver(Method("exact")))
 
 
-def braked_kinematics(inertia: float, omega0: float, torque: float, duration: float, brakes, faces, gravity, body_options: dict, bands=()) -> dict:
+def braked_kinematics(inertia: float, omega0: float, torque: float, duration: float, brakes, faces, gravity, body_options: dict, bands=(),
+                      calipers=()) -> dict:
     """α at the start and at the end of Δt (friction against the motion; held: 0), and the net
     angle turned, for a point on the body (--at)."""
-    _, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options, bands)
+    _, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options, bands, calipers)
     return {"alpha0": motion.initial_rate, "alpha": motion.rate_at(duration), "theta": motion.state_at(duration)[1]}
 
 
@@ -50,13 +51,14 @@ def solve_braked(
     *,
     inertia_steps: Sequence[Step] = (),
     bands: Sequence[Band] = (),
+    calipers: Sequence = (),
 ) -> Report:
     """A constant torque τ over Δt against a constant Coulomb torque τ_f of the brakes and faces
     (static μ holding the body at rest): I dω/dt = τ − τ_f·sgn ω in each stretch of motion one
     way; ω₁ at Δt, J = τΔt applied, J_net = I(ω₁ − ω₀), and each friction's torque, work over the
     angle swept both ways, and power at the start. ``gravity`` gives the weight on a face with no
     force= (None where every face has one); ``body_options`` give the radii the contacts take."""
-    contact, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options, bands)
+    contact, motion = _motion(inertia, omega0, torque, brakes, faces, gravity, body_options, bands, calipers)
     omega_end, theta = motion.state_at(duration)
     stop = motion.stop if motion.stop is not None and motion.stop[0] < duration else None
     # the angle swept both ways: to the stop, then (turned back) from there
@@ -77,7 +79,8 @@ def solve_braked(
     results.put("KE1", energy1, " Δt")
     results.put("work", inertia * delta * (omega0 + omega_end) / 2)  # ½I(ω₁ − ω₀)(ω₁ + ω₀)
     speed0 = abs(omega0)
-    for name, share, given in (("brake", contact.brake, brakes), ("face", contact.face, faces), ("band", contact.band, bands)):
+    for name, share, given in (("brake", contact.brake, brakes), ("face", contact.face, faces), ("band", contact.band, bands),
+                               ("caliper", contact.caliper, calipers)):
         if given:
             results.put(f"torque_{name}", share)
             results.put(f"work_{name}", share * swept, " during Δt")

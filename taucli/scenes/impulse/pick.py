@@ -7,6 +7,8 @@ from collections.abc import Iterable, Sequence
 from taucli.core.errors import InputError, Unused
 from taucli.writing.report import Report, Step
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.centrifugal import with_centrifugal
+from taucli.options.impulse import COMMAND as TABLE
 from taucli.scenes.given import Band, Brake, Couple, Face, Particle
 from taucli.scenes.impulse.after import body_after, body_centre, inertia_change, with_period
 from taucli.scenes.impulse.balance import solve_balance
@@ -24,6 +26,7 @@ from taucli.scenes.inertia import body, body_notes, part_inertia
 from taucli.scenes.push import Push, drive_steps
 
 
+@with_centrifugal(TABLE)
 def impulse(
     *,
     omega0: float | None = None,
@@ -46,6 +49,7 @@ def impulse(
     brake: Sequence[Brake] = (),
     face: Sequence[Face] = (),
     band: Sequence[Band] = (),
+    caliper: Sequence = (),
     g: float | None = None,
     **body_options,
 ) -> Report:
@@ -69,11 +73,11 @@ def impulse(
     if isinstance(torque, OfTime):
         others = {"force": force, "lever": lever, "push_angle": push_angle, "inertia_final": inertia_final, "part_after": part_after or None,
                   "torque_profile": torque_profile, "particle": particle, "couple": couple, "at": at, "brake": brake, "face": face, "band": band,
-                  "g": g, **momenta}
+                  "caliper": caliper, "g": g, **momenta}
         inertia, steps = _body(body_options)
         return with_period(formula_impulse(torque, duration, inertia, omega0, omega1, others, method, steps))
     report = _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
-                      at, brake, face, band, g, body_options, change, momenta)
+                      at, brake, face, band, g, body_options, change, momenta, tuple(caliper or ()))
     said = body_notes(body_options) + (body_notes({**body_options, "part": tuple(part_after)}) if part_after else [])
     said += [note for c in couple if c.part is not None for note in part_inertia(c.part).notes]  # a body met, by its shape
     report.notes[:0] = [note for note in dict.fromkeys(said) if note not in report.notes]  # what was assumed of a body, first (#42 item 3)
@@ -81,25 +85,26 @@ def impulse(
 
 
 def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method, particle, couple,
-             at, brake, face, band, g, body_options: dict, change: float | None = None, momenta: dict | None = None) -> Report:
+             at, brake, face, band, g, body_options: dict, change: float | None = None, momenta: dict | None = None, caliper: tuple = ()) -> Report:
     """The model by what is given (see ``impulse``)."""
     momenta = {name: value for name, value in (momenta or {}).items() if value is not None}
     if at is not None:
         # the run without --at (its ΔI from the parts that changed, where --part-after gave them), then the point
         report = with_period(_impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia_final, after_steps, torque_profile, method,
-                                      particle, couple, None, brake, face, band, g, body_options, change, momenta))
+                                      particle, couple, None, brake, face, band, g, body_options, change, momenta, caliper))
         given = {"omega0": omega0, "omega1": omega1, "torque": _with_push(torque, force, lever, push_angle)[0], "duration": duration, "inertia": _body(body_options)[0]}
-        if brake or face or band:  # friction acts too: α and the angle from the braked motion (it may stop, or turn back)
+        if brake or face or band or caliper:  # friction acts too: α and the angle from the braked motion (it may stop, or turn back)
             w0 = report.inputs["omega0"].value if "omega0" in report.inputs else omega0
             g_face = g if g is not None else (report.inputs["g"].value if "g" in report.inputs else None)
-            given.update(braked_kinematics(given["inertia"], w0, given["torque"], duration, tuple(brake), tuple(face), g_face, body_options, tuple(band)))
+            given.update(braked_kinematics(given["inertia"], w0, given["torque"], duration, tuple(brake), tuple(face), g_face, body_options, tuple(band),
+                                           caliper))
         return point_after(report, at, body_options.get("radius", body_options.get("outer_radius")), given)
 
     inertia, inertia_steps = _body(body_options)
     torque, formed = _with_push(torque, force, lever, push_angle)
     inertia_steps = (*inertia_steps, *formed)
     if momenta:  # L₀, L₁ or J given as such: ΔL = J = τΔt, L = Iω
-        others = {"brake": brake or None, "face": face or None, "band": band or None, "particle": particle or None, "couple": couple or None,
+        others = {"brake": brake or None, "face": face or None, "band": band or None, "caliper": caliper or None, "particle": particle or None, "couple": couple or None,
                   "inertia_final": inertia_final, "torque_profile": torque_profile, "g": g}
         for name, value in others.items():
             if value is not None:
@@ -109,14 +114,14 @@ def _impulse(omega0, omega1, torque, force, lever, push_angle, duration, inertia
             raise InputError("method", "applies to {torque_profile} (trapezoid or simpson)")
         return solve_momentum(inertia, omega0, omega1, torque, duration, momenta.get("momentum0"), momenta.get("momentum1"), momenta.get("impulse"),
                               inertia_steps=inertia_steps)
-    if brake or face or band:
+    if brake or face or band or caliper:
         _check_braked(method, g, face, inertia, omega1, torque, duration,
                       {"inertia_final": inertia_final, "torque_profile": torque_profile, "particle": particle or None, "couple": couple or None})
         assumed = Assumed()
         omega0 = _at_rest_unless_given(omega0, assumed)
         gravity = assumed.gravity(g) if any(plate.by_weight for plate in face) else None
         return assumed.applied(solve_braked(inertia, omega0, torque, duration, tuple(brake), tuple(face), gravity, body_options,
-                                            inertia_steps=inertia_steps, bands=tuple(band)))
+                                            inertia_steps=inertia_steps, bands=tuple(band), calipers=caliper))
     if g is not None:
         raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     if particle or couple:
@@ -192,12 +197,12 @@ def _check_braked(method: str, g: float | None, faces: Sequence[Face], inertia: 
         raise Unused("g", "is used only for the weight on a {face} with no force=, or to read a weight given for a mass")
     for name, value in others.items():
         if value is not None:
-            raise InputError(name, "does not combine with {brake}, {face} or {band} here: they act with a constant {torque} over {duration}")
+            raise InputError(name, "does not combine with {brake}, {face}, {band} or {caliper} here: they act with a constant {torque} over {duration}")
     if omega1 is not None:
-        raise InputError("omega1", "is what {brake}, {face} and {band} let this solve for: leave it out")
+        raise InputError("omega1", "is what {brake}, {face}, {band} and {caliper} let this solve for: leave it out")
     for name, value in (("inertia", inertia), ("torque", torque), ("duration", duration)):
         if value is None:
-            raise InputError(name, "is required with {brake}, {face} or {band}: the friction's share is worked out over the motion, from the start",
+            raise InputError(name, "is required with {brake}, {face}, {band} or {caliper}: the friction's share is worked out over the motion, from the start",
                              example={"inertia": "{inertia} '0.5kg*m^2'", "torque": "{torque} '5N*m'", "duration": "{duration} 2s"}[name])
 
 

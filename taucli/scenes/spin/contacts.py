@@ -49,28 +49,31 @@ def split_contacts(report: Report, axle: float, contact) -> Report:
                     steps.append(Step(f"Power the {name}s take", f"P_{name} = {symbol}·|ω|",
                                       f"{quantity_text(torque, 'N*m')} × {quantity_text(share, 'rad/s')}", quantity_text(torque * share, "W"),
                                       "power is torque times angular speed"))
-    steps = [replace(step, title="Energy all friction takes (axle, brakes, faces, bands)") if step.title == "Energy friction takes" else step for step in steps]
+    steps = [replace(step, title="Energy all friction takes (axle, brakes, faces, bands, calipers)") if step.title == "Energy friction takes" else step for step in steps]
     return Report(report.scene, report.model, report.method, results, steps, report.notes, report.inputs, report.tables, report.trajectory)
 
 
 def put_contacts(brakes, faces, body_options: dict, rim: float | None, assumed: Assumed, g: float | None, results: Results, steps: list[Step], notes: list[str],
-                 axle: float, bands=()):
+                 axle: float, bands=(), calipers=()):
     """The brakes', faces' and bands' torques (contact.py), put among the results, steps and notes before the motion."""
     shape_rim = body_rim(body_options)
     options = body_options if shape_rim is not None or rim is None else {**body_options, "shape": "disc", "radius": rim}
     g = assumed.gravity(g) if any(face.by_weight for face in faces) else None
-    contact = contacts(brakes, faces, options, body_mass(**body_options) if faces else body_options.get("mass"), g, bands)
+    contact = contacts(brakes, faces, options, body_mass(**body_options) if faces else body_options.get("mass"), g, bands, calipers)
     if brakes:
         results.put("torque_brake", contact.brake)
     if faces:
         results.put("torque_face", contact.face)
     if bands:
         results.put("torque_band", contact.band)
+    if calipers:
+        results.put("torque_caliper", contact.caliper)
     for key, value, part in contact.details:
         results.put(key, value, part)
     steps.extend(contact.steps)
     notes.extend(contact.notes)
-    terms = [(symbol, value) for symbol, value in (("τ_axle", axle), ("τ_b", contact.brake), ("τ_face", contact.face), ("τ_band", contact.band)) if value]
+    terms = [(symbol, value) for symbol, value in (("τ_axle", axle), ("τ_b", contact.brake), ("τ_face", contact.face), ("τ_band", contact.band),
+                                                   ("τ_cal", contact.caliper)) if value]
     if terms:
         steps.append(Step("Friction torques add", "τ_f = " + " + ".join(symbol for symbol, _ in terms),
                           " + ".join(quantity_text(value, "N*m") for _, value in terms), quantity_text(axle + contact.kinetic, "N*m"),

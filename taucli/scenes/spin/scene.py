@@ -22,6 +22,7 @@ from taucli.core.errors import InputError, Unused
 from taucli.options.spin_down import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.centrifugal import with_centrifugal
 from taucli.scenes.inertia import body, body_table
 from taucli.scenes.point import RIM, rim_radius
 from taucli.scenes.push import Push, drive_steps
@@ -64,6 +65,7 @@ class Front:
     notes: list[str] = field(default_factory=list)
 
 
+@with_centrifugal(TABLE)
 def spin_down(
     *,
     omega0: float | None = None,
@@ -75,6 +77,7 @@ def spin_down(
     brake: Sequence | None = None,
     face: Sequence | None = None,
     band: Sequence | None = None,
+    caliper: Sequence | None = None,
     g: float | None = None,
     at: float | None = None,
     viscous: float | None = None,
@@ -115,14 +118,14 @@ def spin_down(
     """
     if phase:
         others = {"torque": torque, "force": force, "lever": lever, "friction": friction, "brake": brake or None, "face": face or None,
-                  "band": band or None, "viscous": viscous, "drag": drag, "until_omega": until_omega, "until_angle": until_angle,
+                  "band": band or None, "caliper": caliper or None, "viscous": viscous, "drag": drag, "until_omega": until_omega, "until_angle": until_angle,
                   "until_arc": until_arc, "alpha": alpha, "in_time": in_time, "in_angle": in_angle, "power": power, "ke0": ke0,
                   "rim_speed": rim_speed, "rim_accel": rim_accel, "work": work, "lift_mass": lift_mass, "vehicle_mass": vehicle_mass,
                   "efficiency": efficiency, "at": at, "dt": dt, "rtol": rtol, "g": g}
         return phases_run(others, method, phase, omega0, time, body_options)
     if isinstance(torque, OfTime) or isinstance(alpha, OfTime):
         others = {"force": force, "lever": lever, "friction": friction, "brake": brake or None, "face": face or None, "band": band or None,
-                  "viscous": viscous, "drag": drag, "until_angle": until_angle, "until_arc": until_arc, "in_time": in_time, "in_angle": in_angle,
+                  "caliper": caliper or None, "viscous": viscous, "drag": drag, "until_angle": until_angle, "until_arc": until_arc, "in_time": in_time, "in_angle": in_angle,
                   "power": power, "ke0": ke0, "rim_speed": rim_speed, "rim_accel": rim_accel, "work": work, "lift_mass": lift_mass,
                   "vehicle_mass": vehicle_mass, "efficiency": efficiency, "at": at, "dt": dt, "rtol": rtol, "g": g,
                   "torque" if isinstance(alpha, OfTime) else "alpha": torque if isinstance(alpha, OfTime) else alpha}
@@ -136,7 +139,7 @@ def spin_down(
     omega0 = _initial_speed(wheel, omega0, rim_speed, ke0, front)
     uses = {"work": work, "lift_mass": lift_mass, "vehicle_mass": vehicle_mass}
     if efficiency is not None or any(value is not None for value in uses.values()):
-        others = {"torque": torque, "force": force, "friction": friction, "brake": brake or None, "face": face or None, "viscous": viscous,
+        others = {"torque": torque, "force": force, "friction": friction, "brake": brake or None, "face": face or None, "caliper": caliper or None, "viscous": viscous,
                   "drag": drag, "time": time, "until_angle": until_angle, "until_arc": until_arc, "alpha": alpha, "in_time": in_time,
                   "in_angle": in_angle, "power": power, "rim_accel": rim_accel, "at": at}
         return _transfer(wheel, omega0, uses, efficiency, until_omega, g, others, front)
@@ -148,8 +151,8 @@ def spin_down(
     drive = (torque or 0.0) + (push.torque if push is not None else 0.0)
     assumed, axle = Assumed(), friction or 0.0
     _one_sense(brake, band, omega0, drive, in_time, in_angle)
-    contact = (put_contacts(brake or (), face or (), body_options, wheel.rim, assumed, g, front.results, front.steps, front.notes, axle, band or ())
-               if brake or face or band else None)
+    contact = (put_contacts(brake or (), face or (), body_options, wheel.rim, assumed, g, front.results, front.steps, front.notes, axle, band or (),
+                            caliper or ()) if brake or face or band or caliper else None)
     friction = axle + contact.kinetic if contact is not None else friction
     if corner is not None:
         radius = body_options.get("radius", body_options.get("outer_radius")) if body_options.get("shape") is not None else wheel.rim
