@@ -3,7 +3,7 @@
 from dataclasses import replace
 
 from taucli.options.common import ANSWER, BODY_OPTIONS, GRAVITY, MOTION
-from taucli.options.table import FLAG, SEGMENT, Command, Option, Result
+from taucli.options.table import FLAG, LOAD as LOAD_SPEC, SEGMENT, Command, Option, Result
 
 MOTOR = "Motor"
 TRAIN = "Drive train"
@@ -64,6 +64,11 @@ COMMAND = Command(
         Option("load_inertia", "moment of inertia", "Moment of inertia of the rotating load about the output shaft (or give --shape "
                "with its dimensions, or --part).", panel=LOAD),
         *LOAD_BODY,
+        Option("load", LOAD_SPEC, 'One of several loads, each through its own train: "inertia=10kg*m^2 ratio=10 efficiency=0.9 torque=10N*m" '
+               "(ratio= motor speed over the load's, the books' a = 1/N; efficiency-back= where the load drives the motor; torque= at its shaft), "
+               'or a mass moved in a line, "mass=1000kg speed=1.5m/s force=9810N efficiency=0.85" (speed= at --motor-speed) or "mass=… radius=… ratio=…" '
+               "(a drum at its shaft). Repeatable; instead of --ratio, --efficiency and the single load's options.",
+               panel=LOAD, repeatable=True, metavar='"inertia=… ratio=… efficiency=… torque=…"'),
         Option("load_mass", "mass", "A mass moved in a straight line (a table, a belt's load, a hoisted mass), with --drum-radius or "
                "--lead, e.g. 250kg.", panel=LOAD),
         Option("drum_radius", "length", "Radius of the drum, pulley, sprocket or pinion that moves the mass (belt, hoist, rack and "
@@ -79,6 +84,8 @@ COMMAND = Command(
         Option("mu", "dimensionless", "Friction coefficient of the mass on its guides: μ·m·g·cos θ against the motion.",
                sign="nonnegative", panel=LOAD),
         GRAVITY,
+        Option("motor_speed", "angular velocity", "The motor's running speed: the speed at which a --load's speed= is given, and the steady "
+               "power there (power_run), e.g. 1420rpm.", panel=MOTION),
         Option("until_omega", "angular velocity", "Motor speed to reach from rest (a move's top speed), e.g. 3000rpm.", panel=MOTION),
         Option("speed", "velocity", "Speed of the moving mass to reach from rest (a move's top speed), instead of --until-omega, "
                "e.g. 15m/min.", panel=MOTION),
@@ -100,7 +107,7 @@ COMMAND = Command(
     results=(
         Result("ratio_total", "", "overall ratio, N₁ × N₂ × ⋯", needs=("ratio+ratio",), example="{ratio} 5 {ratio} 3"),
         Result("linear_inertia", "kg*m**2", "moving mass's inertia at its shaft…", needs=A_MASS),
-        Result("reflected_inertia", "kg*m**2", "load inertia at the motor, J_g + J/N²"),
+        Result("reflected_inertia", "kg*m**2", "load inertia at the motor…"),
         Result("total_inertia", "kg*m**2", "inertia at the motor, rotor and load"),
         Result("inertia_ratio", "", "inertia ratio, load over rotor"),
         Result("ratio_optimal", "", "ratio matching load to rotor, √(J/J_m)"),
@@ -133,7 +140,7 @@ COMMAND = Command(
         Result("power_peak", "W", "peak power the motor gives"),
         Result("power_regen", "W", "peak power the load gives back", needs=A_MOVE),
         Result("power_mean", "W", "mean motor power (net) over the cycle", needs=A_MOVE),
-        Result("power_run", "W", "motor power at the top speed, running", needs=A_MOVE),
+        Result("power_run", "W", "motor power…", needs=(*A_MOVE, "motor_speed")),
         Result("energy_regen", "J", "energy the load gives back per cycle (braking)", needs=A_MOVE),
         Result("power_resistor", "W", "mean power of a braking resistor that takes it, E/t_cycle", needs=A_MOVE),
         Result("rms_to_rated", "", "RMS torque (or power) over the rated one", needs=(*(f"{way}+rated_torque" for way in A_MOVE), "segment+rated_torque", "segment+rated_power")),

@@ -45,6 +45,8 @@ SEGMENT = "segment"  # "time=… torque=…|power=… [rest=yes]": a segment of 
 NOT_QUANTITIES = NOT_QUANTITIES | {SEGMENT}
 PHASE = "phase"  # "[coast] alpha=…|torque=… time=…|angle=…|until-omega=…": one phase of a spin-down run, repeatable, in order
 NOT_QUANTITIES = NOT_QUANTITIES | {PHASE}
+LOAD = "load"  # "inertia=… | mass=… radius=…|speed=…, ratio=… efficiency=… [efficiency-back=…] torque=… force=…": one of several loads a motor drives (drive), repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {LOAD}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {
