@@ -1,14 +1,16 @@
 """drive's --load: "inertia=… ratio=… efficiency=… torque=…" (or a mass, "mass=… radius=…|speed=…
-force=…"), one of several loads a motor drives, each through its own train; read as every spec is
-(taucli.answering.specs) into a taucli.scenes.drive.loads.Load.
+force=…"), one of several loads a motor drives, each through its own train; and --motor-curve,
+"tmax=… slip-max=… sync=…", an induction motor's curve. Read as every spec is
+(taucli.answering.specs) into a taucli.scenes.drive.loads.Load and a taucli.scenes.drive.curve.Kloss.
 """
 
 from __future__ import annotations
 
-from taucli.answering.reading import Inputs
+from taucli.answering.reading import Inputs, word
 from taucli.answering.specs import _read_fields, _spec_fields, _specs
 from taucli.core.errors import InputError
 from taucli.options.table import Option
+from taucli.scenes.drive.curve import Kloss
 from taucli.scenes.drive.loads import Load
 
 LOAD_FIELDS = {  # key: (kind, sign)
@@ -52,3 +54,22 @@ def loads(option: Option, given, inputs: Inputs, stdin) -> tuple:
         values = _read_fields(fields, LOAD_FIELDS, source, f"load{number}", inputs, option.name, number - 1)
         found.append(Load(source, **values))
     return tuple(found)
+
+
+CURVE_FIELDS = {"tmax": ("torque", "positive"), "slip_max": ("dimensionless", "positive"), "sync": ("angular velocity", "positive")}
+CURVE_EXAMPLE = "{motor_curve} 'tmax=400N*m slip-max=0.2 sync=1500rpm'"
+
+
+def motor_curve(option: Option, given, inputs: Inputs, stdin) -> Kloss:
+    """tmax= (the breakdown torque), slip-max= (the slip where it falls), sync= (the synchronous speed): all three."""
+    source = "{" + option.name + "}"
+    if isinstance(given, (list, tuple)) and len(given) == 1:  # --find puts its trial key into the one spec as into a repeated one's
+        given = given[0]
+    spec = word(option, given)
+    _, fields = _spec_fields(spec, source, CURVE_FIELDS, CURVE_EXAMPLE, shape_word=False)
+    missing = [key.replace("_", "-") + "=" for key in CURVE_FIELDS if key not in fields]
+    if missing:
+        raise InputError(source, f"needs {', '.join(missing)}: Kloss's curve is the breakdown torque, the slip where it falls and the synchronous speed",
+                         example=CURVE_EXAMPLE, got=repr(spec))
+    values = _read_fields(fields, CURVE_FIELDS, source, option.name, inputs, option.name, 0)
+    return Kloss(source, values["tmax"], values["slip_max"], values["sync"])

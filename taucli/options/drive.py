@@ -3,7 +3,7 @@
 from dataclasses import replace
 
 from taucli.options.common import ANSWER, BODY_OPTIONS, GRAVITY, MOTION
-from taucli.options.table import FLAG, LOAD as LOAD_SPEC, SEGMENT, Command, Option, Result
+from taucli.options.table import FLAG, LOAD as LOAD_SPEC, MOTOR_CURVE, SEGMENT, Command, Option, Result
 
 MOTOR = "Motor"
 TRAIN = "Drive train"
@@ -42,6 +42,10 @@ COMMAND = Command(
         Option("no_load_speed", "angular velocity", "Speed at which that line reaches zero torque, e.g. 3000rpm.", panel=MOTOR),
         Option("motor_torque", "torque", "A motor that gives a constant torque from rest (instead of the line), e.g. '1.5N*m'; "
                "0 for a load that runs down freely through the gears.", sign="nonnegative", panel=MOTOR),
+        Option("motor_curve", MOTOR_CURVE, "An induction motor's torque–slip curve by Kloss's formula, T = 2T_max/(s/s_m + s_m/s), s = 1 − ω/ω_s: "
+               "\"tmax=400N*m slip-max=0.2 sync=1500rpm\" (the breakdown torque, the slip where it falls, the synchronous speed); with "
+               "--until-omega the run-up's time t_accel and the energy the rotor dissipates, energy_accel.", panel=MOTOR,
+               metavar='"tmax=… slip-max=… sync=…"'),
         Option("rated_torque", "torque", "The motor's rated (continuous) torque, held against the RMS torque of a move.", panel=MOTOR),
         Option("rated_power", "power", "The motor's rated (continuous) power, held against the RMS power of a duty cycle (--segment by power=).", panel=MOTOR),
         Option("segment", SEGMENT, 'A segment of a duty cycle: "time=10min power=100kW" or "time=… torque=…", rest=yes where the motor stands '
@@ -86,6 +90,8 @@ COMMAND = Command(
         GRAVITY,
         Option("motor_speed", "angular velocity", "The motor's running speed: the speed at which a --load's speed= is given, and the steady "
                "power there (power_run), e.g. 1420rpm.", panel=MOTION),
+        Option("omega0", "angular velocity", "The motor's speed where a run-up on --motor-curve starts (default 0, rest), e.g. 500rpm.",
+               sign="nonnegative", default="0rpm", panel=MOTION),
         Option("until_omega", "angular velocity", "Motor speed to reach from rest (a move's top speed), e.g. 3000rpm.", panel=MOTION),
         Option("speed", "velocity", "Speed of the moving mass to reach from rest (a move's top speed), instead of --until-omega, "
                "e.g. 15m/min.", panel=MOTION),
@@ -120,7 +126,9 @@ COMMAND = Command(
         Result("revs_accel", "rev", "motor's revolutions while accelerating"),
         Result("omega_steady", "rad/s", "speed where the line meets the load", needs=("stall_torque+no_load_speed",)),
         Result("time_constant", "s", "mechanical time constant…", needs=("stall_torque+no_load_speed",)),
-        Result("alpha0", "rad/s**2", "motor's angular acceleration from rest", needs=("stall_torque+no_load_speed", "motor_torque")),
+        Result("alpha0", "rad/s**2", "motor's angular acceleration from rest", needs=("stall_torque+no_load_speed", "motor_torque", "motor_curve")),
+        Result("energy_accel", "J", "energy dissipated in the rotor in the run-up, ∫ s T ω_s dt", needs=("motor_curve+until_omega",),
+               example="{motor_curve} 'tmax=2N*m slip-max=0.2 sync=3600rpm' {until_omega} 3000rpm"),
         Result("KE", "J", "kinetic energy reached, motor and load"),
         Result("work_motor", "J", "work of the motor in the run-up"),
         Result("work_load", "J", "work against the load in the run-up"),

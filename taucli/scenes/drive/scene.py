@@ -17,6 +17,7 @@ from taucli.quantities.kinds import check_bounds, out_of_bounds
 from taucli.options.drive import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.drive import curve as drive_curve
 from taucli.scenes.drive import loads as drive_loads
 from taucli.scenes.drive import train as drive_train
 from taucli.scenes.drive.duty import duty_cycle
@@ -68,6 +69,8 @@ def drive(
     rest_factor: float | None = None,
     load: Sequence = (),
     motor_speed: float | None = None,
+    motor_curve=None,
+    omega0: float | None = None,
     **body_options,
 ) -> Report:
     """``taucli drive``: the motor (--motor-inertia, its law), the train (--ratio, --efficiency),
@@ -112,7 +115,7 @@ def drive(
             raise Unused("g", "is used only for gravity on the moving mass ({incline}, {mu}), or to read a weight given for a mass")
         force, gravity_force, force_steps = _force(load_mass, load_force, incline or 0.0, mu, lever, assumed.gravity(g) if gravity_needed else None)
         torque = (load_torque or 0.0) + (force * lever if force else 0.0)
-        if not any((moment, linear, torque, gear_inertia, load_mass is not None)):
+        if not any((moment, linear, torque, gear_inertia, load_mass is not None, motor_curve is not None)):
             raise InputError("load_inertia", "or another load is required: a rotating load ({load_inertia}, {shape}, {part}), a mass "
                              "({load_mass} with {drum_radius} or {lead}), {load_torque} or {load_force}",
                              example="{load_inertia} '0.05kg*m^2'")
@@ -130,8 +133,27 @@ def drive(
     rate_name = "alpha" if alpha is not None else "accel"
     angle = _angle(distance, move_angle, train)
     law = _law(stall_torque, no_load_speed, motor_torque)
-    regime, trajectory = "reflected to the motor", None
-    if profile:
+    regime, trajectory, method = "reflected to the motor", None, "closed form"
+    if omega0 is not None and motor_curve is None:
+        raise InputError("omega0", "goes with {motor_curve}: the speed where a run-up on the motor's curve starts",
+                         example="{motor_curve} 'tmax=400N*m slip-max=0.2 sync=1500rpm' {omega0} 500rpm {until_omega} 1400rpm")
+    if motor_curve is not None:
+        others = [name for name, value in (("stall_torque", stall_torque), ("no_load_speed", no_load_speed), ("motor_torque", motor_torque),
+                                           ("in_time", in_time), ("alpha", alpha), ("accel", accel), ("accel_time", accel_time),
+                                           ("distance", distance), ("move_angle", move_angle), ("energy", energy or None)) if value is not None]
+        if others:
+            raise InputError(others[0], "conflicts with {motor_curve}: the motor's curve sets how fast it gets there"
+                             + ("; a move profile's ramps are given, not the motor's" if others[0] in ("accel_time", "distance", "move_angle") else "")
+                             + ("; its energy is energy_accel, the rotor's loss" if others[0] == "energy" else ""))
+        train = _rotor(train, notes, "the run-up on the motor's curve")
+        drive_curve.run_up(train, motor_curve, omega0 or 0.0, top, results, notes, steps)
+        if omega0:
+            notes.append(f"alpha0: at ω₀ = {fmt(omega0)} rad/s, where the run-up starts")
+        regime = "run-up on the induction motor's torque–slip curve (Kloss)"
+        method = drive_curve.method(train)
+        if motor_speed is not None:
+            drive_loads.put_power(train, motor_speed, results, steps)
+    elif profile:
         if motor_speed is not None:
             raise InputError("motor_speed", "conflicts with a move profile: the move's top speed is the speed it runs at", example="{speed} 15m/min")
         angle_name = "distance" if distance is not None else "move_angle"
@@ -170,9 +192,11 @@ def drive(
                      "the energy is to a speed reached from rest ({until_omega} or {speed}, with {in_time}, {alpha} or the motor's law)"))
     if load:
         model = f"{len(train.branches)} load{'s' if len(train.branches) != 1 else ''}, each through its own train: {regime}"
+    elif motor_curve is not None and not any((moment, load_mass is not None, torque, gear_inertia)):
+        model = f"the motor alone: {regime}"
     else:
         model = f"{_load_words(moment, load_mass, screw, torque)} through {_train_words(stages, eta)}: {regime}"
-    report = Report("drive", model, "closed form", results, steps, notes)
+    report = Report("drive", model, method, results, steps, notes)
     if trajectory is not None:
         report.trajectory = lambda: trajectory
     if tables:
