@@ -170,7 +170,7 @@ def drive(
             drive_loads.put_power(train, motor_speed, results, steps)
         if law is not None and load:
             raise InputError("load", "with the motor's torque–speed line or a constant {motor_torque} is not built: several loads take the run-up at a "
-                             "constant α ({in_time} or {alpha})", example="{until_omega} 1420rpm {in_time} 2s")
+                             "constant α ({in_time} or {alpha}) or on an induction motor's {motor_curve}", example="{until_omega} 1420rpm {in_time} 2s")
         if law is not None:
             for name, value in (("in_time", in_time), ("alpha", alpha), ("accel", accel)):
                 if value is not None:

@@ -152,6 +152,8 @@ def test_speed_needs_the_motor_speed_and_the_line_law_waits(taucli):
     assert_usage_error(taucli("drive", "--load", "mass=3kg speed=1m/s"), "--motor-speed", "speed=")
     assert_usage_error(taucli("drive", "--load", "inertia=1kg*m^2", "--motor-speed", "1000rpm", "--accel-time", "1s", "--until-omega", "100rpm"),
                        "--motor-speed", "move")
+    assert_usage_error(taucli("drive", "--load", "inertia=1kg*m^2", "--stall-torque", "2N*m", "--no-load-speed", "100rpm", "--until-omega", "50rpm"),
+                       "--load", "not built", "--motor-curve", "(e.g. ")
 
 
 def test_find_a_ratio_inside_a_load():
