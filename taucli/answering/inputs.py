@@ -16,7 +16,7 @@ from taucli.quantities.formula import mentions_time
 from taucli.quantities.kinds import article
 from taucli.answering.reading import Inputs, Origin, word
 from taucli.writing.report import Value
-from taucli.options.table import BAND, BRAKE, CALIPER, CENTRIFUGAL, CHOICE, COUNT, COUPLE, CURVE, FACE, FILE, FLAG, PART, PARTICLE, PHASE, PULL, REVOLVING, ROTOR, SEGMENT, SIDE, TEXT, VECTOR, Command, Option
+from taucli.options.table import BAND, BRAKE, CALIPER, CENTRIFUGAL, CHOICE, COUNT, COUPLE, CURVE, FACE, FILE, FLAG, LOAD, MOTOR_CURVE, PART, PARTICLE, PHASE, PULL, REVOLVING, ROTOR, SEGMENT, SIDE, TEXT, VECTOR, Command, Option
 
 
 def read(command: Command, given: Mapping[str, object], *, stdin: TextIO | None = None) -> tuple[dict[str, object], Inputs]:
@@ -209,7 +209,7 @@ READERS.update({kind: _repeated for kind in units.KINDS})
 READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec("particles"), COUPLE: _spec("couples"), BRAKE: _spec("brakes", "contact_specs"),
                 FACE: _spec("faces", "contact_specs"), BAND: _spec("bands", "contact_specs"), CENTRIFUGAL: _spec("centrifugals", "contact_specs"),
                 CALIPER: _spec("calipers", "contact_specs")})
-READERS.update({SIDE: _spec("sides"), PULL: _spec("pulls"), ROTOR: _spec("rotors")})
+READERS.update({SIDE: _spec("sides"), PULL: _spec("pulls"), ROTOR: _spec("rotors"), LOAD: _spec("loads", "drive_loads"), MOTOR_CURVE: _spec("motor_curve", "drive_loads")})
 
 
 def _revolving(option: Option, given, inputs: Inputs, stdin):

@@ -26,9 +26,10 @@ from taucli.core.errors import InputError, did_you_mean
 from taucli.answering.contact_specs import BAND_FIELDS, BRAKE_FIELDS, CALIPER_FIELDS, CENTRIFUGAL_FIELDS, FACE_FIELDS
 from taucli.answering.specs import with_key, COUPLE_FIELDS, PARTICLE_FIELDS, PART_FIELDS, ROTOR_FIELDS
 from taucli.answering.duty import SEGMENT_FIELDS
+from taucli.answering.drive_loads import CURVE_FIELDS, LOAD_FIELDS
 from taucli.answering.phase_spec import PHASE_FIELDS
 from taucli.answering.revolving import REVOLVING_FIELDS
-from taucli.options.table import BAND, BRAKE, CALIPER, CENTRIFUGAL, COUPLE, FACE, PART, PARTICLE, PHASE, REVOLVING, ROTOR, SEGMENT, VECTOR, Command, Option
+from taucli.options.table import BAND, BRAKE, CALIPER, CENTRIFUGAL, COUPLE, FACE, LOAD, MOTOR_CURVE, PART, PARTICLE, PHASE, REVOLVING, ROTOR, SEGMENT, VECTOR, Command, Option
 from taucli.quantities.units import KINDS
 
 # The keys of each spec that --find may solve for: (kind, sign). Not a face's surfaces= nor a
@@ -46,6 +47,8 @@ SPEC_KEYS: dict[str, dict[str, tuple[str, str]]] = {
     CALIPER: {key: value for key, value in CALIPER_FIELDS.items() if key != "surfaces"},
     PHASE: PHASE_FIELDS,
     SEGMENT: SEGMENT_FIELDS,
+    LOAD: LOAD_FIELDS,
+    MOTOR_CURVE: CURVE_FIELDS,
 }
 
 # Options read as vectors that a scene also takes as one signed size (a force in the plane).

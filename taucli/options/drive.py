@@ -3,7 +3,7 @@
 from dataclasses import replace
 
 from taucli.options.common import ANSWER, BODY_OPTIONS, GRAVITY, MOTION
-from taucli.options.table import FLAG, SEGMENT, Command, Option, Result
+from taucli.options.table import FLAG, LOAD as LOAD_SPEC, MOTOR_CURVE, SEGMENT, Command, Option, Result
 
 MOTOR = "Motor"
 TRAIN = "Drive train"
@@ -42,6 +42,10 @@ COMMAND = Command(
         Option("no_load_speed", "angular velocity", "Speed at which that line reaches zero torque, e.g. 3000rpm.", panel=MOTOR),
         Option("motor_torque", "torque", "A motor that gives a constant torque from rest (instead of the line), e.g. '1.5N*m'; "
                "0 for a load that runs down freely through the gears.", sign="nonnegative", panel=MOTOR),
+        Option("motor_curve", MOTOR_CURVE, "An induction motor's torque–slip curve by Kloss's formula, T = 2T_max/(s/s_m + s_m/s), s = 1 − ω/ω_s: "
+               "\"tmax=400N*m slip-max=0.2 sync=1500rpm\" (the breakdown torque, the slip where it falls, the synchronous speed); with "
+               "--until-omega the run-up's time t_accel and the energy the rotor dissipates, energy_accel.", panel=MOTOR,
+               metavar='"tmax=… slip-max=… sync=…"'),
         Option("rated_torque", "torque", "The motor's rated (continuous) torque, held against the RMS torque of a move.", panel=MOTOR),
         Option("rated_power", "power", "The motor's rated (continuous) power, held against the RMS power of a duty cycle (--segment by power=).", panel=MOTOR),
         Option("segment", SEGMENT, 'A segment of a duty cycle: "time=10min power=100kW" or "time=… torque=…", rest=yes where the motor stands '
@@ -64,6 +68,11 @@ COMMAND = Command(
         Option("load_inertia", "moment of inertia", "Moment of inertia of the rotating load about the output shaft (or give --shape "
                "with its dimensions, or --part).", panel=LOAD),
         *LOAD_BODY,
+        Option("load", LOAD_SPEC, 'One of several loads, each through its own train: "inertia=10kg*m^2 ratio=10 efficiency=0.9 torque=10N*m" '
+               "(ratio= motor speed over the load's, the books' a = 1/N; efficiency-back= where the load drives the motor; torque= at its shaft), "
+               'or a mass moved in a line, "mass=1000kg speed=1.5m/s force=9810N efficiency=0.85" (speed= at --motor-speed) or "mass=… radius=… ratio=…" '
+               "(a drum at its shaft). Repeatable; instead of --ratio, --efficiency and the single load's options.",
+               panel=LOAD, repeatable=True, metavar='"inertia=… ratio=… efficiency=… torque=…"'),
         Option("load_mass", "mass", "A mass moved in a straight line (a table, a belt's load, a hoisted mass), with --drum-radius or "
                "--lead, e.g. 250kg.", panel=LOAD),
         Option("drum_radius", "length", "Radius of the drum, pulley, sprocket or pinion that moves the mass (belt, hoist, rack and "
@@ -79,6 +88,10 @@ COMMAND = Command(
         Option("mu", "dimensionless", "Friction coefficient of the mass on its guides: μ·m·g·cos θ against the motion.",
                sign="nonnegative", panel=LOAD),
         GRAVITY,
+        Option("motor_speed", "angular velocity", "The motor's running speed: the speed at which a --load's speed= is given, and the steady "
+               "power there (power_run), e.g. 1420rpm.", panel=MOTION),
+        Option("omega0", "angular velocity", "The motor's speed where a run-up on --motor-curve starts (default 0, rest), e.g. 500rpm.",
+               sign="nonnegative", default="0rpm", panel=MOTION),
         Option("until_omega", "angular velocity", "Motor speed to reach from rest (a move's top speed), e.g. 3000rpm.", panel=MOTION),
         Option("speed", "velocity", "Speed of the moving mass to reach from rest (a move's top speed), instead of --until-omega, "
                "e.g. 15m/min.", panel=MOTION),
@@ -100,7 +113,7 @@ COMMAND = Command(
     results=(
         Result("ratio_total", "", "overall ratio, N₁ × N₂ × ⋯", needs=("ratio+ratio",), example="{ratio} 5 {ratio} 3"),
         Result("linear_inertia", "kg*m**2", "moving mass's inertia at its shaft…", needs=A_MASS),
-        Result("reflected_inertia", "kg*m**2", "load inertia at the motor, J_g + J/N²"),
+        Result("reflected_inertia", "kg*m**2", "load inertia at the motor…"),
         Result("total_inertia", "kg*m**2", "inertia at the motor, rotor and load"),
         Result("inertia_ratio", "", "inertia ratio, load over rotor"),
         Result("ratio_optimal", "", "ratio matching load to rotor, √(J/J_m)"),
@@ -113,7 +126,9 @@ COMMAND = Command(
         Result("revs_accel", "rev", "motor's revolutions while accelerating"),
         Result("omega_steady", "rad/s", "speed where the line meets the load", needs=("stall_torque+no_load_speed",)),
         Result("time_constant", "s", "mechanical time constant…", needs=("stall_torque+no_load_speed",)),
-        Result("alpha0", "rad/s**2", "motor's angular acceleration from rest", needs=("stall_torque+no_load_speed", "motor_torque")),
+        Result("alpha0", "rad/s**2", "motor's angular acceleration from rest", needs=("stall_torque+no_load_speed", "motor_torque", "motor_curve")),
+        Result("energy_accel", "J", "energy dissipated in the rotor in the run-up, ∫ s T ω_s dt", needs=("motor_curve+until_omega",),
+               example="{motor_curve} 'tmax=2N*m slip-max=0.2 sync=3600rpm' {until_omega} 3000rpm"),
         Result("KE", "J", "kinetic energy reached, motor and load"),
         Result("work_motor", "J", "work of the motor in the run-up"),
         Result("work_load", "J", "work against the load in the run-up"),
@@ -133,7 +148,7 @@ COMMAND = Command(
         Result("power_peak", "W", "peak power the motor gives"),
         Result("power_regen", "W", "peak power the load gives back", needs=A_MOVE),
         Result("power_mean", "W", "mean motor power (net) over the cycle", needs=A_MOVE),
-        Result("power_run", "W", "motor power at the top speed, running", needs=A_MOVE),
+        Result("power_run", "W", "motor power…", needs=(*A_MOVE, "motor_speed")),
         Result("energy_regen", "J", "energy the load gives back per cycle (braking)", needs=A_MOVE),
         Result("power_resistor", "W", "mean power of a braking resistor that takes it, E/t_cycle", needs=A_MOVE),
         Result("rms_to_rated", "", "RMS torque (or power) over the rated one", needs=(*(f"{way}+rated_torque" for way in A_MOVE), "segment+rated_torque", "segment+rated_power")),

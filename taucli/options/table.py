@@ -49,6 +49,10 @@ PHASE = "phase"  # "[coast] alpha=…|torque=… time=…|angle=…|until-omega=
 NOT_QUANTITIES = NOT_QUANTITIES | {PHASE}
 CURVE = "curve"  # a turning-moment diagram T(θ): a CSV file of crank angle and torque, or a formula of theta (flywheel)
 NOT_QUANTITIES = NOT_QUANTITIES | {CURVE}
+LOAD = "load"  # "inertia=… | mass=… radius=…|speed=…, ratio=… efficiency=… [efficiency-back=…] torque=… force=…": one of several loads a motor drives (drive), repeatable
+NOT_QUANTITIES = NOT_QUANTITIES | {LOAD}
+MOTOR_CURVE = "motor_curve"  # "tmax=… slip-max=… sync=…": an induction motor's torque–slip curve by Kloss's formula (drive)
+NOT_QUANTITIES = NOT_QUANTITIES | {MOTOR_CURVE}
 
 # The metavar of each quantity kind, shown in help and read by the completion scripts.
 METAVARS = {

@@ -16,7 +16,8 @@ from conftest import example_keys
 from taucli.front import cli
 from taucli.options import SCENES, table
 
-SPEC_KINDS = {table.PART, table.PARTICLE, table.COUPLE, table.BRAKE, table.FACE, table.BAND, table.CALIPER, table.CENTRIFUGAL, table.SIDE, table.PULL, table.ROTOR, table.REVOLVING}
+SPEC_KINDS = {table.PART, table.PARTICLE, table.COUPLE, table.BRAKE, table.FACE, table.BAND, table.CALIPER, table.CENTRIFUGAL, table.SIDE, table.PULL, table.ROTOR, table.REVOLVING,
+              table.LOAD, table.MOTOR_CURVE}
 
 
 # (scene, option, its value with {u} where "value ± σ" goes, value, σ, unit, keywords changed from the scene's example (None: left out))
@@ -50,6 +51,22 @@ CASES = [
     ("drive", "ratio", ["{u}", "3"], 10.0, 1e-3, "", {}),
     ("flywheel", "part", "ring mass={u} radius=0.6m", 100.0, 1e-3, "kg", {"rim_radius": None, "density": None, "energy_swing": None}),
     ("balance", "mass", "mass={u} radius=0.3m angle=45deg", 2.0, 1e-4, "kg", {}),
+    *(("drive", "load", spec, x, sigma, unit, {"ratio": None, "load_inertia": None, **extra}) for spec, x, sigma, unit, extra in (
+        ("inertia={u} ratio=5 efficiency=0.9 torque=2N*m", 0.5, 1e-4, "kg*m^2", {}),
+        ("inertia=0.5kg*m^2 ratio={u} torque=2N*m", 5.0, 1e-3, "", {}),
+        ("inertia=0.5kg*m^2 ratio=5 efficiency={u} torque=2N*m", 0.9, 1e-4, "", {}),
+        ("inertia=0.5kg*m^2 ratio=5 efficiency-back={u} torque=-500N*m", 0.6, 1e-4, "", {}),
+        ("inertia=0.5kg*m^2 ratio=5 torque={u}", 2.0, 1e-4, "N*m", {}),
+        ("mass={u} radius=0.1m ratio=5", 20.0, 1e-3, "kg", {}),
+        ("mass=20kg radius={u} ratio=5", 0.1, 1e-5, "m", {}),
+        ("mass=20kg radius=0.1m ratio=5 force={u}", 50.0, 1e-3, "N", {}),
+        ("mass=20kg speed={u} force=50N", 1.5, 1e-4, "m/s", {"motor_speed": "1420rpm"}),
+    )),
+    *(("drive", "motor_curve", spec, x, sigma, unit, {"in_time": None}) for spec, x, sigma, unit in (
+        ("tmax={u} slip-max=0.2 sync=3600rpm", 2.0, 1e-4, "N*m"),
+        ("tmax=2N*m slip-max={u} sync=3600rpm", 0.2, 1e-5, ""),
+        ("tmax=2N*m slip-max=0.2 sync={u}", 377.0, 1e-3, "rad/s"),
+    )),
     ("torque", "lever", ["2m", "{u}"], 1.0, 1e-4, "m", {"r": None, "force": ["10N", "5N"], "angle": ["90deg", "90deg"]}),
 ]
 
@@ -64,6 +81,17 @@ def test_every_spec_option_of_every_scene_is_covered():
     covered = {(scene, option) for scene, option, *_ in CASES}
     specs = {(name, option.name) for name, command in SCENES.items() for option in command.options if option.kind in SPEC_KINDS}
     assert specs <= covered, specs - covered
+
+
+@pytest.mark.parametrize("option", ["load", "motor_curve"])
+def test_every_key_of_drives_load_and_motor_curve_is_covered(option):
+    """Each key of --load and --motor-curve moves the results it should (one case a key), not only the option as a whole."""
+    from taucli.answering.drive_loads import CURVE_FIELDS, LOAD_FIELDS
+
+    covered = {key.split("=")[0].split()[-1].replace("-", "_") for scene, name, value, *_ in CASES if name == option
+               for key in value.split() if "{u}" in key}
+    fields = LOAD_FIELDS if option == "load" else CURVE_FIELDS
+    assert covered == set(fields), set(fields) ^ covered
 
 
 @pytest.mark.parametrize(("scene", "option", "value", "x", "sigma", "unit", "extra"), CASES, ids=[f"{case[0]}-{case[1]}-{i}" for i, case in enumerate(CASES)])

@@ -32,6 +32,8 @@ TWICE = {
     table.ROTOR: "inertia=0.3kg*m^2 inertia=1kg*m^2 spin=5000rpm sense=cw-from-right",
     table.REVOLVING: "mass=2kg mass=3kg radius=0.3m angle=45deg",
     table.SEGMENT: "time=1min time=2min torque=1N*m",
+    table.LOAD: "inertia=1kg*m^2 inertia=2kg*m^2 ratio=5",
+    table.MOTOR_CURVE: "tmax=400N*m tmax=300N*m slip-max=0.2 sync=1500rpm",
 }
 SPECS = [(scene, option) for scene, command in sorted(SCENES.items()) for option in command.options if option.kind in TWICE]
 

@@ -321,8 +321,7 @@ def uniform(train: Train, alpha: float, target: float | None, energy: bool, resu
     results.put("theta_accel", theta)
     results.put("revs_accel", theta / TWO_PI)
     if energy:
-        output = train.load * target * target / (2 * train.ratio * train.ratio) + train.torque * theta / train.ratio
-        loss = train.train_loss(output, train.demand(alpha) >= 0) + train.motor_friction * theta
+        loss = train.run_loss(alpha, target, theta)
         put_energy(results, train, target, theta, torque * theta, loss)
     results.put("power_peak", max(torque * target, 0.0))
     steps.append(Step("Peak power, at the end of the run-up", "P = τω₁", f"{quantity_text(torque, 'N*m')} × {quantity_text(target, 'rad/s')}",

@@ -126,7 +126,7 @@ def solve_profile(train: Train, move: Move, limits: dict, results: Results, note
     results.put("power_peak", max(0.0, *powers))
     results.put("power_regen", max(0.0, -min(powers)))
     results.put("power_mean", power_mean)
-    results.put("power_run", parts[1].torque * move.top)
+    results.put("power_run", parts[1].torque * move.top, " at the top speed, running")
     # each phase's torque is constant and ω ramps (mean ω/2) or holds: what flows back where τ < 0
     regen = move.top * math.fsum((max(-parts[0].torque, 0.0) * move.accel / 2, max(-parts[1].torque, 0.0) * move.run,
                                   max(-parts[2].torque, 0.0) * move.decel / 2))

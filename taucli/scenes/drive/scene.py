@@ -17,6 +17,8 @@ from taucli.quantities.kinds import check_bounds, out_of_bounds
 from taucli.options.drive import COMMAND as TABLE
 from taucli.writing.report import Report, Step, Table, fmt, quantity_text, term
 from taucli.scenes.assumed import Assumed
+from taucli.scenes.drive import curve as drive_curve
+from taucli.scenes.drive import loads as drive_loads
 from taucli.scenes.drive import train as drive_train
 from taucli.scenes.drive.duty import duty_cycle
 from taucli.scenes.drive.motor import Motor, run_up, uniform
@@ -65,6 +67,10 @@ def drive(
     rated_power: float | None = None,
     segment: Sequence = (),
     rest_factor: float | None = None,
+    load: Sequence = (),
+    motor_speed: float | None = None,
+    motor_curve=None,
+    omega0: float | None = None,
     **body_options,
 ) -> Report:
     """``taucli drive``: the motor (--motor-inertia, its law), the train (--ratio, --efficiency),
@@ -83,43 +89,73 @@ def drive(
         if value is not None:
             raise InputError(name, "goes with {segment}: a duty cycle's segments", example="{segment} 'time=10min power=100kW' {segment} 'time=5min power=0'")
     results, notes, steps, assumed = Results(TABLE), [], [], Assumed()
-    stages = tuple(ratio or ())
-    n = _ratio(stages)
-    eta = 1.0 if efficiency is None else efficiency
-    if eta > 1:
-        raise InputError("efficiency", "expected a number above 0 and at most 1 (the whole train's, motor to load)", example="{efficiency} 0.9",
-                         got=fmt(eta))
-    if efficiency_back is not None and efficiency_back > 1:
-        raise InputError("efficiency_back", "expected a number above 0 and at most 1 (the train's where the load drives the motor)",
-                         example="{efficiency_back} 0.6", got=fmt(efficiency_back))
-    moment, body_steps, parts = _load_body(load_inertia, body_options, notes)
-    lever, screw = _lever(drum_radius, lead)
-    linear = _linear(load_mass, lever, screw, steps)
-    gravity_needed = load_mass is not None and (bool(incline) or bool(mu))
-    if g is not None and not gravity_needed:
-        raise Unused("g", "is used only for gravity on the moving mass ({incline}, {mu}), or to read a weight given for a mass")
-    force, gravity_force, force_steps = _force(load_mass, load_force, incline or 0.0, mu, lever, assumed.gravity(g) if gravity_needed else None)
-    torque = (load_torque or 0.0) + (force * lever if force else 0.0)
-    if not any((moment, linear, torque, gear_inertia, load_mass is not None)):
-        raise InputError("load_inertia", "or another load is required: a rotating load ({load_inertia}, {shape}, {part}), a mass "
-                         "({load_mass} with {drum_radius} or {lead}), {load_torque} or {load_force}",
-                         example="{load_inertia} '0.05kg*m^2'")
-    train = Train(n, eta, motor_inertia, gear_inertia or 0.0, (moment or 0.0) + linear, torque,
-                  gravity_force * lever if gravity_force else 0.0, lever, efficiency_back, motor_friction or 0.0)
-    steps[:0] = list(body_steps)
-    _reflect(train, stages, moment or 0.0, linear, screw, results, notes, steps)
-    steps.extend(force_steps)
     profile = any(value is not None for value in (accel_time, run_time, decel_time, dwell_time, distance, move_angle))
-    loaded = profile or any(value is not None for value in (load_torque, load_force, mu, motor_friction)) or bool(incline)
-    _load_torque(train, load_torque, force, screw, loaded, results, steps)
+    if load:
+        single = {"ratio": ratio, "efficiency": efficiency, "efficiency_back": efficiency_back, "load_inertia": load_inertia, "load_mass": load_mass,
+                  "drum_radius": drum_radius, "lead": lead, "load_torque": load_torque, "load_force": load_force, "incline": incline, "mu": mu, "g": g,
+                  "speed": speed, "accel": accel, "distance": distance, **body_options}
+        train = drive_loads.several(tuple(load), motor_inertia, gear_inertia, motor_friction, motor_speed, single, results, steps)
+        stages, eta, moment, screw, torque, parts = (), 1.0, None, False, train.torque, None
+        tables = {"loads": drive_loads.table(train)}
+    else:
+        stages = tuple(ratio or ())
+        n = _ratio(stages)
+        eta = 1.0 if efficiency is None else efficiency
+        if eta > 1:
+            raise InputError("efficiency", "expected a number above 0 and at most 1 (the whole train's, motor to load)", example="{efficiency} 0.9",
+                             got=fmt(eta))
+        if efficiency_back is not None and efficiency_back > 1:
+            raise InputError("efficiency_back", "expected a number above 0 and at most 1 (the train's where the load drives the motor)",
+                             example="{efficiency_back} 0.6", got=fmt(efficiency_back))
+        moment, body_steps, parts = _load_body(load_inertia, body_options, notes)
+        lever, screw = _lever(drum_radius, lead)
+        linear = _linear(load_mass, lever, screw, steps)
+        gravity_needed = load_mass is not None and (bool(incline) or bool(mu))
+        if g is not None and not gravity_needed:
+            raise Unused("g", "is used only for gravity on the moving mass ({incline}, {mu}), or to read a weight given for a mass")
+        force, gravity_force, force_steps = _force(load_mass, load_force, incline or 0.0, mu, lever, assumed.gravity(g) if gravity_needed else None)
+        torque = (load_torque or 0.0) + (force * lever if force else 0.0)
+        if not any((moment, linear, torque, gear_inertia, load_mass is not None, motor_curve is not None)):
+            raise InputError("load_inertia", "or another load is required: a rotating load ({load_inertia}, {shape}, {part}), a mass "
+                             "({load_mass} with {drum_radius} or {lead}), {load_torque} or {load_force}",
+                             example="{load_inertia} '0.05kg*m^2'")
+        train = Train(n, eta, motor_inertia, gear_inertia or 0.0, (moment or 0.0) + linear, torque,
+                      gravity_force * lever if gravity_force else 0.0, lever, efficiency_back, motor_friction or 0.0)
+        steps[:0] = list(body_steps)
+        _reflect(train, stages, moment or 0.0, linear, screw, results, notes, steps)
+        steps.extend(force_steps)
+        loaded = profile or any(value is not None for value in (load_torque, load_force, mu, motor_friction)) or bool(incline)
+        _load_torque(train, load_torque, force, screw, loaded, results, steps)
+        tables = {} if parts is None else {"parts": parts}
 
     top, top_words = _top(until_omega, speed, train)
     rate = _rate(alpha, accel, train)
     rate_name = "alpha" if alpha is not None else "accel"
     angle = _angle(distance, move_angle, train)
     law = _law(stall_torque, no_load_speed, motor_torque)
-    regime, trajectory = "reflected to the motor", None
-    if profile:
+    regime, trajectory, method = "reflected to the motor", None, "closed form"
+    if omega0 is not None and motor_curve is None:
+        raise InputError("omega0", "goes with {motor_curve}: the speed where a run-up on the motor's curve starts",
+                         example="{motor_curve} 'tmax=400N*m slip-max=0.2 sync=1500rpm' {omega0} 500rpm {until_omega} 1400rpm")
+    if motor_curve is not None:
+        others = [name for name, value in (("stall_torque", stall_torque), ("no_load_speed", no_load_speed), ("motor_torque", motor_torque),
+                                           ("in_time", in_time), ("alpha", alpha), ("accel", accel), ("accel_time", accel_time),
+                                           ("distance", distance), ("move_angle", move_angle), ("energy", energy or None)) if value is not None]
+        if others:
+            raise InputError(others[0], "conflicts with {motor_curve}: the motor's curve sets how fast it gets there"
+                             + ("; a move profile's ramps are given, not the motor's" if others[0] in ("accel_time", "distance", "move_angle") else "")
+                             + ("; its energy is energy_accel, the rotor's loss" if others[0] == "energy" else ""))
+        train = _rotor(train, notes, "the run-up on the motor's curve")
+        drive_curve.run_up(train, motor_curve, omega0 or 0.0, top, results, notes, steps)
+        if omega0:
+            notes.append(f"alpha0: at ω₀ = {fmt(omega0)} rad/s, where the run-up starts")
+        regime = "run-up on the induction motor's torque–slip curve (Kloss)"
+        method = drive_curve.method(train)
+        if motor_speed is not None:
+            drive_loads.put_power(train, motor_speed, results, steps)
+    elif profile:
+        if motor_speed is not None:
+            raise InputError("motor_speed", "conflicts with a move profile: the move's top speed is the speed it runs at", example="{speed} 15m/min")
         angle_name = "distance" if distance is not None else "move_angle"
         move = _move(top, (rate, rate_name), (angle, angle_name), in_time, accel_time, run_time, decel_time, dwell_time, notes, steps)
         train = _rotor(train, notes, "the torques of a move")
@@ -130,6 +166,11 @@ def drive(
             if value is not None:
                 raise InputError(name, "goes with a move profile: a cycle's RMS and peak torques are held against it",
                                  example="{accel_time} 0.1s {run_time} 1s {dwell_time} 0.3s")
+        if motor_speed is not None:
+            drive_loads.put_power(train, motor_speed, results, steps)
+        if law is not None and load:
+            raise InputError("load", "with the motor's torque–speed line or a constant {motor_torque} is not built: several loads take the run-up at a "
+                             "constant α ({in_time} or {alpha}) or on an induction motor's {motor_curve}", example="{until_omega} 1420rpm {in_time} 2s")
         if law is not None:
             for name, value in (("in_time", in_time), ("alpha", alpha), ("accel", accel)):
                 if value is not None:
@@ -149,12 +190,17 @@ def drive(
     if energy and "KE" not in results and results.get("t_accel") is None or energy and profile:
         notes.append("KE, work_motor, work_load, work_loss: " + ("a move's energy over its cycle is power_mean × t_cycle" if profile else
                      "the energy is to a speed reached from rest ({until_omega} or {speed}, with {in_time}, {alpha} or the motor's law)"))
-    model = f"{_load_words(moment, load_mass, screw, torque)} through {_train_words(stages, eta)}: {regime}"
-    report = Report("drive", model, "closed form", results, steps, notes)
+    if load:
+        model = f"{len(train.branches)} load{'s' if len(train.branches) != 1 else ''}, each through its own train: {regime}"
+    elif motor_curve is not None and not any((moment, load_mass is not None, torque, gear_inertia)):
+        model = f"the motor alone: {regime}"
+    else:
+        model = f"{_load_words(moment, load_mass, screw, torque)} through {_train_words(stages, eta)}: {regime}"
+    report = Report("drive", model, method, results, steps, notes)
     if trajectory is not None:
         report.trajectory = lambda: trajectory
-    if parts is not None:
-        report.tables = {"parts": parts}
+    if tables:
+        report.tables = tables
     return assumed.applied(report)
 
 
@@ -245,7 +291,7 @@ def _reflect(train: Train, stages: tuple[float, ...], moment: float, linear: flo
         steps.append(drive_train.ratio_step(stages, train.ratio))
     if linear:
         results.put("linear_inertia", linear, ", m(p/2π)²" if screw else ", m r²")
-    results.put("reflected_inertia", train.reflected)
+    results.put("reflected_inertia", train.reflected, ", J_g + J/N²")
     steps.append(drive_train.reflected_step(train, moment, linear))
     if train.rotor is None:
         return

@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from taucli.scenes.drive.loads import Loads, torque_step as loads_torque_step
 from taucli.writing.report import Step, fmt, quantity_text, term
 
 TWO_PI = 2.0 * math.pi
@@ -97,6 +98,11 @@ class Train:
     def speed_of(self, omega: float) -> float | None:
         """The moving mass's speed at motor speed ω, v = ω·r/N."""
         return None if self.lever is None else omega * self.lever / self.ratio
+
+    def run_loss(self, alpha: float, omega: float, theta: float) -> float:
+        """The teeth's loss and the motor shaft's friction over a run-up from rest to ω through θ at α."""
+        output = self.load * omega * omega / (2 * self.ratio * self.ratio) + self.torque * theta / self.ratio
+        return self.train_loss(output, self.demand(alpha) >= 0) + self.motor_friction * theta
 
     def regenerating(self, alpha: float) -> bool:
         return self.demand(alpha) < 0
@@ -187,6 +193,8 @@ def _sub(n: int) -> str:
 
 def torque_step(title: str, train: Train, alpha: float, torque: float) -> Step:
     """τ = (J_m + J_g)α + (Jα/N + T)/(Nη), or η(Jα/N + T)/N while the load drives: the terms there are."""
+    if isinstance(train, Loads):  # several loads, each through its own train
+        return loads_torque_step(title, train, alpha, torque)
     driving = train.demand(alpha) >= 0
     j_in = "(J_m + J_g)α" if train.gearing and train.rotor else ("J_gα" if train.gearing else "J_mα")
     j_in_numbers = f"{quantity_text(train.input_inertia, 'kg*m**2')} × {term(alpha, 'rad/s**2')}"
