@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from taucli.quantities import units
 from taucli.core.errors import InputError
 from taucli.quantities.measurement import marked, split
-from taucli.writing.report import Value
+from taucli.writing.report import Value, made_value
 from taucli.options.table import Option
 
 
@@ -52,7 +52,7 @@ class Inputs:
         if origin is not None:
             self.origins[key or name] = origin
         if given.__class__ is str and (value := units.known(given, kind, sign)) is not None:  # most texts of a batch
-            self.values[key or name] = Value(value, units.KINDS[kind].si_unit, "")
+            self.values[key or name] = made_value((value, units.KINDS[kind].si_unit, ""))
             return value
         option = name if name.startswith("{") else "{" + name + "}"
         if isinstance(given, str):

@@ -267,11 +267,17 @@ def _reject_constant(name: str):
 
 
 class _Pairs(dict):
-    """A JSON object, with the keys it gave more than once (json.loads keeps the last unsaid)."""
+    """A JSON object that gave a key more than once (json.loads keeps the last unsaid), with those keys."""
 
     def __init__(self, pairs: list) -> None:
         super().__init__(pairs)
-        self.twice = {key for key, count in Counter(key for key, _ in pairs).items() if count > 1} if len(self) < len(pairs) else set()
+        self.twice = {key for key, count in Counter(key for key, _ in pairs).items() if count > 1}
+
+
+def _object(pairs: list) -> dict:
+    """A JSON object: a plain dict (made in C: every line has one), or _Pairs where a key comes twice."""
+    found = dict(pairs)
+    return found if len(found) == len(pairs) else _Pairs(pairs)
 
 
 def _number(text: str):
@@ -283,7 +289,7 @@ def _number(text: str):
     return value
 
 
-_STRICT = json.JSONDecoder(parse_constant=_reject_constant, parse_float=_number, object_pairs_hook=_Pairs)
+_STRICT = json.JSONDecoder(parse_constant=_reject_constant, parse_float=_number, object_pairs_hook=_object)
 
 
 def _keys(command: Command) -> dict[str, str]:
@@ -311,12 +317,13 @@ def _line(line: str, keys: dict[str, str], command: Command, texts: frozenset[st
     options: dict = {}
     answer: dict = {}
     spelled: dict[str, str] = {}  # option name -> the key that gave it (pulley_mass and pulley-mass are one option)
+    twice = given.twice if given.__class__ is _Pairs else ()
     for key in given:  # every key first: a key given twice is refused before any value is read
         name = keys.get(key)
         if name is None:
             known = [option.name for option in command.options]
             raise InputError(key, f"is not an option of {command.name} in a batch", hint=did_you_mean(key.replace("-", "_"), known))
-        if key in given.twice:
+        if key in twice:
             raise InputError(name, "is given twice in one line; an option takes one value (a list where it is repeatable): give it once",
                              example=_EXAMPLE_LINE, got=repr(text[:60]))
         if name in spelled:

@@ -15,7 +15,7 @@ import re
 from dataclasses import dataclass, field
 
 from taucli.quantities.kinds import KINDS
-from taucli.writing.report import NotApplicable, Value
+from taucli.writing.report import NotApplicable, made_value
 
 # Kinds that are not quantities.
 CHOICE = "choice"  # a word from ``choices``
@@ -303,7 +303,7 @@ class Results(dict):
         if found is None:
             raise KeyError(f"{key!r} is not a result of {self.command.name} in its table")
         unit, label, open_part = found
-        self[key] = Value(value, unit, label.replace(FILLED, part) if open_part else label)
+        self[key] = made_value((value, unit, label.replace(FILLED, part) if open_part else label))
 
     def not_applicable(self, *keys: str) -> None:
         """Each of ``keys`` null because the scene cannot have it (NotApplicable: a note says why;

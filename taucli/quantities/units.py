@@ -149,14 +149,18 @@ def read(text: str, option: str, kind: Kind) -> Reading:
 def known(text: str, kind_name: str, sign: str) -> float | None:
     """``parse``'s value for a plain "number unit" whose unit was read before as given, within
     its kind's bounds and of its sign: there is no note to make and nothing to refuse. None
-    for anything else, which ``parse`` then reads the whole way (and refuses, if it must)."""
-    plain = _PLAIN.fullmatch(text) if len(text) <= MAX_TEXT_LENGTH else None
-    if plain is None or len(plain[1]) > MAX_DIGITS:
+    for anything else, which ``parse`` then reads the whole way (and refuses, if it must).
+
+    The number is matched and the rest looked up as it is (less the spaces after it): a unit in
+    _READ_BEFORE came from _PLAIN's unit group, which holds no space, so a text found this way
+    is one _PLAIN matches, split the same way; and the short match costs a batch line less."""
+    number = _PLAIN_NUMBER.match(text) if len(text) <= MAX_TEXT_LENGTH else None
+    if number is None or len(number[1]) > MAX_DIGITS:
         return None
-    found = _READ_BEFORE.get((plain[2], kind_name))
+    found = _READ_BEFORE.get((text[number.end():].rstrip(), kind_name))
     if found is None or found[1] != AS_GIVEN:
         return None
-    value = float(plain[1]) * found[0]
+    value = float(number[1]) * found[0]
     low, high = KINDS[kind_name].bounds
     return value if low <= abs(value) <= high and (value > 0 or sign == "any") else None
 
