@@ -52,7 +52,9 @@ def solved(scene, columns: Mapping[str, list[float]], draws: int) -> tuple[dict[
     if found is None:
         return None
     results, regime, taken = found
-    results = {key: np.array(values, dtype=float) for key, values in results.items()}
+    # a result or regime no drawn input moves comes back as one number: one per draw (--mc with no σ given, a result of g alone)
+    results = {key: np.array(np.broadcast_to(np.asarray(values, dtype=float), (draws,))) for key, values in results.items()}
+    regime, taken = np.broadcast_to(np.asarray(regime), (draws,)), np.broadcast_to(np.asarray(taken, dtype=bool), (draws,))
     alone = ~taken  # the draws the scene solves one by one
     anchors = [(kind, int(i)) for kind in np.unique(regime[taken]) for i in _held(np.flatnonzero(taken & (regime == kind)))]
     failed = np.zeros(draws, dtype=bool)

@@ -35,7 +35,7 @@ from dataclasses import replace
 from taucli.core.errors import InputError
 from taucli.numerics.of_time import FormulaFailed, OfTime
 from taucli.numerics.roots import brent
-from taucli.writing.report import Step, fmt, quantity_text
+from taucli.writing.report import Step, fmt, quantity_text, term
 
 GRID = 2880  # points over a cycle where T − T_mean is sampled for its sign changes (¼° over 720°), more for fast waves
 MAX_GRID = 200_000
@@ -159,9 +159,9 @@ def _swing(points: list[tuple[float, float]], mean: float, work: float, cycle: f
     steps.append(Step("Mean torque", "T_mean = W/Θ", f"{quantity_text(work, 'J')} / {fmt(cycle)} rad", quantity_text(mean, "N*m"),
                       "the load's steady torque that takes the engine's work over the cycle"))
     steps.append(Step("The flywheel's energy above its start", "E(θ) = ∫₀^θ (T − T_mean) dθ",
-                      f"greatest at θ = {degrees(highest[0])}, least at θ = {degrees(lowest[0])}",
+                      f"greatest at {degrees(highest[0])}, least at {degrees(lowest[0])}",
                       f"E_max = {quantity_text(highest[1], 'J')}, E_min = {quantity_text(lowest[1], 'J')}",
                       f"its extremes lie where the torque crosses the mean, or at the cycle's ends: {where}"))
-    steps.append(Step("Maximum fluctuation of energy", "ΔE = E_max − E_min", f"{quantity_text(highest[1], 'J')} − ({quantity_text(lowest[1], 'J')})",
+    steps.append(Step("Maximum fluctuation of energy", "ΔE = E_max − E_min", f"{term(highest[1], 'J')} − {term(lowest[1], 'J')}",
                       quantity_text(swing, "J"), "between its greatest and least energy the flywheel goes from its top to its least speed"))
     return swing, mean

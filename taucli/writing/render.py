@@ -231,12 +231,14 @@ def _about_the_inputs(report: Report, stream: TextIO, said: list[str]) -> None:
     plays no part, or that looks wrong): a script reading the number alone must hear of them too,
     as the human view says them. (Notes _why_null wrote already are not said twice.)"""
     flags = tuple(f"--{name.replace('_', '-')}" for name in report.inputs)
-    if not flags:
-        return
-    loud = [note for note in report.notes if note not in said and _names_a_flag(note, flags)
-            and not note.startswith("no --") and "to change it" not in note]  # (not a default's note: nothing given there)
+    loud = [note for note in report.notes if note not in said and (
+        note.startswith(MONTE_CARLO)  # --mc asked for it: its check is said, as the human view says it
+        or _names_a_flag(note, flags) and not note.startswith("no --") and "to change it" not in note)]  # (not a default's note: nothing given there)
     if loud:
         stream.write(said_notes(loud))
+
+
+MONTE_CARLO = "Monte Carlo check"  # how taucli.answering.propagate's note of --mc begins
 
 
 def _names_a_flag(note: str, flags: tuple[str, ...]) -> bool:

@@ -287,3 +287,29 @@ def test_the_budget_estimates_from_the_planned_solves_not_the_first_cold_one(mon
         for _ in range(300):
             scene.report({"m1": 4.0})
         assert scene.solves == 309
+
+
+@pytest.mark.parametrize("args", [
+    ("spin-down", "--inertia", "1kg*m^2", "--omega0", "100rad/s", "--friction", "2N*m", "--get", "t_stop"),
+    ("spin-down", "--inertia", "1+/-0kg*m^2", "--omega0", "100rad/s", "--friction", "2N*m", "--get", "t_stop"),
+    ("atwood", "--m1", "1.1kg", "--m2", "1kg", "--pulley-radius", "0.1m", "--get", "a"),
+    ("rolling", "sphere", "--angle", "30deg", "--length", "2m", "--get", "a"),
+    ("pendulum", "--shape", "point", "--mass", "1kg", "--radius", "1m", "--angle0", "10deg", "--get", "period"),
+])
+def test_mc_with_no_uncertain_input_gives_each_result_a_spread_of_zero(args):
+    """No input moves: every draw is the nominal scene (before, the array forms returned one number
+    for a result no draw moves, and --mc ended in an internal error, exit 1)."""
+    from conftest import run_taucli
+    run = run_taucli(*args, "--mc", "1000", "--uncertainty")
+    assert run.code == 0, run.err
+    value, spread = run.out.split()
+    assert float(spread) == 0 and "Monte Carlo check, 1000 draws" in run.err
+
+
+def test_mc_with_get_says_its_check_on_stderr():
+    """--mc asked for a check: under --get the check is said beside the bare numbers, as the table says it."""
+    from conftest import run_taucli
+    run = run_taucli("atwood", "--m1", "1.1+/-0.1kg", "--m2", "1kg", "--pulley-radius", "0.1m", "--mc", "2000", "--get", "a")
+    assert run.code == 0 and "taucli: note: Monte Carlo check, 2000 draws" in run.err
+    mean, spread = (float(x) for x in run.err.split("a = ")[1].split(";")[0].split(" ± "))
+    assert abs(mean - float(run.out)) < spread and spread == pytest.approx(2 * 9.80665 * 1 / 2.1**2 * 0.1, rel=0.3)  # σ_a ≈ ∂a/∂m1·σ = 2g·m2/(m1 + m2)²·σ
