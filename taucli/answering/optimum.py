@@ -49,6 +49,11 @@ def optimize(scene: Scene, unknown: unknowns.Unknown, key: str, sense: float, no
     if len(made) < 3:
         raise InputError(option, f"{key} is not made over the range {unknown.spelled} may take (it is made at {len(made)} of {len(sampled)} values tried)",
                          hint=str(scene.refusal) if scene.refusal else None)
+    values = [y for _, y in made]
+    if max(values) - min(values) <= 1e-12 * max(abs(v) for v in values):
+        raise InputError(option, f"finds no {'least' if sense > 0 else 'most'} {key}: it does not change with {unknown.spelled} "
+                         f"(it is {quantity_text(sense * values[0], result.unit, 6)} at each of the {len(made)} values tried)",
+                         hint=f"{option} a result that {unknown.spelled} moves")
     best = min(range(len(made)), key=lambda i: made[i][1])
     if best in (0, len(made) - 1):
         edge = made[best][0]
@@ -86,14 +91,14 @@ def optimize(scene: Scene, unknown: unknowns.Unknown, key: str, sense: float, no
 
 
 def _curve(scene: Scene, unknown: unknowns.Unknown, result, label: str, sense: float, window: tuple[float, float], optimum: float):
-    """--plot's chart of an optimum: the result against the input over the grid's cells either
-    side of the optimum (CURVE_POINTS solves, made only when the chart is drawn), the optimum marked."""
+    """--plot's chart of an optimum: the result against the input evenly either side of the
+    optimum, as far as the nearer end of the search grid's cells about it (CURVE_POINTS solves,
+    made only when the chart is drawn), the optimum marked."""
     from taucli.writing import plot  # deferred: charts, only when one is drawn
 
-    low, high = window
-    logged = low > 0 and high > 0
-    to, back = (math.log, math.exp) if logged else ((lambda v: v), (lambda v: v))
-    xs = sorted({optimum, *(back(to(low) + (to(high) - to(low)) * i / (CURVE_POINTS - 1)) for i in range(CURVE_POINTS))})
+    reach = min(optimum - window[0], window[1] - optimum)  # evenly either side, on the chart's linear axis: the optimum in the middle
+    low, high = optimum - reach, optimum + reach
+    xs = sorted({optimum, *(low + (high - low) * i / (CURVE_POINTS - 1) for i in range(CURVE_POINTS))})
     scene.plan(len(xs), "find")
     ys = []
     for trial in xs:
@@ -104,7 +109,7 @@ def _curve(scene: Scene, unknown: unknowns.Unknown, result, label: str, sense: f
     way = "least" if sense > 0 else "most"
     panel = plot.Panel(result.key, label or result.key, result.unit or "", (plot.Series("", tuple(xs), tuple(ys)),))
     note = (f"{unknown.name} from {quantity_text(low, si_unit, 4)} to {quantity_text(high, si_unit, 4)}, "
-            f"{'evenly on a log scale' if logged else 'evenly'} about the {way} {result.key}")
+            f"evenly either side of the {way} {result.key}")
     return plot.Chart(f"{scene.command.name}: {result.key} against {unknown.name}", unknown.name, unknown.label or unknown.name,
                       si_unit, (panel,), ((optimum, f"the {way} {result.key}"),), (note,))
 
