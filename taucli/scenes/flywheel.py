@@ -111,6 +111,9 @@ def flywheel(
     if rim_only and given_body:
         raise InputError("rim_speed", "without {rim_radius} goes with the rim's mass, not a body: give {rim_radius} (ω = v/R) or {omega_mean}",
                          example="{rim_speed} 25m/s {rim_radius} 0.5m")
+    if moment is None and cs is None and swing is not None and (turning_moment is not None or loops is not None):
+        return _diagram_only(results, steps, notes, swing, torque_mean, torque_mean_given, None if rim_only else mean, method,
+                             "turning_moment" if turning_moment is not None else "loops")
     square = rim_speed**2 if rim_only else mean**2
     symbol, unknown = ("v²", "m") if rim_only else ("ω_mean²", "I")
     known = {"I": moment, "energy_swing": swing, "cs": cs}
@@ -150,7 +153,7 @@ def flywheel(
         steps.append(Step("The motor's power", "P = E/t", f"{quantity_text(energy_per_cycle, 'J')} / {quantity_text(cycle_time, 's')}",
                           quantity_text(energy_per_cycle / cycle_time, "W"), "the motor supplies the energy of each cycle evenly over it; the flywheel evens out the rest"))
     results.put("cs", cs, " (ω_max − ω_min)/ω_mean")
-    results.put("energy_swing", swing, ", Iω²Cs" if not rim_only else ", mv²Cs")
+    results.put("energy_swing", swing, ", from the diagram" if turning_moment is not None or loops is not None else ", Iω²Cs" if not rim_only else ", mv²Cs")
     if not rim_only:
         results.put("I", moment)
         results.put("omega_mean", mean)
@@ -184,6 +187,25 @@ def _diagram_alone(loops, energy_swing, energy_per_cycle, scale_torque, scale_an
     for name, value in (("scale_torque", scale_torque), ("scale_angle", scale_angle)):
         if value is not None:
             raise InputError(name, "goes with {loops}: the scales of a drawn diagram's areas ({turning_moment} is the curve itself)", example=LOOPS_EXAMPLE)
+
+
+def _diagram_only(results, steps, notes, swing: float, torque_mean, torque_mean_given: bool, mean: float | None, method: str, source: str) -> Report:
+    """What a turning-moment diagram gives alone, with the mean speed: ΔE, the mean torque and
+    power; I and Cs wait for one of them (ΔE = Iω²Cs), said in a note, not refused (a result
+    the diagram makes is never hidden behind the flywheel it does not)."""
+    if torque_mean is not None:
+        _mean_power(results, steps, notes, torque_mean, torque_mean_given, mean)
+    results.put("energy_swing", swing, ", from the diagram")
+    if mean is not None:
+        results.put("omega_mean", mean)
+    results.put("cs", None, " (ω_max − ω_min)/ω_mean")
+    results.put("I", None)
+    notes.append("I and cs: give --inertia (the flywheel) or --fluctuation (its speed band) for the other: ΔE = Iω_mean²Cs")
+    model = ("a turning-moment diagram T(θ): ΔE = max − min of ∫(T − T_mean)dθ" if source == "turning_moment"
+             else "a turning-moment diagram's loops: ΔE from the running sum of their areas")
+    needs = {"I": ("fluctuation", "is needed for I with the diagram's ΔE: I = ΔE/(ω_mean²Cs) (or give --inertia for cs)"),
+             "cs": ("inertia", "is needed for cs with the diagram's ΔE: Cs = ΔE/(Iω_mean²) (or give --fluctuation for I)")}
+    return Report("flywheel", model, method, results, steps, notes, needs=needs)
 
 
 def _mean_power(results, steps, notes, torque_mean: float, given: bool, mean: float | None) -> None:

@@ -194,7 +194,7 @@ def render(report: Report, output: Output, stream: TextIO, notes_to: TextIO | No
     stream.flush()
 
 
-_NEEDED_EXAMPLES = {"mass": "{mass} 5kg", "band": '{band} "mu=0.25 wrap=270deg radius=0.3m tension=500N"'}
+_NEEDED_EXAMPLES = {"mass": "{mass} 5kg", "fluctuation": "{fluctuation} 0.02", "inertia": "{inertia} '150kg*m^2'", "band": '{band} "mu=0.25 wrap=270deg radius=0.3m tension=500N"'}
 
 
 def written(report: Report, format: str, *, steps: bool = True) -> str:

@@ -313,3 +313,21 @@ def test_a_fast_wave_is_followed_or_refused():
 
     with pytest.raises(InputError, match="too fast"):
         taucli.flywheel(turning_moment="(1000 + 100*sin(1e6*theta)) N*m", inertia="1 kg*m^2", omega_mean="300 rpm")
+
+
+def test_the_diagram_alone_gives_what_it_makes():
+    """T = 1000 + 500 sin θ N·m: T_mean 1000 N·m, E(θ) = 500(1 − cos θ) J, so ΔE = 1000 J, and
+    P = T_mean ω. Without the flywheel (I) or its speed band (Cs) these are still the diagram's
+    answer (before, the whole run was refused for want of two of I, ΔE and Cs); I and cs are
+    null, and --get I names what makes it."""
+    from conftest import run_taucli
+    args = ("flywheel", "--turning-moment", "(1000 + 500*sin(theta)) N*m", "--omega-mean", "300rpm")
+    document = json.loads(run_taucli(*args, "--json").out)
+    results = {key: value["value"] for key, value in document["results"].items()}
+    assert results["torque_mean"] == pytest.approx(1000, rel=1e-12)
+    assert results["energy_swing"] == pytest.approx(1000, rel=1e-12)
+    assert results["power_mean"] == pytest.approx(1000 * 300 * 2 * math.pi / 60, rel=1e-12)
+    assert results["I"] is None and results["cs"] is None
+    refused = run_taucli(*args, "--get", "I")
+    assert refused.code == 2 and "--fluctuation" in refused.err and refused.err.count("\n") == 1
+    assert float(run_taucli(*args, "--fluctuation", "0.02", "--get", "I").out) == pytest.approx(1000 / ((10 * math.pi) ** 2 * 0.02), rel=1e-12)
