@@ -134,7 +134,7 @@ def _repeated(option: Option, given, inputs: Inputs, stdin):
         return _quantity(option, given, inputs, stdin)
     items = list(given) if isinstance(given, (list, tuple)) else [given]
     if None in items:  # [2, null]: each item given must be a value
-        raise InputError(option.name, "expected a value for each item, not null (None)", example=f"{{{option.name}}} {units.KINDS[option.kind].example}", got=repr(given))
+        raise InputError(option.name, "expected a value for each item, not null (None)", example=f"{{{option.name}}} {units.KINDS[option.kind].typed}", got=repr(given))
     keys = [option.name + (str(number) if len(items) > 1 else "") for number in range(1, len(items) + 1)]
     names = [f"{{{option.name}}}" + (f" {number}" if len(items) > 1 else "") for number in range(1, len(items) + 1)]
     si = units.KINDS[option.kind].si_unit
@@ -178,7 +178,7 @@ def _either(option: Option, given: str, inputs: Inputs):
                     continue  # not of this kind
                 raise other from None  # of this kind, but not a value it takes (out of bounds)
             if aside.uncertainties:
-                raise InputError(option.name, f"takes {article(kind.name)} with no uncertainty", example=f"{{{option.name}}} {kind.example}", got=repr(given))
+                raise InputError(option.name, f"takes {article(kind.name)} with no uncertainty", example=f"{{{option.name}}} {kind.typed}", got=repr(given))
             inputs.values.update(aside.values)
             inputs.notes.extend(aside.notes)
             return Value(value, kind.si_unit, "")

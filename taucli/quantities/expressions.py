@@ -40,7 +40,7 @@ def refuse_other_calls(cleaned: str, shown: str, option: str, kind: Kind) -> Non
     """A call of a function that is not sqrt, sin, cos or tan (exp(1) m) is refused by its name."""
     found = _NOT_TAKEN.search(cleaned)
     if found is not None:
-        raise InputError(option, f"expected {_article(kind)}", example=kind.example,
+        raise InputError(option, f"expected {_article(kind)}", example=kind.typed,
                          got=f"{shown!r}: {found.group(1)}(…) is not a function taucli reads (it reads sqrt, sin, cos and tan)", hint="write its value as a number")
 
 
@@ -60,7 +60,7 @@ def calls(cleaned: str, shown: str, option: str, kind: Kind) -> tuple[str, list[
         call = found[-1]  # the last to open holds no other
         close = _closing(cleaned, call.end() - 1)
         if close is None:
-            raise InputError(option, f"expected {_article(kind)}", example=kind.example, got=f"{shown!r}: a ( without its )")
+            raise InputError(option, f"expected {_article(kind)}", example=kind.typed, got=f"{shown!r}: a ( without its )")
         name, inner = call.group(1).lower(), cleaned[call.end() : close].strip()
         value, unit, short = _evaluate(name, inner, shown, option, kind)
         written = f"({value!r} {unit})" if unit else f"({value!r})"
@@ -68,7 +68,7 @@ def calls(cleaned: str, shown: str, option: str, kind: Kind) -> tuple[str, list[
             written = "*" + written  # 2sqrt(3), N sin(30deg): a product, as written
         said.append(f"{name}({inner}) = {fmt(value)}" + (f" {short}" if short else ""))
         cleaned = cleaned[: call.start()] + written + cleaned[close + 1 :]
-    raise InputError(option, f"expected {_article(kind)}", example=kind.example, got=f"{shown!r}: more than {MAX_CALLS} functions")
+    raise InputError(option, f"expected {_article(kind)}", example=kind.typed, got=f"{shown!r}: more than {MAX_CALLS} functions")
 
 
 def _article(kind: Kind) -> str:
@@ -88,7 +88,7 @@ def _evaluate(name: str, inner: str, shown: str, option: str, kind: Kind) -> tup
     """The value of name(inner), its unit as pint writes it and reads it back ("" for a number),
     and its unit as a person reads it."""
     def refuse(why: str, hint: str | None = None) -> InputError:
-        return InputError(option, f"expected {_article(kind)}", example=kind.example, got=f"{shown!r}: {why}", hint=hint)
+        return InputError(option, f"expected {_article(kind)}", example=kind.typed, got=f"{shown!r}: {why}", hint=hint)
 
     if not inner:
         raise refuse(f"{name}() of nothing")

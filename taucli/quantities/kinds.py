@@ -5,6 +5,7 @@ show, the units offered for "did you mean" and completion, and the sizes a value
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 from taucli.core.errors import InputError
@@ -23,6 +24,9 @@ BOUNDS = (1e-40, 1e40)
 INERTIA_BOUNDS = (1e-60, 1e60)
 
 
+_PLAIN = re.compile(r"[-\d.e]+ [A-Za-z]+(?:/[A-Za-z]+)?")  # "4 kg", "2 m/s": no character a shell reads
+
+
 @dataclass(frozen=True)
 class Kind:
     """A physical kind of quantity an option takes."""
@@ -32,6 +36,12 @@ class Kind:
     example: str  # shown in messages, as typed in bash, zsh and fish (quoted where it holds * or ^)
     common_units: tuple[str, ...] = ()  # offered for "did you mean" and completion
     bounds: tuple[float, float] = BOUNDS  # the smallest and largest size in SI (0 aside)
+
+    @property
+    def typed(self) -> str:
+        """The example as one word of a command line: 4kg, 2m/s (a number and a plain unit run
+        together, which a shell passes whole), else as written (quoted)."""
+        return self.example.replace(" ", "") if _PLAIN.fullmatch(self.example) else self.example
 
 
 KINDS: dict[str, Kind] = {
@@ -103,7 +113,7 @@ def out_of_bounds(kind_name: str, option: str, *, sign: str, got: str) -> InputE
     kind = KINDS[kind_name]
     low, high = kind.bounds
     zero = "" if sign == "positive" else "of 0 or "
-    return InputError(option, f"expected {article(kind.name)} {zero}between {_power_of_ten(low)} and {_power_of_ten(high)} {kind.si_unit} in size", example=kind.example, got=got)
+    return InputError(option, f"expected {article(kind.name)} {zero}between {_power_of_ten(low)} and {_power_of_ten(high)} {kind.si_unit} in size", example=kind.typed, got=got)
 
 
 def _power_of_ten(x: float) -> str:
@@ -137,7 +147,7 @@ def bare_number(option: str, text: str, kind: Kind, value: float) -> InputError:
 
 
 def not_finite(option: str, text: str, kind: Kind) -> InputError:
-    return InputError(option, f"expected a finite {kind.name}", example=kind.example, got=f"{text!r}, which is not a finite number")
+    return InputError(option, f"expected a finite {kind.name}", example=kind.typed, got=f"{text!r}, which is not a finite number")
 
 
 def bare_angle(option: str, text: str, value: float = 0.0) -> InputError:

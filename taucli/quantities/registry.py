@@ -136,20 +136,20 @@ def _pint_quantity(cleaned: str, option: str, kind: Kind, shown: str):
         if token.kind == "name" and token.text in meanings.AMBIGUOUS_TONS:
             number = re.match(rf"\s*({NUMBER})", shown)
             why, fix = meanings.ton_refusal(token.text, number[1] if number else "1", kind.name in FORCES)
-            raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: {why}", hint=fix)
+            raise InputError(option, expected(kind), example=kind.typed, got=f"{shown!r}: {why}", hint=fix)
         if token.kind == "name" and (mixed := _prefix_name_on_symbol(token.text)) is not None:
             meant = _unmixed(mixed, kind)
-            raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: unknown unit {token.text!r}",
+            raise InputError(option, expected(kind), example=kind.typed, got=f"{shown!r}: unknown unit {token.text!r}",
                              hint=f"did you mean {meant!r}?" if meant else None)
     try:
         q = ureg.Quantity(cleaned)
     except pint.UndefinedUnitError as err:
         name = str(getattr(err, "unit_names", [""])[0] if getattr(err, "unit_names", None) else err)
-        raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: unknown unit {name!r}", hint=_suggest(name, kind)) from None
+        raise InputError(option, expected(kind), example=kind.typed, got=f"{shown!r}: unknown unit {name!r}", hint=_suggest(name, kind)) from None
     except (OverflowError, ZeroDivisionError):
-        raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}: out of range") from None
+        raise InputError(option, expected(kind), example=kind.typed, got=f"{shown!r}: out of range") from None
     except Exception:  # pint's tokenizer and evaluator raise many kinds; none may escape as a traceback
-        raise InputError(option, expected(kind), example=kind.example, got=f"{shown!r}, which is not a quantity") from None
+        raise InputError(option, expected(kind), example=kind.typed, got=f"{shown!r}, which is not a quantity") from None
     return q if isinstance(q, ureg.Quantity) else ureg.Quantity(1, q)  # a bare unit name such as "kg"
 
 
@@ -254,14 +254,14 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     q = _pint_quantity(cleaned, option, kind, text)
     if kind.name in ANGULAR | {"angle", "dimensionless", "lead"} and _mixes_angles(cleaned):
         fix = {"angle": "'30 deg + 1 deg'", "dimensionless": "no angle", "lead": "'5 mm + 1 mm'"}.get(kind.name, "'1 rpm + 60 rpm'")
-        raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: it adds a unit with an angle to one without", hint=f"give every term the same kind of unit: {fix}")
+        raise InputError(option, expected(kind), example=kind.typed, got=f"{text!r}: it adds a unit with an angle to one without", hint=f"give every term the same kind of unit: {fix}")
     if list(q.unit_items()) and all(name in meanings.CONSTANTS for name, _ in q.unit_items()):
         q = ureg.Quantity(float(q.to("").magnitude))  # 2 pi: a number
     if not list(q.unit_items()):  # a number, or numbers with operators: the kind's SI unit
         try:
             value = float(q.magnitude)
         except (OverflowError, TypeError, ValueError):
-            raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
+            raise InputError(option, expected(kind), example=kind.typed, got=f"{text!r}: out of range") from None
         if kind.name in NEEDS_ITS_UNIT and value != 0:
             raise bare_number(option, text, kind, value)
         return value, AS_GIVEN
@@ -276,15 +276,15 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
             how, q = MASS_AS_WEIGHT, q * ureg.Quantity(STANDARD_GRAVITY, "m/s**2")
         value = float(q.to(target).magnitude)
     except pint.errors.OffsetUnitCalculusError:  # degC, degF: a temperature, which pint will not multiply
-        raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}, which is a temperature") from None
+        raise InputError(option, expected(kind), example=kind.typed, got=f"{text!r}, which is a temperature") from None
     except pint.DimensionalityError:
         per_length = kind.name == "lead" and dict(q.dimensionality) == {"[length]": -1}  # threads per inch
         raise InputError(
-            option, expected(kind), example=kind.example, got=f"{text!r}, which is {_describe(q.dimensionality)}",
+            option, expected(kind), example=kind.typed, got=f"{text!r}, which is {_describe(q.dimensionality)}",
             hint="a lead is the advance per turn: 1/(threads per inch) for a single start, e.g. 0.2in for 5 per inch" if per_length else _case_of(cleaned, kind),
         ) from None
     except (OverflowError, TypeError, ValueError):
-        raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: out of range") from None
+        raise InputError(option, expected(kind), example=kind.typed, got=f"{text!r}: out of range") from None
     if kind.name == "moment of inertia" and how == AS_GIVEN and _POUND_MASSES & {name for name, _ in q.unit_items()}:
         how = WEIGHT_INERTIA  # lb*ft^2, oz*in^2: read as mass × length², which is a WR²'s number too (a note says so)
     elif kind.name == "moment of inertia" and how == AS_GIVEN and _in_kgf(q):
@@ -295,10 +295,10 @@ def from_pint(cleaned: str, text: str, option: str, kind: Kind) -> tuple[float, 
     elif kind.name == "angle" and radians == 0 and value != 0:
         raise bare_angle(option, text, value)
     elif kind.name == "angle" and radians not in (0, 1):
-        raise InputError(option, expected(kind), example=kind.example, got=f"{text!r}: its unit has {meanings.angle_power_words(radians)}; an angle has it once")
+        raise InputError(option, expected(kind), example=kind.typed, got=f"{text!r}: its unit has {meanings.angle_power_words(radians)}; an angle has it once")
     elif kind.name == "lead" and radians != -1:  # pint reads rev as 2π: m/rev is m/(2π) to it
         if radians != 0:
-            raise InputError(option, "expected a lead, a length per revolution", example=kind.example, got=f"{text!r}, which is not a length per turn")
+            raise InputError(option, "expected a lead, a length per revolution", example=kind.typed, got=f"{text!r}, which is not a length per turn")
         value /= TWO_PI  # a length alone is the advance per revolution
     if how == AS_GIVEN:
         how = meanings.named(ureg, q, kind.name) or AS_GIVEN
@@ -322,7 +322,7 @@ def _angled(cleaned: str, q, text: str, option: str, kind: Kind, value: float, h
             return value, meanings.POWER_AS_TORQUE_SPEED
         return value, REVOLUTIONS if revolutions else how
     if kind.name == "dimensionless":
-        raise InputError(option, "expected a plain number", example=kind.example, got=f"{text!r}, which is an angle")
+        raise InputError(option, "expected a plain number", example=kind.typed, got=f"{text!r}, which is an angle")
     if held == 0 and kind.name in ANGULAR:  # 1/time for a rotation: revolutions, v/R in radians, or ambiguous
         how = _per_time(cleaned, q, text, option, kind)
         return value * (TWO_PI if how == REVOLUTIONS else 1.0), how
@@ -335,7 +335,7 @@ def _angled(cleaned: str, q, text: str, option: str, kind: Kind, value: float, h
         if times:
             raise _ambiguous_in(times[0], text, option, kind)
         return value, how
-    raise InputError(option, expected(kind), example=kind.example,
+    raise InputError(option, expected(kind), example=kind.typed,
                      got=f"{text!r}: its unit has {meanings.angle_power_words(held)}; {article(kind.name)} has {meanings.angle_power_words(wanted)}")
 
 

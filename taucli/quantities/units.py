@@ -201,7 +201,7 @@ def _read(text: str, option: str, kind: Kind) -> tuple[Reading, float | None, fl
 
 def _side_by_side(beside: spellings.SideBySide, text: str, option: str, kind: Kind) -> InputError:
     why, fix = beside.said()
-    return InputError(option, expected(kind), example=kind.example, got=f"{text!r}: {why}", hint=fix)
+    return InputError(option, expected(kind), example=kind.typed, got=f"{text!r}: {why}", hint=fix)
 
 
 def parse(text: str, option: str, kind_name: str, *, sign: str = "positive", gravity: float | None = None) -> Parsed:
@@ -234,14 +234,14 @@ def parse(text: str, option: str, kind_name: str, *, sign: str = "positive", gra
 def _check(value: float, text: str, option: str, kind: Kind, sign: str) -> None:
     """A value read from ``text`` must be finite, within its kind's bounds, and of its sign."""
     if not math.isfinite(value):
-        raise InputError(option, f"expected a finite {kind.name}", example=kind.example, got=repr(text))
+        raise InputError(option, f"expected a finite {kind.name}", example=kind.typed, got=repr(text))
     low, high = kind.bounds
     if value and not low <= abs(value) <= high:  # (the message's "got" is worked out only then)
         check_bounds(value, kind.name, option, sign=sign, got=repr(text) if _is_number(text) else None, text=text)
     if sign == "positive" and value <= 0:
-        raise InputError(option, f"expected a positive {kind.name}", example=kind.example, got=repr(text))
+        raise InputError(option, f"expected a positive {kind.name}", example=kind.typed, got=repr(text))
     if sign == "nonnegative" and value < 0:
-        raise InputError(option, f"expected a {kind.name} of zero or more", example=kind.example, got=repr(text))
+        raise InputError(option, f"expected a {kind.name} of zero or more", example=kind.typed, got=repr(text))
 
 
 def si_number(value: float, option: str, kind_name: str, *, sign: str = "positive") -> float:

@@ -72,7 +72,7 @@ def test_bad_lines_give_error_objects_in_place_and_the_run_goes_on(taucli):
     assert out[0]["results"]["a"]["value"] == pytest.approx(3 * 9.80665 / 5, rel=1e-15)
     assert out[8]["results"]["a"]["value"] == pytest.approx(9.80665 / 3, rel=1e-15)
     # A batch line names its options by their keys, and so does its error.
-    assert out[1]["error"] == {"option": "m2", "message": "m2: expected a mass (e.g. 4 kg), got '5m', which is a length"}
+    assert out[1]["error"] == {"option": "m2", "message": "m2: expected a mass (e.g. 4kg), got '5m', which is a length"}
     assert out[3]["error"]["option"] == "pully_mass" and "pulley_mass" in out[3]["error"]["message"]
     assert out[5]["error"]["option"] == "m1"
     for entry in out[1:8]:
