@@ -94,6 +94,13 @@ def read_formula(text: str, option: str, kind: Kind, variable: str = TIME) -> Of
     if len(text) > MAX_LENGTH:
         raise _error(option, kind, shown, f"longer than {MAX_LENGTH} characters", variable)
     tokens = _tokens(text, option, kind, shown, variable)
+    depth = 0
+    for _, token in tokens:
+        depth += (token == "(") - (token == ")")
+        if depth < 0:
+            raise _error(option, kind, shown, "a ) without its (", variable)
+    if depth > 0:
+        raise _error(option, kind, shown, "a ( without its )", variable)
     parser = _Parser(tokens, option, kind, shown, variable)
     part = parser.sum(0)
     if parser.position != len(tokens):
@@ -229,7 +236,8 @@ class _Parser:
 
     def add(self, a: _Part, b: _Part, sign: float) -> _Part:
         if a.dims != b.dims:
-            raise self.fail(f"it adds parts of different kinds ({_dims(a.dims)} and {_dims(b.dims)}): write each term's unit, or t/s for a number of seconds")
+            number = "t/s for a number of seconds" if self.variable == TIME else "theta alone, a number of radians"
+            raise self.fail(f"it adds parts of different kinds ({_dims(a.dims)} and {_dims(b.dims)}): write each term's unit, or {number}")
         angled = a.angled or b.angled
         if a.coefficients is not None and b.coefficients is not None:
             size = max(len(a.coefficients), len(b.coefficients))

@@ -114,3 +114,22 @@ def test_a_function_reads_the_same_in_other_units(x, degrees):
     in_radians = _read(f"sin({math.radians(degrees)!r} rad)*2 N", "force").value
     assert in_degrees == pytest.approx(in_radians, rel=1e-9, abs=1e-12)
     assert in_degrees == pytest.approx(2 * math.sin(math.radians(degrees)), rel=1e-9, abs=1e-12)
+
+
+@pytest.mark.parametrize("variable", ["t", "theta"])
+@pytest.mark.parametrize("text, why", [
+    ("(2 - 3*{v}/s N*m", "a ( without its )"),
+    ("(2 - 3*sin({v}) N*m", "a ( without its )"),
+    ("(2 - 3*{v}/s)) N*m", "a ) without its ("),
+    (")2 - 3*{v}/s( N*m", "a ) without its ("),
+])
+def test_a_formula_with_a_parenthesis_unclosed_says_so(variable, text, why):
+    """A formula of t or θ with a parenthesis left open was read as if closed at the end, then
+    refused as adding parts of different kinds (and a θ formula offered t/s): the cause is named."""
+    from taucli.core.errors import InputError
+    from taucli.quantities.formula import ANGLE, TIME, read_formula
+    from taucli.quantities.units import KINDS
+    typed = text.format(v=variable).replace("/s", "" if variable == "theta" else "/s")
+    with pytest.raises(InputError) as refused:
+        read_formula(typed, "torque", KINDS["torque"], TIME if variable == "t" else ANGLE)
+    assert why in str(refused.value) and "different kinds" not in str(refused.value)
