@@ -241,7 +241,7 @@ def _check(value: float, text: str, option: str, kind: Kind, sign: str) -> None:
     if sign == "positive" and value <= 0:
         raise InputError(option, f"expected a positive {kind.name}", example=kind.typed, got=repr(text))
     if sign == "nonnegative" and value < 0:
-        raise InputError(option, f"expected a {kind.name} of zero or more", example=kind.typed, got=repr(text))
+        raise InputError(option, f"expected {article(kind.name)} of zero or more", example=kind.typed, got=repr(text))
 
 
 def si_number(value: float, option: str, kind_name: str, *, sign: str = "positive") -> float:
