@@ -111,7 +111,7 @@ def run_up(train, curve: Kloss, omega0: float, target: float | None, results, no
     if start <= running:
         raise InputError("motor_curve", f"cannot start the load: it gives {quantity_text(start, 'N*m')} at "
                          f"{'rest' if omega0 == 0 else quantity_text(omega0, 'rad/s')}, the load asks {quantity_text(running, 'N*m')} at the motor: it stalls there",
-                         example="{motor_curve} 'tmax=400N*m slip-max=0.2 sync=1500rpm'")
+                         example=_stronger(curve, running / start if start > 0 else 2.0))
     results.put("alpha0", alpha0, "" if omega0 == 0 else f" at {fmt(omega0)} rad/s")
     stall = _steady(curve, running)
     if target is None:
@@ -119,7 +119,9 @@ def run_up(train, curve: Kloss, omega0: float, target: float | None, results, no
                          + (f" and below {quantity_text(stall, 'rad/s')}, where the motor's torque falls to the load's" if stall is not None else ""),
                          example="{until_omega} 1400rpm")
     if target <= omega0:
-        raise InputError("until_omega", f"expected a speed above the run-up's start {quantity_text(omega0, 'rad/s')}", example="{until_omega} 1400rpm")
+        top = min(curve.sync, stall) if stall is not None else curve.sync
+        raise InputError("until_omega", f"expected a speed above the run-up's start {quantity_text(omega0, 'rad/s')}",
+                         example=f"{{until_omega}} {fmt((omega0 + top) / 2 * 60 / TWO_PI, 4)}rpm")
     if stall is not None and target >= stall:
         raise InputError("until_omega", f"is never reached: the motor's torque falls to the load's {quantity_text(running, 'N*m')} at "
                          f"{quantity_text(stall, 'rad/s')} ({fmt(stall * 60 / TWO_PI)} rpm), where it settles", example=f"{{until_omega}} {fmt(0.95 * stall * 60 / TWO_PI)}rpm")
@@ -197,3 +199,10 @@ def _integrals(train, curve: Kloss, omega0: float, target: float, running: float
     theta = total(lambda w: w / acceleration(train, curve.torque(w)))
     loss = total(lambda w: curve.torque(w) * (curve.sync - w) / acceleration(train, curve.torque(w)))
     return time, theta, loss
+
+
+def _stronger(curve, short: float) -> str:
+    """The --motor-curve example for a motor that cannot start its load: the same curve with its
+    T_max raised past the load (the torque at every slip scales with it), by half again."""
+    return (f"{{motor_curve}} 'tmax={fmt(1.5 * short * curve.tmax, 3)}N*m slip-max={fmt(curve.slip_max)} "
+            f"sync={fmt(curve.sync * 60 / TWO_PI, 6)}rpm'")
