@@ -73,7 +73,7 @@ def screen(text: str, option: str, kind: Kind) -> str:
     for old, new in _NORMALISE:
         cleaned = cleaned.replace(old, new)
     cleaned = cleaned.strip()
-    example = kind.example
+    example = kind.typed
     ratio = _RATIO.fullmatch(cleaned) if kind.name == "dimensionless" else None
     if ratio is not None:  # 10:1 is 10; 1:10 could be a reducer's ratio written the other way round
         if float(ratio[1]) < float(ratio[2]):

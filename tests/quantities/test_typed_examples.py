@@ -23,10 +23,11 @@ def test_each_kind_offers_one_word(name):
     assert typed.startswith("'") or not GLOB.search(typed), typed  # a glob character only in quotes
 
 
+@pytest.mark.parametrize("text", ["5 furlongs_per_fortnight_x", "1-5"])  # an unknown unit; the screen's refusals (a range with a dash)
 @pytest.mark.parametrize("name", sorted(KINDS))
-def test_a_refused_value_offers_the_one_word(name):
+def test_a_refused_value_offers_the_one_word(name, text):
     from taucli.core.errors import InputError
     with pytest.raises(InputError) as refused:
-        read("5 furlongs_per_fortnight_x", "option", KINDS[name])
+        read(text, "option", KINDS[name])
     example = re.search(r"\(e\.g\. (.*?)\)(?:,|$)", str(refused.value))
     assert example is not None and len(shlex.split(example[1])) == 1, str(refused.value)
