@@ -193,8 +193,8 @@ def _of_neither(option: Option, own: InputError) -> InputError:
 
 
 def _spec(name: str, module: str = "specs"):
-    """The reader of a "key=value" spec option (or a vector), in taucli.answering.specs (the
-    contacts' in taucli.answering.contact_specs)."""
+    """The reader of a "key=value" spec option (or a vector, or a turning-moment diagram),
+    ``name`` in taucli.answering.``module``, imported when first read."""
 
     def read(option: Option, given, inputs: Inputs, stdin):
         import importlib  # deferred: the spec readers and the records they read into (4 ms), only for a spec option
@@ -210,42 +210,5 @@ READERS.update({PART: _spec("parts"), VECTOR: _spec("vectors"), PARTICLE: _spec(
                 FACE: _spec("faces", "contact_specs"), BAND: _spec("bands", "contact_specs"), CENTRIFUGAL: _spec("centrifugals", "contact_specs"),
                 CALIPER: _spec("calipers", "contact_specs")})
 READERS.update({SIDE: _spec("sides"), PULL: _spec("pulls"), ROTOR: _spec("rotors"), LOAD: _spec("loads", "drive_loads"), MOTOR_CURVE: _spec("motor_curve", "drive_loads")})
-
-
-def _revolving(option: Option, given, inputs: Inputs, stdin):
-    """balance's --mass, in taucli.answering.revolving (deferred as the other spec readers are)."""
-    from taucli.answering.revolving import revolving  # deferred: the spec readers, only for a spec option
-
-    return revolving(option, given, inputs, stdin)
-
-
-READERS[REVOLVING] = _revolving
-
-
-def _segments(option: Option, given, inputs: Inputs, stdin):
-    """drive's --segment, in taucli.answering.duty (deferred as the other spec readers are)."""
-    from taucli.answering.duty import segments  # deferred: the spec readers, only for a spec option
-
-    return segments(option, given, inputs, stdin)
-
-
-READERS[SEGMENT] = _segments
-
-
-def _phases(option: Option, given, inputs: Inputs, stdin):
-    from taucli.answering.phase_spec import phases  # deferred: the spec readers (4 ms), only for --phase
-
-    return phases(option, given, inputs, stdin)
-
-
-READERS[PHASE] = _phases
-
-
-def _curve(option: Option, given, inputs: Inputs, stdin):
-    """flywheel's --turning-moment, in taucli.answering.turning (deferred: a file or a formula)."""
-    from taucli.answering.turning import turning_moment  # deferred: the CSV and formula readers, only for a diagram
-
-    return turning_moment(option, given, inputs, stdin)
-
-
-READERS[CURVE] = _curve
+READERS.update({REVOLVING: _spec("revolving", "revolving"), SEGMENT: _spec("segments", "duty"), PHASE: _spec("phases", "phase_spec"),
+                CURVE: _spec("turning_moment", "turning")})  # balance's --mass, drive's --segment, spin-down's --phase, flywheel's --turning-moment
