@@ -86,25 +86,21 @@ def optimize(scene: Scene, unknown: unknowns.Unknown, key: str, sense: float, no
     report = Report(nominal.scene, nominal.model, method, results, [*steps, *nominal.steps], [*nominal.notes, *extra],
                     nominal.inputs, nominal.tables, nominal.trajectory)
     label = nominal.results[key].label if key in nominal.results else result.label
-    report.chart = lambda: _curve(scene, unknown, result, label, sense, window, x)
+    report.chart = lambda: _curve(scene, unknown, result, label, f, sense, window, x)
     return report
 
 
-def _curve(scene: Scene, unknown: unknowns.Unknown, result, label: str, sense: float, window: tuple[float, float], optimum: float):
+def _curve(scene: Scene, unknown: unknowns.Unknown, result, label: str, f, sense: float, window: tuple[float, float], optimum: float):
     """--plot's chart of an optimum: the result against the input evenly either side of the
     optimum, as far as the nearer end of the search grid's cells about it (CURVE_POINTS solves,
-    made only when the chart is drawn), the optimum marked."""
+    made only when the chart is drawn), the optimum marked; ``f`` is the search's own sense × result."""
     from taucli.writing import plot  # deferred: charts, only when one is drawn
 
     reach = min(optimum - window[0], window[1] - optimum)  # evenly either side, on the chart's linear axis: the optimum in the middle
     low, high = optimum - reach, optimum + reach
     xs = sorted({optimum, *(low + (high - low) * i / (CURVE_POINTS - 1) for i in range(CURVE_POINTS))})
     scene.plan(len(xs), "find")
-    ys = []
-    for trial in xs:
-        values = scene.results({unknown.name: trial})
-        value = None if values is None else values.get(result.key)
-        ys.append(value if value is not None and math.isfinite(value) else None)
+    ys = [None if (y := f(trial)) is None else sense * y for trial in xs]
     si_unit = units.KINDS[unknown.kind].si_unit
     way = "least" if sense > 0 else "most"
     panel = plot.Panel(result.key, label or result.key, result.unit or "", (plot.Series("", tuple(xs), tuple(ys)),))

@@ -30,6 +30,7 @@ from taucli.scenes.diagram import EXAMPLE as DIAGRAM_EXAMPLE, swing_from_curve
 from taucli.options.table import Results
 
 _EXAMPLE = "{omega_mean} 300rpm {fluctuation} 0.02 {energy_swing} 5kJ"
+DIAGRAM_MODEL = "a turning-moment diagram T(θ): ΔE = max − min of ∫(T − T_mean)dθ"
 
 
 def flywheel(
@@ -173,7 +174,7 @@ def flywheel(
                 cs, density, allowable_stress)
     model = ("a rim flywheel: ΔE = mv²Cs" if rim_only else "flywheel fluctuation: ΔE = Iω_mean²Cs") + ", Cs = (ω_max − ω_min)/ω_mean"
     if turning_moment is not None:
-        model = "a turning-moment diagram T(θ): ΔE = max − min of ∫(T − T_mean)dθ; " + model
+        model = f"{DIAGRAM_MODEL}; {model}"
     return Report("flywheel", model, method, results, steps, notes)
 
 
@@ -201,7 +202,7 @@ def _diagram_only(results, steps, notes, swing: float, torque_mean, torque_mean_
     results.put("cs", None, " (ω_max − ω_min)/ω_mean")
     results.put("I", None)
     notes.append("I and cs: give --inertia (the flywheel) or --fluctuation (its speed band) for the other: ΔE = Iω_mean²Cs")
-    model = ("a turning-moment diagram T(θ): ΔE = max − min of ∫(T − T_mean)dθ" if source == "turning_moment"
+    model = (DIAGRAM_MODEL if source == "turning_moment"
              else "a turning-moment diagram's loops: ΔE from the running sum of their areas")
     needs = {"I": ("fluctuation", "is needed for I with the diagram's ΔE: I = ΔE/(ω_mean²Cs) (or give --inertia for cs)"),
              "cs": ("inertia", "is needed for cs with the diagram's ΔE: Cs = ΔE/(Iω_mean²) (or give --fluctuation for I)")}
